@@ -1,0 +1,130 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "desia/blocking_graph.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "analysis/vec3.h"
+
+namespace desia {
+namespace {
+
+bool sameDirection(const Vec3& a, const Vec3& b) {
+  return std::abs(a[0] - b[0]) < 1e-7 && std::abs(a[1] - b[1]) < 1e-7 && std::abs(a[2] - b[2]) < 1e-7;
+}
+
+void addUnique(std::vector<Vec3>& list, const Vec3& v) {
+  for (const Vec3& existing : list) {
+    if (sameDirection(existing, v)) return;
+  }
+  list.push_back(v);
+}
+
+// Snaps components that are numerically zero or one, so that axis directions get exact values
+// and the same labels natively and in WebAssembly.
+Vec3 cleaned(Vec3 v) {
+  for (double& c : v) {
+    if (std::abs(c) < 1e-12) c = 0.0;
+    if (std::abs(std::abs(c) - 1.0) < 1e-12) c = c > 0 ? 1.0 : -1.0;
+  }
+  return v;
+}
+
+// One representative per line through the origin spanned by the contact normals.
+std::vector<Vec3> distinctNormalLines(const Assembly& assembly) {
+  std::vector<Vec3> lines;
+  for (const Contact& contact : assembly.contacts) {
+    Vec3 n = normalized(contact.normal);
+    if (norm(n) == 0) continue;
+    addUnique(lines, cleaned(canonicalSign(n)));
+  }
+  return lines;
+}
+
+// Any unit vector orthogonal to n.
+Vec3 anyPerpendicular(const Vec3& n) {
+  Vec3 axis = std::abs(n[0]) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
+  return normalized(cross(n, axis));
+}
+
+bool lessLexicographic(const Vec3& a, const Vec3& b) {
+  // Axes first in x, y, z order; then the rest by components, for a stable order.
+  auto isAxis = [](const Vec3& v) {
+    int ones = 0;
+    for (double c : v) ones += (c == 1.0 || c == -1.0) ? 1 : 0;
+    return ones == 1;
+  };
+  if (isAxis(a) != isAxis(b)) return isAxis(a);
+  if (isAxis(a)) return std::abs(a[0]) > std::abs(b[0]) || (std::abs(a[0]) == std::abs(b[0]) && std::abs(a[1]) > std::abs(b[1]));
+  return a > b;
+}
+
+}  // namespace
+
+std::string directionLabel(const Vec3& direction) {
+  static const char* kAxisNames = "xyz";
+  for (int axis = 0; axis < 3; ++axis) {
+    bool others = true;
+    for (int k = 0; k < 3; ++k) {
+      if (k != axis && std::abs(direction[k]) > 1e-9) others = false;
+    }
+    if (others && std::abs(std::abs(direction[axis]) - 1.0) < 1e-9) {
+      return std::string(direction[axis] > 0 ? "+" : "-") + kAxisNames[axis];
+    }
+  }
+  char buffer[96];
+  std::snprintf(buffer, sizeof buffer, "(%.4g,%.4g,%.4g)", direction[0] + 0.0, direction[1] + 0.0,
+                direction[2] + 0.0);
+  return buffer;
+}
+
+std::vector<BaseDirection> computeBaseDirections(const Assembly& assembly) {
+  const std::vector<Vec3> lines = distinctNormalLines(assembly);
+  std::vector<Vec3> directions;
+  // Vertices of the arrangement: intersections of the great circles of two distinct normals.
+  for (size_t i = 0; i < lines.size(); ++i) {
+    for (size_t j = i + 1; j < lines.size(); ++j) {
+      Vec3 d = cross(lines[i], lines[j]);
+      if (norm(d) < 1e-9) continue;
+      addUnique(directions, cleaned(canonicalSign(normalized(d))));
+    }
+  }
+  if (directions.empty()) {
+    // No vertex: all normals parallel (a single great circle, every direction on it is free for
+    // the same groups) or no contacts at all (every direction is free). Either way the
+    // directions below expose the free motions.
+    if (lines.empty()) {
+      directions = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    } else {
+      directions.push_back(cleaned(canonicalSign(anyPerpendicular(lines[0]))));
+    }
+  }
+  std::sort(directions.begin(), directions.end(), lessLexicographic);
+  std::vector<BaseDirection> result;
+  result.reserve(directions.size());
+  for (const Vec3& d : directions) result.push_back({d, directionLabel(d)});
+  return result;
+}
+
+DirectionalBlockingGraph buildBlockingGraph(const Assembly& assembly, const BaseDirection& direction) {
+  DirectionalBlockingGraph dbg{direction, DirectedGraph(assembly.partCount())};
+  for (const Contact& contact : assembly.contacts) {
+    double along = dot(direction.vector, contact.normal);
+    // Moving a along d pushes into b when d·n_ab > 0; moving b along d pushes into a when
+    // d·n_ba = -d·n_ab > 0.
+    if (along > kDirectionTolerance) dbg.graph.addEdge(contact.a, contact.b);
+    if (along < -kDirectionTolerance) dbg.graph.addEdge(contact.b, contact.a);
+  }
+  return dbg;
+}
+
+std::vector<DirectionalBlockingGraph> buildBaseBlockingGraphs(const Assembly& assembly) {
+  std::vector<DirectionalBlockingGraph> graphs;
+  for (const BaseDirection& direction : computeBaseDirections(assembly)) {
+    graphs.push_back(buildBlockingGraph(assembly, direction));
+  }
+  return graphs;
+}
+
+}  // namespace desia

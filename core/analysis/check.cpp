@@ -1,0 +1,68 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "desia/check.h"
+
+#include "desia/error.h"
+
+namespace desia {
+
+CheckMethod parseCheckMethod(const std::string& name) {
+  if (name == "dbg") return CheckMethod::Graphs;
+  if (name == "lp") return CheckMethod::Inequalities;
+  if (name == "both") return CheckMethod::Both;
+  throwBadInput("", "unknown method '" + name + "' (expected dbg, lp or both)");
+}
+
+const char* checkMethodName(CheckMethod method) {
+  switch (method) {
+    case CheckMethod::Graphs: return "dbg";
+    case CheckMethod::Inequalities: return "lp";
+    case CheckMethod::Both: return "both";
+  }
+  return "dbg";
+}
+
+namespace {
+
+// With both tests, agreement gives that verdict. The LP test is exact for any contact normals, so
+// when the DBG test (only a necessary condition for non-orthogonal contacts, Section 3.2) finds
+// interlocking or deadlock but the LP finds a motion, the LP's motion is the answer. The reverse
+// cannot happen (a DBG witness is a motion the LP must find) and is reported as such.
+InterlockingResult combine(const InterlockingResult& graphs, const InterlockingResult& inequalities) {
+  if (graphs.verdict == inequalities.verdict && graphs.key == inequalities.key) return graphs;
+  if (inequalities.verdict == Verdict::NotInterlocking) {
+    InterlockingResult result = inequalities;
+    result.reason += " (the blocking graphs miss this motion: parts move in different directions at once)";
+    return result;
+  }
+  InterlockingResult result = graphs.verdict == Verdict::NotInterlocking ? graphs : inequalities;
+  result.verdict = Verdict::NotInterlocking;
+  result.reason = "the two tests disagree (dbg: " + std::string(verdictName(graphs.verdict)) +
+                  ", lp: " + verdictName(inequalities.verdict) + "); " + graphs.reason;
+  return result;
+}
+
+}  // namespace
+
+CheckReport checkAssembly(const AssemblyDocument& document, const CheckOptions& options) {
+  CheckReport report;
+  report.method = options.method;
+  report.graphs = buildBaseBlockingGraphs(document.assembly);
+  if (options.method != CheckMethod::Inequalities) {
+    report.graphResult = testInterlockingByGraphs(document.assembly, report.graphs);
+  }
+  if (options.method != CheckMethod::Graphs) {
+    report.inequalityResult = testInterlockingByInequalities(document.assembly);
+  }
+  if (options.method == CheckMethod::Both) {
+    report.result = combine(*report.graphResult, *report.inequalityResult);
+  } else {
+    report.result = report.graphResult ? *report.graphResult : *report.inequalityResult;
+  }
+  if (options.planDisassembly) {
+    report.disassembly = document.kind == AssemblyKind::Voxel ? planVoxelDisassembly(document.voxels, document.assembly)
+                                                              : planContactDisassembly(document.assembly);
+  }
+  return report;
+}
+
+}  // namespace desia

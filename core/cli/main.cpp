@@ -1,0 +1,112 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The `desia` command line: a thin shell over the core API. Exit codes: 0 success (interlocking),
+// 1 a negative verdict, 2 bad input or usage.
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "desia/check.h"
+#include "desia/error.h"
+#include "desia/version.h"
+
+namespace {
+
+constexpr int kExitNegative = 1;
+constexpr int kExitBadInput = 2;
+constexpr std::streamoff kMaxInputBytes = 512LL << 20;
+
+const char* kUsage =
+    "usage: desia check FILE [--method dbg|lp|both] [--json]\n"
+    "       desia --version | --help\n"
+    "\n"
+    "check   tests whether the assembly in FILE (.puz voxel puzzle or JSON assembly document)\n"
+    "        is interlocking and plans its disassembly.\n"
+    "        --method dbg   directional blocking graphs (default; exact for voxel puzzles)\n"
+    "        --method lp    linear program (exact for any contact normals; needs GLPK)\n"
+    "        --method both  run both and compare\n"
+    "        --json         print one JSON object instead of text\n"
+    "exit    0 interlocking, 1 not interlocking (or deadlocked), 2 bad input or usage\n";
+
+struct UsageError {
+  std::string message;
+};
+
+std::string readFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw desia::Error(desia::ErrorCode::BadInput, path + ": cannot open the file");
+  in.seekg(0, std::ios::end);
+  const std::streamoff size = in.tellg();
+  if (size < 0) throw desia::Error(desia::ErrorCode::BadInput, path + ": cannot read the file (is it a directory?)");
+  if (size > kMaxInputBytes) {
+    throw desia::Error(desia::ErrorCode::TooLarge, path + ": the file is " + std::to_string(size) +
+                                                       " bytes, more than the limit of " +
+                                                       std::to_string(kMaxInputBytes) + " bytes");
+  }
+  in.seekg(0);
+  std::string text(static_cast<size_t>(size), '\0');
+  in.read(text.data(), size);
+  if (!in) throw desia::Error(desia::ErrorCode::BadInput, path + ": cannot read the file");
+  return text;
+}
+
+int runCheck(const std::vector<std::string>& args) {
+  std::string file, method = "dbg";
+  bool json = false;
+  for (size_t i = 0; i < args.size(); ++i) {
+    if (args[i] == "--json") {
+      json = true;
+    } else if (args[i] == "--method") {
+      if (i + 1 == args.size()) throw UsageError{"--method needs a value (dbg, lp or both)"};
+      method = args[++i];
+    } else if (args[i].rfind("--method=", 0) == 0) {
+      method = args[i].substr(9);
+    } else if (!args[i].empty() && args[i][0] == '-') {
+      throw UsageError{"unknown option " + args[i]};
+    } else if (file.empty()) {
+      file = args[i];
+    } else {
+      throw UsageError{"check takes one FILE, got also " + args[i]};
+    }
+  }
+  if (file.empty()) throw UsageError{"check needs a FILE"};
+  desia::CheckOptions options;
+  options.method = desia::parseCheckMethod(method);
+  const desia::AssemblyDocument document = desia::parseAssemblyText(readFile(file), file);
+  const desia::CheckReport report = desia::checkAssembly(document, options);
+  std::cout << (json ? desia::checkReportToJson(document, report) + "\n" : desia::checkReportToText(document, report));
+  return report.result.verdict == desia::Verdict::Interlocking ? 0 : kExitNegative;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<std::string> args(argv + 1, argv + argc);
+  try {
+    if (args.empty()) throw UsageError{"missing command"};
+    if (args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
+      std::cout << kUsage;
+      return 0;
+    }
+    if (args[0] == "--version") {
+      std::cout << "desia " << desia::kVersion << "\n";
+      return 0;
+    }
+    if (args[0] == "check") return runCheck({args.begin() + 1, args.end()});
+    throw UsageError{"unknown command '" + args[0] + "'"};
+  } catch (const UsageError& e) {
+    std::cerr << "desia: " << e.message << "\n\n" << kUsage;
+    return kExitBadInput;
+  } catch (const desia::Error& e) {
+    std::cerr << "desia: error: " << e.what() << "\n";
+    return e.code() == desia::ErrorCode::Internal ? 3 : kExitBadInput;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "desia: error: out of memory\n";
+    return kExitBadInput;
+  } catch (const std::exception& e) {
+    std::cerr << "desia: internal error: " << e.what() << "\n";
+    return 3;
+  }
+}

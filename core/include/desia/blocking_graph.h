@@ -1,0 +1,40 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Directional blocking graphs (paper Section 3.1). G(d) has an edge i->j when part j blocks the
+// translation of part i along d. Base directions are the directions where the non-directional
+// blocking graph changes; one base DBG per direction on a half sphere suffices because
+// G(-d) is G(d) reversed.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "desia/assembly.h"
+#include "desia/directed_graph.h"
+
+namespace desia {
+
+struct BaseDirection {
+  Vec3 vector{0, 0, 0};   // unit length, canonical sign (first non-zero component positive)
+  std::string label;      // "+x", "+y", "+z" for axes, otherwise "(0.707,0.707,0)"
+};
+
+// Label of a direction: "+x" / "-y" for axes, a rounded vector otherwise.
+std::string directionLabel(const Vec3& direction);
+
+// The vertices of the arrangement of great circles {d : d·n = 0} on the unit sphere, one of each
+// antipodal pair (the 3D analogue of the points of Fig. 3e). For axis-aligned contacts these are
+// exactly +x, +y, +z. Degenerate arrangements (all normals parallel, or no contacts) still get
+// directions that span the free motions, so a free part is never missed.
+std::vector<BaseDirection> computeBaseDirections(const Assembly& assembly);
+
+struct DirectionalBlockingGraph {
+  BaseDirection direction;
+  DirectedGraph graph;  // nodes are part indices
+};
+
+// Infinitesimal blocking: i is blocked by j along d iff some contact normal n from i to j has
+// d·n > 0 (moving i along d would penetrate j).
+DirectionalBlockingGraph buildBlockingGraph(const Assembly& assembly, const BaseDirection& direction);
+std::vector<DirectionalBlockingGraph> buildBaseBlockingGraphs(const Assembly& assembly);
+
+}  // namespace desia

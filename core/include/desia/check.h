@@ -1,0 +1,44 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The `check` operation shared by the CLI and the WebAssembly module: interlocking verdict, key,
+// key directions, failure witness and a disassembly plan for one assembly document.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "desia/blocking_graph.h"
+#include "desia/disassembly.h"
+#include "desia/document.h"
+#include "desia/interlocking.h"
+
+namespace desia {
+
+enum class CheckMethod { Graphs, Inequalities, Both };
+// Parses "dbg", "lp" or "both"; throws BadInput otherwise.
+CheckMethod parseCheckMethod(const std::string& name);
+const char* checkMethodName(CheckMethod method);
+
+struct CheckOptions {
+  CheckMethod method = CheckMethod::Graphs;
+  bool planDisassembly = true;
+};
+
+struct CheckReport {
+  CheckMethod method = CheckMethod::Graphs;
+  InterlockingResult result;                          // the combined verdict
+  std::optional<InterlockingResult> graphResult;      // when the DBG test ran
+  std::optional<InterlockingResult> inequalityResult; // when the LP test ran
+  std::vector<DirectionalBlockingGraph> graphs;       // base DBGs of the full assembly
+  std::optional<DisassemblyPlan> disassembly;         // absent when not planned
+};
+
+CheckReport checkAssembly(const AssemblyDocument& document, const CheckOptions& options = {});
+
+// The report as the JSON object printed by `desia check --json` (fields documented in README).
+std::string checkReportToJson(const AssemblyDocument& document, const CheckReport& report,
+                              int indent = 2);
+// Human-readable report for the terminal.
+std::string checkReportToText(const AssemblyDocument& document, const CheckReport& report);
+
+}  // namespace desia

@@ -1,0 +1,46 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Disassembly planning (paper Section 3.3): a sequence of single-part removals.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "desia/assembly.h"
+#include "desia/voxel_grid.h"
+
+namespace desia {
+
+// One straight translation of `steps` units along `direction` (a unit axis for voxels).
+struct Move {
+  Vec3 direction{0, 0, 0};
+  int steps = 0;
+};
+
+struct Removal {
+  int part = -1;              // internal index
+  std::vector<Move> path;     // the last move takes the part clear of the remaining parts
+};
+
+struct DisassemblyPlan {
+  bool complete = false;      // all parts removed (the last part stays in place, empty path)
+  std::vector<Removal> removals;
+  std::vector<int> stuck;     // parts left when no further removal exists (complete == false)
+};
+
+struct VoxelDisassemblyOptions {
+  // Bound on the breadth-first search over unit axis steps, per attempted removal.
+  int maxSearchStates = 2'000'000;
+};
+
+// Voxel assemblies: removals are collision-free translations to infinity checked by sweeping; when
+// no straight path exists, a breadth-first search over unit axis steps finds a bent path (as the
+// original code does). Parts are tried in id order, which is complete: removing a part never
+// blocks another, so greedy removal finds a sequence whenever one exists.
+DisassemblyPlan planVoxelDisassembly(const VoxelGrid& grid, const Assembly& assembly,
+                                     const VoxelDisassemblyOptions& options = {});
+
+// Assemblies known only by their contacts: a part is removable when it is locally free along a
+// base direction in the DBG of the remaining parts (no sweep is possible without geometry).
+DisassemblyPlan planContactDisassembly(const Assembly& assembly);
+
+}  // namespace desia

@@ -1,0 +1,32 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The JSON assembly document (schema in docs/json-schema.md): one format for voxel, plate and
+// frame assemblies, or bare contact graphs, optionally carrying analysis results.
+#pragma once
+
+#include <string>
+
+#include "desia/assembly.h"
+#include "desia/voxel_grid.h"
+
+namespace desia {
+
+enum class AssemblyKind { Voxel, Plate, Frame, Contacts };
+const char* assemblyKindName(AssemblyKind kind);
+
+struct AssemblyDocument {
+  AssemblyKind kind = AssemblyKind::Voxel;
+  std::string name;
+  VoxelGrid voxels;          // kind == Voxel
+  Assembly assembly;         // parts and contacts (derived from the grid for voxel documents)
+  std::string geometryJson;  // plate / frame geometry sections, kept verbatim for round trips
+};
+
+// Reads .puz or JSON text (detected from the content). `source` names the input in messages.
+AssemblyDocument parseAssemblyText(const std::string& text, const std::string& source = "<input>");
+AssemblyDocument parseJsonDocument(const std::string& text, const std::string& source = "<input>");
+AssemblyDocument documentFromVoxels(VoxelGrid grid, std::string name = "");
+
+// Serializes a document (without results). `indent` < 0 gives one line.
+std::string documentToJson(const AssemblyDocument& document, int indent = 2);
+
+}  // namespace desia

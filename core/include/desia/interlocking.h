@@ -1,0 +1,49 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The two interlocking tests of paper Section 3.2.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "desia/assembly.h"
+#include "desia/blocking_graph.h"
+
+namespace desia {
+
+enum class Verdict { Interlocking, Deadlocked, NotInterlocking };
+const char* verdictName(Verdict verdict);  // "interlocking", "deadlocked", "not-interlocking"
+
+// A part or part group that can move, and how (a failure's evidence).
+struct Witness {
+  std::vector<int> parts;             // internal indices, sorted
+  std::vector<Vec3> velocities;       // one per part (DBG: all equal to the direction)
+  std::string direction;              // label of the common direction, empty for a mixed motion
+};
+
+struct InterlockingResult {
+  Verdict verdict = Verdict::NotInterlocking;
+  std::string reason;                 // one sentence explaining the verdict
+  int key = -1;                       // internal index of the key, or -1
+  std::vector<Vec3> keyDirections;    // free directions of the key (base directions, signed)
+  bool hasWitness = false;
+  Witness witness;
+};
+
+// DBG-based test: every base DBG is strongly connected, or has two SCCs one of which is the same
+// single part (the key) in all of them. Exact for axis-aligned contacts; only necessary otherwise.
+InterlockingResult testInterlockingByGraphs(const Assembly& assembly,
+                                            const std::vector<DirectionalBlockingGraph>& graphs);
+
+// Inequality-based test (Eq. 2) with GLPK, extended by a null-space check so that motions that
+// slide along every contact (all t_ij = 0 but v != 0) are detected too.
+InterlockingResult testInterlockingByInequalities(const Assembly& assembly);
+
+// Lower level pieces of the inequality test, exposed for tests.
+struct MotionSearch {
+  bool movable = false;
+  std::vector<Vec3> velocities;  // per part (zero for fixed parts)
+};
+// Is there a non-zero motion of the parts flagged free (the others fixed) that violates no contact?
+MotionSearch findFreeMotion(const Assembly& assembly, const std::vector<bool>& isFree);
+
+}  // namespace desia

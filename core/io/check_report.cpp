@@ -1,0 +1,166 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Serialization of check reports: the JSON object of `desia check --json` (also returned by the
+// WebAssembly module) and the terminal text.
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "desia/check.h"
+
+namespace desia {
+namespace {
+
+using nlohmann::json;
+
+// Rounds solver output so that last-bit differences between builds never reach the report.
+double rounded(double value) {
+  const double r = std::round(value * 1e6) / 1e6;
+  return r == 0.0 ? 0.0 : r;
+}
+
+json vectorJson(const Vec3& v) { return json::array({rounded(v[0]), rounded(v[1]), rounded(v[2])}); }
+
+json idsJson(const Assembly& assembly, const std::vector<int>& parts) {
+  json ids = json::array();
+  for (int part : parts) ids.push_back(assembly.parts[part].id);
+  return ids;
+}
+
+json directionLabels(const std::vector<Vec3>& directions) {
+  json labels = json::array();
+  for (const Vec3& d : directions) labels.push_back(directionLabel(d));
+  return labels;
+}
+
+json witnessJson(const Assembly& assembly, const InterlockingResult& result) {
+  if (!result.hasWitness) return nullptr;
+  json velocities = json::array();
+  for (const Vec3& v : result.witness.velocities) velocities.push_back(vectorJson(v));
+  return {{"parts", idsJson(assembly, result.witness.parts)},
+          {"direction", result.witness.direction.empty() ? json(nullptr) : json(result.witness.direction)},
+          {"velocities", velocities}};
+}
+
+json verdictJson(const Assembly& assembly, const InterlockingResult& result) {
+  return {{"verdict", verdictName(result.verdict)},
+          {"interlocking", result.verdict == Verdict::Interlocking},
+          {"deadlocked", result.verdict == Verdict::Deadlocked},
+          {"reason", result.reason},
+          {"key", result.key >= 0 ? json(assembly.parts[result.key].id) : json(nullptr)},
+          {"keyDirections", directionLabels(result.keyDirections)},
+          {"witness", witnessJson(assembly, result)}};
+}
+
+json graphsJson(const Assembly& assembly, const std::vector<DirectionalBlockingGraph>& graphs) {
+  json list = json::array();
+  for (const DirectionalBlockingGraph& dbg : graphs) {
+    json edges = json::array();
+    for (int from = 0; from < dbg.graph.nodeCount(); ++from) {
+      for (int to : dbg.graph.successors(from)) edges.push_back({assembly.parts[from].id, assembly.parts[to].id});
+    }
+    json components = json::array();
+    for (const auto& component : findStronglyConnectedComponents(dbg.graph).components) {
+      components.push_back(idsJson(assembly, component));
+    }
+    list.push_back({{"direction", dbg.direction.label}, {"vector", vectorJson(dbg.direction.vector)},
+                    {"edges", edges}, {"components", components}});
+  }
+  return list;
+}
+
+json disassemblyJson(const Assembly& assembly, const DisassemblyPlan& plan) {
+  if (!plan.complete) return nullptr;
+  json order = json::array(), paths = json::array();
+  for (const Removal& removal : plan.removals) {
+    order.push_back(assembly.parts[removal.part].id);
+    json path = json::array();
+    for (const Move& move : removal.path) path.push_back({{"dir", directionLabel(move.direction)}, {"steps", move.steps}});
+    paths.push_back(path);
+  }
+  return {{"order", order}, {"paths", paths}};
+}
+
+std::string pathText(const std::vector<Move>& path) {
+  std::string text;
+  for (const Move& move : path) {
+    if (!text.empty()) text += ", ";
+    text += directionLabel(move.direction) + " " + std::to_string(move.steps);
+  }
+  return text;
+}
+
+}  // namespace
+
+std::string checkReportToJson(const AssemblyDocument& document, const CheckReport& report, int indent) {
+  const Assembly& assembly = document.assembly;
+  json root = verdictJson(assembly, report.result);
+  root["parts"] = assembly.partCount();
+  json ids = json::array();
+  for (const Part& part : assembly.parts) ids.push_back(part.id);
+  root["partIds"] = ids;
+  root["kind"] = assemblyKindName(document.kind);
+  root["method"] = checkMethodName(report.method);
+  json bases = json::array();
+  for (const DirectionalBlockingGraph& dbg : report.graphs) {
+    bases.push_back({{"label", dbg.direction.label}, {"vector", vectorJson(dbg.direction.vector)}});
+  }
+  root["baseDirections"] = bases;
+  root["graphs"] = graphsJson(assembly, report.graphs);
+  if (report.method == CheckMethod::Both) {
+    root["methods"] = {{"dbg", verdictJson(assembly, *report.graphResult)},
+                       {"lp", verdictJson(assembly, *report.inequalityResult)}};
+  }
+  if (report.disassembly) {
+    root["disassembly"] = disassemblyJson(assembly, *report.disassembly);
+    if (!report.disassembly->complete) {
+      std::vector<int> removed;
+      for (const Removal& r : report.disassembly->removals) removed.push_back(r.part);
+      root["disassemblyFailure"] = {{"removed", idsJson(assembly, removed)},
+                                    {"stuck", idsJson(assembly, report.disassembly->stuck)}};
+    }
+  } else {
+    root["disassembly"] = nullptr;
+  }
+  return root.dump(indent);
+}
+
+std::string checkReportToText(const AssemblyDocument& document, const CheckReport& report) {
+  const Assembly& assembly = document.assembly;
+  const InterlockingResult& result = report.result;
+  std::ostringstream out;
+  out << "parts: " << assembly.partCount() << " (" << assemblyKindName(document.kind);
+  if (document.kind == AssemblyKind::Voxel) {
+    out << " grid " << document.voxels.nx() << "x" << document.voxels.ny() << "x" << document.voxels.nz();
+  }
+  out << ")\nverdict: " << verdictName(result.verdict) << " (method " << checkMethodName(report.method) << ")\n";
+  out << "reason: " << result.reason << "\n";
+  if (result.key >= 0) {
+    out << "key: part " << assembly.parts[result.key].id << ", free along";
+    for (const Vec3& d : result.keyDirections) out << ' ' << directionLabel(d);
+    out << "\n";
+  }
+  if (result.hasWitness) {
+    out << "witness: part" << (result.witness.parts.size() > 1 ? "s" : "");
+    for (int part : result.witness.parts) out << ' ' << assembly.parts[part].id;
+    out << " move " << (result.witness.direction.empty() ? "in different directions" : "along " + result.witness.direction) << "\n";
+  }
+  out << "base directions:";
+  for (const DirectionalBlockingGraph& dbg : report.graphs) out << ' ' << dbg.direction.label;
+  out << "\n";
+  if (report.disassembly) {
+    const DisassemblyPlan& plan = *report.disassembly;
+    out << (plan.complete ? "disassembly:" : "disassembly: none found; removed before getting stuck:");
+    for (const Removal& removal : plan.removals) {
+      out << "\n  part " << assembly.parts[removal.part].id;
+      if (!removal.path.empty()) out << ": " << pathText(removal.path);
+    }
+    if (!plan.complete) {
+      out << "\n  stuck:";
+      for (int part : plan.stuck) out << ' ' << assembly.parts[part].id;
+    }
+    out << "\n";
+  }
+  return out.str();
+}
+
+}  // namespace desia

@@ -1,0 +1,252 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The JSON assembly document (docs/json-schema.md).
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <set>
+
+#include "desia/document.h"
+#include "desia/error.h"
+#include "desia/puz_format.h"
+
+namespace desia {
+namespace {
+
+using nlohmann::json;
+
+constexpr int kFormatVersion = 1;
+constexpr size_t kMaxParts = 100000;
+constexpr size_t kMaxContacts = 2000000;
+
+// Line and column of a byte offset, for JSON syntax errors.
+std::string locationOfOffset(const std::string& text, const std::string& source, size_t offset) {
+  int line = 1, column = 1;
+  for (size_t i = 0; i < offset && i < text.size(); ++i) {
+    if (text[i] == '\n') {
+      ++line;
+      column = 1;
+    } else {
+      ++column;
+    }
+  }
+  return source + ":" + std::to_string(line) + ":" + std::to_string(column);
+}
+
+[[noreturn]] void fail(const std::string& source, const std::string& path, const std::string& what) {
+  throwBadInput(source, (path.empty() ? std::string() : path + ": ") + what);
+}
+
+const json& require(const json& object, const char* key, const std::string& source, const std::string& path) {
+  auto it = object.find(key);
+  if (it == object.end()) fail(source, path, std::string("missing field '") + key + "'");
+  return *it;
+}
+
+int64_t integerField(const json& value, const std::string& source, const std::string& path, int64_t lo, int64_t hi) {
+  if (!value.is_number_integer()) fail(source, path, "expected an integer, found " + value.dump());
+  const int64_t v = value.get<int64_t>();
+  if (v < lo || v > hi) fail(source, path, std::to_string(v) + " is out of range (" + std::to_string(lo) + " to " + std::to_string(hi) + ")");
+  return v;
+}
+
+AssemblyKind parseKind(const json& root, const std::string& source) {
+  const json& kind = require(root, "kind", source, "");
+  const std::string name = kind.is_string() ? kind.get<std::string>() : "";
+  if (name == "voxel") return AssemblyKind::Voxel;
+  if (name == "plate") return AssemblyKind::Plate;
+  if (name == "frame") return AssemblyKind::Frame;
+  if (name == "contacts") return AssemblyKind::Contacts;
+  fail(source, "kind", "expected \"voxel\", \"plate\", \"frame\" or \"contacts\", found " + kind.dump());
+}
+
+VoxelGrid parseVoxelSection(const json& root, const std::string& source) {
+  const json& voxel = require(root, "voxel", source, "");
+  if (!voxel.is_object()) fail(source, "voxel", "expected an object");
+  const json& size = require(voxel, "size", source, "voxel");
+  if (!size.is_array() || size.size() != 3) fail(source, "voxel.size", "expected [nx, ny, nz]");
+  int64_t n[3];
+  for (int k = 0; k < 3; ++k) n[k] = integerField(size[k], source, "voxel.size[" + std::to_string(k) + "]", 1, VoxelLimits::kMaxSide);
+  if (n[0] * n[1] * n[2] > VoxelLimits::kMaxVoxels) {
+    throw Error(ErrorCode::TooLarge, source + ": voxel.size: grid has more than " + std::to_string(VoxelLimits::kMaxVoxels) + " voxels");
+  }
+  VoxelGrid grid(static_cast<int>(n[0]), static_cast<int>(n[1]), static_cast<int>(n[2]));
+  const json& labels = require(voxel, "labels", source, "voxel");
+  if (!labels.is_array()) fail(source, "voxel.labels", "expected an array of integers");
+  if (static_cast<int64_t>(labels.size()) != grid.voxelCount()) {
+    fail(source, "voxel.labels", "has " + std::to_string(labels.size()) + " values, but size " + std::to_string(n[0]) + " x " +
+                                     std::to_string(n[1]) + " x " + std::to_string(n[2]) + " needs " + std::to_string(grid.voxelCount()));
+  }
+  for (int64_t i = 0; i < grid.voxelCount(); ++i) {
+    grid.setLabelAt(i, static_cast<int>(integerField(labels[i], source, "voxel.labels[" + std::to_string(i) + "]", 0, grid.voxelCount())));
+  }
+  validateVoxelParts(grid, source);
+  return grid;
+}
+
+std::vector<Part> parseParts(const json& root, const std::string& source) {
+  const json& parts = require(root, "parts", source, "");
+  if (!parts.is_array()) fail(source, "parts", "expected an array");
+  if (parts.size() > kMaxParts) throw Error(ErrorCode::TooLarge, source + ": parts: more than " + std::to_string(kMaxParts) + " parts");
+  std::vector<Part> result;
+  std::set<int> seen;
+  for (size_t i = 0; i < parts.size(); ++i) {
+    const std::string path = "parts[" + std::to_string(i) + "]";
+    if (!parts[i].is_object()) fail(source, path, "expected an object with an 'id'");
+    Part part;
+    part.id = static_cast<int>(integerField(require(parts[i], "id", source, path), source, path + ".id", 1, 1 << 30));
+    if (!seen.insert(part.id).second) fail(source, path + ".id", "duplicate part id " + std::to_string(part.id));
+    if (parts[i].contains("name")) {
+      if (!parts[i]["name"].is_string()) fail(source, path + ".name", "expected a string");
+      part.name = parts[i]["name"].get<std::string>();
+    }
+    result.push_back(part);
+  }
+  if (result.empty()) fail(source, "parts", "the assembly is empty: no parts");
+  return result;
+}
+
+std::vector<Contact> parseContacts(const json& root, const Assembly& assembly, const std::string& source) {
+  const json& contacts = require(root, "contacts", source, "");
+  if (!contacts.is_array()) fail(source, "contacts", "expected an array");
+  if (contacts.size() > kMaxContacts) throw Error(ErrorCode::TooLarge, source + ": contacts: more than " + std::to_string(kMaxContacts) + " contacts");
+  std::vector<Contact> result;
+  for (size_t i = 0; i < contacts.size(); ++i) {
+    const std::string path = "contacts[" + std::to_string(i) + "]";
+    const json& entry = contacts[i];
+    if (!entry.is_object()) fail(source, path, "expected an object {a, b, normal}");
+    Contact contact;
+    for (const char* side : {"a", "b"}) {
+      const int id = static_cast<int>(integerField(require(entry, side, source, path), source, path + "." + side, 1, 1 << 30));
+      const int index = assembly.indexOfId(id);
+      if (index < 0) fail(source, path + "." + side, "part " + std::to_string(id) + " is not in 'parts'");
+      (side[0] == 'a' ? contact.a : contact.b) = index;
+    }
+    if (contact.a == contact.b) fail(source, path, "a part cannot touch itself (a = b = " + std::to_string(assembly.parts[contact.a].id) + ")");
+    const json& normal = require(entry, "normal", source, path);
+    if (!normal.is_array() || normal.size() != 3) fail(source, path + ".normal", "expected [nx, ny, nz]");
+    double length2 = 0;
+    for (int k = 0; k < 3; ++k) {
+      if (!normal[k].is_number()) fail(source, path + ".normal", "expected three numbers, found " + normal.dump());
+      contact.normal[k] = normal[k].get<double>();
+      if (!std::isfinite(contact.normal[k])) fail(source, path + ".normal", "is not finite");
+      length2 += contact.normal[k] * contact.normal[k];
+    }
+    if (length2 < 1e-24) fail(source, path + ".normal", "is the zero vector");
+    const double length = std::sqrt(length2);
+    for (double& c : contact.normal) c /= length;
+    if (entry.contains("area")) {
+      if (!entry["area"].is_number() || !(entry["area"].get<double>() > 0)) fail(source, path + ".area", "expected a positive number");
+      contact.area = entry["area"].get<double>();
+    }
+    result.push_back(contact);
+  }
+  return result;
+}
+
+}  // namespace
+
+const char* assemblyKindName(AssemblyKind kind) {
+  switch (kind) {
+    case AssemblyKind::Voxel: return "voxel";
+    case AssemblyKind::Plate: return "plate";
+    case AssemblyKind::Frame: return "frame";
+    case AssemblyKind::Contacts: return "contacts";
+  }
+  return "contacts";
+}
+
+AssemblyDocument documentFromVoxels(VoxelGrid grid, std::string name) {
+  AssemblyDocument document;
+  document.kind = AssemblyKind::Voxel;
+  document.name = std::move(name);
+  document.assembly = assemblyFromVoxels(grid);
+  document.voxels = std::move(grid);
+  return document;
+}
+
+AssemblyDocument parseJsonDocument(const std::string& text, const std::string& source) {
+  json root;
+  try {
+    root = json::parse(text);
+  } catch (const json::parse_error& e) {
+    std::string message = e.what();
+    // nlohmann prefixes "[json.exception.parse_error.101] parse error at line 1, column 2: ".
+    const size_t colon = message.find(": ");
+    if (colon != std::string::npos) message = message.substr(colon + 2);
+    throwBadInput(locationOfOffset(text, source, e.byte > 0 ? e.byte - 1 : 0), "malformed JSON: " + message);
+  }
+  if (!root.is_object()) fail(source, "", "the JSON document must be an object");
+  if (root.contains("format") && root["format"] != "desia-assembly") {
+    fail(source, "format", "expected \"desia-assembly\", found " + root["format"].dump());
+  }
+  if (root.contains("version") && root["version"] != kFormatVersion) {
+    fail(source, "version", "unsupported version " + root["version"].dump() + " (this build reads version 1)");
+  }
+  AssemblyDocument document;
+  document.kind = parseKind(root, source);
+  if (root.contains("name")) {
+    if (!root["name"].is_string()) fail(source, "name", "expected a string");
+    document.name = root["name"].get<std::string>();
+  }
+  if (document.kind == AssemblyKind::Voxel) {
+    std::string name = document.name;
+    document = documentFromVoxels(parseVoxelSection(root, source), name);
+    return document;
+  }
+  document.assembly.parts = parseParts(root, source);
+  document.assembly.contacts = parseContacts(root, document.assembly, source);
+  json geometry = json::object();
+  for (const char* section : {"plates", "frame"}) {
+    if (root.contains(section)) geometry[section] = root[section];
+  }
+  if (!geometry.empty()) document.geometryJson = geometry.dump();
+  return document;
+}
+
+AssemblyDocument parseAssemblyText(const std::string& text, const std::string& source) {
+  if (looksLikePuz(text)) return documentFromVoxels(parsePuz(text, source));
+  for (char c : text) {
+    if (c == ' ' || c == '\n' || c == '\r' || c == '\t') continue;
+    if (c == '{' || c == '[') return parseJsonDocument(text, source);
+    break;
+  }
+  if (text.find_first_not_of(" \n\r\t") == std::string::npos) throwBadInput(source, "the input is empty");
+  // Neither a digit nor a JSON brace: let the .puz reader name the first bad byte or token.
+  return documentFromVoxels(parsePuz(text, source));
+}
+
+std::string documentToJson(const AssemblyDocument& document, int indent) {
+  json root;
+  root["format"] = "desia-assembly";
+  root["version"] = kFormatVersion;
+  root["kind"] = assemblyKindName(document.kind);
+  if (!document.name.empty()) root["name"] = document.name;
+  json parts = json::array();
+  if (document.kind == AssemblyKind::Voxel) {
+    const VoxelGrid& grid = document.voxels;
+    root["voxel"] = {{"size", {grid.nx(), grid.ny(), grid.nz()}}, {"labels", grid.labels()}};
+    const std::vector<int64_t> counts = grid.labelCounts();
+    for (const Part& part : document.assembly.parts) parts.push_back({{"id", part.id}, {"voxelCount", counts[part.id]}});
+    root["parts"] = parts;
+  } else {
+    for (const Part& part : document.assembly.parts) {
+      json entry = {{"id", part.id}};
+      if (!part.name.empty()) entry["name"] = part.name;
+      parts.push_back(entry);
+    }
+    root["parts"] = parts;
+    json contacts = json::array();
+    for (const Contact& contact : document.assembly.contacts) {
+      contacts.push_back({{"a", document.assembly.parts[contact.a].id},
+                          {"b", document.assembly.parts[contact.b].id},
+                          {"normal", contact.normal},
+                          {"area", contact.area}});
+    }
+    root["contacts"] = contacts;
+    if (!document.geometryJson.empty()) {
+      for (auto& [key, value] : json::parse(document.geometryJson).items()) root[key] = value;
+    }
+  }
+  return root.dump(indent);
+}
+
+}  // namespace desia

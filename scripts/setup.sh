@@ -1,0 +1,61 @@
+#!/usr/bin/env bash
+# Installs everything desia needs on a fresh Debian bookworm machine, from Debian's packages and the
+# npm registry only (see ../shared/toolchain.md). Safe to run again: every step checks first.
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+cd "$root"
+
+log() { printf '[setup] %s\n' "$*"; }
+sudo_if_needed() { if [ "$(id -u)" = 0 ]; then "$@"; else sudo "$@"; fi; }
+
+debian_packages=(
+  build-essential cmake pkg-config
+  libgtest-dev libbenchmark-dev
+  libeigen3-dev nlohmann-json3-dev libglpk-dev zlib1g-dev
+  emscripten chromium
+)
+# Node.js: keep whatever node/npm the machine has (a newer nodejs package ships npm itself and
+# conflicts with Debian's npm package); install Debian's only when the commands are missing.
+command -v node >/dev/null 2>&1 || debian_packages+=(nodejs)
+command -v npm >/dev/null 2>&1 || debian_packages+=(npm)
+
+missing=()
+for p in "${debian_packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
+done
+if [ "${#missing[@]}" -gt 0 ]; then
+  log "installing Debian packages: ${missing[*]}"
+  sudo_if_needed apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive sudo_if_needed apt-get install -y -qq --no-install-recommends "${missing[@]}"
+else
+  log "Debian packages present"
+fi
+
+# GLPK C sources for the WebAssembly build (the host libglpk cannot be linked into wasm).
+glpk_dir="$root/third_party/glpk-5.0"
+if [ ! -f "$glpk_dir/src/glpk.h" ]; then
+  log "fetching GLPK 5.0 sources from Debian's source packages"
+  src_list=/etc/apt/sources.list.d/debian-src.sources
+  if [ ! -f "$src_list" ]; then
+    if [ -f /etc/apt/sources.list.d/debian.sources ]; then
+      sed 's/^Types: deb$/Types: deb-src/' /etc/apt/sources.list.d/debian.sources | sudo_if_needed tee "$src_list" >/dev/null
+    else
+      grep -h '^deb ' /etc/apt/sources.list | sed 's/^deb /deb-src /' | sudo_if_needed tee /etc/apt/sources.list.d/debian-src.list >/dev/null
+    fi
+    sudo_if_needed apt-get update -qq
+  fi
+  mkdir -p "$root/third_party"
+  (cd "$root/third_party" && apt-get source --download-only glpk >/dev/null 2>&1 || apt-get source --download-only glpk)
+  (cd "$root/third_party" && tar xzf glpk_5.0.orig.tar.gz)
+else
+  log "GLPK sources present"
+fi
+
+# npm packages (three, playwright-core); package-lock.json pins them.
+if [ ! -d "$root/node_modules/three" ] || [ ! -d "$root/node_modules/playwright-core" ]; then
+  log "installing npm packages"
+  if [ -f package-lock.json ]; then npm ci --no-audit --no-fund; else npm install --no-audit --no-fund; fi
+else
+  log "npm packages present"
+fi
+log "done"

@@ -1,0 +1,237 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Smoke test of the playground in headless Chromium: the page loads, its worker runs the
+// WebAssembly core on the bundled examples, a broken file shows an error without breaking the
+// page, and nothing is requested from outside 127.0.0.1.
+//
+//   node --test tests/browser/
+//
+// Needs Debian's /usr/bin/chromium, node_modules (three, playwright-core) and a WebAssembly build
+// (bash scripts/build.sh wasm). Screenshots go to test-artifacts/.
+
+import { after, before, describe, it } from 'node:test';
+import assert from 'node:assert/strict';
+import { spawn } from 'node:child_process';
+import { existsSync } from 'node:fs';
+import { mkdir, mkdtemp, rm } from 'node:fs/promises';
+import os from 'node:os';
+import path from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { chromium } from 'playwright-core';
+
+const CHROMIUM_PATH = '/usr/bin/chromium';
+const REPO_ROOT = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..', '..');
+const ARTIFACTS_DIR = path.join(REPO_ROOT, 'test-artifacts');
+
+const FIRST_EXAMPLE = 'Cube_4x4x4_K9.puz';
+const BUNNY_EXAMPLE = 'bunny_15x14x11_K80.puz';
+const SETTLE_TIMEOUT_MS = 30_000;
+
+// Flags from shared/toolchain.md (no background traffic on a closed network), plus SwiftShader:
+// with --disable-gpu, current Chromium only offers software WebGL when explicitly allowed.
+const CHROMIUM_ARGS = [
+  '--headless',
+  '--no-sandbox',
+  '--disable-gpu',
+  '--disable-quic',
+  '--no-first-run',
+  '--disable-background-networking',
+  '--disable-component-update',
+  '--disable-sync',
+  '--enable-unsafe-swiftshader',
+  '--use-angle=swiftshader',
+];
+
+/** Fails early, with the fix in the message, when something the test needs is missing. */
+function checkPrerequisites() {
+  const required = [
+    [CHROMIUM_PATH, 'Chromium is missing: install Debian\'s chromium package (bash scripts/setup.sh)'],
+    [path.join(REPO_ROOT, 'node_modules/three/build/three.module.js'), 'three is missing: run npm ci'],
+    [path.join(REPO_ROOT, 'wasm/index.js'), 'wasm/index.js is missing'],
+    [path.join(REPO_ROOT, 'dist/desia_wasm.wasm'), 'the WebAssembly build is missing: run bash scripts/build.sh wasm'],
+    [path.join(REPO_ROOT, 'examples/voxel', FIRST_EXAMPLE), `examples/voxel/${FIRST_EXAMPLE} is missing`],
+    [path.join(REPO_ROOT, 'examples/voxel', BUNNY_EXAMPLE), `examples/voxel/${BUNNY_EXAMPLE} is missing`],
+  ];
+  for (const [file, message] of required) {
+    if (!existsSync(file)) throw new Error(`${message} (${file} not found)`);
+  }
+}
+
+/** Starts scripts/serve.mjs on a free port; resolves with { url, stop }. */
+function startServer() {
+  const child = spawn(process.execPath, [path.join(REPO_ROOT, 'scripts/serve.mjs'), '--port', '0'], {
+    cwd: REPO_ROOT,
+    stdio: ['ignore', 'pipe', 'pipe'],
+  });
+  let stderr = '';
+  child.stderr.on('data', (chunk) => { stderr += chunk; });
+  const stop = () => new Promise((resolve) => {
+    if (child.exitCode !== null || child.signalCode !== null) return resolve();
+    child.once('exit', () => resolve());
+    child.kill('SIGTERM');
+  });
+  return new Promise((resolve, reject) => {
+    const timer = setTimeout(() => {
+      stop();
+      reject(new Error(`scripts/serve.mjs printed no URL within 10 s; stderr: ${stderr}`));
+    }, 10_000);
+    let stdout = '';
+    child.stdout.on('data', (chunk) => {
+      stdout += chunk;
+      const match = /^(http:\/\/127\.0\.0\.1:\d+\/web\/)\s*$/m.exec(stdout);
+      if (match) {
+        clearTimeout(timer);
+        resolve({ url: match[1], stop });
+      }
+    });
+    child.once('exit', (code) => {
+      clearTimeout(timer);
+      reject(new Error(`scripts/serve.mjs exited with code ${code}; stderr: ${stderr}`));
+    });
+  });
+}
+
+/** Deterministic non-text bytes: what a user gets when picking the wrong file. */
+function garbageBytes(length) {
+  const bytes = Buffer.alloc(length);
+  let state = 0x2545f491;
+  for (let i = 0; i < length; i += 1) {
+    state = (Math.imul(state, 1103515245) + 12345) >>> 0;
+    bytes[i] = state >>> 24;
+  }
+  return bytes;
+}
+
+async function screenshot(page, name) {
+  await page.screenshot({ path: path.join(ARTIFACTS_DIR, `${name}.png`) });
+}
+
+async function pageState(page) {
+  return page.evaluate(() => ({
+    status: document.body.dataset.status,
+    source: document.body.dataset.source,
+    webgl: document.body.dataset.webgl,
+    verdict: document.querySelector('#verdict')?.textContent ?? '',
+    verdictCode: document.querySelector('#verdict')?.dataset.verdict ?? '',
+    key: document.querySelector('#verdict')?.dataset.key ?? '',
+    parts: document.querySelector('#parts-count')?.textContent ?? '',
+    meshes: document.querySelector('#viewport')?.dataset.parts ?? '',
+    error: document.querySelector('#error')?.hidden ? '' : document.querySelector('#error')?.textContent ?? '',
+  }));
+}
+
+/** Waits until the page has finished with `source` (ready or error) and returns its state. */
+async function waitForSettled(page, source) {
+  try {
+    await page.waitForFunction(
+      (expected) => document.body.dataset.source === expected
+        && (document.body.dataset.status === 'ready' || document.body.dataset.status === 'error'),
+      source,
+      { timeout: SETTLE_TIMEOUT_MS },
+    );
+  } catch (error) {
+    const state = await pageState(page).catch(() => ({}));
+    await screenshot(page, `timeout-${source}`).catch(() => {});
+    throw new Error(`page did not settle on ${source} within ${SETTLE_TIMEOUT_MS} ms: ${JSON.stringify(state)}`);
+  }
+  return pageState(page);
+}
+
+/** Like waitForSettled, but a page error is a test failure that quotes the page's message. */
+async function waitForReady(page, source) {
+  const state = await waitForSettled(page, source);
+  if (state.status !== 'ready') {
+    await screenshot(page, `error-${source}`);
+    assert.fail(`the page shows an error for ${source}: ${state.error}`);
+  }
+  return state;
+}
+
+function assertInterlockingWithKey(state, key) {
+  assert.equal(state.verdictCode, 'interlocking', `verdict: ${state.verdict}`);
+  assert.match(state.verdict, new RegExp(`^Interlocking\\b.*\\bpart ${key}$`));
+  assert.equal(state.key, String(key));
+}
+
+describe('playground in headless Chromium', { timeout: 60_000 }, () => {
+  let server;
+  let context;
+  let page;
+  let userDataDir;
+  const requestedUrls = [];
+  const pageErrors = [];
+
+  before(async () => {
+    checkPrerequisites();
+    await mkdir(ARTIFACTS_DIR, { recursive: true });
+    server = await startServer();
+    userDataDir = await mkdtemp(path.join(os.tmpdir(), 'desia-chromium-'));
+    context = await chromium.launchPersistentContext(userDataDir, {
+      executablePath: CHROMIUM_PATH,
+      headless: true,
+      args: CHROMIUM_ARGS,
+      viewport: { width: 1280, height: 800 },
+    });
+    // Context-wide, so requests from the worker are seen as well as the page's.
+    context.on('request', (request) => requestedUrls.push(request.url()));
+    page = context.pages()[0] ?? await context.newPage();
+    page.on('request', (request) => requestedUrls.push(request.url()));
+    page.on('pageerror', (error) => pageErrors.push(error.message));
+  });
+
+  after(async () => {
+    await context?.close();
+    await server?.stop();
+    if (userDataDir) await rm(userDataDir, { recursive: true, force: true });
+  });
+
+  it('loads and reports the first example as interlocking with key 1', async () => {
+    await page.goto(server.url);
+    const state = await waitForReady(page, FIRST_EXAMPLE);
+    await screenshot(page, 'playground-first-example');
+    assertInterlockingWithKey(state, 1);
+    assert.equal(state.parts, '9');
+    if (state.webgl === 'on') assert.equal(state.meshes, '9', 'one mesh per part');
+  });
+
+  it('shows the 80-part bunny as interlocking', async () => {
+    await page.selectOption('#example-select', BUNNY_EXAMPLE);
+    const state = await waitForReady(page, BUNNY_EXAMPLE);
+    assertInterlockingWithKey(state, 1);
+    assert.equal(state.parts, '80');
+    if (state.webgl === 'on') assert.equal(state.meshes, '80', 'one mesh per part');
+    await screenshot(page, 'playground-bunny');
+    await page.locator('#explode-range').fill('0.6');
+    await screenshot(page, 'playground-bunny-exploded');
+  });
+
+  it('shows an error for a broken file and recovers', async () => {
+    await page.setInputFiles('#file-input', {
+      name: 'bad.puz',
+      mimeType: 'application/octet-stream',
+      buffer: garbageBytes(512),
+    });
+    const failed = await waitForSettled(page, 'bad.puz');
+    await screenshot(page, 'playground-bad-file');
+    assert.equal(failed.status, 'error', `expected an error, got verdict "${failed.verdict}"`);
+    assert.match(failed.error, /bad\.puz/, 'the error names the file');
+    // The page's own prefix is "Could not check bad.puz: "; the core's message must follow it.
+    const coreMessage = failed.error.replace(/^Could not check bad\.puz:\s*/, '');
+    assert.ok(coreMessage.length > 5, `the core's message is missing: "${failed.error}"`);
+
+    await page.selectOption('#example-select', FIRST_EXAMPLE);
+    const recovered = await waitForReady(page, FIRST_EXAMPLE);
+    assertInterlockingWithKey(recovered, 1);
+    assert.equal(recovered.error, '', 'the error box is cleared');
+  });
+
+  it('never requests anything outside 127.0.0.1 and throws no page errors', () => {
+    const external = requestedUrls.filter((url) => {
+      const { protocol, hostname } = new URL(url);
+      return !['data:', 'blob:'].includes(protocol) && hostname !== '127.0.0.1';
+    });
+    assert.deepEqual(external, [], 'requests left the origin');
+    assert.ok(requestedUrls.some((url) => url.endsWith('/dist/desia_wasm.wasm')), 'the worker fetched the wasm');
+    assert.deepEqual(pageErrors, []);
+  });
+});
