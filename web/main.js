@@ -56,7 +56,8 @@ const ui = {
   statusText: byId('status-text'),
   viewport: byId('viewport'),
   viewerNotice: byId('viewer-notice'),
-  explodeRange: byId('explode-range'),
+  disassemblyRange: byId('disassembly-range'),
+  disassemblyStep: byId('disassembly-step'),
   error: byId('error'),
   sourceName: byId('source-name'),
   verdict: byId('verdict'),
@@ -147,7 +148,7 @@ class CoreWorker {
     worker.postMessage({ type: 'init' });
   }
 
-  /** Runs `op` ('check' | 'parse') on `text`; resolves with the core's value. */
+  /** Runs `op` ('check' | 'parse') on `text`; resolves with `{ value, elapsedMs }`. */
   run(op, text, options = {}) {
     if (!this.#worker) {
       // We gave up restarting after repeated failures; a new request is worth one more try.
@@ -170,7 +171,7 @@ class CoreWorker {
         this.#onReady(message.version);
         break;
       case 'result':
-        this.#settle(message.id, (request) => request.resolve(message.value));
+        this.#settle(message.id, (request) => request.resolve({ value: message.value, elapsedMs: message.elapsedMs }));
         break;
       case 'error':
         if (message.id === null || message.id === undefined) {
@@ -227,7 +228,7 @@ const CUBE_FACES = [
 /**
  * Builds, for every part id, the triangles of its boundary: a face between two voxels of the
  * same part is interior and skipped; faces against empty space or another part are kept (the
- * latter show up in the exploded view). Labels are in index order x + nx*(y + ny*z).
+ * latter show up when parts move apart). Labels are in index order x + nx*(y + ny*z).
  * Returns Map(partId -> { positions, normals, indices }) as typed arrays, plus the bounds of
  * all occupied voxels.
  */
@@ -328,8 +329,8 @@ class AssemblyView {
   #controls;
   #content = new THREE.Group();
   #meshes = new Map();
-  #explodeOffsets = new Map();
-  #explode = 0;
+  #motions = new Map();
+  #disassemblyStep = 0;
   #frameRequest = 0;
   #raycaster = new THREE.Raycaster();
   #hoverLabel;
@@ -452,7 +453,7 @@ class AssemblyView {
     const center = box.getCenter(new THREE.Vector3());
     const radius = Math.max(box.getSize(new THREE.Vector3()).length() / 2, 1);
     const halfFov = THREE.MathUtils.degToRad(this.#camera.fov / 2);
-    const distance = (radius / Math.sin(halfFov)) * 1.1;
+    const distance = (radius / Math.sin(halfFov)) * 1.25;
     const viewDirection = new THREE.Vector3(1, 0.85, 1.5).normalize();
     this.#camera.position.copy(center).addScaledVector(viewDirection, distance);
     this.#camera.near = distance / 100;
@@ -463,8 +464,8 @@ class AssemblyView {
     this.#controls.update();
   }
 
-  /** Highlights the key (or the witness group on failure) and prepares the exploded view. */
-  applyReport(report, size) {
+  /** Highlights the key (or the witness group on failure) and prepares the removal animation. */
+  applyReport(report) {
     if (!this.available) return;
     const keyId = report.key;
     const witnessParts = new Set(report.witness?.parts ?? []);
@@ -484,17 +485,27 @@ class AssemblyView {
       material.needsUpdate = true;
       if (dimmed) mesh.children[0].material.opacity = 0.12;
     }
-    this.#explodeOffsets = explodeOffsets(report, Math.max(...size));
-    this.setExplode(this.#explode);
+    this.#motions = removalMotions(report);
+    this.setDisassemblyStep(0);
   }
 
-  /** 0 = assembled, 1 = every part moved out along its removal path. */
-  setExplode(amount) {
-    this.#explode = amount;
+  /**
+   * Shows the disassembly at `step` (0 = assembled): the part at position i of the order is on
+   * its way out while step is between i and i + 1, and gone after that. Only the last part,
+   * which has no path, stays.
+   */
+  setDisassemblyStep(step) {
+    this.#disassemblyStep = step;
     for (const [partId, mesh] of this.#meshes) {
-      const offset = this.#explodeOffsets.get(partId);
-      if (offset) mesh.position.copy(offset).multiplyScalar(amount);
-      else mesh.position.set(0, 0, 0);
+      const motion = this.#motions.get(partId);
+      if (!motion) {
+        mesh.position.set(0, 0, 0);
+        mesh.visible = true;
+        continue;
+      }
+      const progress = THREE.MathUtils.clamp(step - motion.index, 0, 1);
+      mesh.visible = progress < 1 || motion.waypoints.length === 1;
+      mesh.position.copy(pointAlong(motion.waypoints, progress));
     }
     this.requestRender();
   }
@@ -509,7 +520,7 @@ class AssemblyView {
     }
     this.#content.clear();
     this.#meshes.clear();
-    this.#explodeOffsets = new Map();
+    this.#motions = new Map();
     if (!this.available) return;
     const grid = this.#scene.getObjectByName('grid');
     if (grid) {
@@ -548,35 +559,51 @@ class AssemblyView {
     this.#raycaster.setFromCamera(pointer, this.#camera);
     const hit = this.#raycaster
       .intersectObjects([...this.#meshes.values()], false)
-      .find((candidate) => candidate.object.material.opacity === 1);
+      .find((candidate) => candidate.object.visible && candidate.object.material.opacity === 1);
     this.#hoverLabel.hidden = !hit;
     if (hit) this.#hoverLabel.textContent = `part ${hit.object.userData.partId}`;
   }
 }
 
+/** How far a part keeps going after its last move before it disappears, in voxels. */
+const RUN_OUT_VOXELS = 2;
+
 /**
- * Offset of each part in the fully exploded view: its whole removal path, then further along its
- * last move, farther for parts removed earlier, so removed parts do not pile up on each other.
+ * The removal motion of each part, from the report's disassembly: the waypoints of its path
+ * (each move translates it by `steps` voxels along `dir`) plus a short run-out along its last
+ * move. Returns Map(partId -> { index in the order, waypoints }).
  */
-function explodeOffsets(report, maxDimension) {
-  const offsets = new Map();
+function removalMotions(report) {
+  const motions = new Map();
   const disassembly = report.disassembly;
-  if (!disassembly?.order?.length) return offsets;
-  const { order, paths } = disassembly;
-  const spread = Math.max(order.length - 1, 1);
-  order.forEach((partId, index) => {
-    const path = paths?.[index] ?? [];
-    const offset = new THREE.Vector3();
+  if (!disassembly?.order?.length) return motions;
+  disassembly.order.forEach((partId, index) => {
+    const path = disassembly.paths?.[index] ?? [];
+    const waypoints = [new THREE.Vector3()];
     for (const move of path) {
-      offset.addScaledVector(directionVector(move.dir, report.baseDirections), Number(move.steps) || 0);
+      const step = directionVector(move.dir, report.baseDirections).multiplyScalar(Number(move.steps) || 0);
+      waypoints.push(waypoints[waypoints.length - 1].clone().add(step));
     }
     if (path.length > 0) {
       const last = directionVector(path[path.length - 1].dir, report.baseDirections);
-      offset.addScaledVector(last, (maxDimension * (order.length - 1 - index)) / spread);
+      waypoints.push(waypoints[waypoints.length - 1].clone().addScaledVector(last, RUN_OUT_VOXELS));
     }
-    offsets.set(partId, offset);
+    motions.set(partId, { index, waypoints });
   });
-  return offsets;
+  return motions;
+}
+
+/** The point at `fraction` (0..1) of the polyline's length. */
+function pointAlong(waypoints, fraction) {
+  let total = 0;
+  for (let i = 1; i < waypoints.length; i += 1) total += waypoints[i].distanceTo(waypoints[i - 1]);
+  let remaining = fraction * total;
+  for (let i = 1; i < waypoints.length; i += 1) {
+    const length = waypoints[i].distanceTo(waypoints[i - 1]);
+    if (remaining <= length && length > 0) return waypoints[i - 1].clone().lerp(waypoints[i], remaining / length);
+    remaining -= length;
+  }
+  return waypoints[waypoints.length - 1].clone();
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -584,6 +611,12 @@ function explodeOffsets(report, maxDimension) {
 
 function formatList(values, empty = 'none') {
   return values?.length ? values.join(', ') : empty;
+}
+
+/** Long orders are shortened here; the full list is under "Removal paths". */
+function formatOrder(order) {
+  if (order.length <= 12) return order.join(' → ');
+  return `${order.slice(0, 8).join(' → ')} → … → ${order.slice(-2).join(' → ')}`;
 }
 
 function formatMoves(path) {
@@ -611,13 +644,11 @@ function renderReport(report, elapsedMs) {
   ui.key.textContent = hasKey ? `part ${report.key}` : 'none';
   ui.keyDirections.textContent = formatList(report.keyDirections);
   ui.baseDirections.textContent = formatList(report.baseDirections?.map((direction) => direction.label));
-  ui.order.textContent = report.disassembly
-    ? report.disassembly.order.join(' → ')
-    : 'none found';
+  ui.order.textContent = report.disassembly ? formatOrder(report.disassembly.order) : 'none found';
   ui.witness.textContent = report.witness
     ? `parts ${formatList(report.witness.parts)} can move along ${report.witness.direction}`
     : 'none';
-  ui.timing.textContent = `${elapsedMs.toFixed(1)} ms (round trip to the worker)`;
+  ui.timing.textContent = Number.isFinite(elapsedMs) ? `${elapsedMs.toFixed(1)} ms` : '—';
   renderPaths(report.disassembly);
   renderGraphs(report.graphs);
 }
@@ -693,23 +724,21 @@ async function loadAssembly(name, readText) {
   try {
     const text = await readText();
     if (!isCurrent()) return;
-    const document_ = await core.run('parse', text);
+    const { value: document_ } = await core.run('parse', text);
     if (!isCurrent()) return;
     view.show(document_);
-    const started = performance.now();
-    const report = await core.run('check', text, { method: ui.methodSelect.value });
-    const elapsed = performance.now() - started;
+    const { value: report, elapsedMs } = await core.run('check', text, { method: ui.methodSelect.value });
     if (!isCurrent()) return;
     current = { name, text };
-    renderReport(report, elapsed);
-    view.applyReport(report, document_.voxel?.size ?? [1, 1, 1]);
-    ui.explodeRange.disabled = !view.available || !report.disassembly;
+    renderReport(report, elapsedMs);
+    view.applyReport(report);
+    setUpDisassemblySlider(view.available ? report.disassembly : null);
     setStatus('ready', `Checked ${name}`);
   } catch (error) {
     if (!isCurrent()) return;
     current = null;
     view.clear();
-    ui.explodeRange.disabled = true;
+    setUpDisassemblySlider(null);
     resetReport('No result');
     showError(`Could not check ${name}: ${error.message}`);
     setStatus('error');
@@ -739,6 +768,31 @@ function loadUserFile(file) {
     }
     return file.text();
   });
+}
+
+// ---------------------------------------------------------------------------------------------
+// The disassembly slider: 0 = assembled, i..i+1 = the (i+1)-th part of the order moving out.
+
+let shownDisassembly = null;
+
+function setUpDisassemblySlider(disassembly) {
+  const removable = (disassembly?.order?.length ?? 0) - 1;
+  shownDisassembly = removable > 0 ? disassembly : null;
+  ui.disassemblyRange.disabled = !shownDisassembly;
+  ui.disassemblyRange.max = String(Math.max(removable, 1));
+  ui.disassemblyRange.value = '0';
+  ui.disassemblyStep.textContent = shownDisassembly ? 'assembled' : '';
+}
+
+function showDisassemblyStep() {
+  const step = Number(ui.disassemblyRange.value);
+  view.setDisassemblyStep(step);
+  if (!shownDisassembly) return;
+  const { order } = shownDisassembly;
+  const index = Math.min(Math.floor(step), order.length - 1);
+  if (step === 0) ui.disassemblyStep.textContent = 'assembled';
+  else if (index >= order.length - 1) ui.disassemblyStep.textContent = `part ${order[order.length - 1]} left`;
+  else ui.disassemblyStep.textContent = `removing part ${order[index]} (${index + 1} of ${order.length - 1})`;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -802,7 +856,7 @@ function wireControls() {
     const { name, text } = current;
     loadAssembly(name, async () => text);
   });
-  ui.explodeRange.addEventListener('input', () => view.setExplode(Number(ui.explodeRange.value)));
+  ui.disassemblyRange.addEventListener('input', showDisassemblyStep);
 }
 
 function main() {

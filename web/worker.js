@@ -7,7 +7,7 @@
 //   in:  { type: 'init' }
 //        { type: 'run', id, op: 'check' | 'parse', text, options }
 //   out: { type: 'ready', version }
-//        { type: 'result', id, value }
+//        { type: 'result', id, value, elapsedMs }   elapsedMs: time spent in the core
 //        { type: 'error', id, message, fatal? }   id is null for a failed init.
 // `fatal: true` says the module itself is broken (a WebAssembly trap or abort): the page should
 // start a fresh worker instead of sending more work here.
@@ -79,8 +79,10 @@ async function handleRun({ id, op, text, options }) {
     return;
   }
   try {
+    const started = performance.now();
     const [value, transfer] = operation(core, String(text ?? ''), options);
-    self.postMessage({ type: 'result', id, value }, transfer);
+    const elapsedMs = performance.now() - started;
+    self.postMessage({ type: 'result', id, value, elapsedMs }, transfer);
   } catch (error) {
     self.postMessage({ type: 'error', id, message: messageOf(error), fatal: isFatal(error) });
   }

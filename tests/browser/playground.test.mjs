@@ -192,6 +192,10 @@ describe('playground in headless Chromium', { timeout: 60_000 }, () => {
     assertInterlockingWithKey(state, 1);
     assert.equal(state.parts, '9');
     if (state.webgl === 'on') assert.equal(state.meshes, '9', 'one mesh per part');
+    // Half-way through removing the second part of the order.
+    await page.locator('#disassembly-range').fill('1.5');
+    assert.match(await page.locator('#disassembly-step').textContent(), /^removing part \d+ \(2 of 8\)$/);
+    await screenshot(page, 'playground-first-example-disassembly');
   });
 
   it('shows the 80-part bunny as interlocking', async () => {
@@ -201,8 +205,6 @@ describe('playground in headless Chromium', { timeout: 60_000 }, () => {
     assert.equal(state.parts, '80');
     if (state.webgl === 'on') assert.equal(state.meshes, '80', 'one mesh per part');
     await screenshot(page, 'playground-bunny');
-    await page.locator('#explode-range').fill('0.6');
-    await screenshot(page, 'playground-bunny-exploded');
   });
 
   it('shows an error for a broken file and recovers', async () => {

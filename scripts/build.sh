@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# Builds desia. `build.sh native` (CLI, tests, benchmarks in build/native), `build.sh wasm` (the
+# embind module in dist/ and the WebAssembly test suite in build/wasm), `build.sh` (both).
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+cd "$root"
+jobs="$(nproc 2>/dev/null || echo 2)"
+what="${1:-all}"
+
+build_native() {
+  cmake -S . -B build/native -DCMAKE_BUILD_TYPE=Release >/dev/null
+  cmake --build build/native -j "$jobs"
+}
+
+build_wasm() {
+  # Debian's Emscripten needs node to find Debian's acorn module (toolchain.md #1).
+  export NODE_PATH="/usr/share/nodejs${NODE_PATH:+:$NODE_PATH}"
+  # node is the emulator for the test suite; its fetch breaks Emscripten 3.1.6 (toolchain.md #3/#7).
+  emcmake cmake -S . -B build/wasm -DCMAKE_BUILD_TYPE=Release \
+    "-DCMAKE_CROSSCOMPILING_EMULATOR=$(command -v node);--no-experimental-fetch" >/dev/null
+  cmake --build build/wasm -j "$jobs"
+}
+
+case "$what" in
+  native) build_native ;;
+  wasm) build_wasm ;;
+  all) build_native; build_wasm ;;
+  *) echo "usage: scripts/build.sh [native|wasm|all]" >&2; exit 2 ;;
+esac

@@ -1,0 +1,110 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Type declarations of the desia package (hand-written; tests/node/api.test.mjs checks that the
+// names here match what wasm/index.js exports).
+
+/** Where to find the WebAssembly binary; by default `dist/desia_wasm.wasm` beside the package. */
+export interface LoadOptions {
+  /** URL (browser) or file path / file: URL (node) of `desia_wasm.wasm`. */
+  wasmUrl?: string | URL;
+  /** The bytes of `desia_wasm.wasm`, when the caller already has them. */
+  wasmBinary?: ArrayBuffer | Uint8Array;
+}
+
+export type CheckMethod = 'dbg' | 'lp' | 'both';
+export type VerdictName = 'interlocking' | 'deadlocked' | 'not-interlocking';
+export type ErrorCode = 'bad-input' | 'too-large' | 'unsupported' | 'internal';
+
+export interface CheckOptions {
+  /** 'dbg' (directional blocking graphs, default), 'lp' (linear program) or 'both'. */
+  method?: CheckMethod;
+  /** Name used in error messages, e.g. the file name. */
+  source?: string;
+}
+
+/** A part or part group that can move: the evidence of a negative verdict. */
+export interface Witness {
+  parts: number[];
+  /** Common direction label ('+x'), or null when the parts move in different directions. */
+  direction: string | null;
+  velocities: [number, number, number][];
+}
+
+export interface Verdict {
+  verdict: VerdictName;
+  interlocking: boolean;
+  deadlocked: boolean;
+  reason: string;
+  /** Part id of the key, or null. */
+  key: number | null;
+  /** Free directions of the key, e.g. ['+y']. */
+  keyDirections: string[];
+  witness: Witness | null;
+}
+
+export interface Move {
+  /** Direction label, e.g. '+y'. */
+  dir: string;
+  /** Unit steps (voxels) along dir; the last move of a path clears the remaining parts. */
+  steps: number;
+}
+
+export interface BlockingGraph {
+  direction: string;
+  vector: [number, number, number];
+  /** [from, to] part ids: `from` is blocked by `to` along the direction. */
+  edges: [number, number][];
+  /** Strongly connected components (part ids). */
+  components: number[][];
+}
+
+/** The report of `check`; the same object as `desia check --json`. */
+export interface CheckReport extends Verdict {
+  parts: number;
+  partIds: number[];
+  kind: 'voxel' | 'plate' | 'frame' | 'contacts';
+  method: CheckMethod;
+  baseDirections: { label: string; vector: [number, number, number] }[];
+  graphs: BlockingGraph[];
+  /** Per-method verdicts when method is 'both'. */
+  methods?: { dbg: Verdict; lp: Verdict };
+  /** Removal order (part ids) and one path per removed part; null when no disassembly exists. */
+  disassembly: { order: number[]; paths: Move[][] } | null;
+  /** When no disassembly exists: the parts removed before getting stuck, and the stuck ones. */
+  disassemblyFailure?: { removed: number[]; stuck: number[] };
+}
+
+/** The JSON assembly document (see docs/json-schema.md). */
+export interface AssemblyDocument {
+  format: 'desia-assembly';
+  version: 1;
+  kind: 'voxel' | 'plate' | 'frame' | 'contacts';
+  name?: string;
+  voxel?: { size: [number, number, number]; labels: number[] };
+  parts: { id: number; name?: string; voxelCount?: number }[];
+  contacts?: { a: number; b: number; normal: [number, number, number]; area?: number }[];
+  [section: string]: unknown;
+}
+
+/** Synchronous core, for workers and node. */
+export interface DesiaCore {
+  check(text: string, options?: CheckOptions): CheckReport;
+  parseDocument(text: string, options?: { source?: string }): AssemblyDocument;
+  version(): string;
+}
+
+/** Promise-based API. */
+export interface Desia {
+  check(text: string, options?: CheckOptions): Promise<CheckReport>;
+  parseDocument(text: string, options?: { source?: string }): Promise<AssemblyDocument>;
+  version(): string;
+}
+
+/** Error thrown for bad input (with the core's message, naming file, line and value) and failures. */
+export class DesiaError extends Error {
+  constructor(message: string, code?: ErrorCode);
+  readonly name: 'DesiaError';
+  readonly code: ErrorCode;
+}
+
+export function loadDesiaModule(options?: LoadOptions): Promise<DesiaCore>;
+export function createDesia(options?: LoadOptions): Promise<Desia>;

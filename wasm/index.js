@@ -1,0 +1,104 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The desia package entry point: owns loading of the WebAssembly module in browsers, workers and
+// node, so callers need no setup() and no path fiddling. All analysis happens in the C++ core.
+
+const isNode = typeof process === 'object' && typeof process.versions?.node === 'string' &&
+  typeof window === 'undefined' && typeof importScripts === 'undefined';
+
+/** Error thrown for bad input and failures; `code` is 'bad-input', 'too-large', 'unsupported' or 'internal'. */
+export class DesiaError extends Error {
+  constructor(message, code = 'internal') {
+    super(message);
+    this.name = 'DesiaError';
+    this.code = code;
+  }
+}
+
+function rethrow(error) {
+  if (error instanceof DesiaError) throw error;
+  if (error instanceof Error && typeof error.code === 'string') throw new DesiaError(error.message, error.code);
+  if (error instanceof Error) throw new DesiaError(error.message, 'internal');
+  // A bare number is a C++ exception that escaped the bindings' guard: a bug, but never hide it.
+  throw new DesiaError(`internal error: uncaught native exception (${String(error)})`, 'internal');
+}
+
+function requireText(text, what) {
+  if (typeof text !== 'string') throw new DesiaError(`${what} must be a string, got ${typeof text}`, 'bad-input');
+}
+
+async function nodeWasmBinary(wasmUrl) {
+  // Emscripten 3.1.6's ES6 output expects CommonJS globals in node (toolchain.md #6) and its
+  // fetch-based loader fails on file paths there (#3): define the globals, pass the bytes.
+  const [{ createRequire }, { fileURLToPath }, path, fs] = await Promise.all([
+    import('node:module'), import('node:url'), import('node:path'), import('node:fs/promises'),
+  ]);
+  globalThis.require ??= createRequire(import.meta.url);
+  const distDir = fileURLToPath(new URL('../dist/', import.meta.url));
+  globalThis.__dirname ??= distDir;
+  const file = wasmUrl ? (String(wasmUrl).startsWith('file:') ? fileURLToPath(wasmUrl) : String(wasmUrl))
+    : path.join(distDir, 'desia_wasm.wasm');
+  return fs.readFile(file);
+}
+
+/**
+ * Loads the WebAssembly module and returns a synchronous core (use it inside a worker or in node).
+ * @param {{wasmUrl?: string|URL, wasmBinary?: ArrayBuffer|Uint8Array}} [options]
+ */
+export async function loadDesiaModule(options = {}) {
+  const { default: createDesiaModule } = await import('../dist/desia_wasm.js');
+  const moduleOptions = {};
+  if (options.wasmBinary) {
+    moduleOptions.wasmBinary = options.wasmBinary;
+  } else if (isNode) {
+    moduleOptions.wasmBinary = await nodeWasmBinary(options.wasmUrl);
+  } else {
+    const url = options.wasmUrl ? String(options.wasmUrl) : new URL('../dist/desia_wasm.wasm', import.meta.url).href;
+    moduleOptions.locateFile = (file) => (file.endsWith('.wasm') ? url : file);
+  }
+  let module;
+  try {
+    module = await createDesiaModule(moduleOptions);
+  } catch (error) {
+    throw new DesiaError(`could not load the desia WebAssembly module: ${error?.message ?? error}`, 'internal');
+  }
+  return makeCore(module);
+}
+
+function makeCore(module) {
+  return {
+    /** Interlocking check of .puz or JSON text; same fields as `desia check --json`. */
+    check(text, { method = 'dbg', source = '<input>' } = {}) {
+      requireText(text, 'check: text');
+      try {
+        return module.check(text, String(method), String(source));
+      } catch (error) {
+        rethrow(error);
+      }
+    },
+    /** Parses .puz or JSON text into the JSON assembly document (plain object). */
+    parseDocument(text, { source = '<input>' } = {}) {
+      requireText(text, 'parseDocument: text');
+      try {
+        return module.parseDocument(text, String(source));
+      } catch (error) {
+        rethrow(error);
+      }
+    },
+    version() {
+      return module.version();
+    },
+  };
+}
+
+/**
+ * Promise-based API, the same in browsers and node.
+ * @param {{wasmUrl?: string|URL, wasmBinary?: ArrayBuffer|Uint8Array}} [options]
+ */
+export async function createDesia(options = {}) {
+  const core = await loadDesiaModule(options);
+  return {
+    check: async (text, checkOptions) => core.check(text, checkOptions),
+    parseDocument: async (text, parseOptions) => core.parseDocument(text, parseOptions),
+    version: () => core.version(),
+  };
+}
