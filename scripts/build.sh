@@ -8,7 +8,7 @@ jobs="$(nproc 2>/dev/null || echo 2)"
 what="${1:-all}"
 
 build_native() {
-  cmake -S . -B build/native -DCMAKE_BUILD_TYPE=Release >/dev/null
+  cmake -S . -B build/native -DCMAKE_BUILD_TYPE=Release -DDESIA_TESTS=ON -DDESIA_BENCHMARKS=ON -DDESIA_CLI=ON >/dev/null
   cmake --build build/native -j "$jobs"
 }
 
@@ -16,7 +16,7 @@ build_wasm() {
   # Debian's Emscripten needs node to find Debian's acorn module (toolchain.md #1).
   export NODE_PATH="/usr/share/nodejs${NODE_PATH:+:$NODE_PATH}"
   # node is the emulator for the test suite; its fetch breaks Emscripten 3.1.6 (toolchain.md #3/#7).
-  emcmake cmake -S . -B build/wasm -DCMAKE_BUILD_TYPE=Release \
+  emcmake cmake -S . -B build/wasm -DCMAKE_BUILD_TYPE=Release -DDESIA_TESTS=ON \
     "-DCMAKE_CROSSCOMPILING_EMULATOR=$(command -v node);--no-experimental-fetch" >/dev/null
   cmake --build build/wasm -j "$jobs"
 }

@@ -92,10 +92,6 @@ function hideError() {
   ui.error.hidden = true;
 }
 
-function replaceChildren(parent, children) {
-  parent.replaceChildren(...children);
-}
-
 function element(tag, text, className) {
   const node = document.createElement(tag);
   if (text !== undefined) node.textContent = text;
@@ -330,7 +326,6 @@ class AssemblyView {
   #content = new THREE.Group();
   #meshes = new Map();
   #motions = new Map();
-  #disassemblyStep = 0;
   #frameRequest = 0;
   #raycaster = new THREE.Raycaster();
   #hoverLabel;
@@ -385,15 +380,14 @@ class AssemblyView {
     this.#notice.hidden = !text;
   }
 
-  /** Draws a parsed document; `report` (optional) supplies key, witness and removal paths. */
-  show(document_, report = null) {
+  /** Draws a parsed document; `applyReport` adds what the check found. */
+  show(document_) {
     this.clear();
     if (!this.available) return;
     if (document_?.kind !== 'voxel' || !document_.voxel) {
       this.#showNotice(`No 3D view for "${document_?.kind ?? 'unknown'}" documents yet.`);
       return;
     }
-    this.#showNotice('');
     const { size, labels } = document_.voxel;
     const { surfaces, min, max } = buildPartSurfaces(size, labels);
     if (surfaces.size === 0) {
@@ -407,7 +401,6 @@ class AssemblyView {
     this.#addGrid(min, max, offset);
     this.#fitCamera(min, max, offset);
     this.#container.dataset.parts = String(this.#meshes.size);
-    if (report) this.applyReport(report, size);
     this.requestRender();
   }
 
@@ -452,8 +445,10 @@ class AssemblyView {
     box.translate(offset);
     const center = box.getCenter(new THREE.Vector3());
     const radius = Math.max(box.getSize(new THREE.Vector3()).length() / 2, 1);
-    const halfFov = THREE.MathUtils.degToRad(this.#camera.fov / 2);
-    const distance = (radius / Math.sin(halfFov)) * 1.25;
+    // The narrower of the vertical and horizontal fields of view decides what fits.
+    const verticalHalfFov = THREE.MathUtils.degToRad(this.#camera.fov / 2);
+    const horizontalHalfFov = Math.atan(Math.tan(verticalHalfFov) * this.#camera.aspect);
+    const distance = (radius / Math.sin(Math.min(verticalHalfFov, horizontalHalfFov))) * 1.25;
     const viewDirection = new THREE.Vector3(1, 0.85, 1.5).normalize();
     this.#camera.position.copy(center).addScaledVector(viewDirection, distance);
     this.#camera.near = distance / 100;
@@ -495,7 +490,6 @@ class AssemblyView {
    * which has no path, stays.
    */
   setDisassemblyStep(step) {
-    this.#disassemblyStep = step;
     for (const [partId, mesh] of this.#meshes) {
       const motion = this.#motions.get(partId);
       if (!motion) {
@@ -511,7 +505,7 @@ class AssemblyView {
   }
 
   clear() {
-    this.#hoverLabel && (this.#hoverLabel.hidden = true);
+    if (this.#hoverLabel) this.#hoverLabel.hidden = true;
     for (const mesh of this.#meshes.values()) {
       mesh.children[0].geometry.dispose();
       mesh.children[0].material.dispose();
@@ -522,6 +516,7 @@ class AssemblyView {
     this.#meshes.clear();
     this.#motions = new Map();
     if (!this.available) return;
+    this.#showNotice('');
     const grid = this.#scene.getObjectByName('grid');
     if (grid) {
       grid.geometry.dispose();
@@ -619,6 +614,26 @@ function formatOrder(order) {
   return `${order.slice(0, 8).join(' → ')} → … → ${order.slice(-2).join(' → ')}`;
 }
 
+function formatDisassemblyFailure(failure) {
+  if (!failure) return 'none found';
+  const removed = failure.removed?.length ? `after removing ${formatList(failure.removed)}, ` : '';
+  return `none: ${removed}parts ${formatList(failure.stuck)} are stuck`;
+}
+
+function formatWitness(witness) {
+  if (!witness) return 'none';
+  const how = witness.direction ? `along ${witness.direction}` : 'in different directions';
+  const noun = witness.parts?.length === 1 ? 'part' : 'parts';
+  return `${noun} ${formatList(witness.parts)} can move ${how}`;
+}
+
+/** With method 'both' the report carries each test's verdict; show them when they differ or agree. */
+function formatMethods(methods) {
+  if (!methods) return '';
+  const name = (verdict) => VERDICT_TITLES[verdict?.verdict]?.toLowerCase() ?? 'unknown';
+  return `Graph test: ${name(methods.dbg)}; LP test: ${name(methods.lp)}`;
+}
+
 function formatMoves(path) {
   if (!path?.length) return 'stays (last part)';
   return path.map((move) => `${move.dir}×${move.steps}`).join(', then ');
@@ -639,15 +654,15 @@ function renderReport(report, elapsedMs) {
   ui.verdict.textContent = verdict === 'interlocking' && hasKey ? `${title}, key: part ${report.key}` : title;
   ui.verdict.dataset.verdict = verdict;
   ui.verdict.dataset.key = hasKey ? String(report.key) : '';
-  ui.reason.textContent = report.reason ?? '';
+  ui.reason.textContent = [report.reason, formatMethods(report.methods)].filter(Boolean).join('. ');
   ui.partsCount.textContent = String(report.parts ?? report.partIds?.length ?? '—');
   ui.key.textContent = hasKey ? `part ${report.key}` : 'none';
   ui.keyDirections.textContent = formatList(report.keyDirections);
   ui.baseDirections.textContent = formatList(report.baseDirections?.map((direction) => direction.label));
-  ui.order.textContent = report.disassembly ? formatOrder(report.disassembly.order) : 'none found';
-  ui.witness.textContent = report.witness
-    ? `parts ${formatList(report.witness.parts)} can move along ${report.witness.direction}`
-    : 'none';
+  ui.order.textContent = report.disassembly
+    ? formatOrder(report.disassembly.order)
+    : formatDisassemblyFailure(report.disassemblyFailure);
+  ui.witness.textContent = formatWitness(report.witness);
   ui.timing.textContent = Number.isFinite(elapsedMs) ? `${elapsedMs.toFixed(1)} ms` : '—';
   renderPaths(report.disassembly);
   renderGraphs(report.graphs);
@@ -658,7 +673,7 @@ function renderPaths(disassembly) {
     'li',
     `part ${partId}: ${formatMoves(disassembly.paths?.[index])}`,
   ));
-  replaceChildren(ui.paths, items.length ? items : [element('li', 'no disassembly found')]);
+  ui.paths.replaceChildren(...(items.length ? items : [element('li', 'no disassembly found')]));
 }
 
 function renderGraphs(graphs) {
@@ -671,7 +686,7 @@ function renderGraphs(graphs) {
     );
     return row;
   });
-  replaceChildren(ui.graphs, rows);
+  ui.graphs.replaceChildren(...rows);
 }
 
 function resetReport(message) {
@@ -682,8 +697,8 @@ function resetReport(message) {
   for (const field of [ui.partsCount, ui.key, ui.keyDirections, ui.baseDirections, ui.order, ui.witness, ui.timing]) {
     field.textContent = '—';
   }
-  replaceChildren(ui.paths, []);
-  replaceChildren(ui.graphs, []);
+  ui.paths.replaceChildren();
+  ui.graphs.replaceChildren();
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -704,7 +719,7 @@ const core = new CoreWorker({
     coreReady = false;
     showError(willRestart
       ? `${message}. A fresh worker was started; choose an assembly to try again.`
-      : `${message}. Gave up restarting the worker; reload the page after fixing the problem.`);
+      : `${message}. The worker failed ${MAX_FAILED_STARTS} times in a row; choosing an assembly tries once more.`);
     setStatus('error');
   },
 });
@@ -716,7 +731,7 @@ const core = new CoreWorker({
 async function loadAssembly(name, readText) {
   const generation = ++loadGeneration;
   const isCurrent = () => generation === loadGeneration;
-  setStatus('loading', coreReady ? `Checking ${name}…` : 'Starting the WebAssembly core…');
+  setStatus('loading', coreReady ? 'Checking…' : 'Starting the core…');
   document.body.dataset.source = name;
   ui.sourceName.textContent = name;
   hideError();
@@ -724,23 +739,26 @@ async function loadAssembly(name, readText) {
   try {
     const text = await readText();
     if (!isCurrent()) return;
-    const { value: document_ } = await core.run('parse', text);
+    // `source` makes the core's error messages name the file (and line) they are about.
+    const { value: document_ } = await core.run('parse', text, { source: name });
     if (!isCurrent()) return;
     view.show(document_);
-    const { value: report, elapsedMs } = await core.run('check', text, { method: ui.methodSelect.value });
+    const { value: report, elapsedMs } = await core.run('check', text, { method: ui.methodSelect.value, source: name });
     if (!isCurrent()) return;
     current = { name, text };
     renderReport(report, elapsedMs);
     view.applyReport(report);
     setUpDisassemblySlider(view.available ? report.disassembly : null);
-    setStatus('ready', `Checked ${name}`);
+    setStatus('ready');
   } catch (error) {
     if (!isCurrent()) return;
     current = null;
     view.clear();
     setUpDisassemblySlider(null);
     resetReport('No result');
-    showError(`Could not check ${name}: ${error.message}`);
+    // The core's messages start with the source name already; others (fetch, worker) get it here.
+    const message = error.message.startsWith(name) ? error.message : `${name}: ${error.message}`;
+    showError(message);
     setStatus('error');
   }
 }
@@ -766,8 +784,20 @@ function loadUserFile(file) {
     if (file.size > MAX_FILE_BYTES) {
       throw new Error(`the file is ${(file.size / 1048576).toFixed(1)} MiB; the playground accepts up to ${MAX_FILE_BYTES / 1048576} MiB`);
     }
-    return file.text();
+    return decodeText(file.name, await file.arrayBuffer());
   });
+}
+
+/**
+ * Strict UTF-8 decoding: a lenient decoder would turn a binary file into U+FFFD characters and
+ * the core would then report bytes the user's file never contained.
+ */
+function decodeText(name, buffer) {
+  try {
+    return new TextDecoder('utf-8', { fatal: true }).decode(buffer);
+  } catch {
+    throw new Error(`${name}: not a text file (it is not valid UTF-8); expected a .puz or desia .json assembly`);
+  }
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -807,7 +837,7 @@ function fillExampleSelect() {
     option.value = file;
     return option;
   });
-  replaceChildren(ui.exampleSelect, [userOption, ...options]);
+  ui.exampleSelect.replaceChildren(userOption, ...options);
 }
 
 function initialExample() {
@@ -863,7 +893,7 @@ function main() {
   fillExampleSelect();
   wireControls();
   wireDragAndDrop();
-  setStatus('loading', 'Starting the WebAssembly core…');
+  setStatus('loading', 'Starting the core…');
   core.start();
   const file = initialExample();
   ui.exampleSelect.value = file;

@@ -27,7 +27,7 @@ function loadCore() {
 // Each operation returns `[value, transferList]`.
 const OPERATIONS = {
   check: (core, text, options) => [core.check(text, options ?? {}), []],
-  parse: (core, text) => withTransferableLabels(core.parseDocument(text)),
+  parse: (core, text, options) => withTransferableLabels(core.parseDocument(text, options ?? {})),
 };
 
 /** Voxel labels become an Int32Array so they can be transferred instead of copied. */
@@ -45,9 +45,15 @@ function messageOf(error) {
   return String(error);
 }
 
-/** Traps and aborts leave the Emscripten runtime unusable; ordinary input errors do not. */
+/**
+ * Traps and aborts can leave the Emscripten runtime unusable; input errors (the facade's
+ * DesiaError codes 'bad-input', 'too-large', 'unsupported') do not. An 'internal' error is a
+ * bug somewhere in the core, so we do not trust the instance after it either.
+ */
 function isFatal(error) {
-  return error instanceof WebAssembly.RuntimeError || /^Aborted\(/.test(messageOf(error));
+  return error instanceof WebAssembly.RuntimeError
+    || error?.code === 'internal'
+    || /^Aborted\(/.test(messageOf(error));
 }
 
 async function handleInit() {
@@ -84,7 +90,9 @@ async function handleRun({ id, op, text, options }) {
     const elapsedMs = performance.now() - started;
     self.postMessage({ type: 'result', id, value, elapsedMs }, transfer);
   } catch (error) {
-    self.postMessage({ type: 'error', id, message: messageOf(error), fatal: isFatal(error) });
+    const fatal = isFatal(error);
+    const message = fatal ? `internal error in the WebAssembly core: ${messageOf(error)}` : messageOf(error);
+    self.postMessage({ type: 'error', id, message, fatal });
   }
 }
 

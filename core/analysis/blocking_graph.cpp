@@ -90,6 +90,12 @@ std::vector<BaseDirection> computeBaseDirections(const Assembly& assembly) {
       addUnique(directions, cleaned(canonicalSign(normalized(d))));
     }
   }
+  // Axis-aligned (voxel) assemblies always get the three axes (Section 3.1: "the base directions
+  // are the three axes"), even when some axis has no contact. An extra direction never changes a
+  // verdict: its DBG is a real one, and it keeps the graphs of voxel puzzles comparable.
+  if (hasOnlyAxisAlignedContacts(assembly)) {
+    for (const Vec3& axis : {Vec3{1, 0, 0}, Vec3{0, 1, 0}, Vec3{0, 0, 1}}) addUnique(directions, axis);
+  }
   if (directions.empty()) {
     // No vertex: all normals parallel (a single great circle, every direction on it is free for
     // the same groups) or no contacts at all (every direction is free). Either way the

@@ -243,7 +243,8 @@ std::string documentToJson(const AssemblyDocument& document, int indent) {
     }
     root["contacts"] = contacts;
     if (!document.geometryJson.empty()) {
-      for (auto& [key, value] : json::parse(document.geometryJson).items()) root[key] = value;
+      const json geometry = json::parse(document.geometryJson);  // must outlive the loop below
+      for (const auto& [key, value] : geometry.items()) root[key] = value;
     }
   }
   return root.dump(indent);

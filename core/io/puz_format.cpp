@@ -15,6 +15,13 @@ size_t skipBlankLines(const std::vector<TextLine>& lines, size_t i) {
   return i;
 }
 
+int lastLineWithData(const std::vector<TextLine>& lines) {
+  for (auto it = lines.rbegin(); it != lines.rend(); ++it) {
+    if (!it->tokens.empty()) return it->number;
+  }
+  return 1;
+}
+
 VoxelGrid parseHeader(const TextLine& header, const std::string& source) {
   if (header.tokens.size() != 3) {
     throwBadInput(location(source, header.number),
@@ -57,7 +64,7 @@ VoxelGrid parsePuz(const std::string& text, const std::string& source) {
     for (int y = 0; y < grid.ny(); ++y) {
       i = skipBlankLines(lines, i);
       if (i == lines.size()) {
-        throwBadInput(location(source, lines.back().number),
+        throwBadInput(location(source, lastLineWithData(lines)),
                       "the file ends early: expected row " + std::to_string(y + 1) + " of " +
                           std::to_string(grid.ny()) + " in layer " + std::to_string(z + 1) + " of " +
                           std::to_string(grid.nz()) + " (grid " + std::to_string(grid.nx()) + " x " +

@@ -53,8 +53,11 @@ class RemovalSearch {
     if (obstacles_.empty()) return true;
     // Offsets at which the part's box still overlaps the obstacles' box; outside it, a straight
     // move is always free, so the search never needs to go there.
-    const Int3 lo{obstacles_.min.x - own_.max.x, obstacles_.min.y - own_.max.y, obstacles_.min.z - own_.max.z};
-    const Int3 hi{obstacles_.max.x - own_.min.x, obstacles_.max.y - own_.min.y, obstacles_.max.z - own_.min.z};
+    // The range always contains the start (a part whose box is already apart from the others').
+    const Int3 lo{std::min(0, obstacles_.min.x - own_.max.x), std::min(0, obstacles_.min.y - own_.max.y),
+                  std::min(0, obstacles_.min.z - own_.max.z)};
+    const Int3 hi{std::max(0, obstacles_.max.x - own_.min.x), std::max(0, obstacles_.max.y - own_.min.y),
+                  std::max(0, obstacles_.max.z - own_.min.z)};
     const Int3 size{hi.x - lo.x + 1, hi.y - lo.y + 1, hi.z - lo.z + 1};
     auto slot = [&](const Int3& o) {
       return (o.x - lo.x) + static_cast<int64_t>(size.x) * ((o.y - lo.y) + static_cast<int64_t>(size.y) * (o.z - lo.z));

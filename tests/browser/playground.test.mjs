@@ -25,6 +25,15 @@ const ARTIFACTS_DIR = path.join(REPO_ROOT, 'test-artifacts');
 
 const FIRST_EXAMPLE = 'Cube_4x4x4_K9.puz';
 const BUNNY_EXAMPLE = 'bunny_15x14x11_K80.puz';
+/** Every bundled example: part count and the key's free direction (shared/reference/README.md). */
+const EXAMPLES = [
+  { file: 'Cube_4x4x4_K9.puz', parts: 9, keyDirection: '-z' },
+  { file: 'Cube_4x4x4_K9_01.puz', parts: 7, keyDirection: '+y' },
+  { file: 'Cube_Hollow_4x4x4_K7.puz', parts: 7, keyDirection: '-z' },
+  { file: 'cube_5x5x5_K16.puz', parts: 16, keyDirection: '+y' },
+  { file: 'cartoon_dog.puz', parts: 14, keyDirection: '+y' },
+  { file: 'bunny_15x14x11_K80.puz', parts: 80, keyDirection: '+y' },
+];
 const SETTLE_TIMEOUT_MS = 30_000;
 
 // Flags from shared/toolchain.md (no background traffic on a closed network), plus SwiftShader:
@@ -49,8 +58,7 @@ function checkPrerequisites() {
     [path.join(REPO_ROOT, 'node_modules/three/build/three.module.js'), 'three is missing: run npm ci'],
     [path.join(REPO_ROOT, 'wasm/index.js'), 'wasm/index.js is missing'],
     [path.join(REPO_ROOT, 'dist/desia_wasm.wasm'), 'the WebAssembly build is missing: run bash scripts/build.sh wasm'],
-    [path.join(REPO_ROOT, 'examples/voxel', FIRST_EXAMPLE), `examples/voxel/${FIRST_EXAMPLE} is missing`],
-    [path.join(REPO_ROOT, 'examples/voxel', BUNNY_EXAMPLE), `examples/voxel/${BUNNY_EXAMPLE} is missing`],
+    ...EXAMPLES.map(({ file }) => [path.join(REPO_ROOT, 'examples/voxel', file), `examples/voxel/${file} is missing`]),
   ];
   for (const [file, message] of required) {
     if (!existsSync(file)) throw new Error(`${message} (${file} not found)`);
@@ -115,6 +123,7 @@ async function pageState(page) {
     verdictCode: document.querySelector('#verdict')?.dataset.verdict ?? '',
     key: document.querySelector('#verdict')?.dataset.key ?? '',
     parts: document.querySelector('#parts-count')?.textContent ?? '',
+    keyDirections: document.querySelector('#key-directions')?.textContent ?? '',
     meshes: document.querySelector('#viewport')?.dataset.parts ?? '',
     error: document.querySelector('#error')?.hidden ? '' : document.querySelector('#error')?.textContent ?? '',
   }));
@@ -207,7 +216,17 @@ describe('playground in headless Chromium', { timeout: 60_000 }, () => {
     await screenshot(page, 'playground-bunny');
   });
 
-  it('shows an error for a broken file and recovers', async () => {
+  it('reports every bundled example as interlocking with key 1', async () => {
+    for (const example of EXAMPLES) {
+      await page.selectOption('#example-select', example.file);
+      const state = await waitForReady(page, example.file);
+      assertInterlockingWithKey(state, 1);
+      assert.equal(state.parts, String(example.parts), `${example.file}: parts`);
+      assert.equal(state.keyDirections, example.keyDirection, `${example.file}: key directions`);
+    }
+  });
+
+  it('shows an error for a binary file and recovers', async () => {
     await page.setInputFiles('#file-input', {
       name: 'bad.puz',
       mimeType: 'application/octet-stream',
@@ -216,15 +235,50 @@ describe('playground in headless Chromium', { timeout: 60_000 }, () => {
     const failed = await waitForSettled(page, 'bad.puz');
     await screenshot(page, 'playground-bad-file');
     assert.equal(failed.status, 'error', `expected an error, got verdict "${failed.verdict}"`);
-    assert.match(failed.error, /bad\.puz/, 'the error names the file');
-    // The page's own prefix is "Could not check bad.puz: "; the core's message must follow it.
-    const coreMessage = failed.error.replace(/^Could not check bad\.puz:\s*/, '');
-    assert.ok(coreMessage.length > 5, `the core's message is missing: "${failed.error}"`);
+    assert.match(failed.error, /^bad\.puz: not a text file/, 'the error names the file and its problem');
 
     await page.selectOption('#example-select', FIRST_EXAMPLE);
     const recovered = await waitForReady(page, FIRST_EXAMPLE);
     assertInterlockingWithKey(recovered, 1);
     assert.equal(recovered.error, '', 'the error box is cleared');
+  });
+
+  it("shows the core's message for a malformed .puz", async () => {
+    await page.setInputFiles('#file-input', {
+      name: 'broken.puz',
+      mimeType: 'text/plain',
+      buffer: Buffer.from('4 4 4\n1 2 3\n'),
+    });
+    const failed = await waitForSettled(page, 'broken.puz');
+    assert.equal(failed.status, 'error', `expected an error, got verdict "${failed.verdict}"`);
+    // The page passes the file name as `source`; the core names file and line and the problem.
+    assert.match(failed.error, /^broken\.puz:\d+/, 'the error names the file and line');
+    assert.ok(failed.error.replace(/^broken\.puz[:\d]*\s*/, '').length > 10, `the core's message is missing: "${failed.error}"`);
+
+    await page.selectOption('#example-select', FIRST_EXAMPLE);
+    assertInterlockingWithKey(await waitForReady(page, FIRST_EXAMPLE), 1);
+  });
+
+  it('reports a worker that cannot start and recovers once it can', async () => {
+    const freshPage = await context.newPage();
+    freshPage.on('pageerror', (error) => pageErrors.push(error.message));
+    try {
+      // The worker's import of the facade fails: the worker dies before it can say anything.
+      await freshPage.route('**/wasm/index.js', (route) => route.abort());
+      await freshPage.goto(server.url);
+      const failed = await waitForSettled(freshPage, FIRST_EXAMPLE);
+      assert.equal(failed.status, 'error');
+      assert.match(failed.error, /worker/i, 'the error says the worker failed');
+      // Wait until the page stops restarting on its own, so no half-started worker is left over.
+      await freshPage.waitForFunction(() => /in a row/.test(document.querySelector('#error').textContent));
+      await screenshot(freshPage, 'playground-worker-failure');
+
+      await freshPage.unroute('**/wasm/index.js');
+      await freshPage.selectOption('#example-select', BUNNY_EXAMPLE);
+      assertInterlockingWithKey(await waitForReady(freshPage, BUNNY_EXAMPLE), 1);
+    } finally {
+      await freshPage.close();
+    }
   });
 
   it('never requests anything outside 127.0.0.1 and throws no page errors', () => {

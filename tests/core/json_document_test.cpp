@@ -1,0 +1,90 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <gtest/gtest.h>
+
+#include "desia/check.h"
+#include "desia/document.h"
+#include "desia/error.h"
+#include "test_support.h"
+
+namespace desia {
+namespace {
+
+TEST(JsonDocument, VoxelDocumentRoundTripsThroughJson) {
+  const AssemblyDocument original = testing::loadReference("result_puz/Cube_4x4x4_K9.puz");
+  const std::string json = documentToJson(original);
+  const AssemblyDocument reread = parseAssemblyText(json, "k9.json");
+  EXPECT_EQ(reread.kind, AssemblyKind::Voxel);
+  EXPECT_EQ(reread.voxels.labels(), original.voxels.labels());
+  EXPECT_EQ(documentToJson(reread), json);
+  const CheckReport report = checkAssembly(reread);
+  testing::ExpectInterlocking(reread, report.result, 1, {"-z"});
+}
+
+TEST(JsonDocument, ContactDocumentKeepsIdsNormalsAndGeometry) {
+  const std::string text = R"({
+    "format": "desia-assembly", "version": 1, "kind": "plate", "name": "three plates",
+    "parts": [{"id": 10, "name": "base"}, {"id": 20}, {"id": 30}],
+    "contacts": [{"a": 10, "b": 20, "normal": [0, 0, 2]}, {"a": 20, "b": 30, "normal": [1, 0, 0], "area": 0.5}],
+    "plates": [{"part": 10, "thickness": 0.02}]
+  })";
+  const AssemblyDocument document = parseJsonDocument(text, "plates.json");
+  EXPECT_EQ(document.kind, AssemblyKind::Plate);
+  EXPECT_EQ(document.name, "three plates");
+  ASSERT_EQ(document.assembly.partCount(), 3);
+  EXPECT_EQ(document.assembly.parts[0].name, "base");
+  ASSERT_EQ(document.assembly.contacts.size(), 2u);
+  EXPECT_EQ(document.assembly.contacts[0].normal, (Vec3{0, 0, 1}));  // normalized
+  EXPECT_EQ(document.assembly.contacts[1].a, 1);
+  EXPECT_EQ(document.assembly.contacts[1].area, 0.5);
+  const AssemblyDocument reread = parseJsonDocument(documentToJson(document), "again.json");
+  EXPECT_EQ(reread.geometryJson, document.geometryJson);
+  EXPECT_EQ(documentToJson(reread), documentToJson(document));
+}
+
+struct BadJson {
+  const char* name;
+  std::string text;
+  std::string expected;
+};
+
+// Readable test names in gtest output instead of a byte dump.
+void PrintTo(const BadJson& value, std::ostream* out) { *out << value.name; }
+
+class BadJsonInput : public ::testing::TestWithParam<BadJson> {};
+
+TEST_P(BadJsonInput, IsRejectedWithPathAndReason) {
+  try {
+    parseAssemblyText(GetParam().text, "bad.json");
+    FAIL() << "accepted: " << GetParam().name;
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ErrorCode::BadInput);
+    EXPECT_NE(std::string(e.what()).find(GetParam().expected), std::string::npos) << e.what();
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Desia, BadJsonInput,
+    ::testing::Values(
+        BadJson{"truncated", "{\n  \"kind\": \"voxel\",\n", "bad.json:3:1: malformed JSON"},
+        BadJson{"notAnObject", "[1, 2]", "bad.json: the JSON document must be an object"},
+        BadJson{"missingKind", "{}", "bad.json: missing field 'kind'"},
+        BadJson{"unknownKind", R"({"kind": "lego"})", "bad.json: kind: expected \"voxel\", \"plate\", \"frame\" or \"contacts\", found \"lego\""},
+        BadJson{"wrongFormat", R"({"format": "x", "kind": "voxel"})", "bad.json: format: expected \"desia-assembly\""},
+        BadJson{"futureVersion", R"({"version": 2, "kind": "voxel"})", "bad.json: version: unsupported version 2"},
+        BadJson{"labelCount", R"({"kind": "voxel", "voxel": {"size": [2, 1, 1], "labels": [1]}})", "voxel.labels: has 1 values, but size 2 x 1 x 1 needs 2"},
+        BadJson{"labelType", R"({"kind": "voxel", "voxel": {"size": [2, 1, 1], "labels": [1, "a"]}})", "voxel.labels[1]: expected an integer, found \"a\""},
+        BadJson{"negativeSize", R"({"kind": "voxel", "voxel": {"size": [2, -1, 1], "labels": []}})", "voxel.size[1]: -1 is out of range"},
+        BadJson{"unknownPart", R"({"kind": "contacts", "parts": [{"id": 1}, {"id": 2}], "contacts": [{"a": 1, "b": 3, "normal": [1, 0, 0]}]})", "contacts[0].b: part 3 is not in 'parts'"},
+        BadJson{"zeroNormal", R"({"kind": "contacts", "parts": [{"id": 1}, {"id": 2}], "contacts": [{"a": 1, "b": 2, "normal": [0, 0, 0]}]})", "contacts[0].normal: is the zero vector"},
+        BadJson{"selfContact", R"({"kind": "contacts", "parts": [{"id": 1}], "contacts": [{"a": 1, "b": 1, "normal": [1, 0, 0]}]})", "contacts[0]: a part cannot touch itself"},
+        BadJson{"duplicateId", R"({"kind": "contacts", "parts": [{"id": 1}, {"id": 1}], "contacts": []})", "parts[1].id: duplicate part id 1"},
+        BadJson{"noParts", R"({"kind": "plate", "parts": [], "contacts": []})", "parts: the assembly is empty"}),
+    [](const auto& info) { return std::string(info.param.name); });
+
+TEST(CheckMethodNames, UnknownMethodIsBadInput) {
+  EXPECT_EQ(parseCheckMethod("lp"), CheckMethod::Inequalities);
+  EXPECT_THROW(parseCheckMethod("simplex"), Error);
+}
+
+}  // namespace
+}  // namespace desia

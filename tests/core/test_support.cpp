@@ -1,0 +1,109 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "test_support.h"
+
+#include <fstream>
+#include <sstream>
+
+namespace desia::testing {
+
+std::string referencePath(const std::string& relative) { return std::string(DESIA_TEST_DATA_DIR) + "/" + relative; }
+
+std::string readFileText(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error("test fixture missing: " + path);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+AssemblyDocument loadReference(const std::string& relative) {
+  return parseAssemblyText(readFileText(referencePath(relative)), relative);
+}
+
+VoxelGrid gridFromLayers(const std::vector<std::vector<std::string>>& layers) {
+  std::string text;
+  std::istringstream firstRow(layers.at(0).at(0));
+  int nx = 0;
+  for (std::string token; firstRow >> token;) ++nx;
+  text = std::to_string(nx) + " " + std::to_string(layers[0].size()) + " " + std::to_string(layers.size()) + "\n";
+  for (const auto& layer : layers) {
+    for (const auto& row : layer) text += row + "\n";
+    text += "\n";
+  }
+  return parsePuz(text, "test");
+}
+
+std::vector<int> idsOf(const Assembly& assembly, const std::vector<int>& parts) {
+  std::vector<int> ids;
+  for (int part : parts) ids.push_back(assembly.parts[part].id);
+  return ids;
+}
+
+std::vector<std::string> labelsOf(const std::vector<Vec3>& directions) {
+  std::vector<std::string> labels;
+  for (const Vec3& d : directions) labels.push_back(directionLabel(d));
+  return labels;
+}
+
+void ExpectInterlocking(const AssemblyDocument& document, const InterlockingResult& result, int keyId,
+                        const std::vector<std::string>& keyDirections) {
+  EXPECT_EQ(result.verdict, Verdict::Interlocking) << result.reason;
+  ASSERT_GE(result.key, 0) << result.reason;
+  EXPECT_EQ(document.assembly.parts[result.key].id, keyId);
+  EXPECT_EQ(labelsOf(result.keyDirections), keyDirections);
+  EXPECT_FALSE(result.hasWitness);
+}
+
+namespace {
+
+bool collidesAt(const VoxelGrid& grid, const std::vector<bool>& present, int partId, int dx, int dy, int dz) {
+  for (int z = 0; z < grid.nz(); ++z) {
+    for (int y = 0; y < grid.ny(); ++y) {
+      for (int x = 0; x < grid.nx(); ++x) {
+        if (grid.label(x, y, z) != partId) continue;
+        const int px = x + dx, py = y + dy, pz = z + dz;
+        if (!grid.inside(px, py, pz)) continue;
+        const int other = grid.label(px, py, pz);
+        if (other != 0 && other != partId && present[other - 1]) return true;
+      }
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
+std::string verifyRemoval(const VoxelGrid& grid, const std::vector<bool>& present, int partId,
+                          const std::vector<Move>& path) {
+  int offset[3] = {0, 0, 0};
+  auto step = [&](const Vec3& d) {
+    for (int k = 0; k < 3; ++k) offset[k] += static_cast<int>(d[k]);
+    return !collidesAt(grid, present, partId, offset[0], offset[1], offset[2]);
+  };
+  for (const Move& move : path) {
+    for (int s = 0; s < move.steps; ++s) {
+      if (!step(move.direction)) return "part " + std::to_string(partId) + " collides during " + directionLabel(move.direction);
+    }
+  }
+  if (path.empty()) return "part " + std::to_string(partId) + " has an empty path";
+  const int far = grid.nx() + grid.ny() + grid.nz();
+  for (int s = 0; s < far; ++s) {
+    if (!step(path.back().direction)) return "part " + std::to_string(partId) + " collides after its path, going to infinity";
+  }
+  return "";
+}
+
+std::string verifyPlan(const VoxelGrid& grid, const Assembly& assembly, const DisassemblyPlan& plan) {
+  if (!plan.complete) return "plan incomplete";
+  if (static_cast<int>(plan.removals.size()) != assembly.partCount()) return "plan does not list every part";
+  std::vector<bool> present(assembly.partCount(), true);
+  for (size_t i = 0; i + 1 < plan.removals.size(); ++i) {
+    const Removal& removal = plan.removals[i];
+    const std::string problem = verifyRemoval(grid, present, assembly.parts[removal.part].id, removal.path);
+    if (!problem.empty()) return problem;
+    present[removal.part] = false;
+  }
+  return plan.removals.back().path.empty() ? "" : "the last part should stay in place";
+}
+
+}  // namespace desia::testing

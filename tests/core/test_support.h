@@ -1,0 +1,40 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Shared fixtures and domain assertions for the core tests.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "desia/check.h"
+#include "desia/document.h"
+#include "desia/puz_format.h"
+
+namespace desia::testing {
+
+// Path of a file under tests/reference/desia/data (the original authors' data, MIT).
+std::string referencePath(const std::string& relative);
+std::string readFileText(const std::string& path);
+AssemblyDocument loadReference(const std::string& relative);
+
+// Builds a grid from layers of rows, e.g. {{"1 1", "2 2"}, {"1 1", "3 3"}} (z layers of y rows).
+VoxelGrid gridFromLayers(const std::vector<std::vector<std::string>>& layers);
+
+// User-visible ids of internal part indices.
+std::vector<int> idsOf(const Assembly& assembly, const std::vector<int>& parts);
+std::vector<std::string> labelsOf(const std::vector<Vec3>& directions);
+
+void ExpectInterlocking(const AssemblyDocument& document, const InterlockingResult& result, int keyId,
+                        const std::vector<std::string>& keyDirections);
+
+// Re-plays a removal unit step by unit step against the parts still present, independently of
+// the planner, then keeps going along the last direction until far outside the grid. Returns an
+// empty string when collision-free, otherwise what went wrong.
+std::string verifyRemoval(const VoxelGrid& grid, const std::vector<bool>& present, int partId,
+                          const std::vector<Move>& path);
+
+// Verifies a complete plan removal by removal; returns an empty string when valid.
+std::string verifyPlan(const VoxelGrid& grid, const Assembly& assembly, const DisassemblyPlan& plan);
+
+}  // namespace desia::testing
