@@ -42,7 +42,8 @@ endif()
 file(GLOB glpk_include_dirs LIST_DIRECTORIES true ${DESIA_GLPK_SOURCE_DIR}/src/*)
 list(FILTER glpk_include_dirs EXCLUDE REGEX "\\.(am|in|h)$")
 set(glpk_config_dir ${CMAKE_BINARY_DIR}/glpk-config)
-file(WRITE ${glpk_config_dir}/config.h "/* GLPK configuration for WebAssembly: no optional features. */\n")
+# file(CONFIGURE) writes only when the content changes, so reconfiguring does not rebuild GLPK.
+file(CONFIGURE OUTPUT ${glpk_config_dir}/config.h CONTENT "/* GLPK configuration for WebAssembly: no optional features. */\n")
 
 add_library(desia_glpk STATIC ${glpk_sources})
 target_include_directories(desia_glpk PRIVATE ${glpk_config_dir} ${DESIA_GLPK_SOURCE_DIR}/src ${glpk_include_dirs})

@@ -1,0 +1,95 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The CLI's contract: exit 0 interlocking, 1 negative verdict, 2 bad input or usage; clear
+// messages naming file and line; never a crash.
+import assert from 'node:assert/strict';
+import fs from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
+import { test } from 'node:test';
+
+import { referenceDir, runCli } from './support.mjs';
+
+const tmp = fs.mkdtempSync(path.join(os.tmpdir(), 'desia-cli-'));
+function writeTemp(name, content) {
+  const file = path.join(tmp, name);
+  fs.writeFileSync(file, content);
+  return file;
+}
+
+test('text report of an interlocking puzzle, exit 0', () => {
+  const result = runCli(['check', path.join(referenceDir, 'result_puz/Cube_4x4x4_K9_01.puz')]);
+  assert.equal(result.status, 0);
+  assert.match(result.stdout, /^verdict: interlocking \(method dbg\)$/m);
+  assert.match(result.stdout, /^key: part 1, free along \+y$/m);
+  assert.match(result.stdout, /^ {2}part 2: \+z 1, \+y 2$/m);
+});
+
+test('an input shape (one part) is a verdict: exit 1 with the reason', () => {
+  const result = runCli(['check', path.join(referenceDir, 'input_puz/bunny_origin.puz'), '--json']);
+  assert.equal(result.status, 1);
+  const report = JSON.parse(result.stdout);
+  assert.equal(report.interlocking, false);
+  assert.equal(report.parts, 1);
+  assert.match(report.reason, /at least three parts/);
+});
+
+test('a deadlocked assembly: exit 1, deadlocked, no disassembly but the stuck parts', () => {
+  // Cube_4x4x4_K9_01 with a cap of part 2 over the key's column (grid grows to 4x5x4): the key
+  // can no longer slide up and nothing else can move.
+  const values = fs.readFileSync(path.join(referenceDir, 'result_puz/Cube_4x4x4_K9_01.puz'), 'utf8').trim().split(/\s+/).map(Number);
+  const [nx, ny, nz] = values.slice(0, 3);
+  const at = (x, y, z) => values[3 + x + nx * (y + ny * z)];
+  assert.equal(at(2, 3, 1), 1);
+  assert.equal(at(1, 3, 1), 2);
+  let text = `${nx} ${ny + 1} ${nz}\n`;
+  for (let z = 0; z < nz; z++) {
+    for (let y = 0; y <= ny; y++) {
+      let row = '';
+      for (let x = 0; x < nx; x++) row += `${y < ny ? at(x, y, z) : (z === 1 && (x === 1 || x === 2) ? 2 : 0)} `;
+      text += `${row}\n`;
+    }
+    text += '\n';
+  }
+  const result = runCli(['check', writeTemp('capped.puz', text), '--json', '--method', 'both']);
+  assert.equal(result.status, 1);
+  const report = JSON.parse(result.stdout);
+  assert.equal(report.verdict, 'deadlocked');
+  assert.equal(report.deadlocked, true);
+  assert.equal(report.key, null);
+  assert.equal(report.disassembly, null);
+  assert.deepEqual(report.disassemblyFailure, { removed: [], stuck: [1, 2, 3, 4, 5, 6, 7] });
+});
+
+const badInputs = [
+  ['missing file', null, /cannot open the file/],
+  ['wrong header', '4 4\n', /wrong-header\.puz:1: the header must be three integers/],
+  ['ragged row', '3 1 1\n1 1\n', /ragged-row\.puz:2: row 1 of layer 1 has 2 values, expected Nx = 3/],
+  ['non-integer', '2 1 1\n1 q\n', /non-integer\.puz:2:3: voxel value 'q' is not an integer/],
+  ['data after grid', '1 1 1\n1\n\n5 5\n', /data-after-grid\.puz:4:1: unexpected data after the last layer/],
+  ['disconnected part', '3 1 1\n1 2 1\n', /part 1 is not face-connected/],
+  ['absurd size', '999999999 1 1\n', /grid size Nx 999999999 is out of range/],
+  ['binary garbage', Buffer.from([0x7f, 0x45, 0x4c, 0x46, 0x02, 0x01, 0x00]), /not a text file: unexpected byte 0x7f at offset 0/],
+  ['malformed json', '{"kind": "voxel", }', /malformed-json\.puz:1:\d+: malformed JSON/],
+];
+
+for (const [name, content, message] of badInputs) {
+  test(`bad input (${name}): exit 2 and a clear message`, () => {
+    const file = content === null ? path.join(tmp, 'does-not-exist.puz') : writeTemp(`${name.replace(/ /g, '-')}.puz`, content);
+    const result = runCli(['check', file]);
+    assert.equal(result.status, 2, result.stderr);
+    assert.equal(result.stdout, '');
+    assert.match(result.stderr, message);
+    assert.match(result.stderr, /^desia: error: /);
+  });
+}
+
+test('usage errors: exit 2 with the usage text', () => {
+  for (const args of [[], ['frobnicate'], ['check'], ['check', 'a.puz', '--method'], ['check', 'a.puz', '--bogus']]) {
+    const result = runCli(args);
+    assert.equal(result.status, 2, args.join(' '));
+    assert.match(result.stderr, /usage: desia check FILE/);
+  }
+  const unknownMethod = runCli(['check', path.join(referenceDir, 'result_puz/Cube_4x4x4_K9.puz'), '--method', 'simplex']);
+  assert.equal(unknownMethod.status, 2);
+  assert.match(unknownMethod.stderr, /unknown method 'simplex'/);
+});
