@@ -69,8 +69,11 @@ export interface CheckReport extends Verdict {
   methods?: { dbg: Verdict; lp: Verdict };
   /** Removal order (part ids) and one path per removed part; null when no disassembly exists. */
   disassembly: { order: number[]; paths: Move[][] } | null;
-  /** When no disassembly exists: the parts removed before getting stuck, and the stuck ones. */
-  disassemblyFailure?: { removed: number[]; stuck: number[] };
+  /**
+   * When no disassembly was found: the parts removed before getting stuck, the stuck ones, and
+   * whether a path search stopped at its work limit (then "stuck" is not proven).
+   */
+  disassemblyFailure?: { removed: number[]; stuck: number[]; searchLimitReached: boolean };
 }
 
 /** The JSON assembly document (see docs/json-schema.md). */

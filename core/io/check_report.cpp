@@ -116,7 +116,8 @@ std::string checkReportToJson(const AssemblyDocument& document, const CheckRepor
       std::vector<int> removed;
       for (const Removal& r : report.disassembly->removals) removed.push_back(r.part);
       root["disassemblyFailure"] = {{"removed", idsJson(assembly, removed)},
-                                    {"stuck", idsJson(assembly, report.disassembly->stuck)}};
+                                    {"stuck", idsJson(assembly, report.disassembly->stuck)},
+                                    {"searchLimitReached", report.disassembly->searchLimitReached}};
     }
   } else {
     root["disassembly"] = nullptr;
@@ -157,6 +158,7 @@ std::string checkReportToText(const AssemblyDocument& document, const CheckRepor
     if (!plan.complete) {
       out << "\n  stuck:";
       for (int part : plan.stuck) out << ' ' << assembly.parts[part].id;
+      if (plan.searchLimitReached) out << "\n  (a path search stopped at its work limit: a longer search might find more)";
     }
     out << "\n";
   }

@@ -32,8 +32,12 @@ Int3 stepOf(int s) { return {kSteps[s][0], kSteps[s][1], kSteps[s][2]}; }
 // The voxels still in place, and the search for one part's way out of them.
 class RemovalSearch {
  public:
-  RemovalSearch(const VoxelGrid& occupancy, int label, const std::vector<Int3>& voxels, const Box& own, int maxStates)
-      : occupancy_(occupancy), label_(label), voxels_(voxels), maxStates_(maxStates), own_(own) {}
+  RemovalSearch(const VoxelGrid& occupancy, int label, const std::vector<Int3>& voxels, const Box& own,
+                const VoxelDisassemblyOptions& limits)
+      : occupancy_(occupancy), label_(label), voxels_(voxels), limits_(limits), own_(own) {}
+
+  // True when the last findPath stopped at a work limit rather than exhausting the search.
+  bool limitReached() const { return limitReached_; }
 
   // Bounding box of the other parts still in place (computed only for parts that can move).
   void setObstacles(const Box& obstacles) { obstacles_ = obstacles; }
@@ -68,7 +72,10 @@ class RemovalSearch {
     cameBy[slot({0, 0, 0})] = 6;
     int visited = 0;
     while (!queue.empty()) {
-      if (++visited > maxStates_) return false;
+      if (++visited > limits_.maxSearchStates || voxelTests_ > limits_.maxVoxelTests) {
+        limitReached_ = true;
+        return false;
+      }
       const Int3 offset = queue.front();
       queue.pop_front();
       int escapeStep = -1, escapeDistance = 0;
@@ -97,6 +104,7 @@ class RemovalSearch {
 
  private:
   bool collides(const Int3& offset) const {
+    voxelTests_ += static_cast<int64_t>(voxels_.size());
     for (const Int3& v : voxels_) {
       const Int3 p = plus(v, offset);
       if (!occupancy_.inside(p.x, p.y, p.z)) continue;
@@ -151,8 +159,10 @@ class RemovalSearch {
   const VoxelGrid& occupancy_;
   int label_;
   const std::vector<Int3>& voxels_;
-  int maxStates_;
+  const VoxelDisassemblyOptions& limits_;
   Box own_, obstacles_;
+  mutable int64_t voxelTests_ = 0;
+  bool limitReached_ = false;
 };
 
 }  // namespace
@@ -185,10 +195,13 @@ DisassemblyPlan planVoxelDisassembly(const VoxelGrid& grid, const Assembly& asse
     for (int part = 0; part < partCount && !progressed; ++part) {
       if (removed[part]) continue;
       std::vector<Move> path;
-      RemovalSearch search(occupancy, part + 1, voxels[part], boxes[part], options.maxSearchStates);
+      RemovalSearch search(occupancy, part + 1, voxels[part], boxes[part], options);
       if (!search.canTakeAnyStep()) continue;
       search.setObstacles(obstaclesBox(part, removed));
-      if (!search.findPath(&path)) continue;
+      if (!search.findPath(&path)) {
+        plan.searchLimitReached = plan.searchLimitReached || search.limitReached();
+        continue;
+      }
       plan.removals.push_back({part, path});
       removed[part] = true;
       for (const Int3& v : voxels[part]) occupancy.setLabel(v.x, v.y, v.z, 0);

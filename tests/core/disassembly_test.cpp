@@ -104,6 +104,23 @@ TEST(VoxelDisassembly, SearchFindsAPathWithSeveralTurns) {
   EXPECT_EQ(testing::verifyPlan(document.voxels, document.assembly, plan), "");
 }
 
+TEST(VoxelDisassembly, WorkLimitIsReportedNotPassedOffAsStuck) {
+  std::vector<std::vector<std::string>> layers = {
+      {"2 2 2 2 2", "2 2 2 2 2", "2 2 2 2 2", "2 2 2 2 2"},
+      {"2 2 2 2 2", "2 1 0 2 2", "2 2 0 0 0", "2 2 2 2 2"},
+      {"2 2 2 2 2", "2 2 2 2 2", "2 2 2 2 2", "2 2 2 2 2"},
+  };
+  const AssemblyDocument document = documentFromVoxels(testing::gridFromLayers(layers));
+  VoxelDisassemblyOptions tight;
+  tight.maxVoxelTests = 10;
+  const DisassemblyPlan limited = planVoxelDisassembly(document.voxels, document.assembly, tight);
+  EXPECT_FALSE(limited.complete);
+  EXPECT_TRUE(limited.searchLimitReached);
+  const DisassemblyPlan full = planVoxelDisassembly(document.voxels, document.assembly);
+  EXPECT_TRUE(full.complete);
+  EXPECT_FALSE(full.searchLimitReached);
+}
+
 TEST(ContactDisassembly, RemovesLocallyFreePartsFirst) {
   // Three parts in a row along x: 1 | 2 | 3, each touching the next. Part 1 is free along -x.
   Assembly assembly;

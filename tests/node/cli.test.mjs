@@ -57,7 +57,7 @@ test('a deadlocked assembly: exit 1, deadlocked, no disassembly but the stuck pa
   assert.equal(report.deadlocked, true);
   assert.equal(report.key, null);
   assert.equal(report.disassembly, null);
-  assert.deepEqual(report.disassemblyFailure, { removed: [], stuck: [1, 2, 3, 4, 5, 6, 7] });
+  assert.deepEqual(report.disassemblyFailure, { removed: [], stuck: [1, 2, 3, 4, 5, 6, 7], searchLimitReached: false });
 });
 
 const badInputs = [

@@ -2,6 +2,7 @@
 // Disassembly planning (paper Section 3.3): a sequence of single-part removals.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -25,11 +26,15 @@ struct DisassemblyPlan {
   bool complete = false;      // all parts removed (the last part stays in place, empty path)
   std::vector<Removal> removals;
   std::vector<int> stuck;     // parts left when no further removal exists (complete == false)
+  bool searchLimitReached = false;  // some search gave up at its work limit: "stuck" is not proven
 };
 
 struct VoxelDisassemblyOptions {
-  // Bound on the breadth-first search over unit axis steps, per attempted removal.
+  // Bounds on the breadth-first search over unit axis steps, per attempted removal: visited
+  // offsets, and voxel collision tests (sweeps included), so a pathological input (a part in a
+  // huge cavity) cannot keep the search busy for minutes.
   int maxSearchStates = 2'000'000;
+  int64_t maxVoxelTests = 200'000'000;
 };
 
 // Voxel assemblies: removals are collision-free translations to infinity checked by sweeping; when
