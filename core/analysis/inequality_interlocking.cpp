@@ -6,9 +6,6 @@
 // matrix, so after a zero LP optimum we also test that null space (as TopoLite does).
 #include <glpk.h>
 
-#include <Eigen/Dense>
-#include <Eigen/OrderingMethods>
-#include <Eigen/SparseQR>
 #include <algorithm>
 #include <memory>
 #include <sstream>
@@ -51,113 +48,129 @@ std::vector<int> velocityColumns(const std::vector<bool>& isFree, int* columnCou
   return column;
 }
 
-// Eq. 2: max Σ t_c  s.t. (v_b - v_a)·n_c - t_c >= 0, 0 <= t_c <= 1, fixed parts have v = 0.
-// Velocities are bounded to [-1, 1] (scaling a motion keeps it a motion) for a well-posed LP.
-MotionSearch solveEquationTwo(const Assembly& assembly, const std::vector<int>& contacts, const std::vector<int>& velocityColumn,
-                              int velocityCount) {
-  GlpkProblem lp(glp_create_prob());
-  glp_set_obj_dir(lp.get(), GLP_MAX);
-  const int rows = static_cast<int>(contacts.size());
-  const int cols = velocityCount + rows;
-  glp_add_cols(lp.get(), cols);
-  for (int j = 1; j <= velocityCount; ++j) glp_set_col_bnds(lp.get(), j, GLP_DB, -1.0, 1.0);
-  for (int r = 0; r < rows; ++r) {
-    glp_set_col_bnds(lp.get(), velocityCount + r + 1, GLP_DB, 0.0, 1.0);
-    glp_set_obj_coef(lp.get(), velocityCount + r + 1, 1.0);
-  }
-  glp_add_rows(lp.get(), rows);
+// What one linear program looks for: a motion of the free parts (fixed parts have v = 0) in which
+// some watched part moves. Watched parts are free; a free part that is not watched (the key in
+// round 2) may move along to make room but does not count as a motion by itself.
+struct MotionQuery {
+  std::vector<bool> isFree;
+  std::vector<bool> isWatched;
+};
+
+enum class Objective {
+  SeparatingContacts,  // Eq. 2: max Σ t_c over contacts between watched or fixed parts
+  GenericFunctional,   // max Σ c_i·v_i over watched parts, for a fixed generic c (see below)
+};
+
+struct LinearProgram {
+  GlpkProblem problem{glp_create_prob()};
   std::vector<int> ia{0}, ja{0};
   std::vector<double> ar{0.0};
-  auto add = [&](int row, int col, double value) {
+  void add(int row, int col, double value) {
     if (value == 0.0) return;
     ia.push_back(row);
     ja.push_back(col);
     ar.push_back(value);
-  };
+  }
+};
+
+// Deterministic "generic" weights in ±[0.5, 1.5]: a non-zero cone of motions projected on the
+// watched velocities is orthogonal to such a vector only with probability zero, so max c·v > 0
+// or max -c·v > 0 exactly when a watched part can move, sliding motions included (where every
+// t_c of Eq. 2 stays 0). A small linear congruential sequence keeps native and WebAssembly equal.
+std::vector<double> genericWeights(int count) {
+  std::vector<double> weights(count);
+  uint64_t state = 0x9E3779B97F4A7C15ull;
+  for (double& w : weights) {
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    const double unit = static_cast<double>(state >> 11) / 9007199254740992.0;  // [0, 1)
+    w = ((state >> 7) & 1 ? 1.0 : -1.0) * (0.5 + unit);
+  }
+  return weights;
+}
+
+bool involvesUnwatchedFreePart(const Contact& contact, const MotionQuery& query) {
+  auto unwatchedFree = [&](int part) { return query.isFree[part] && !query.isWatched[part]; };
+  return unwatchedFree(contact.a) || unwatchedFree(contact.b);
+}
+
+// One LP over the contacts that touch a free part: (v_b - v_a)·n_c - t_c >= 0 (t_c only where the
+// objective uses it), velocities bounded to [-1, 1] (scaling keeps a motion a motion).
+MotionSearch solveMotionProgram(const Assembly& assembly, const MotionQuery& query, const std::vector<int>& contacts,
+                                const std::vector<int>& velocityColumn, int velocityCount, Objective objective,
+                                double functionalSign) {
+  LinearProgram lp;
+  glp_prob* problem = lp.problem.get();
+  glp_set_obj_dir(problem, GLP_MAX);
+  if (velocityCount > 0) glp_add_cols(problem, velocityCount);
+  for (int j = 1; j <= velocityCount; ++j) glp_set_col_bnds(problem, j, GLP_DB, -1.0, 1.0);
+  if (objective == Objective::GenericFunctional) {
+    const std::vector<double> weights = genericWeights(velocityCount);
+    for (int part = 0; part < assembly.partCount(); ++part) {
+      if (!query.isWatched[part]) continue;
+      for (int k = 0; k < 3; ++k) {
+        const int column = velocityColumn[part] + k;
+        glp_set_obj_coef(problem, column + 1, functionalSign * weights[column]);
+      }
+    }
+  }
+  const int rows = static_cast<int>(contacts.size());
+  if (rows > 0) glp_add_rows(problem, rows);
   for (int r = 0; r < rows; ++r) {
     const Contact& contact = assembly.contacts[contacts[r]];
-    glp_set_row_bnds(lp.get(), r + 1, GLP_LO, 0.0, 0.0);
+    glp_set_row_bnds(problem, r + 1, GLP_LO, 0.0, 0.0);
     for (int k = 0; k < 3; ++k) {
-      if (velocityColumn[contact.b] >= 0) add(r + 1, velocityColumn[contact.b] + k + 1, contact.normal[k]);
-      if (velocityColumn[contact.a] >= 0) add(r + 1, velocityColumn[contact.a] + k + 1, -contact.normal[k]);
+      if (velocityColumn[contact.b] >= 0) lp.add(r + 1, velocityColumn[contact.b] + k + 1, contact.normal[k]);
+      if (velocityColumn[contact.a] >= 0) lp.add(r + 1, velocityColumn[contact.a] + k + 1, -contact.normal[k]);
     }
-    add(r + 1, velocityCount + r + 1, -1.0);
+    if (objective == Objective::SeparatingContacts && !involvesUnwatchedFreePart(contact, query)) {
+      const int t = glp_add_cols(problem, 1);
+      glp_set_col_bnds(problem, t, GLP_DB, 0.0, 1.0);
+      glp_set_obj_coef(problem, t, 1.0);
+      lp.add(r + 1, t, -1.0);
+    }
   }
-  glp_load_matrix(lp.get(), static_cast<int>(ia.size()) - 1, ia.data(), ja.data(), ar.data());
+  MotionSearch search;
+  search.velocities.assign(assembly.partCount(), Vec3{0, 0, 0});
+  if (glp_get_num_cols(problem) == 0) return search;
+  glp_load_matrix(problem, static_cast<int>(lp.ia.size()) - 1, lp.ia.data(), lp.ja.data(), lp.ar.data());
 
   glp_smcp parameters;
   glp_init_smcp(&parameters);
   parameters.msg_lev = GLP_MSG_OFF;
   parameters.presolve = GLP_ON;
-  const int status = glp_simplex(lp.get(), &parameters);
-  // An empty problem after presolve reports GLP_ENOPFS/GLP_ENODFS only for infeasible input;
-  // v = 0, t = 0 is always feasible, so anything but success is a solver failure.
-  if (status != 0 || glp_get_status(lp.get()) != GLP_OPT) {
+  const int status = glp_simplex(problem, &parameters);
+  // V = 0 (and t = 0) is always feasible and the variables are bounded, so anything but an
+  // optimum is a solver failure.
+  if (status != 0 || glp_get_status(problem) != GLP_OPT) {
     throw Error(ErrorCode::Internal, "GLPK failed on the interlocking linear program (status " +
                                          std::to_string(status) + ")");
   }
-  MotionSearch search;
-  search.velocities.assign(assembly.partCount(), Vec3{0, 0, 0});
-  search.movable = glp_get_obj_val(lp.get()) > kMotionEpsilon;
-  if (search.movable) {
-    for (int i = 0; i < assembly.partCount(); ++i) {
-      if (velocityColumn[i] < 0) continue;
-      for (int k = 0; k < 3; ++k) search.velocities[i][k] = glp_get_col_prim(lp.get(), velocityColumn[i] + k + 1);
+  if (glp_get_obj_val(problem) <= kMotionEpsilon) return search;
+  for (int i = 0; i < assembly.partCount(); ++i) {
+    if (velocityColumn[i] < 0) continue;
+    for (int k = 0; k < 3; ++k) {
+      const double v = glp_get_col_prim(problem, velocityColumn[i] + k + 1);
+      search.velocities[i][k] = std::abs(v) < 1e-9 ? 0.0 : v;
     }
+  }
+  // The motion counts only if a watched part really moves.
+  for (int i = 0; i < assembly.partCount(); ++i) {
+    if (query.isWatched[i] && norm(search.velocities[i]) > 1e-6) search.movable = true;
   }
   return search;
 }
 
-// A non-zero V with A V = 0 (every contact slides), from a rank-revealing sparse QR of A.
-MotionSearch findSlidingMotion(const Assembly& assembly, const std::vector<int>& contacts,
-                               const std::vector<int>& velocityColumn, int velocityCount) {
-  MotionSearch search;
-  search.velocities.assign(assembly.partCount(), Vec3{0, 0, 0});
-  if (velocityCount == 0) return search;
-  const int rows = static_cast<int>(contacts.size());
-  Eigen::VectorXd motion;
-  if (rows == 0) {
-    motion = Eigen::VectorXd::Unit(velocityCount, 0);
-  } else {
-    std::vector<Eigen::Triplet<double>> entries;
-    for (int r = 0; r < rows; ++r) {
-      const Contact& contact = assembly.contacts[contacts[r]];
-      for (int k = 0; k < 3; ++k) {
-        if (velocityColumn[contact.b] >= 0) entries.emplace_back(r, velocityColumn[contact.b] + k, contact.normal[k]);
-        if (velocityColumn[contact.a] >= 0) entries.emplace_back(r, velocityColumn[contact.a] + k, -contact.normal[k]);
-      }
-    }
-    // QR needs rows >= cols; zero rows do not change the null space.
-    Eigen::SparseMatrix<double> matrix(std::max(rows, velocityCount), velocityCount);
-    matrix.setFromTriplets(entries.begin(), entries.end());
-    matrix.makeCompressed();
-    Eigen::SparseQR<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> qr;
-    qr.setPivotThreshold(1e-10);
-    qr.compute(matrix);
-    if (qr.info() != Eigen::Success) throw Error(ErrorCode::Internal, "sparse QR failed in the null-space test");
-    const int rank = static_cast<int>(qr.rank());
-    if (rank >= velocityCount) return search;
-    // A P = Q R with R = [R11 R12; 0 0]: y = [-R11^{-1} R12 e_1; e_1] solves R y = 0, V = P y.
-    Eigen::MatrixXd r = Eigen::MatrixXd(qr.matrixR()).topRows(rank);
-    Eigen::VectorXd y = Eigen::VectorXd::Zero(velocityCount);
-    y(rank) = 1.0;
-    if (rank > 0) {
-      Eigen::VectorXd rhs = -r.col(rank);
-      y.head(rank) = r.leftCols(rank).triangularView<Eigen::Upper>().solve(rhs);
-    }
-    motion = qr.colsPermutation() * y;
-    // Guard against a rank decision that numerical noise got wrong.
-    Eigen::VectorXd residual = matrix * motion;
-    if (residual.lpNorm<Eigen::Infinity>() > 1e-6 * std::max(1.0, motion.lpNorm<Eigen::Infinity>())) return search;
-  }
-  motion /= motion.lpNorm<Eigen::Infinity>();
-  search.movable = true;
-  for (int i = 0; i < assembly.partCount(); ++i) {
-    if (velocityColumn[i] < 0) continue;
-    for (int k = 0; k < 3; ++k) {
-      double v = motion(velocityColumn[i] + k);
-      search.velocities[i][k] = std::abs(v) < 1e-12 ? 0.0 : v;
-    }
+// Is there a motion in which a watched part moves? Eq. 2 first (its solution separates contacts,
+// the clearest witness), then the generic functional in both signs for sliding motions.
+MotionSearch findWatchedMotion(const Assembly& assembly, const MotionQuery& query) {
+  int velocityCount = 0;
+  const std::vector<int> column = velocityColumns(query.isFree, &velocityCount);
+  const std::vector<int> contacts = relevantContacts(assembly, query.isFree);
+  MotionSearch search =
+      solveMotionProgram(assembly, query, contacts, column, velocityCount, Objective::SeparatingContacts, 1.0);
+  for (double sign : {1.0, -1.0}) {
+    if (search.movable) break;
+    search = solveMotionProgram(assembly, query, contacts, column, velocityCount, Objective::GenericFunctional, sign);
   }
   return search;
 }
@@ -215,12 +228,7 @@ std::vector<Vec3> freeDirectionsOfPart(const Assembly& assembly, int part) {
 }  // namespace
 
 MotionSearch findFreeMotion(const Assembly& assembly, const std::vector<bool>& isFree) {
-  int velocityCount = 0;
-  const std::vector<int> column = velocityColumns(isFree, &velocityCount);
-  const std::vector<int> contacts = relevantContacts(assembly, isFree);
-  MotionSearch search = solveEquationTwo(assembly, contacts, column, velocityCount);
-  if (search.movable) return search;
-  return findSlidingMotion(assembly, contacts, column, velocityCount);
+  return findWatchedMotion(assembly, {isFree, isFree});
 }
 
 InterlockingResult testInterlockingByInequalities(const Assembly& assembly) {
@@ -250,17 +258,17 @@ InterlockingResult testInterlockingByInequalities(const Assembly& assembly) {
                     describeMotion(assembly, result.witness);
     return result;
   }
-  // Round 2: fix the key (if any) and a reference part; any remaining motion breaks interlocking.
+  // Round 2: fix a reference part other than the key; the key may move, but no other part may.
   const int key = movableAlone.empty() ? -1 : movableAlone[0];
   const int reference = key == 0 ? 1 : 0;
-  std::vector<bool> isFree(n, true);
-  isFree[reference] = false;
-  if (key >= 0) isFree[key] = false;
-  MotionSearch search = findFreeMotion(assembly, isFree);
+  MotionQuery query{std::vector<bool>(n, true), std::vector<bool>(n, true)};
+  query.isFree[reference] = query.isWatched[reference] = false;
+  if (key >= 0) query.isWatched[key] = false;
+  const MotionSearch search = findWatchedMotion(assembly, query);
   if (search.movable) {
     result.hasWitness = true;
     result.witness = witnessFromMotion(search);
-    result.reason = (key >= 0 ? "with the key fixed, " : "") + describeMotion(assembly, result.witness);
+    result.reason = (key >= 0 ? "besides the key, " : "") + describeMotion(assembly, result.witness);
     return result;
   }
   if (key < 0) {

@@ -173,6 +173,12 @@ AssemblyDocument parseJsonDocument(const std::string& text, const std::string& s
     const size_t colon = message.find(": ");
     if (colon != std::string::npos) message = message.substr(colon + 2);
     throwBadInput(locationOfOffset(text, source, e.byte > 0 ? e.byte - 1 : 0), "malformed JSON: " + message);
+  } catch (const json::exception& e) {
+    // Other reader failures, e.g. "number overflow parsing '1e999'" (out_of_range.406).
+    std::string message = e.what();
+    const size_t bracket = message.find("] ");
+    if (bracket != std::string::npos) message = message.substr(bracket + 2);
+    throwBadInput(source, "malformed JSON: " + message);
   }
   if (!root.is_object()) fail(source, "", "the JSON document must be an object");
   if (root.contains("format") && root["format"] != "desia-assembly") {

@@ -66,6 +66,7 @@ INSTANTIATE_TEST_SUITE_P(
     Desia, BadJsonInput,
     ::testing::Values(
         BadJson{"truncated", "{\n  \"kind\": \"voxel\",\n", "bad.json:3:1: malformed JSON"},
+        BadJson{"numberOverflow", R"({"kind": "contacts", "parts": [{"id": 1e3081}]})", "bad.json: malformed JSON: number overflow parsing '1e3081'"},
         BadJson{"notAnObject", "[1, 2]", "bad.json: the JSON document must be an object"},
         BadJson{"missingKind", "{}", "bad.json: missing field 'kind'"},
         BadJson{"unknownKind", R"({"kind": "lego"})", "bad.json: kind: expected \"voxel\", \"plate\", \"frame\" or \"contacts\", found \"lego\""},
