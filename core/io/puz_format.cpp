@@ -9,17 +9,12 @@
 namespace desia {
 namespace {
 
-// The next line with tokens at or after `i`, skipping blank lines (layer separators).
-size_t skipBlankLines(const std::vector<TextLine>& lines, size_t i) {
-  while (i < lines.size() && lines[i].tokens.empty()) ++i;
-  return i;
-}
-
-int lastLineWithData(const std::vector<TextLine>& lines) {
-  for (auto it = lines.rbegin(); it != lines.rend(); ++it) {
-    if (!it->tokens.empty()) return it->number;
+// The next line that has tokens (blank lines separate layers); false at the end of the text.
+bool nextLineWithData(TextLineReader& reader, TextLine& line) {
+  while (reader.next(line)) {
+    if (!line.tokens.empty()) return true;
   }
-  return 1;
+  return false;
 }
 
 VoxelGrid parseHeader(const TextLine& header, const std::string& source) {
@@ -53,39 +48,34 @@ bool looksLikePuz(const std::string& text) {
 }
 
 VoxelGrid parsePuz(const std::string& text, const std::string& source) {
-  const std::vector<TextLine> lines = splitTextLines(text, source);
-  size_t i = skipBlankLines(lines, 0);
-  if (i == lines.size()) throwBadInput(source, "the file is empty: expected the header 'Nx Ny Nz'");
-  VoxelGrid grid = parseHeader(lines[i], source);
-  ++i;
+  TextLineReader reader(text, source);
+  TextLine line;
+  if (!nextLineWithData(reader, line)) throwBadInput(source, "the file is empty: expected the header 'Nx Ny Nz'");
+  VoxelGrid grid = parseHeader(line, source);
   // Labels above the voxel count cannot be contiguous part ids; the bound also stops overflow.
   const int64_t maxLabel = grid.voxelCount();
   for (int z = 0; z < grid.nz(); ++z) {
     for (int y = 0; y < grid.ny(); ++y) {
-      i = skipBlankLines(lines, i);
-      if (i == lines.size()) {
-        throwBadInput(location(source, lastLineWithData(lines)),
+      if (!nextLineWithData(reader, line)) {
+        throwBadInput(location(source, reader.lastLineWithData()),
                       "the file ends early: expected row " + std::to_string(y + 1) + " of " +
                           std::to_string(grid.ny()) + " in layer " + std::to_string(z + 1) + " of " +
                           std::to_string(grid.nz()) + " (grid " + std::to_string(grid.nx()) + " x " +
                           std::to_string(grid.ny()) + " x " + std::to_string(grid.nz()) + ")");
       }
-      const TextLine& row = lines[i];
-      if (static_cast<int>(row.tokens.size()) != grid.nx()) {
-        throwBadInput(location(source, row.number),
+      if (static_cast<int>(line.tokens.size()) != grid.nx()) {
+        throwBadInput(location(source, line.number),
                       "row " + std::to_string(y + 1) + " of layer " + std::to_string(z + 1) + " has " +
-                          std::to_string(row.tokens.size()) + " values, expected Nx = " + std::to_string(grid.nx()));
+                          std::to_string(line.tokens.size()) + " values, expected Nx = " + std::to_string(grid.nx()));
       }
       for (int x = 0; x < grid.nx(); ++x) {
         grid.setLabel(x, y, z,
-                      static_cast<int>(parseIntegerToken(row.tokens[x], source, row.number, "voxel value", 0, maxLabel)));
+                      static_cast<int>(parseIntegerToken(line.tokens[x], source, line.number, "voxel value", 0, maxLabel)));
       }
-      ++i;
     }
   }
-  i = skipBlankLines(lines, i);
-  if (i != lines.size()) {
-    throwBadInput(location(source, lines[i].number, lines[i].tokens[0].column),
+  if (nextLineWithData(reader, line)) {
+    throwBadInput(location(source, line.number, line.tokens[0].column),
                   "unexpected data after the last layer (the header promises " + std::to_string(grid.nz()) +
                       " layers of " + std::to_string(grid.ny()) + " rows)");
   }

@@ -15,43 +15,43 @@ std::string location(const std::string& source, int line, int column) {
   return where;
 }
 
-std::vector<TextLine> splitTextLines(const std::string& text, const std::string& source) {
-  std::vector<TextLine> lines;
-  TextLine current{1, {}};
+bool TextLineReader::next(TextLine& line) {
+  if (finished_) return false;
+  line.number = ++lineNumber_;
+  line.tokens.clear();
   int column = 1;
-  size_t i = 0;
-  while (i < text.size()) {
-    const unsigned char c = static_cast<unsigned char>(text[i]);
+  while (offset_ < text_.size()) {
+    const unsigned char c = static_cast<unsigned char>(text_[offset_]);
     if (c == '\n') {
-      lines.push_back(std::move(current));
-      current = TextLine{static_cast<int>(lines.size()) + 1, {}};
-      column = 1;
-      ++i;
-      continue;
+      ++offset_;
+      if (!line.tokens.empty()) lastLineWithData_ = line.number;
+      return true;
     }
     if (c == ' ' || c == '\t' || c == '\r') {
       ++column;
-      ++i;
+      ++offset_;
       continue;
     }
     if (c < 0x20 || c == 0x7f || c >= 0x80) {
       char hex[8];
       std::snprintf(hex, sizeof hex, "0x%02x", c);
-      throwBadInput(location(source, current.number, column),
-                    std::string("not a text file: unexpected byte ") + hex + " at offset " + std::to_string(i));
+      throwBadInput(location(source_, line.number, column),
+                    std::string("not a text file: unexpected byte ") + hex + " at offset " + std::to_string(offset_));
     }
     Token token{"", column};
-    while (i < text.size()) {
-      const unsigned char t = static_cast<unsigned char>(text[i]);
+    while (offset_ < text_.size()) {
+      const unsigned char t = static_cast<unsigned char>(text_[offset_]);
       if (t == ' ' || t == '\t' || t == '\r' || t == '\n' || t < 0x20 || t >= 0x7f) break;
       token.text.push_back(static_cast<char>(t));
-      ++i;
+      ++offset_;
       ++column;
     }
-    current.tokens.push_back(std::move(token));
+    line.tokens.push_back(std::move(token));
   }
-  lines.push_back(std::move(current));
-  return lines;
+  // The text ended without a final newline: this is its last line.
+  finished_ = true;
+  if (!line.tokens.empty()) lastLineWithData_ = line.number;
+  return true;
 }
 
 int64_t parseIntegerToken(const Token& token, const std::string& source, int line, const std::string& what,

@@ -18,9 +18,25 @@ struct TextLine {
   std::vector<Token> tokens;
 };
 
-// Splits text into lines of whitespace-separated tokens (accepting \n and \r\n). Throws BadInput
-// for binary content (a NUL or other control byte), naming its offset.
-std::vector<TextLine> splitTextLines(const std::string& text, const std::string& source);
+// Reads text one line of whitespace-separated tokens at a time (accepting \n and \r\n), so a
+// large file never exists as a list of tokens. Throws BadInput for binary content (a NUL or
+// other control byte), naming its offset.
+class TextLineReader {
+ public:
+  TextLineReader(const std::string& text, const std::string& source) : text_(text), source_(source) {}
+  // Fills `line` with the next line (possibly without tokens); false at the end of the text.
+  bool next(TextLine& line);
+  // Number of the last line that had tokens (1 when none had).
+  int lastLineWithData() const { return lastLineWithData_; }
+
+ private:
+  const std::string& text_;
+  const std::string& source_;
+  size_t offset_ = 0;
+  int lineNumber_ = 0;
+  int lastLineWithData_ = 1;
+  bool finished_ = false;
+};
 
 // "source:line:column" (column omitted when 0).
 std::string location(const std::string& source, int line, int column = 0);
