@@ -104,9 +104,11 @@ export interface Desia {
 
 /** Error thrown for bad input (with the core's message, naming file, line and value) and failures. */
 export class DesiaError extends Error {
-  constructor(message: string, code?: ErrorCode);
+  constructor(message: string, code?: ErrorCode, options?: { fatal?: boolean });
   readonly name: 'DesiaError';
   readonly code: ErrorCode;
+  /** True when the WebAssembly instance trapped (e.g. out of memory): load a new module. */
+  readonly fatal: boolean;
 }
 
 export function loadDesiaModule(options?: LoadOptions): Promise<DesiaCore>;

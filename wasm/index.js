@@ -7,15 +7,20 @@ const isNode = typeof process === 'object' && typeof process.versions?.node === 
 
 /** Error thrown for bad input and failures; `code` is 'bad-input', 'too-large', 'unsupported' or 'internal'. */
 export class DesiaError extends Error {
-  constructor(message, code = 'internal') {
+  constructor(message, code = 'internal', { fatal = false } = {}) {
     super(message);
     this.name = 'DesiaError';
     this.code = code;
+    /** True when the WebAssembly instance trapped: load a new module (in a worker: a new worker). */
+    this.fatal = fatal;
   }
 }
 
 function rethrow(error) {
   if (error instanceof DesiaError) throw error;
+  if (typeof WebAssembly === 'object' && error instanceof WebAssembly.RuntimeError) {
+    throw new DesiaError(`WebAssembly trap: ${error.message}; this module instance cannot be used again`, 'internal', { fatal: true });
+  }
   if (error instanceof Error && typeof error.code === 'string') throw new DesiaError(error.message, error.code);
   if (error instanceof Error) throw new DesiaError(error.message, 'internal');
   // A bare number is a C++ exception that escaped the bindings' guard: a bug, but never hide it.

@@ -51,7 +51,8 @@ function messageOf(error) {
  * bug somewhere in the core, so we do not trust the instance after it either.
  */
 function isFatal(error) {
-  return error instanceof WebAssembly.RuntimeError
+  return error?.fatal === true
+    || error instanceof WebAssembly.RuntimeError
     || error?.code === 'internal'
     || /^Aborted\(/.test(messageOf(error));
 }
