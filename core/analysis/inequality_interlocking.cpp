@@ -1,9 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Inequality-based interlocking test (paper Section 3.2, Eq. 2), solved with GLPK.
 //
-// Eq. 2 alone misses motions that slide along every contact (all t_ij = 0 with v != 0: a part
-// in a slot, free along the slot). A motion with A V = 0 lies in the null space of the contact
-// matrix, so after a zero LP optimum we also test that null space (as TopoLite does).
+// Two departures from the paper's recipe make the test exact for any contact normals:
+// - Eq. 2 only finds motions that separate some contact; motions that slide along every contact
+//   (all t_ij = 0 but v != 0: a part in a slot, free along the slot) need a second look, here two
+//   LPs maximizing a generic linear functional of the velocities.
+// - Round 2 fixes only a reference part, not the key: fixing both freezes any motion that
+//   separates a group holding the reference from a group holding the key and other parts, and
+//   such an assembly would pass. The key may move; a motion counts when another part moves.
+
 #include <glpk.h>
 
 #include <algorithm>
@@ -57,7 +62,7 @@ struct MotionQuery {
 };
 
 enum class Objective {
-  SeparatingContacts,  // Eq. 2: max Σ t_c over contacts between watched or fixed parts
+  SeparatingContacts,  // Eq. 2's question: can a contact between watched or fixed parts separate?
   GenericFunctional,   // max Σ c_i·v_i over watched parts, for a fixed generic c (see below)
 };
 
@@ -93,53 +98,62 @@ bool involvesUnwatchedFreePart(const Contact& contact, const MotionQuery& query)
   return unwatchedFree(contact.a) || unwatchedFree(contact.b);
 }
 
-// One LP over the contacts that touch a free part: (v_b - v_a)·n_c - t_c >= 0 (t_c only where the
-// objective uses it), velocities bounded to [-1, 1] (scaling keeps a motion a motion).
+// One LP over the contacts that touch a free part: s_c = (v_b - v_a)·n_c >= 0 for every contact,
+// velocities bounded to [-1, 1] (scaling keeps a motion a motion).
+//
+// Eq. 2 maximizes Σ t_c with t_c <= s_c and 0 <= t_c <= 1; its optimum is positive exactly when
+// some s_c can be positive. Maximizing Σ s_c over the same constraints answers the same question
+// without the t columns (3N instead of 3N + C variables), and GLPK gets there in far fewer
+// pivots: on a 1500-part cube that falls apart, 16 s for Eq. 2 as written.
 MotionSearch solveMotionProgram(const Assembly& assembly, const MotionQuery& query, const std::vector<int>& contacts,
                                 const std::vector<int>& velocityColumn, int velocityCount, Objective objective,
                                 double functionalSign) {
-  LinearProgram lp;
-  glp_prob* problem = lp.problem.get();
-  glp_set_obj_dir(problem, GLP_MAX);
-  if (velocityCount > 0) glp_add_cols(problem, velocityCount);
-  for (int j = 1; j <= velocityCount; ++j) glp_set_col_bnds(problem, j, GLP_DB, -1.0, 1.0);
+  MotionSearch search;
+  search.velocities.assign(assembly.partCount(), Vec3{0, 0, 0});
+  if (velocityCount == 0) return search;
+  std::vector<double> objectiveCoefficients(velocityCount, 0.0);
   if (objective == Objective::GenericFunctional) {
     const std::vector<double> weights = genericWeights(velocityCount);
     for (int part = 0; part < assembly.partCount(); ++part) {
       if (!query.isWatched[part]) continue;
       for (int k = 0; k < 3; ++k) {
         const int column = velocityColumn[part] + k;
-        glp_set_obj_coef(problem, column + 1, functionalSign * weights[column]);
+        objectiveCoefficients[column] = functionalSign * weights[column];
       }
     }
   }
+  LinearProgram lp;
+  glp_prob* problem = lp.problem.get();
+  glp_set_obj_dir(problem, GLP_MAX);
+  glp_add_cols(problem, velocityCount);
+  for (int j = 1; j <= velocityCount; ++j) glp_set_col_bnds(problem, j, GLP_DB, -1.0, 1.0);
   const int rows = static_cast<int>(contacts.size());
   if (rows > 0) glp_add_rows(problem, rows);
   for (int r = 0; r < rows; ++r) {
     const Contact& contact = assembly.contacts[contacts[r]];
     glp_set_row_bnds(problem, r + 1, GLP_LO, 0.0, 0.0);
+    const bool separationCounts = objective == Objective::SeparatingContacts && !involvesUnwatchedFreePart(contact, query);
     for (int k = 0; k < 3; ++k) {
-      if (velocityColumn[contact.b] >= 0) lp.add(r + 1, velocityColumn[contact.b] + k + 1, contact.normal[k]);
-      if (velocityColumn[contact.a] >= 0) lp.add(r + 1, velocityColumn[contact.a] + k + 1, -contact.normal[k]);
-    }
-    if (objective == Objective::SeparatingContacts && !involvesUnwatchedFreePart(contact, query)) {
-      const int t = glp_add_cols(problem, 1);
-      glp_set_col_bnds(problem, t, GLP_DB, 0.0, 1.0);
-      glp_set_obj_coef(problem, t, 1.0);
-      lp.add(r + 1, t, -1.0);
+      for (const auto& [part, sign] : {std::pair<int, double>{contact.b, 1.0}, std::pair<int, double>{contact.a, -1.0}}) {
+        if (velocityColumn[part] < 0) continue;
+        const int column = velocityColumn[part] + k;
+        lp.add(r + 1, column + 1, sign * contact.normal[k]);
+        if (separationCounts) objectiveCoefficients[column] += sign * contact.normal[k];
+      }
     }
   }
-  MotionSearch search;
-  search.velocities.assign(assembly.partCount(), Vec3{0, 0, 0});
-  if (glp_get_num_cols(problem) == 0) return search;
+  for (int j = 0; j < velocityCount; ++j) glp_set_obj_coef(problem, j + 1, objectiveCoefficients[j]);
   glp_load_matrix(problem, static_cast<int>(lp.ia.size()) - 1, lp.ia.data(), lp.ja.data(), lp.ar.data());
 
   glp_smcp parameters;
   glp_init_smcp(&parameters);
   parameters.msg_lev = GLP_MSG_OFF;
   parameters.presolve = GLP_ON;
+  // Dual simplex, falling back to primal if it fails: V = 0 is dual degenerate here, and on
+  // the benchmark assemblies the dual method needs 2-3x fewer pivots (bunny 8 ms instead of 11).
+  parameters.meth = GLP_DUALP;
   const int status = glp_simplex(problem, &parameters);
-  // V = 0 (and t = 0) is always feasible and the variables are bounded, so anything but an
+  // V = 0 is always feasible and the variables are bounded, so anything but an
   // optimum is a solver failure.
   if (status != 0 || glp_get_status(problem) != GLP_OPT) {
     throw Error(ErrorCode::Internal, "GLPK failed on the interlocking linear program (status " +

@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <array>
-#include <map>
 #include <sstream>
 
 #include "desia/error.h"
@@ -110,9 +109,24 @@ Assembly assemblyFromVoxels(const VoxelGrid& grid) {
   Assembly assembly;
   const int partCount = grid.maxLabel();
   for (int id = 1; id <= partCount; ++id) assembly.parts.push_back({id, ""});
-  // Count touching faces per (a, b, axis) with a on the -axis side of b: the contact normal from
-  // a to b is +axis. std::map keeps a deterministic order.
-  std::map<std::array<int, 3>, int> faces;
+  // Touching faces per (a, b, axis) with a on the -axis side of b: the contact normal from a to b
+  // is +axis. A part has few neighbours, so a small list per part (searched linearly, sorted at
+  // the end) is much faster than a map and gives the same deterministic order (a, b, axis).
+  struct FaceCount {
+    int other;
+    int axis;
+    int count;
+  };
+  std::vector<std::vector<FaceCount>> faces(static_cast<size_t>(partCount));
+  auto countFace = [&](int a, int b, int axis) {
+    for (FaceCount& entry : faces[a]) {
+      if (entry.other == b && entry.axis == axis) {
+        ++entry.count;
+        return;
+      }
+    }
+    faces[a].push_back({b, axis, 1});
+  };
   for (int z = 0; z < grid.nz(); ++z) {
     for (int y = 0; y < grid.ny(); ++y) {
       for (int x = 0; x < grid.nx(); ++x) {
@@ -123,18 +137,23 @@ Assembly assemblyFromVoxels(const VoxelGrid& grid) {
                                    z + 1 < grid.nz() ? grid.label(x, y, z + 1) : 0};
         for (int axis = 0; axis < 3; ++axis) {
           const int b = neighbours[axis];
-          if (b != 0 && b != a) ++faces[{a - 1, b - 1, axis}];
+          if (b != 0 && b != a) countFace(a - 1, b - 1, axis);
         }
       }
     }
   }
-  for (const auto& [key, count] : faces) {
-    Contact contact;
-    contact.a = key[0];
-    contact.b = key[1];
-    contact.normal[key[2]] = 1.0;
-    contact.area = count;
-    assembly.contacts.push_back(contact);
+  for (int a = 0; a < partCount; ++a) {
+    std::sort(faces[a].begin(), faces[a].end(), [](const FaceCount& l, const FaceCount& r) {
+      return l.other != r.other ? l.other < r.other : l.axis < r.axis;
+    });
+    for (const FaceCount& entry : faces[a]) {
+      Contact contact;
+      contact.a = a;
+      contact.b = entry.other;
+      contact.normal[entry.axis] = 1.0;
+      contact.area = entry.count;
+      assembly.contacts.push_back(contact);
+    }
   }
   return assembly;
 }

@@ -63,13 +63,17 @@ TEST(VoxelAgreement, GraphAndInequalityTestsAgreeOnPuzzleVariants) {
         EXPECT_EQ(testing::labelsOf(byGraphs.keyDirections), testing::labelsOf(byInequalities.keyDirections));
       }
       const DisassemblyPlan plan = planVoxelDisassembly(document.voxels, document.assembly);
-      if (plan.complete) EXPECT_EQ(testing::verifyPlan(document.voxels, document.assembly, plan), "") << file << " variant " << variant;
+      if (plan.complete) {
+        EXPECT_EQ(testing::verifyPlan(document.voxels, document.assembly, plan), "") << file << " variant " << variant;
+      }
       // Interlocking is local (Section 3.2) and does not imply a disassembly exists (Section 3.3
       // tests that separately), but only the key can move first.
       if (byGraphs.verdict == Verdict::Interlocking && !plan.removals.empty()) {
         EXPECT_EQ(plan.removals[0].part, byGraphs.key) << file << " variant " << variant;
       }
-      if (byGraphs.verdict == Verdict::Deadlocked) EXPECT_TRUE(plan.removals.empty()) << file << " variant " << variant;
+      if (byGraphs.verdict == Verdict::Deadlocked) {
+        EXPECT_TRUE(plan.removals.empty()) << file << " variant " << variant;
+      }
       disassemblable += plan.complete ? 1 : 0;
       ++seen[byGraphs.verdict];
       ++checked;

@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
+# The interlocking-test benchmarks (paper Section 3.2): builds the native and WebAssembly
+# targets, runs desia_bench (Google Benchmark; writes build/bench/native.json), then the same
+# workloads in node (tests/benchmarks/wasm_bench.mjs), whose table puts the paper, native and
+# WebAssembly side by side. About 2 to 3 minutes after the builds, on 2 cores.
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+cd "$root"
+
+echo "== building (native, wasm)"
+bash scripts/build.sh native
+bash scripts/build.sh wasm
+
+echo
+echo "== native (Google Benchmark)"
+build/native/tests/benchmarks/desia_bench --desia_json="$root/build/bench/native.json"
+
+echo
+echo "== WebAssembly (node)"
+node tests/benchmarks/wasm_bench.mjs --native="$root/build/bench/native.json" --json="$root/build/bench/wasm.json"
