@@ -2,24 +2,11 @@
 // Disassembly planning from contacts alone (paper Section 3.3, "successively identifying the
 // movable part based on the DBGs"). Without geometry no sweep is possible, so a removal is a
 // local translation: the part has no blocking edge along the chosen base direction.
-#include "analysis/vec3.h"
+#include "analysis/part_motion.h"
 #include "desia/blocking_graph.h"
 #include "desia/disassembly.h"
 
 namespace desia {
-namespace {
-
-// Is `part` free along `d` among the parts still present?
-bool freeAlong(const Assembly& assembly, const std::vector<bool>& present, int part, const Vec3& d) {
-  for (const Contact& contact : assembly.contacts) {
-    if (!present[contact.a] || !present[contact.b]) continue;
-    if (contact.a == part && dot(d, contact.normal) > kDirectionTolerance) return false;
-    if (contact.b == part && dot(d, contact.normal) < -kDirectionTolerance) return false;
-  }
-  return true;
-}
-
-}  // namespace
 
 DisassemblyPlan planContactDisassembly(const Assembly& assembly) {
   const int n = assembly.partCount();
@@ -32,7 +19,7 @@ DisassemblyPlan planContactDisassembly(const Assembly& assembly) {
       if (!present[part]) continue;
       for (const BaseDirection& base : directions) {
         for (const Vec3& d : {base.vector, negated(base.vector)}) {
-          if (progressed || !freeAlong(assembly, present, part, d)) continue;
+          if (progressed || !isPartFreeAlong(assembly, &present, part, d)) continue;
           plan.removals.push_back({part, {Move{d, 1}}});
           present[part] = false;
           progressed = true;

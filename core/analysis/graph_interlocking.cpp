@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <sstream>
 
+#include "analysis/part_motion.h"
 #include "analysis/vec3.h"
 #include "desia/interlocking.h"
 
@@ -117,20 +118,8 @@ InterlockingResult testInterlockingByGraphs(const Assembly& assembly,
     if (!degrees.hasOutEdge[keyComponent]) keyDirections.push_back(d);
     if (!degrees.hasInEdge[keyComponent]) keyDirections.push_back(negated(d));
   }
-  InterlockingResult result;
-  if (key < 0) {
-    result.verdict = Verdict::Deadlocked;
-    result.reason = "every base blocking graph is strongly connected: no part or part group can move";
-    return result;
-  }
-  result.verdict = Verdict::Interlocking;
-  result.key = key;
-  result.keyDirections = keyDirections;
-  std::ostringstream reason;
-  reason << "only the key (part " << assembly.parts[key].id << ") can move, along";
-  for (const Vec3& dir : keyDirections) reason << ' ' << directionLabel(dir);
-  result.reason = reason.str();
-  return result;
+  if (key < 0) return deadlockedResult("every base blocking graph is strongly connected: no part or part group can move");
+  return interlockingResult(assembly, key, keyDirections);
 }
 
 }  // namespace desia

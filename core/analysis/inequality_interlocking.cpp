@@ -15,6 +15,7 @@
 #include <memory>
 #include <sstream>
 
+#include "analysis/part_motion.h"
 #include "analysis/vec3.h"
 #include "desia/error.h"
 #include "desia/interlocking.h"
@@ -223,17 +224,12 @@ std::string describeMotion(const Assembly& assembly, const Witness& witness) {
   return out.str();
 }
 
-// Base directions along which the part alone is free (no contact normal points into the motion).
+// Base directions (both signs) along which the part alone is free.
 std::vector<Vec3> freeDirectionsOfPart(const Assembly& assembly, int part) {
   std::vector<Vec3> free;
   for (const BaseDirection& base : computeBaseDirections(assembly)) {
     for (const Vec3& d : {base.vector, negated(base.vector)}) {
-      bool blocked = false;
-      for (const Contact& contact : assembly.contacts) {
-        if (contact.a == part && dot(d, contact.normal) > kDirectionTolerance) blocked = true;
-        if (contact.b == part && dot(d, contact.normal) < -kDirectionTolerance) blocked = true;
-      }
-      if (!blocked) free.push_back(d);
+      if (isPartFreeAlong(assembly, nullptr, part, d)) free.push_back(d);
     }
   }
   return free;
@@ -285,20 +281,10 @@ InterlockingResult testInterlockingByInequalities(const Assembly& assembly) {
     result.reason = (key >= 0 ? "besides the key, " : "") + describeMotion(assembly, result.witness);
     return result;
   }
-  if (key < 0) {
-    result.verdict = Verdict::Deadlocked;
-    result.reason = "the linear program admits no motion: no part or part group can move";
-    return result;
-  }
-  result.verdict = Verdict::Interlocking;
-  result.key = key;
-  result.keyDirections = freeDirectionsOfPart(assembly, key);
-  if (result.keyDirections.empty()) result.keyDirections.push_back(normalized(motions[0].velocities[key]));
-  std::ostringstream reason;
-  reason << "only the key (part " << assembly.parts[key].id << ") can move, along";
-  for (const Vec3& d : result.keyDirections) reason << ' ' << directionLabel(d);
-  result.reason = reason.str();
-  return result;
+  if (key < 0) return deadlockedResult("the linear program admits no motion: no part or part group can move");
+  std::vector<Vec3> keyDirections = freeDirectionsOfPart(assembly, key);
+  if (keyDirections.empty()) keyDirections.push_back(normalized(motions[0].velocities[key]));
+  return interlockingResult(assembly, key, std::move(keyDirections));
 }
 
 }  // namespace desia

@@ -46,10 +46,7 @@ TEST_P(ReferenceDisassembly, RemovesPartsInIdOrderWithVerifiedPaths) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Desia, ReferenceDisassembly, ::testing::ValuesIn(kBentCases), [](const auto& info) {
-  std::string name = info.param.file;
-  name = name.substr(name.find('/') + 1);
-  for (char& c : name) c = std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
-  return name;
+  return testing::testNameFromPath(info.param.file);
 });
 
 TEST(VoxelDisassembly, BentPathOfCube4x4x4K9PartThree) {
@@ -82,14 +79,7 @@ TEST(VoxelDisassembly, TrappedPartLeavesPlanIncomplete) {
 }
 
 TEST(VoxelDisassembly, SearchFindsAPathWithSeveralTurns) {
-  // Part 1 sits in an S-shaped channel cut through part 2 in layer z=1 (closed above and below):
-  // it must step +x, then +y, then leave along +x.
-  std::vector<std::vector<std::string>> layers = {
-      {"2 2 2 2 2", "2 2 2 2 2", "2 2 2 2 2", "2 2 2 2 2"},
-      {"2 2 2 2 2", "2 1 0 2 2", "2 2 0 0 0", "2 2 2 2 2"},
-      {"2 2 2 2 2", "2 2 2 2 2", "2 2 2 2 2", "2 2 2 2 2"},
-  };
-  const AssemblyDocument document = documentFromVoxels(testing::gridFromLayers(layers));
+  const AssemblyDocument document = documentFromVoxels(testing::gridFromLayers(testing::sChannelLayers()));
   const DisassemblyPlan plan = planVoxelDisassembly(document.voxels, document.assembly);
   ASSERT_TRUE(plan.complete);
   const Removal& first = plan.removals[0];
@@ -105,12 +95,7 @@ TEST(VoxelDisassembly, SearchFindsAPathWithSeveralTurns) {
 }
 
 TEST(VoxelDisassembly, WorkLimitIsReportedNotPassedOffAsStuck) {
-  std::vector<std::vector<std::string>> layers = {
-      {"2 2 2 2 2", "2 2 2 2 2", "2 2 2 2 2", "2 2 2 2 2"},
-      {"2 2 2 2 2", "2 1 0 2 2", "2 2 0 0 0", "2 2 2 2 2"},
-      {"2 2 2 2 2", "2 2 2 2 2", "2 2 2 2 2", "2 2 2 2 2"},
-  };
-  const AssemblyDocument document = documentFromVoxels(testing::gridFromLayers(layers));
+  const AssemblyDocument document = documentFromVoxels(testing::gridFromLayers(testing::sChannelLayers()));
   VoxelDisassemblyOptions tight;
   tight.maxVoxelTests = 10;
   const DisassemblyPlan limited = planVoxelDisassembly(document.voxels, document.assembly, tight);

@@ -46,12 +46,7 @@ TEST_P(ReferenceResults, InequalityTestAgreesWithGraphTest) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Desia, ReferenceResults, ::testing::ValuesIn(kReferencePuzzles),
-                         [](const auto& info) {
-                           std::string name = info.param.file;
-                           name = name.substr(name.find('/') + 1);
-                           for (char& c : name) c = std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
-                           return name;
-                         });
+                         [](const auto& info) { return testing::testNameFromPath(info.param.file); });
 
 TEST(InputShapes, OnePartIsAVerdictNotAnError) {
   for (const char* file : {"input_puz/Cube_4x4x4_origin.puz", "input_puz/Cube_5x5x5_origin.puz",

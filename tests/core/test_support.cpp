@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "test_support.h"
 
+#include <cctype>
 #include <fstream>
 #include <sstream>
 
@@ -31,6 +32,20 @@ VoxelGrid gridFromLayers(const std::vector<std::vector<std::string>>& layers) {
     text += "\n";
   }
   return parsePuz(text, "test");
+}
+
+std::string testNameFromPath(const std::string& path) {
+  std::string name = path.substr(path.find('/') + 1);
+  for (char& c : name) c = std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+  return name;
+}
+
+std::vector<std::vector<std::string>> sChannelLayers() {
+  return {
+      {"2 2 2 2 2", "2 2 2 2 2", "2 2 2 2 2", "2 2 2 2 2"},
+      {"2 2 2 2 2", "2 1 0 2 2", "2 2 0 0 0", "2 2 2 2 2"},
+      {"2 2 2 2 2", "2 2 2 2 2", "2 2 2 2 2", "2 2 2 2 2"},
+  };
 }
 
 std::vector<int> idsOf(const Assembly& assembly, const std::vector<int>& parts) {

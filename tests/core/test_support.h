@@ -21,6 +21,13 @@ AssemblyDocument loadReference(const std::string& relative);
 // Builds a grid from layers of rows, e.g. {{"1 1", "2 2"}, {"1 1", "3 3"}} (z layers of y rows).
 VoxelGrid gridFromLayers(const std::vector<std::vector<std::string>>& layers);
 
+// A GoogleTest-safe name from a reference path: "result_puz/Cube_4x4x4_K9.puz" -> "Cube_4x4x4_K9_puz".
+std::string testNameFromPath(const std::string& path);
+
+// Part 1 in an S-shaped channel through part 2 (layer z=1, closed above and below): its only way
+// out is +x 1, +y 1, then +x.
+std::vector<std::vector<std::string>> sChannelLayers();
+
 // User-visible ids of internal part indices.
 std::vector<int> idsOf(const Assembly& assembly, const std::vector<int>& parts);
 std::vector<std::string> labelsOf(const std::vector<Vec3>& directions);
