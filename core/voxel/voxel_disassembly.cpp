@@ -167,6 +167,31 @@ class RemovalSearch {
 
 }  // namespace
 
+bool findVoxelRemovalPath(const VoxelGrid& occupancy, int label, std::vector<Move>* path,
+                          const VoxelDisassemblyOptions& options, bool* limitReached) {
+  std::vector<Int3> voxels;
+  Box own, obstacles;
+  for (int64_t i = 0; i < occupancy.voxelCount(); ++i) {
+    const int l = occupancy.labelAt(i);
+    if (l == 0) continue;
+    const Int3 c = occupancy.coordinates(i);
+    if (l == label) {
+      voxels.push_back(c);
+      own.add(c);
+    } else {
+      obstacles.add(c);
+    }
+  }
+  if (limitReached) *limitReached = false;
+  if (voxels.empty()) return false;
+  RemovalSearch search(occupancy, label, voxels, own, options);
+  if (!obstacles.empty() && !search.canTakeAnyStep()) return false;
+  search.setObstacles(obstacles);
+  const bool found = search.findPath(path);
+  if (limitReached) *limitReached = search.limitReached();
+  return found;
+}
+
 DisassemblyPlan planVoxelDisassembly(const VoxelGrid& grid, const Assembly& assembly,
                                      const VoxelDisassemblyOptions& options) {
   const int partCount = assembly.partCount();

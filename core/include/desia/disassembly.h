@@ -44,6 +44,11 @@ struct VoxelDisassemblyOptions {
 DisassemblyPlan planVoxelDisassembly(const VoxelGrid& grid, const Assembly& assembly,
                                      const VoxelDisassemblyOptions& options = {});
 
+// Can the part with `label` leave `occupancy` (every other non-zero voxel is an obstacle)? Fills
+// `path` on success. `limitReached` (optional) tells whether the search stopped at its limits.
+bool findVoxelRemovalPath(const VoxelGrid& occupancy, int label, std::vector<Move>* path,
+                          const VoxelDisassemblyOptions& options = {}, bool* limitReached = nullptr);
+
 // Assemblies known only by their contacts: a part is removable when it is locally free along a
 // base direction in the DBG of the remaining parts (no sweep is possible without geometry).
 DisassemblyPlan planContactDisassembly(const Assembly& assembly);

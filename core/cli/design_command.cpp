@@ -1,0 +1,169 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// desia design voxel: a thin shell over designVoxelPuzzle (core/include/desia/voxel_design.h).
+#include <unistd.h>
+
+#include <csignal>
+#include <cstdio>
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "cli_files.h"
+#include "commands.h"
+#include "desia/document.h"
+#include "desia/error.h"
+#include "desia/puz_format.h"
+#include "desia/voxel_design.h"
+
+namespace {
+
+// Set by Ctrl-C; the search polls it after every node and stops with what it has.
+volatile std::sig_atomic_t interrupted = 0;
+extern "C" void onInterrupt(int) { interrupted = 1; }
+
+struct DesignArguments {
+  std::string input, output, groupsFile;
+  desia::VoxelDesignOptions options;
+  bool quiet = false;
+};
+
+[[noreturn]] void usage(const std::string& message) { throw desia::Error(desia::ErrorCode::BadInput, message); }
+
+long long integerArgument(const std::string& flag, const std::string& text, long long lo, long long hi) {
+  size_t used = 0;
+  long long value = 0;
+  try {
+    value = std::stoll(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != text.size() || text.empty()) usage(flag + " expects an integer, got '" + text + "'");
+  if (value < lo || value > hi) usage(flag + " " + text + " is out of range (" + std::to_string(lo) + " to " + std::to_string(hi) + ")");
+  return value;
+}
+
+double secondsArgument(const std::string& flag, const std::string& text) {
+  size_t used = 0;
+  double value = -1;
+  try {
+    value = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != text.size() || !(value >= 0) || value > 1e7) usage(flag + " expects a number of seconds >= 0, got '" + text + "'");
+  return value;
+}
+
+desia::Int3 directionArgument(const std::string& text) {
+  static const std::pair<const char*, desia::Int3> kNames[] = {{"+x", {1, 0, 0}}, {"-x", {-1, 0, 0}}, {"+y", {0, 1, 0}},
+                                                               {"-y", {0, -1, 0}}, {"+z", {0, 0, 1}}, {"-z", {0, 0, -1}}};
+  for (const auto& [name, direction] : kNames) {
+    if (text == name) return direction;
+  }
+  usage("--key-direction expects +x, -x, +y, -y, +z or -z, got '" + text + "'");
+}
+
+DesignArguments parseArguments(const std::vector<std::string>& args) {
+  if (args.empty() || args[0] != "voxel") usage("design expects a kind: 'desia design voxel ...' (plates and frames come later)");
+  DesignArguments parsed;
+  bool partsGiven = false;
+  for (size_t i = 1; i < args.size(); ++i) {
+    const std::string& flag = args[i];
+    if (flag == "--quiet") {
+      parsed.quiet = true;
+      continue;
+    }
+    if (i + 1 == args.size()) usage(flag + " needs a value");
+    const std::string& value = args[++i];
+    if (flag == "--input") parsed.input = value;
+    else if (flag == "--output") parsed.output = value;
+    else if (flag == "--groups") parsed.groupsFile = value;
+    else if (flag == "--parts") { parsed.options.parts = static_cast<int>(integerArgument(flag, value, 1, 1000000)); partsGiven = true; }
+    else if (flag == "--seed") parsed.options.seed = static_cast<uint64_t>(integerArgument(flag, value, 0, (1LL << 62)));
+    else if (flag == "--candidates") parsed.options.candidates = static_cast<int>(integerArgument(flag, value, 1, 10000));
+    else if (flag == "--rank") parsed.options.ranking = desia::parseCandidateRanking(value);
+    else if (flag == "--mode") parsed.options.mode = desia::parseDesignMode(value);
+    else if (flag == "--min-part-size") parsed.options.minPartSize = static_cast<int>(integerArgument(flag, value, 1, 1000000));
+    else if (flag == "--time-limit") parsed.options.timeLimitSeconds = secondsArgument(flag, value);
+    else if (flag == "--node-limit") parsed.options.nodeLimit = integerArgument(flag, value, 1, 1LL << 50);
+    else if (flag == "--key-direction") parsed.options.keyDirection = directionArgument(value);
+    else usage("unknown option " + flag);
+  }
+  if (parsed.input.empty()) usage("design voxel needs --input SHAPE.puz|SHAPE.json");
+  if (parsed.output.empty()) usage("design voxel needs --output OUT.puz|OUT.json");
+  if (!partsGiven) usage("design voxel needs --parts N");
+  if (!desia::cli::hasExtension(parsed.output, ".puz") && !desia::cli::hasExtension(parsed.output, ".json")) {
+    usage("--output " + parsed.output + ": the file name must end in .puz or .json");
+  }
+  return parsed;
+}
+
+// Groups file: {"groups": [[[x, y, z], ...], ...]}: voxel coordinates that must share one part.
+std::vector<std::vector<int64_t>> readGroups(const std::string& path, const desia::VoxelGrid& shape) {
+  nlohmann::json root;
+  try {
+    root = nlohmann::json::parse(desia::cli::readInputFile(path));
+  } catch (const nlohmann::json::exception& e) {
+    throw desia::Error(desia::ErrorCode::BadInput, path + ": malformed JSON: " + e.what());
+  }
+  if (!root.is_object() || !root.contains("groups") || !root["groups"].is_array()) {
+    throw desia::Error(desia::ErrorCode::BadInput, path + ": expected {\"groups\": [[[x, y, z], ...], ...]}");
+  }
+  std::vector<std::vector<int64_t>> groups;
+  for (size_t g = 0; g < root["groups"].size(); ++g) {
+    const auto& group = root["groups"][g];
+    const std::string where = path + ": groups[" + std::to_string(g) + "]";
+    if (!group.is_array() || group.empty()) throw desia::Error(desia::ErrorCode::BadInput, where + ": expected a non-empty list of [x, y, z]");
+    std::vector<int64_t> voxels;
+    for (const auto& voxel : group) {
+      if (!voxel.is_array() || voxel.size() != 3 || !voxel[0].is_number_integer() || !voxel[1].is_number_integer() ||
+          !voxel[2].is_number_integer()) {
+        throw desia::Error(desia::ErrorCode::BadInput, where + ": " + voxel.dump() + " is not [x, y, z]");
+      }
+      const int x = voxel[0].get<int>(), y = voxel[1].get<int>(), z = voxel[2].get<int>();
+      if (!shape.inside(x, y, z) || shape.label(x, y, z) == 0) {
+        throw desia::Error(desia::ErrorCode::BadInput, where + ": voxel " + voxel.dump() + " is not in the shape");
+      }
+      voxels.push_back(shape.index(x, y, z));
+    }
+    groups.push_back(std::move(voxels));
+  }
+  return groups;
+}
+
+}  // namespace
+
+int runDesignCommand(const std::vector<std::string>& args) {
+  DesignArguments parsed = parseArguments(args);
+  const desia::AssemblyDocument document = desia::parseAssemblyText(desia::cli::readInputFile(parsed.input), parsed.input);
+  if (document.kind != desia::AssemblyKind::Voxel) {
+    throw desia::Error(desia::ErrorCode::BadInput, parsed.input + ": design voxel needs a voxel shape, not a " +
+                                                       desia::assemblyKindName(document.kind) + " document");
+  }
+  if (!parsed.groupsFile.empty()) parsed.options.groups = readGroups(parsed.groupsFile, document.voxels);
+  const bool live = !parsed.quiet && isatty(STDERR_FILENO);
+  double lastShown = -1;
+  parsed.options.onProgress = [&](const desia::DesignProgress& p) {
+    if (live && p.elapsedSeconds - lastShown > 0.2) {
+      lastShown = p.elapsedSeconds;
+      std::fprintf(stderr, "\r%lld nodes, depth %d/%d, best %d/%d, %.1f s   ", static_cast<long long>(p.nodesVisited),
+                   p.depth + 1, p.targetParts, p.bestDepth + 1, p.targetParts, p.elapsedSeconds);
+    }
+    return interrupted == 0;
+  };
+  std::signal(SIGINT, onInterrupt);
+  const desia::VoxelDesignResult result = desia::designVoxelPuzzle(document.voxels, parsed.options);
+  std::signal(SIGINT, SIG_DFL);
+  if (live) std::fprintf(stderr, "\r%70s\r", "");
+  if (result.status != desia::DesignStatus::Success) {
+    std::cerr << "desia: " << result.message << "\n";
+    return 1;
+  }
+  const std::string text = desia::cli::hasExtension(parsed.output, ".json")
+                               ? desia::documentToJson(desia::documentFromVoxels(result.puzzle)) + "\n"
+                               : desia::formatPuz(result.puzzle);
+  desia::cli::writeOutputFile(parsed.output, text);
+  std::cout << result.message << " in " << result.progress.elapsedSeconds << " s\n"
+            << "verified: " << desia::checkReportToText(desia::documentFromVoxels(result.puzzle), result.verification)
+            << "written: " << parsed.output << "\n";
+  return 0;
+}

@@ -1,0 +1,72 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Design of N-part interlocking voxel puzzles (paper Sections 4 and 5.1): Algorithm 1's iterative
+// construction [R0] -> [P1, R1] -> ... -> [P1..P(N-1), R(N-1)] with a construction tree of ranked
+// candidates and automatic backtracking. Every returned puzzle passes the project's own
+// interlocking test (key = part 1) and disassembles in the order 1, 2, ..., N.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "desia/check.h"
+#include "desia/voxel_grid.h"
+
+namespace desia {
+
+// How candidates {A_(i+1)} are ranked (Section 4.1 and Fig. 15).
+enum class CandidateRanking {
+  Compactness,  // accessibility of R_(i+1), most compact first (Song et al. 2012, default)
+  LowestX, LowestY, LowestZ,      // P_(i+1) with the smallest mean x / y / z first
+  HighestX, HighestY, HighestZ,   // ... the largest first
+};
+CandidateRanking parseCandidateRanking(const std::string& name);  // compactness|x|y|z|-x|-y|-z
+const char* candidateRankingName(CandidateRanking ranking);
+
+enum class DesignMode {
+  Desia,      // P_i and R_i immobilized by cycles through all earlier parts (Fig. 7)
+  Recursive,  // only through P_(i-1), the baseline of Song et al. 2012 (Fig. 11)
+};
+DesignMode parseDesignMode(const std::string& name);  // desia|recursive
+const char* designModeName(DesignMode mode);
+
+struct DesignProgress {
+  int64_t nodesVisited = 0;  // candidates accepted into the construction tree so far
+  int depth = 0;             // parts placed in the current node (P1..Pi)
+  int bestDepth = 0;         // the deepest node reached so far
+  int targetParts = 0;       // N
+  double elapsedSeconds = 0;
+};
+
+struct VoxelDesignOptions {
+  int parts = 0;                       // N >= 3
+  uint64_t seed = 1;                   // all randomness comes from this seed
+  int candidates = 30;                 // m: children kept per node (paper default 30)
+  CandidateRanking ranking = CandidateRanking::Compactness;
+  DesignMode mode = DesignMode::Desia;
+  int minPartSize = 0;                 // 0: automatic (a quarter of the average part size, at least 2)
+  Int3 keyDirection{0, 1, 0};          // the key's only free direction (default +y: gravity holds it)
+  std::vector<std::vector<int64_t>> groups;  // voxel index groups that must end up in one part
+  double timeLimitSeconds = 0;         // 0: none
+  int64_t nodeLimit = 0;               // 0: none
+  // Called after every visited node; return false to stop (cancellation). Not called concurrently.
+  std::function<bool(const DesignProgress&)> onProgress;
+};
+
+enum class DesignStatus { Success, NotFound, LimitReached, Cancelled };
+const char* designStatusName(DesignStatus status);
+
+struct VoxelDesignResult {
+  DesignStatus status = DesignStatus::NotFound;
+  std::string message;        // one sentence: what was found, or how far the search got
+  VoxelGrid puzzle;           // on success: part 1 = key, ..., part N = last remainder
+  CheckReport verification;   // on success: the check that verified the puzzle
+  DesignProgress progress;    // final counters
+};
+
+// Throws BadInput for impossible requests (N < 3, N larger than the voxel count, a shape that is
+// not one face-connected part, groups outside the shape or overlapping).
+VoxelDesignResult designVoxelPuzzle(const VoxelGrid& shape, const VoxelDesignOptions& options);
+
+}  // namespace desia

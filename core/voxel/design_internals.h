@@ -1,0 +1,115 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Pieces shared by the steps of the voxel designer (key generation, P_i/R_i generation, search).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <random>
+#include <vector>
+
+#include "desia/voxel_design.h"
+#include "desia/voxel_grid.h"
+
+namespace desia::design {
+
+constexpr std::array<Int3, 6> kAxisSteps{{{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}}};
+
+inline Int3 plus(const Int3& a, const Int3& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+inline Int3 minus(const Int3& a, const Int3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+inline int manhattan(const Int3& a, const Int3& b) { return std::abs(a.x - b.x) + std::abs(a.y - b.y) + std::abs(a.z - b.z); }
+inline Int3 axisStep(int axis) { return kAxisSteps[2 * axis]; }  // +x, +y, +z
+
+// The voxel at `index + step`, or -1 outside the grid.
+inline int64_t neighbourIndex(const VoxelGrid& grid, int64_t index, const Int3& step) {
+  const Int3 c = plus(grid.coordinates(index), step);
+  return grid.inside(c.x, c.y, c.z) ? grid.index(c.x, c.y, c.z) : -1;
+}
+
+// A candidate child of a construction-tree node: the voxels that leave R_i to form the new part.
+struct Candidate {
+  std::vector<int64_t> partVoxels;  // sorted
+  double rankKey = 0;               // smaller ranks first
+};
+
+// The shared context of one design run.
+struct DesignContext {
+  const VoxelDesignOptions& options;
+  std::vector<int> groupOf;  // voxel -> group index or -1
+  std::vector<std::vector<int64_t>> groups;
+  int64_t shapeVoxels = 0;
+  std::mt19937_64 random;
+};
+
+// Accessibility of Song et al. 2012 (original-code-notes B4): a0 = number of 6-neighbours in the
+// set, then three Jacobi passes a_k = a_(k-1) + 0.1^k * sum of the neighbours' a_(k-1). Low values
+// are exposed voxels; a high sum means a compact set. Returns a value per grid voxel (0 outside).
+std::vector<double> accessibility(const VoxelGrid& grid, int label);
+
+// Is the set of voxels with `label` one face-connected piece (and non-empty)?
+bool isFaceConnected(const VoxelGrid& grid, int label);
+
+// Ranking key of a candidate (smaller first) for the chosen ranking; `grid` is the state after
+// the split, `partLabel` the new part and `remainderLabel` the new remainder.
+double rankingKey(const VoxelGrid& grid, int partLabel, int remainderLabel, CandidateRanking ranking);
+
+// Splits the remainder: the candidate's voxels keep `remainderLabel` (they become the new part
+// P_i), every other remainder voxel gets remainderLabel + 1 (the new R_i). Undo restores.
+void applyCandidate(VoxelGrid& grid, int remainderLabel, const Candidate& candidate);
+void undoCandidate(VoxelGrid& grid, int remainderLabel);
+
+// Builds a new part inside the remainder (label r): forced voxels, shortest-path connection,
+// removal along one axis direction, growth to a size. Shared by key and part generation.
+class PartBuilder {
+ public:
+  PartBuilder(const VoxelGrid& grid, int remainderLabel, const DesignContext& context, const std::vector<double>& access);
+
+  // Forces a voxel (and its appearance group) into the part / into the remainder. False on a
+  // conflict (the voxel is outside the remainder, or already forced the other way).
+  bool forcePart(int64_t voxel);
+  bool forceRemainder(int64_t voxel);
+  // Connects all forced part voxels by shortest paths through unforced remainder voxels.
+  bool connect();
+  // Absorbs, from every part voxel, the remainder voxels along `direction` up to the first voxel
+  // that is not in the remainder, so no remainder voxel sits right in front of the part. False
+  // when that would take a voxel forced into the remainder.
+  bool clearPathAlong(const Int3& direction);
+  // Grows the part by columns along `direction` (a voxel plus what clearPathAlong would then
+  // absorb), least accessible first, until it has at least `minSize` voxels; false if it cannot or
+  // ends above `maxSize`.
+  bool growTo(int minSize, int maxSize, const Int3& direction, std::mt19937_64& random);
+
+  // May the voxel still go to the part / stay in the remainder?
+  bool canBePart(int64_t voxel) const { return state_[voxel] == kFree || state_[voxel] == kPart; }
+  bool canBeRemainder(int64_t voxel) const { return state_[voxel] == kFree || state_[voxel] == kForcedRemainder; }
+
+  const std::vector<int64_t>& partVoxels() const { return part_; }
+  std::vector<int64_t> sortedPartVoxels() const;
+  int size() const { return static_cast<int>(part_.size()); }
+
+ private:
+  enum : uint8_t { kOther = 0, kFree = 1, kPart = 2, kForcedRemainder = 3 };
+  bool addToPart(int64_t voxel);  // with its group; false if it meets a forced-remainder voxel
+  std::vector<int64_t> columnFrom(int64_t voxel, const Int3& direction) const;
+
+  const VoxelGrid& grid_;
+  const DesignContext& context_;
+  const std::vector<double>& access_;
+  std::vector<uint8_t> state_;
+  std::vector<int64_t> part_;
+  std::vector<int64_t> forcedPart_;
+};
+
+// Key generation (Section 4.2): candidates {A_1} for [P1, R1] with P1 free along the key direction
+// only, ranked, at most options.candidates of them.
+std::vector<Candidate> generateKeyCandidates(const VoxelGrid& grid, DesignContext& context, int targetSize);
+
+// P_i / R_i generation (Section 4.3): candidates {A_i} from A_(i-1) whose remainder has label
+// `remainderLabel` (= i); each keeps the assembly interlocking with part 1 as key and P_i
+// removable from [P_i, R_i].
+std::vector<Candidate> generatePartCandidates(const VoxelGrid& grid, int remainderLabel, DesignContext& context,
+                                              int targetSize, int partsStillToPlace);
+
+// The target size of the next part: what is left shared evenly over the parts still to make.
+int targetPartSize(int64_t remainderVoxels, int partsLeftIncludingRemainder);
+
+}  // namespace desia::design

@@ -1,0 +1,239 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Generation of P_i and R_i from R_(i-1) (paper Section 4.3). For each base DBG (one per axis)
+// a graph design is chosen that keeps the DBG strongly connected (Fig. 7):
+//   K = 2: P_i -> R_i -> P_i, an internal blocking pair in each direction;
+//   K = 1: P_i -> R_i -> P_out ~> P_in -> P_i (or the mirror), one internal pair and two external
+//          contacts inherited from R_(i-1), with P_out reaching P_in without passing R_(i-1);
+//   K = 0: P_i -> P_out ~> P_in -> R_i -> P'_out ~> P'_in -> P_i, external contacts only.
+// The removal direction of P_i rules out the internal edge that would block it, and at least one
+// DBG has K < 2 (disassemblability). The design is then realized (Section 4.3 i-v): contacts and
+// blocking pairs become voxels forced into P_i or R_i, P_i's voxels are joined by shortest paths,
+// cleared along its removal direction and grown to size. Every realized candidate is checked
+// exactly (candidate_checks.h) before it joins the construction tree.
+#include <algorithm>
+#include <set>
+
+#include "desia/blocking_graph.h"
+#include "voxel/candidate_checks.h"
+#include "voxel/design_internals.h"
+
+namespace desia::design {
+namespace {
+
+enum class AxisDesign { TwoInternal, OneInternalPartToRemainder, OneInternalRemainderToPart, NoInternal };
+
+// An inherited contact along +e between R_(i-1) and an earlier part.
+struct ExternalContact {
+  int64_t voxel;  // the R_(i-1) voxel of the contact
+  int part;       // the earlier part's label
+};
+
+// Everything about one axis e of A_(i-1) that graph design needs.
+struct AxisInfo {
+  std::vector<ExternalContact> remainderBlockedBy;  // R voxel v, part at v+e: edge R -> part in G(+e)
+  std::vector<ExternalContact> blockingPart;        // R voxel w, part at w-e: edge part -> R in G(+e)
+  std::vector<int64_t> pairForward;                 // R voxel a with a+e in R
+  std::vector<int64_t> pairBackward;                // R voxel a with a-e in R
+  std::vector<int64_t> pairBoth;                    // both
+  std::vector<std::vector<bool>> reaches;           // [from][to] over earlier parts, avoiding R
+};
+
+int64_t voxelOf(int64_t voxel) { return voxel; }
+int64_t voxelOf(const ExternalContact& contact) { return contact.voxel; }
+
+AxisInfo describeAxis(const VoxelGrid& grid, int remainder, int axis, const DirectedGraph& graph, bool recursive) {
+  AxisInfo info;
+  const Int3 e = axisStep(axis), back{-e.x, -e.y, -e.z};
+  for (int64_t v = 0; v < grid.voxelCount(); ++v) {
+    if (grid.labelAt(v) != remainder) continue;
+    const int64_t f = neighbourIndex(grid, v, e), b = neighbourIndex(grid, v, back);
+    const int front = f >= 0 ? grid.labelAt(f) : 0, behind = b >= 0 ? grid.labelAt(b) : 0;
+    // In recursive mode (Fig. 11) only P_(i-1) may close the cycles.
+    auto usable = [&](int label) { return label > 0 && label != remainder && (!recursive || label == remainder - 1); };
+    if (usable(front)) info.remainderBlockedBy.push_back({v, front});
+    if (usable(behind)) info.blockingPart.push_back({v, behind});
+    if (front == remainder) info.pairForward.push_back(v);
+    if (behind == remainder) info.pairBackward.push_back(v);
+    if (front == remainder && behind == remainder) info.pairBoth.push_back(v);
+  }
+  // Reachability between earlier parts in G(+e) without passing R_(i-1) (a part reaches itself).
+  const int parts = remainder - 1;
+  info.reaches.assign(parts + 1, std::vector<bool>(parts + 1, false));
+  for (int from = 1; from <= parts; ++from) {
+    std::vector<int> stack{from};
+    info.reaches[from][from] = true;
+    while (!stack.empty()) {
+      const int label = stack.back();
+      stack.pop_back();
+      for (int next : graph.successors(label - 1)) {
+        const int nextLabel = next + 1;
+        if (nextLabel == remainder || info.reaches[from][nextLabel]) continue;
+        info.reaches[from][nextLabel] = true;
+        stack.push_back(nextLabel);
+      }
+    }
+  }
+  return info;
+}
+
+// One of the `spread` entries of `list` nearest to `seed` among those `usable` accepts, chosen at
+// random; null if there is none.
+template <typename T, typename Usable>
+const T* nearestPick(const std::vector<T>& list, const VoxelGrid& grid, const Int3& seed, Usable usable,
+                     std::mt19937_64& random) {
+  constexpr size_t kSpread = 3;
+  std::vector<std::pair<int, size_t>> byDistance;
+  for (size_t k = 0; k < list.size(); ++k) {
+    if (usable(list[k])) byDistance.push_back({manhattan(grid.coordinates(voxelOf(list[k])), seed), k});
+  }
+  if (byDistance.empty()) return nullptr;
+  const size_t keep = std::min(kSpread, byDistance.size());
+  std::partial_sort(byDistance.begin(), byDistance.begin() + keep, byDistance.end());
+  return &list[byDistance[random() % keep].second];
+}
+
+// Two external contacts that close a cycle through earlier parts: one towards P_out (from
+// `outList`, taken by the side `outSide`), one from P_in (from `inList`, taken by `inSide`), with
+// P_out reaching P_in in G(+e) without passing R_(i-1).
+template <typename OutUsable, typename InUsable>
+bool pickCycleContacts(const AxisInfo& info, const VoxelGrid& grid, const Int3& seed, std::mt19937_64& random,
+                       OutUsable outUsable, InUsable inUsable, ExternalContact* out, ExternalContact* in) {
+  const ExternalContact* first = nearestPick(info.remainderBlockedBy, grid, seed,
+                                             [&](const ExternalContact& c) { return outUsable(c.voxel); }, random);
+  if (!first) return false;
+  const ExternalContact* second = nearestPick(info.blockingPart, grid, seed, [&](const ExternalContact& c) {
+    return inUsable(c.voxel) && info.reaches[first->part][c.part];
+  }, random);
+  if (!second) return false;
+  *out = *first;
+  *in = *second;
+  return true;
+}
+
+// Designs allowed on axis `axis` when P_i leaves along `removal` (Section 4.3: no internal edge
+// may block the removal).
+std::vector<AxisDesign> allowedDesigns(int axis, const Int3& removal) {
+  const int along = axis == 0 ? removal.x : (axis == 1 ? removal.y : removal.z);
+  if (along > 0) return {AxisDesign::NoInternal, AxisDesign::OneInternalRemainderToPart};
+  if (along < 0) return {AxisDesign::NoInternal, AxisDesign::OneInternalPartToRemainder};
+  return {AxisDesign::TwoInternal, AxisDesign::OneInternalPartToRemainder, AxisDesign::OneInternalRemainderToPart,
+          AxisDesign::NoInternal};
+}
+
+// Forces the voxels that realize one axis design (Section 4.3 ii and iii). Every pick respects
+// what earlier picks forced, so designs fail only when the geometry really cannot host them.
+bool realizeAxis(AxisDesign design, int axis, const AxisInfo& info, const VoxelGrid& grid, const Int3& seed,
+                 std::mt19937_64& random, PartBuilder& builder) {
+  const Int3 e = axisStep(axis);
+  auto shifted = [&](int64_t v, int sign) {
+    const Int3 c = grid.coordinates(v);
+    return grid.index(c.x + sign * e.x, c.y + sign * e.y, c.z + sign * e.z);
+  };
+  auto toPart = [&](int64_t v) { return builder.canBePart(v); };
+  auto toRemainder = [&](int64_t v) { return builder.canBeRemainder(v); };
+  switch (design) {
+    case AxisDesign::TwoInternal: {
+      const int64_t* anchor = nearestPick(info.pairBoth, grid, seed, [&](int64_t v) {
+        return toPart(v) && toRemainder(shifted(v, 1)) && toRemainder(shifted(v, -1));
+      }, random);
+      return anchor && builder.forcePart(*anchor) && builder.forceRemainder(shifted(*anchor, 1)) &&
+             builder.forceRemainder(shifted(*anchor, -1));
+    }
+    case AxisDesign::OneInternalPartToRemainder: {
+      // P -> R -> P_out ~> P_in -> P: the R side takes the contact with P_out, P the one with P_in.
+      const int64_t* anchor = nearestPick(info.pairForward, grid, seed,
+                                          [&](int64_t v) { return toPart(v) && toRemainder(shifted(v, 1)); }, random);
+      if (!anchor || !builder.forcePart(*anchor) || !builder.forceRemainder(shifted(*anchor, 1))) return false;
+      ExternalContact out{}, in{};
+      return pickCycleContacts(info, grid, seed, random, toRemainder, toPart, &out, &in) &&
+             builder.forceRemainder(out.voxel) && builder.forcePart(in.voxel);
+    }
+    case AxisDesign::OneInternalRemainderToPart: {
+      // R -> P -> P_out ~> P_in -> R: P takes the contact with P_out, R the one with P_in.
+      const int64_t* anchor = nearestPick(info.pairBackward, grid, seed,
+                                          [&](int64_t v) { return toPart(v) && toRemainder(shifted(v, -1)); }, random);
+      if (!anchor || !builder.forcePart(*anchor) || !builder.forceRemainder(shifted(*anchor, -1))) return false;
+      ExternalContact out{}, in{};
+      return pickCycleContacts(info, grid, seed, random, toPart, toRemainder, &out, &in) &&
+             builder.forcePart(out.voxel) && builder.forceRemainder(in.voxel);
+    }
+    case AxisDesign::NoInternal: {
+      // P -> P_out ~> P_in -> R -> P'_out ~> P'_in -> P
+      ExternalContact out{}, in{}, out2{}, in2{};
+      if (!pickCycleContacts(info, grid, seed, random, toPart, toRemainder, &out, &in) || !builder.forcePart(out.voxel) ||
+          !builder.forceRemainder(in.voxel)) {
+        return false;
+      }
+      return pickCycleContacts(info, grid, seed, random, toRemainder, toPart, &out2, &in2) &&
+             builder.forceRemainder(out2.voxel) && builder.forcePart(in2.voxel);
+    }
+  }
+  return false;
+}
+
+// Seeds for P_i: exposed remainder voxels (low accessibility), where parts come off easily.
+std::vector<int64_t> seedPool(const VoxelGrid& grid, int remainder, const std::vector<double>& access) {
+  std::vector<int64_t> pool;
+  for (int64_t v = 0; v < grid.voxelCount(); ++v) {
+    if (grid.labelAt(v) == remainder) pool.push_back(v);
+  }
+  std::stable_sort(pool.begin(), pool.end(), [&](int64_t a, int64_t b) { return access[a] < access[b]; });
+  pool.resize(std::max<size_t>(1, pool.size() / 3));
+  return pool;
+}
+
+}  // namespace
+
+std::vector<Candidate> generatePartCandidates(const VoxelGrid& grid, int remainder, DesignContext& context,
+                                              int targetSize, int partsStillToPlace) {
+  const VoxelDesignOptions& options = context.options;
+  const bool recursive = options.mode == DesignMode::Recursive;
+  const Assembly assembly = assemblyFromVoxels(grid);
+  const std::vector<DirectionalBlockingGraph> graphs = buildBaseBlockingGraphs(assembly);  // +x, +y, +z
+  std::vector<AxisInfo> axes;
+  for (int axis = 0; axis < 3; ++axis) axes.push_back(describeAxis(grid, remainder, axis, graphs[axis].graph, recursive));
+  const std::vector<double> access = accessibility(grid, remainder);
+  const std::vector<int64_t> seeds = seedPool(grid, remainder, access);
+  int64_t remainderVoxels = 0;
+  for (int64_t v = 0; v < grid.voxelCount(); ++v) remainderVoxels += grid.labelAt(v) == remainder ? 1 : 0;
+
+  const int minSize = std::max(options.minPartSize, targetSize - targetSize / 4);
+  const int maxSize = targetSize + targetSize / 4 + 1;
+  // R_i must keep room for the parts still to come.
+  const int64_t remainderFloor = static_cast<int64_t>(partsStillToPlace) * std::max(1, options.minPartSize);
+
+  VoxelGrid work = grid;
+  std::vector<Candidate> candidates;
+  std::set<std::vector<int64_t>> seen;
+  const int attempts = 40 * options.candidates + 200;
+  for (int attempt = 0; attempt < attempts && static_cast<int>(candidates.size()) < options.candidates; ++attempt) {
+    const Int3 removal = kAxisSteps[context.random() % 6];
+    const int64_t seedVoxel = seeds[context.random() % seeds.size()];
+    const Int3 seed = grid.coordinates(seedVoxel);
+    PartBuilder builder(grid, remainder, context, access);
+    bool ok = builder.forcePart(seedVoxel);
+    bool someAxisFreeOfPairs = false;
+    for (int axis = 0; axis < 3 && ok; ++axis) {
+      const std::vector<AxisDesign> allowed = allowedDesigns(axis, removal);
+      const AxisDesign design = allowed[context.random() % allowed.size()];
+      someAxisFreeOfPairs = someAxisFreeOfPairs || design != AxisDesign::TwoInternal;
+      ok = realizeAxis(design, axis, axes[axis], grid, seed, context.random, builder);
+    }
+    ok = ok && someAxisFreeOfPairs && builder.connect() && builder.clearPathAlong(removal) &&
+         builder.growTo(minSize, maxSize, removal, context.random);
+    if (!ok || remainderVoxels - builder.size() < remainderFloor) continue;
+    Candidate candidate{builder.sortedPartVoxels(), 0};
+    if (!seen.insert(candidate.partVoxels).second) continue;
+    applyCandidate(work, remainder, candidate);
+    if (acceptsSplit(work, remainder, options.keyDirection)) {
+      candidate.rankKey = rankingKey(work, remainder, remainder + 1, options.ranking);
+      candidates.push_back(std::move(candidate));
+    }
+    undoCandidate(work, remainder);
+  }
+  std::stable_sort(candidates.begin(), candidates.end(),
+                   [](const Candidate& x, const Candidate& y) { return x.rankKey < y.rankKey; });
+  return candidates;
+}
+
+}  // namespace desia::design

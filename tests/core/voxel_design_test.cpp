@@ -1,0 +1,248 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The voxel designer (paper Sections 4 and 5.1): its steps, and end-to-end designs that the
+// foundation's check verifies independently.
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "desia/error.h"
+#include "desia/voxel_design.h"
+#include "test_support.h"
+#include "voxel/candidate_checks.h"
+#include "voxel/design_internals.h"
+
+namespace desia {
+namespace {
+
+using design::Candidate;
+
+VoxelGrid shape(const char* file) { return testing::loadReference(std::string("input_puz/") + file).voxels; }
+
+VoxelDesignOptions optionsFor(int parts, uint64_t seed) {
+  VoxelDesignOptions options;
+  options.parts = parts;
+  options.seed = seed;
+  options.timeLimitSeconds = 120;
+  return options;
+}
+
+// Independent verification of a designed puzzle: the shape is exactly covered, part ids are
+// 1..N, the check finds it interlocking with key 1 free along +y, and the removal order 1..N
+// replays without collision.
+void ExpectVerifiedPuzzle(const VoxelGrid& input, const VoxelDesignResult& result, int parts) {
+  ASSERT_EQ(result.status, DesignStatus::Success) << result.message;
+  const VoxelGrid& puzzle = result.puzzle;
+  ASSERT_EQ(puzzle.voxelCount(), input.voxelCount());
+  for (int64_t i = 0; i < input.voxelCount(); ++i) ASSERT_EQ(puzzle.labelAt(i) != 0, input.labelAt(i) != 0) << i;
+  EXPECT_EQ(puzzle.maxLabel(), parts);
+  const AssemblyDocument document = documentFromVoxels(puzzle);
+  CheckOptions options;
+  options.method = CheckMethod::Both;
+  const CheckReport report = checkAssembly(document, options);
+  testing::ExpectInterlocking(document, report.result, 1, {"+y"});
+  ASSERT_TRUE(report.disassembly && report.disassembly->complete);
+  for (int k = 0; k < parts; ++k) EXPECT_EQ(report.disassembly->removals[k].part, k);
+  EXPECT_EQ(testing::verifyPlan(puzzle, document.assembly, *report.disassembly), "");
+}
+
+TEST(Accessibility, FollowsSongEtAlOnALine) {
+  // a0 = neighbours in the set; three Jacobi passes with beta = 0.1 (original-code-notes B4).
+  const VoxelGrid line = testing::gridFromLayers({{"1 1 1"}});
+  const std::vector<double> a = design::accessibility(line, 1);
+  EXPECT_NEAR(a[0], 1.224224, 1e-12);
+  EXPECT_NEAR(a[1], 2.226444, 1e-12);
+  EXPECT_NEAR(a[2], 1.224224, 1e-12);
+}
+
+TEST(Split, ApplyAndUndoRestoreTheGrid) {
+  VoxelGrid grid = testing::gridFromLayers({{"1 1 2 2"}});
+  const VoxelGrid original = grid;
+  design::applyCandidate(grid, 2, Candidate{{2}, 0});
+  EXPECT_EQ(grid.labels(), (std::vector<int>{1, 1, 2, 3}));
+  design::undoCandidate(grid, 2);
+  EXPECT_EQ(grid.labels(), original.labels());
+}
+
+class PartBuilderTest : public ::testing::Test {
+ protected:
+  VoxelDesignOptions options_ = optionsFor(3, 1);
+  VoxelGrid grid_ = testing::gridFromLayers({{"1 1 1 1", "1 1 1 1", "1 1 1 1"}});
+  design::DesignContext context_{options_, {}, {}, 12, std::mt19937_64(1)};
+  std::vector<double> access_ = design::accessibility(grid_, 1);
+};
+
+TEST_F(PartBuilderTest, ConnectsForcedVoxelsByAShortestPathAroundForcedRemainder) {
+  design::PartBuilder builder(grid_, 1, context_, access_);
+  ASSERT_TRUE(builder.forcePart(grid_.index(0, 0, 0)));
+  ASSERT_TRUE(builder.forcePart(grid_.index(3, 0, 0)));
+  ASSERT_TRUE(builder.forceRemainder(grid_.index(1, 0, 0)));
+  ASSERT_TRUE(builder.connect());
+  // Around the forced voxel at x=1: up to y=1 and back down, 6 voxels in all.
+  EXPECT_EQ(builder.size(), 6);
+  EXPECT_FALSE(builder.forcePart(grid_.index(1, 0, 0)));  // a conflict is refused
+}
+
+TEST_F(PartBuilderTest, ClearingAPathAbsorbsTheColumnInFront) {
+  design::PartBuilder builder(grid_, 1, context_, access_);
+  ASSERT_TRUE(builder.forcePart(grid_.index(2, 0, 0)));
+  ASSERT_TRUE(builder.clearPathAlong({0, 1, 0}));
+  EXPECT_EQ(builder.sortedPartVoxels(), (std::vector<int64_t>{grid_.index(2, 0, 0), grid_.index(2, 1, 0), grid_.index(2, 2, 0)}));
+  design::PartBuilder blocked(grid_, 1, context_, access_);
+  ASSERT_TRUE(blocked.forcePart(grid_.index(2, 0, 0)));
+  ASSERT_TRUE(blocked.forceRemainder(grid_.index(2, 2, 0)));
+  EXPECT_FALSE(blocked.clearPathAlong({0, 1, 0}));
+}
+
+TEST(KeyGeneration, EveryCandidateMovesOnlyUpAndLeavesOnePiece) {
+  const VoxelGrid cube = shape("Cube_4x4x4_origin.puz");
+  const VoxelDesignOptions options = optionsFor(7, 3);
+  design::DesignContext context{options, {}, {}, 64, std::mt19937_64(3)};
+  const std::vector<Candidate> keys = design::generateKeyCandidates(cube, context, 9);
+  ASSERT_FALSE(keys.empty());
+  EXPECT_LE(keys.size(), 30u);
+  for (size_t k = 0; k < keys.size(); ++k) {
+    VoxelGrid grid = cube;
+    design::applyCandidate(grid, 1, keys[k]);
+    EXPECT_TRUE(design::acceptsSplit(grid, 1, {0, 1, 0}));
+    const Assembly assembly = assemblyFromVoxels(grid);
+    ASSERT_EQ(assembly.partCount(), 2);
+    if (k > 0) {
+      EXPECT_LE(keys[k - 1].rankKey, keys[k].rankKey);  // most compact R1 first
+    }
+  }
+}
+
+TEST(PartGeneration, EveryCandidateKeepsTheAssemblyInterlocking) {
+  const VoxelGrid cube = shape("Cube_4x4x4_origin.puz");
+  const VoxelDesignOptions options = optionsFor(6, 5);
+  design::DesignContext context{options, {}, {}, 64, std::mt19937_64(5)};
+  const std::vector<Candidate> keys = design::generateKeyCandidates(cube, context, 10);
+  ASSERT_FALSE(keys.empty());
+  VoxelGrid grid = cube;
+  design::applyCandidate(grid, 1, keys[0]);
+  const std::vector<Candidate> parts = design::generatePartCandidates(grid, 2, context, 10, 4);
+  ASSERT_FALSE(parts.empty());
+  for (const Candidate& candidate : parts) {
+    VoxelGrid next = grid;
+    design::applyCandidate(next, 2, candidate);
+    const Assembly assembly = assemblyFromVoxels(next);
+    const InterlockingResult result = testInterlockingByGraphs(assembly, buildBaseBlockingGraphs(assembly));
+    EXPECT_EQ(result.verdict, Verdict::Interlocking) << result.reason;
+    EXPECT_EQ(result.key, 0);
+  }
+}
+
+struct SmallDesign {
+  const char* file;
+  int parts;
+  uint64_t seed;
+};
+
+void PrintTo(const SmallDesign& value, std::ostream* out) { *out << value.file << " N=" << value.parts << " seed " << value.seed; }
+
+class SmallDesigns : public ::testing::TestWithParam<SmallDesign> {};
+
+TEST_P(SmallDesigns, AreVerifiedPuzzles) {
+  const VoxelGrid input = shape(GetParam().file);
+  ExpectVerifiedPuzzle(input, designVoxelPuzzle(input, optionsFor(GetParam().parts, GetParam().seed)), GetParam().parts);
+}
+
+INSTANTIATE_TEST_SUITE_P(Desia, SmallDesigns,
+                         ::testing::Values(SmallDesign{"Cube_4x4x4_origin.puz", 5, 1}, SmallDesign{"Cube_4x4x4_origin.puz", 6, 2},
+                                           SmallDesign{"Cube_4x4x4_origin.puz", 7, 1}, SmallDesign{"Cube_4x4x4_origin.puz", 7, 2},
+                                           SmallDesign{"Cube_4x4x4_origin.puz", 7, 3}, SmallDesign{"Cube_4x4x4_origin.puz", 8, 1},
+                                           SmallDesign{"dog_origin.puz", 14, 1}, SmallDesign{"bunny_origin.puz", 20, 1}),
+                         [](const auto& info) {
+                           return testing::testNameFromPath(std::string("x/") + info.param.file) + "_N" +
+                                  std::to_string(info.param.parts) + "_seed" + std::to_string(info.param.seed);
+                         });
+
+TEST(VoxelDesign, SameSeedSameResultOtherSeedOtherResult) {
+  const VoxelGrid cube = shape("Cube_4x4x4_origin.puz");
+  const VoxelDesignResult first = designVoxelPuzzle(cube, optionsFor(7, 11));
+  const VoxelDesignResult again = designVoxelPuzzle(cube, optionsFor(7, 11));
+  ASSERT_EQ(first.status, DesignStatus::Success);
+  EXPECT_EQ(first.puzzle.labels(), again.puzzle.labels());
+  EXPECT_EQ(first.progress.nodesVisited, again.progress.nodesVisited);
+  const VoxelDesignResult other = designVoxelPuzzle(cube, optionsFor(7, 12));
+  ASSERT_EQ(other.status, DesignStatus::Success);
+  EXPECT_NE(first.puzzle.labels(), other.puzzle.labels());
+}
+
+TEST(VoxelDesign, RecursiveModeGivesVerifiedPuzzles) {
+  const VoxelGrid cube = shape("Cube_4x4x4_origin.puz");
+  VoxelDesignOptions options = optionsFor(5, 1);
+  options.mode = DesignMode::Recursive;
+  ExpectVerifiedPuzzle(cube, designVoxelPuzzle(cube, options), 5);
+}
+
+TEST(VoxelDesign, AppearanceGroupEndsUpInOnePart) {
+  const VoxelGrid cube = shape("Cube_4x4x4_origin.puz");
+  VoxelDesignOptions options = optionsFor(6, 4);
+  const std::vector<int64_t> group{cube.index(0, 0, 0), cube.index(1, 0, 0), cube.index(1, 1, 0)};
+  options.groups = {group};
+  const VoxelDesignResult result = designVoxelPuzzle(cube, options);
+  ExpectVerifiedPuzzle(cube, result, 6);
+  const int label = result.puzzle.labelAt(group[0]);
+  for (int64_t v : group) EXPECT_EQ(result.puzzle.labelAt(v), label);
+}
+
+TEST(VoxelDesign, LimitsAndCancellationStopWithProgress) {
+  const VoxelGrid cube = shape("Cube_4x4x4_origin.puz");
+  VoxelDesignOptions options = optionsFor(9, 1);
+  options.nodeLimit = 25;
+  const VoxelDesignResult limited = designVoxelPuzzle(cube, options);
+  EXPECT_EQ(limited.status, DesignStatus::LimitReached);
+  EXPECT_EQ(limited.progress.nodesVisited, 25);
+  EXPECT_NE(limited.message.find("node limit"), std::string::npos) << limited.message;
+
+  options.nodeLimit = 0;
+  int calls = 0;
+  options.onProgress = [&](const DesignProgress& progress) {
+    EXPECT_EQ(progress.targetParts, 9);
+    EXPECT_LE(progress.depth, progress.bestDepth);
+    return ++calls < 10;
+  };
+  const VoxelDesignResult cancelled = designVoxelPuzzle(cube, options);
+  EXPECT_EQ(cancelled.status, DesignStatus::Cancelled);
+  EXPECT_EQ(calls, 10);
+  EXPECT_EQ(cancelled.progress.nodesVisited, 10);
+}
+
+TEST(VoxelDesign, ExhaustedSearchSaysHowFarItGot) {
+  // A 2x2x2 cube cannot hold a 4-part interlocking puzzle with parts of at least 2 voxels.
+  const VoxelGrid cube = testing::gridFromLayers({{"1 1", "1 1"}, {"1 1", "1 1"}});
+  const VoxelDesignResult result = designVoxelPuzzle(cube, optionsFor(4, 1));
+  EXPECT_EQ(result.status, DesignStatus::NotFound);
+  EXPECT_NE(result.message.find("the deepest node had"), std::string::npos) << result.message;
+}
+
+TEST(VoxelDesign, ImpossibleRequestsAreBadInput) {
+  const VoxelGrid cube = shape("Cube_4x4x4_origin.puz");
+  auto message = [&](const VoxelGrid& grid, VoxelDesignOptions options) {
+    try {
+      designVoxelPuzzle(grid, options);
+    } catch (const Error& e) {
+      EXPECT_EQ(e.code(), ErrorCode::BadInput);
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_EQ(message(cube, optionsFor(2, 1)), "--parts 2: an interlocking puzzle needs at least 3 parts");
+  EXPECT_EQ(message(cube, optionsFor(33, 1)),
+            "--parts 33 is too many for a shape of 64 voxels (each part needs at least 2 voxels, so at most 32 parts)");
+  VoxelGrid twoPieces(3, 1, 1);
+  twoPieces.setLabel(0, 0, 0, 1);
+  twoPieces.setLabel(2, 0, 0, 1);
+  EXPECT_EQ(message(twoPieces, optionsFor(3, 1)),
+            "the shape is not face-connected: a puzzle needs one connected voxel set");
+  VoxelDesignOptions diagonal = optionsFor(5, 1);
+  diagonal.keyDirection = {1, 1, 0};
+  EXPECT_EQ(message(cube, diagonal), "the key direction must be an axis (+x, -y, ...)");
+  VoxelDesignOptions outside = optionsFor(5, 1);
+  outside.groups = {{-4}};
+  EXPECT_EQ(message(cube, outside), "group 1 has voxel -4 outside the shape");
+}
+
+}  // namespace
+}  // namespace desia
