@@ -6,12 +6,15 @@
 #include <emscripten/bind.h>
 #include <emscripten/val.h>
 
+#include <cstdint>
 #include <string>
 
 #include "desia/check.h"
 #include "desia/document.h"
 #include "desia/error.h"
+#include "desia/mesh.h"
 #include "desia/version.h"
+#include "desia/voxelize.h"
 
 namespace {
 
@@ -58,6 +61,36 @@ val parseDocument(const std::string& text, const std::string& source) {
   return guarded([&] { return parseJsonText(desia::documentToJson(desia::parseAssemblyText(text, source), -1)); });
 }
 
+// Copies a JS Uint8Array into a string in one step, the way convertJSArrayToNumberVector does
+// (a typed_memory_view's set()), without a second copy through a vector; nothing allocates
+// between taking the view and filling it. Same 512 MiB cap as the CLI's file reader.
+std::string bytesFromUint8Array(const val& array, const std::string& source) {
+  constexpr double kMaxBytes = 512.0 * 1024 * 1024;
+  const double length = array["length"].as<double>();
+  if (length > kMaxBytes) {
+    throw desia::Error(desia::ErrorCode::TooLarge, source + ": the mesh is " +
+                                                       std::to_string(static_cast<int64_t>(length)) +
+                                                       " bytes, more than the limit of " +
+                                                       std::to_string(static_cast<int64_t>(kMaxBytes)) + " bytes");
+  }
+  std::string bytes(static_cast<size_t>(length), '\0');
+  val view(emscripten::typed_memory_view(bytes.size(), reinterpret_cast<uint8_t*>(bytes.data())));
+  view.call<void>("set", array);
+  return bytes;
+}
+
+// OBJ or STL bytes (a Uint8Array) -> the JSON assembly document of the one-part voxel shape.
+val voxelize(const val& bytes, int resolution, const std::string& source) {
+  return guarded([&] {
+    desia::VoxelizeOptions options;
+    options.resolution = resolution;
+    desia::VoxelGrid grid =
+        desia::voxelizeSolid(desia::parseMesh(bytesFromUint8Array(bytes, source), source), options, source);
+    return parseJsonText(
+        desia::documentToJson(desia::documentFromVoxels(std::move(grid), desia::meshShapeName(source)), -1));
+  });
+}
+
 std::string version() { return desia::kVersion; }
 
 }  // namespace
@@ -65,5 +98,6 @@ std::string version() { return desia::kVersion; }
 EMSCRIPTEN_BINDINGS(desia) {
   emscripten::function("check", &check);
   emscripten::function("parseDocument", &parseDocument);
+  emscripten::function("voxelize", &voxelize);
   emscripten::function("version", &version);
 }

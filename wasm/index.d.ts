@@ -88,10 +88,32 @@ export interface AssemblyDocument {
   [section: string]: unknown;
 }
 
+/** A mesh file's contents (OBJ or STL, ASCII or binary), or OBJ text. */
+export type MeshInput = Uint8Array | ArrayBuffer | ArrayBufferView | string;
+
+export interface VoxelizeOptions {
+  /** Voxels along the longest side of the mesh's bounding box, 1 to 1024 (default 32). */
+  resolution?: number;
+  /**
+   * Name of the mesh, e.g. its file name 'bunny.obj': used in error messages, as the document's
+   * `name` (without folders and extension), and its extension (.obj / .stl) helps tell the format.
+   */
+  source?: string;
+}
+
 /** Synchronous core, for workers and node. */
 export interface DesiaCore {
   check(text: string, options?: CheckOptions): CheckReport;
   parseDocument(text: string, options?: { source?: string }): AssemblyDocument;
+  /**
+   * Solid voxelization of a closed triangle mesh (OBJ, or ASCII / binary STL): one part (label 1)
+   * made of every voxel whose centre lies inside. Voxel (0,0,0) sits at the bounding-box minimum
+   * and the mesh's axes are kept (+y up). The same document as `desia voxelize --output x.json`.
+   * Throws a DesiaError for an unreadable or open mesh (naming file, line and value, or the open
+   * edge), a result that is empty or falls apart (raise the resolution), or a grid above the
+   * limits ('too-large').
+   */
+  voxelize(mesh: MeshInput, options?: VoxelizeOptions): AssemblyDocument;
   version(): string;
 }
 
@@ -99,6 +121,8 @@ export interface DesiaCore {
 export interface Desia {
   check(text: string, options?: CheckOptions): Promise<CheckReport>;
   parseDocument(text: string, options?: { source?: string }): Promise<AssemblyDocument>;
+  /** Solid voxelization of a closed OBJ / STL mesh; see {@link DesiaCore.voxelize}. */
+  voxelize(mesh: MeshInput, options?: VoxelizeOptions): Promise<AssemblyDocument>;
   version(): string;
 }
 

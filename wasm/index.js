@@ -31,6 +31,16 @@ function requireText(text, what) {
   if (typeof text !== 'string') throw new DesiaError(`${what} must be a string, got ${typeof text}`, 'bad-input');
 }
 
+// Mesh input as bytes: a Uint8Array (node's Buffer is one), any other typed-array view or
+// ArrayBuffer (viewed without copying), or OBJ text (encoded as UTF-8).
+function meshBytes(input, what) {
+  if (input instanceof Uint8Array) return input;
+  if (input instanceof ArrayBuffer) return new Uint8Array(input);
+  if (ArrayBuffer.isView(input)) return new Uint8Array(input.buffer, input.byteOffset, input.byteLength);
+  if (typeof input === 'string') return new TextEncoder().encode(input);
+  throw new DesiaError(`${what} must be a Uint8Array, an ArrayBuffer or OBJ text, got ${input === null ? 'null' : typeof input}`, 'bad-input');
+}
+
 async function nodeWasmBinary(wasmUrl) {
   // Emscripten 3.1.6's ES6 output expects CommonJS globals in node (toolchain.md #6) and its
   // fetch-based loader fails on file paths there (#3): define the globals, pass the bytes.
@@ -89,6 +99,21 @@ function makeCore(module) {
         rethrow(error);
       }
     },
+    /**
+     * Solid voxelization of a closed OBJ or STL mesh into a one-part voxel shape; returns the JSON
+     * assembly document (the same as `desia voxelize --output x.json`).
+     */
+    voxelize(mesh, { resolution = 32, source = '<input>' } = {}) {
+      const bytes = meshBytes(mesh, 'voxelize: mesh');
+      if (!Number.isInteger(resolution) || Math.abs(resolution) > 2 ** 31 - 1) {
+        throw new DesiaError(`voxelize: resolution must be an integer (1 to 1024), got ${String(resolution)}`, 'bad-input');
+      }
+      try {
+        return module.voxelize(bytes, resolution, String(source));
+      } catch (error) {
+        rethrow(error);
+      }
+    },
     version() {
       return module.version();
     },
@@ -104,6 +129,7 @@ export async function createDesia(options = {}) {
   return {
     check: async (text, checkOptions) => core.check(text, checkOptions),
     parseDocument: async (text, parseOptions) => core.parseDocument(text, parseOptions),
+    voxelize: async (mesh, voxelizeOptions) => core.voxelize(mesh, voxelizeOptions),
     version: () => core.version(),
   };
 }

@@ -2,6 +2,7 @@
 #include "cli_files.h"
 
 #include <cctype>
+#include <filesystem>
 #include <fstream>
 
 #include "desia/error.h"
@@ -12,6 +13,8 @@ constexpr std::streamoff kMaxInputBytes = 512LL << 20;
 }
 
 std::string readInputFile(const std::string& path) {
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error)) throw Error(ErrorCode::BadInput, path + ": is a directory, not a file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Error(ErrorCode::BadInput, path + ": cannot open the file");
   in.seekg(0, std::ios::end);

@@ -2,12 +2,13 @@
 // The `desia` command line: a thin shell over the core API. Exit codes: 0 success (interlocking),
 // 1 a negative verdict, 2 bad input or usage.
 #include <cstdio>
-#include <fstream>
 #include <iostream>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "cli_files.h"
+#include "commands.h"
 #include "desia/check.h"
 #include "desia/error.h"
 #include "desia/version.h"
@@ -16,10 +17,13 @@ namespace {
 
 constexpr int kExitNegative = 1;
 constexpr int kExitBadInput = 2;
-constexpr std::streamoff kMaxInputBytes = 512LL << 20;
 
 const char* kUsage =
     "usage: desia check FILE [--method dbg|lp|both] [--json]\n"
+    "       desia voxelize --input MESH.obj|.stl [--resolution R] --output SHAPE.puz|.json\n"
+    "       desia design voxel --input SHAPE.puz|.json --parts N --output OUT.puz|.json\n"
+    "             [--seed S] [--candidates M] [--rank compactness|x|y|z|-x|-y|-z] [--mode desia|recursive]\n"
+    "             [--min-part-size K] [--groups FILE] [--time-limit SECONDS] [--node-limit N] [--key-direction +y]\n"
     "       desia --version | --help\n"
     "\n"
     "check   tests whether the assembly in FILE (.puz voxel puzzle or JSON assembly document)\n"
@@ -28,29 +32,17 @@ const char* kUsage =
     "        --method lp    linear program (exact for any contact normals; needs GLPK)\n"
     "        --method both  run both and compare\n"
     "        --json         print one JSON object instead of text\n"
+    "voxelize fills every voxel whose centre lies inside the closed mesh (OBJ or STL) and writes\n"
+    "        the one-part shape; R voxels along the longest side (default 32, at most 1024);\n"
+    "        exit 0 when written\n"
+    "design  builds an N-part interlocking puzzle from a voxel shape (paper Sections 4, 5.1) and writes\n"
+    "        it once the project's own check verified it (part 1 = key); exit 0 written, 1 none found\n"
+    "        within the limits (or Ctrl-C), 2 bad input\n"
     "exit    0 interlocking, 1 not interlocking (or deadlocked), 2 bad input or usage\n";
 
 struct UsageError {
   std::string message;
 };
-
-std::string readFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw desia::Error(desia::ErrorCode::BadInput, path + ": cannot open the file");
-  in.seekg(0, std::ios::end);
-  const std::streamoff size = in.tellg();
-  if (size < 0) throw desia::Error(desia::ErrorCode::BadInput, path + ": cannot read the file (is it a directory?)");
-  if (size > kMaxInputBytes) {
-    throw desia::Error(desia::ErrorCode::TooLarge, path + ": the file is " + std::to_string(size) +
-                                                       " bytes, more than the limit of " +
-                                                       std::to_string(kMaxInputBytes) + " bytes");
-  }
-  in.seekg(0);
-  std::string text(static_cast<size_t>(size), '\0');
-  in.read(text.data(), size);
-  if (!in) throw desia::Error(desia::ErrorCode::BadInput, path + ": cannot read the file");
-  return text;
-}
 
 int runCheck(const std::vector<std::string>& args) {
   std::string file, method = "dbg";
@@ -74,7 +66,7 @@ int runCheck(const std::vector<std::string>& args) {
   if (file.empty()) throw UsageError{"check needs a FILE"};
   desia::CheckOptions options;
   options.method = desia::parseCheckMethod(method);
-  const desia::AssemblyDocument document = desia::parseAssemblyText(readFile(file), file);
+  const desia::AssemblyDocument document = desia::parseAssemblyText(desia::cli::readInputFile(file), file);
   const desia::CheckReport report = desia::checkAssembly(document, options);
   std::cout << (json ? desia::checkReportToJson(document, report) + "\n" : desia::checkReportToText(document, report));
   return report.result.verdict == desia::Verdict::Interlocking ? 0 : kExitNegative;
@@ -95,6 +87,8 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (args[0] == "check") return runCheck({args.begin() + 1, args.end()});
+    if (args[0] == "voxelize") return runVoxelizeCommand({args.begin() + 1, args.end()});
+    if (args[0] == "design") return runDesignCommand({args.begin() + 1, args.end()});
     throw UsageError{"unknown command '" + args[0] + "'"};
   } catch (const UsageError& e) {
     std::cerr << "desia: " << e.message << "\n\n" << kUsage;

@@ -1,0 +1,15 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Sub-commands of the desia command line that live in their own files. Each takes the arguments
+// after its name and returns the exit status; desia::Error escapes to main (exit 2).
+#pragma once
+
+#include <string>
+#include <vector>
+
+// desia voxelize --input MESH.obj|.stl [--resolution R] --output SHAPE.puz|.json
+int runVoxelizeCommand(const std::vector<std::string>& args);
+
+// desia design voxel --input SHAPE --parts N [--seed S] [--candidates M] [--rank R] [--mode M]
+//   [--min-part-size K] [--groups FILE] [--time-limit S] [--node-limit N] [--key-direction D]
+//   --output OUT.puz|OUT.json
+int runDesignCommand(const std::vector<std::string>& args);
