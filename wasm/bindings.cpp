@@ -10,6 +10,7 @@
 #include <string>
 
 #include "desia/check.h"
+#include "desia/design_io.h"
 #include "desia/document.h"
 #include "desia/error.h"
 #include "desia/mesh.h"
@@ -91,6 +92,27 @@ val voxelize(const val& bytes, int resolution, const std::string& source) {
   });
 }
 
+// Designs a voxel puzzle. `optionsJson` is the package's options object as JSON text (parsed by the
+// core); `onProgress` (a JS function or undefined) receives a plain object after every visited
+// node and may return false to stop the search.
+val designVoxel(const std::string& shapeText, const std::string& optionsJson, const std::string& source, val onProgress) {
+  return guarded([&] {
+    const desia::AssemblyDocument document = desia::parseAssemblyText(shapeText, source);
+    if (document.kind != desia::AssemblyKind::Voxel) {
+      throw desia::Error(desia::ErrorCode::BadInput, source + ": designVoxel needs a voxel shape, not a " +
+                                                         std::string(desia::assemblyKindName(document.kind)) + " document");
+    }
+    desia::VoxelDesignOptions options = desia::parseDesignOptionsJson(optionsJson, document.voxels);
+    if (onProgress.typeOf().as<std::string>() == "function") {
+      options.onProgress = [&onProgress](const desia::DesignProgress& progress) {
+        const val answer = onProgress(parseJsonText(desia::designProgressToJson(progress)));
+        return !(answer.isFalse());
+      };
+    }
+    return parseJsonText(desia::designResultToJson(desia::designVoxelPuzzle(document.voxels, options)));
+  });
+}
+
 std::string version() { return desia::kVersion; }
 
 }  // namespace
@@ -99,5 +121,6 @@ EMSCRIPTEN_BINDINGS(desia) {
   emscripten::function("check", &check);
   emscripten::function("parseDocument", &parseDocument);
   emscripten::function("voxelize", &voxelize);
+  emscripten::function("designVoxel", &designVoxel);
   emscripten::function("version", &version);
 }

@@ -101,6 +101,53 @@ export interface VoxelizeOptions {
   source?: string;
 }
 
+/** Options of designVoxel (the same meaning as `desia design voxel`'s flags). */
+export interface DesignVoxelOptions {
+  /** N, the number of parts (at least 3). */
+  parts: number;
+  /** Seed of all randomness (default 1): the same seed gives the same puzzle, natively and here. */
+  seed?: number;
+  /** m, children kept per construction-tree node (default 30). */
+  candidates?: number;
+  rank?: 'compactness' | 'x' | 'y' | 'z' | '-x' | '-y' | '-z';
+  /** 'desia' (default) or 'recursive' (Song et al. 2012's local interlocking groups). */
+  mode?: 'desia' | 'recursive';
+  minPartSize?: number;
+  /** Seconds; 0 or absent: none. */
+  timeLimit?: number;
+  nodeLimit?: number;
+  /** The key's only free direction (default '+y'). */
+  keyDirection?: '+x' | '-x' | '+y' | '-y' | '+z' | '-z';
+  /** Appearance constraints: voxel coordinates [x, y, z] that must end up in one part. */
+  groups?: [number, number, number][][];
+  /** Called after every visited node; return false to stop the search. */
+  onProgress?: (progress: DesignProgress) => boolean | void;
+  /** Name used in error messages. */
+  source?: string;
+}
+
+export interface DesignProgress {
+  nodesVisited: number;
+  /** Parts in the current node (placed parts plus the remainder). */
+  depth: number;
+  /** The most parts any node reached so far. */
+  bestDepth: number;
+  targetParts: number;
+  elapsedSeconds?: number;
+}
+
+export interface DesignResult {
+  status: 'success' | 'not-found' | 'limit-reached' | 'cancelled';
+  message: string;
+  progress: DesignProgress;
+  /** The verified puzzle as .puz text (part 1 = key), or null. */
+  puz: string | null;
+  /** The verified puzzle as a JSON assembly document, or null. */
+  document: AssemblyDocument | null;
+  /** The check that verified it (the same fields as `desia check --json`), or null. */
+  verification: CheckReport | null;
+}
+
 /** Synchronous core, for workers and node. */
 export interface DesiaCore {
   check(text: string, options?: CheckOptions): CheckReport;
@@ -114,6 +161,7 @@ export interface DesiaCore {
    * limits ('too-large').
    */
   voxelize(mesh: MeshInput, options?: VoxelizeOptions): AssemblyDocument;
+  designVoxel(shapeText: string, options: DesignVoxelOptions): DesignResult;
   version(): string;
 }
 
@@ -123,6 +171,7 @@ export interface Desia {
   parseDocument(text: string, options?: { source?: string }): Promise<AssemblyDocument>;
   /** Solid voxelization of a closed OBJ / STL mesh; see {@link DesiaCore.voxelize}. */
   voxelize(mesh: MeshInput, options?: VoxelizeOptions): Promise<AssemblyDocument>;
+  designVoxel(shapeText: string, options: DesignVoxelOptions): Promise<DesignResult>;
   version(): string;
 }
 

@@ -114,6 +114,24 @@ function makeCore(module) {
         rethrow(error);
       }
     },
+    /**
+     * Designs an N-part interlocking voxel puzzle from a shape (.puz or JSON text). Resolves to
+     * { status, message, progress, puz, document, verification }: `puz` and `document` are set when
+     * status is 'success' (the puzzle passed the project's own check); otherwise they are null and
+     * `message` says how far the search got. `onProgress(progress)` is called after every visited
+     * node; returning false stops the search (status 'cancelled').
+     */
+    designVoxel(shapeText, { onProgress, source = '<input>', ...options } = {}) {
+      requireText(shapeText, 'designVoxel: shape');
+      if (onProgress !== undefined && typeof onProgress !== 'function') {
+        throw new DesiaError('designVoxel: onProgress must be a function', 'bad-input');
+      }
+      try {
+        return module.designVoxel(shapeText, JSON.stringify(options), String(source), onProgress);
+      } catch (error) {
+        rethrow(error);
+      }
+    },
     version() {
       return module.version();
     },
@@ -130,6 +148,7 @@ export async function createDesia(options = {}) {
     check: async (text, checkOptions) => core.check(text, checkOptions),
     parseDocument: async (text, parseOptions) => core.parseDocument(text, parseOptions),
     voxelize: async (mesh, voxelizeOptions) => core.voxelize(mesh, voxelizeOptions),
+    designVoxel: async (shapeText, designOptions) => core.designVoxel(shapeText, designOptions),
     version: () => core.version(),
   };
 }

@@ -5,10 +5,10 @@
 #include <csignal>
 #include <cstdio>
 #include <iostream>
-#include <nlohmann/json.hpp>
 
 #include "cli_files.h"
 #include "commands.h"
+#include "desia/design_io.h"
 #include "desia/document.h"
 #include "desia/error.h"
 #include "desia/puz_format.h"
@@ -53,15 +53,6 @@ double secondsArgument(const std::string& flag, const std::string& text) {
   return value;
 }
 
-desia::Int3 directionArgument(const std::string& text) {
-  static const std::pair<const char*, desia::Int3> kNames[] = {{"+x", {1, 0, 0}}, {"-x", {-1, 0, 0}}, {"+y", {0, 1, 0}},
-                                                               {"-y", {0, -1, 0}}, {"+z", {0, 0, 1}}, {"-z", {0, 0, -1}}};
-  for (const auto& [name, direction] : kNames) {
-    if (text == name) return direction;
-  }
-  usage("--key-direction expects +x, -x, +y, -y, +z or -z, got '" + text + "'");
-}
-
 DesignArguments parseArguments(const std::vector<std::string>& args) {
   if (args.empty() || args[0] != "voxel") usage("design expects a kind: 'desia design voxel ...' (plates and frames come later)");
   DesignArguments parsed;
@@ -85,7 +76,7 @@ DesignArguments parseArguments(const std::vector<std::string>& args) {
     else if (flag == "--min-part-size") parsed.options.minPartSize = static_cast<int>(integerArgument(flag, value, 1, 1000000));
     else if (flag == "--time-limit") parsed.options.timeLimitSeconds = secondsArgument(flag, value);
     else if (flag == "--node-limit") parsed.options.nodeLimit = integerArgument(flag, value, 1, 1LL << 50);
-    else if (flag == "--key-direction") parsed.options.keyDirection = directionArgument(value);
+    else if (flag == "--key-direction") parsed.options.keyDirection = desia::parseAxisDirection(value, "--key-direction");
     else usage("unknown option " + flag);
   }
   if (parsed.input.empty()) usage("design voxel needs --input SHAPE.puz|SHAPE.json");
@@ -97,39 +88,6 @@ DesignArguments parseArguments(const std::vector<std::string>& args) {
   return parsed;
 }
 
-// Groups file: {"groups": [[[x, y, z], ...], ...]}: voxel coordinates that must share one part.
-std::vector<std::vector<int64_t>> readGroups(const std::string& path, const desia::VoxelGrid& shape) {
-  nlohmann::json root;
-  try {
-    root = nlohmann::json::parse(desia::cli::readInputFile(path));
-  } catch (const nlohmann::json::exception& e) {
-    throw desia::Error(desia::ErrorCode::BadInput, path + ": malformed JSON: " + e.what());
-  }
-  if (!root.is_object() || !root.contains("groups") || !root["groups"].is_array()) {
-    throw desia::Error(desia::ErrorCode::BadInput, path + ": expected {\"groups\": [[[x, y, z], ...], ...]}");
-  }
-  std::vector<std::vector<int64_t>> groups;
-  for (size_t g = 0; g < root["groups"].size(); ++g) {
-    const auto& group = root["groups"][g];
-    const std::string where = path + ": groups[" + std::to_string(g) + "]";
-    if (!group.is_array() || group.empty()) throw desia::Error(desia::ErrorCode::BadInput, where + ": expected a non-empty list of [x, y, z]");
-    std::vector<int64_t> voxels;
-    for (const auto& voxel : group) {
-      if (!voxel.is_array() || voxel.size() != 3 || !voxel[0].is_number_integer() || !voxel[1].is_number_integer() ||
-          !voxel[2].is_number_integer()) {
-        throw desia::Error(desia::ErrorCode::BadInput, where + ": " + voxel.dump() + " is not [x, y, z]");
-      }
-      const int x = voxel[0].get<int>(), y = voxel[1].get<int>(), z = voxel[2].get<int>();
-      if (!shape.inside(x, y, z) || shape.label(x, y, z) == 0) {
-        throw desia::Error(desia::ErrorCode::BadInput, where + ": voxel " + voxel.dump() + " is not in the shape");
-      }
-      voxels.push_back(shape.index(x, y, z));
-    }
-    groups.push_back(std::move(voxels));
-  }
-  return groups;
-}
-
 }  // namespace
 
 int runDesignCommand(const std::vector<std::string>& args) {
@@ -139,7 +97,7 @@ int runDesignCommand(const std::vector<std::string>& args) {
     throw desia::Error(desia::ErrorCode::BadInput, parsed.input + ": design voxel needs a voxel shape, not a " +
                                                        desia::assemblyKindName(document.kind) + " document");
   }
-  if (!parsed.groupsFile.empty()) parsed.options.groups = readGroups(parsed.groupsFile, document.voxels);
+  if (!parsed.groupsFile.empty()) parsed.options.groups = desia::parseVoxelGroupsJson(desia::cli::readInputFile(parsed.groupsFile), document.voxels, parsed.groupsFile);
   const bool live = !parsed.quiet && isatty(STDERR_FILENO);
   double lastShown = -1;
   parsed.options.onProgress = [&](const desia::DesignProgress& p) {

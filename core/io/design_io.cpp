@@ -1,0 +1,134 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "desia/design_io.h"
+
+#include <nlohmann/json.hpp>
+
+#include "desia/document.h"
+#include "desia/error.h"
+#include "desia/puz_format.h"
+
+namespace desia {
+namespace {
+
+using nlohmann::json;
+
+json parseJsonText(const std::string& text, const std::string& source) {
+  try {
+    return json::parse(text);
+  } catch (const json::exception& e) {
+    std::string message = e.what();
+    const size_t bracket = message.find("] ");
+    if (bracket != std::string::npos) message = message.substr(bracket + 2);
+    throwBadInput(source, "malformed JSON: " + message);
+  }
+}
+
+std::vector<std::vector<int64_t>> groupsFromJson(const json& list, const VoxelGrid& shape, const std::string& source) {
+  if (!list.is_array()) throwBadInput(source, "groups: expected [[[x, y, z], ...], ...]");
+  std::vector<std::vector<int64_t>> groups;
+  for (size_t g = 0; g < list.size(); ++g) {
+    const std::string where = "groups[" + std::to_string(g) + "]";
+    const json& group = list[g];
+    if (!group.is_array() || group.empty()) throwBadInput(source, where + ": expected a non-empty list of [x, y, z]");
+    std::vector<int64_t> voxels;
+    for (const json& voxel : group) {
+      if (!voxel.is_array() || voxel.size() != 3 || !voxel[0].is_number_integer() || !voxel[1].is_number_integer() ||
+          !voxel[2].is_number_integer()) {
+        throwBadInput(source, where + ": " + voxel.dump() + " is not [x, y, z]");
+      }
+      const int64_t x = voxel[0].get<int64_t>(), y = voxel[1].get<int64_t>(), z = voxel[2].get<int64_t>();
+      const bool inGrid = x >= 0 && y >= 0 && z >= 0 && x < shape.nx() && y < shape.ny() && z < shape.nz();
+      if (!inGrid || shape.label(int(x), int(y), int(z)) == 0) throwBadInput(source, where + ": voxel " + voxel.dump() + " is not in the shape");
+      voxels.push_back(shape.index(int(x), int(y), int(z)));
+    }
+    groups.push_back(std::move(voxels));
+  }
+  return groups;
+}
+
+int64_t integerOption(const json& value, const char* name, int64_t lo, int64_t hi) {
+  if (!value.is_number_integer() || value.get<int64_t>() < lo || value.get<int64_t>() > hi) {
+    throwBadInput("", std::string("design option '") + name + "' must be an integer from " + std::to_string(lo) + " to " +
+                          std::to_string(hi) + ", got " + value.dump());
+  }
+  return value.get<int64_t>();
+}
+
+std::string stringOption(const json& value, const char* name) {
+  if (!value.is_string()) throwBadInput("", std::string("design option '") + name + "' must be a string, got " + value.dump());
+  return value.get<std::string>();
+}
+
+}  // namespace
+
+Int3 parseAxisDirection(const std::string& text, const std::string& what) {
+  static const std::pair<const char*, Int3> kNames[] = {{"+x", {1, 0, 0}}, {"-x", {-1, 0, 0}}, {"+y", {0, 1, 0}},
+                                                        {"-y", {0, -1, 0}}, {"+z", {0, 0, 1}}, {"-z", {0, 0, -1}}};
+  for (const auto& [name, direction] : kNames) {
+    if (text == name) return direction;
+  }
+  throwBadInput("", what + " must be +x, -x, +y, -y, +z or -z, got '" + text + "'");
+}
+
+std::vector<std::vector<int64_t>> parseVoxelGroupsJson(const std::string& text, const VoxelGrid& shape,
+                                                       const std::string& source) {
+  const json root = parseJsonText(text, source);
+  if (!root.is_object() || !root.contains("groups")) throwBadInput(source, "expected {\"groups\": [[[x, y, z], ...], ...]}");
+  return groupsFromJson(root["groups"], shape, source);
+}
+
+VoxelDesignOptions parseDesignOptionsJson(const std::string& text, const VoxelGrid& shape) {
+  const json root = parseJsonText(text, "design options");
+  if (!root.is_object()) throwBadInput("", "design options must be an object");
+  VoxelDesignOptions options;
+  if (!root.contains("parts")) throwBadInput("", "design option 'parts' is required");
+  for (const auto& [key, value] : root.items()) {
+    if (key == "parts") options.parts = static_cast<int>(integerOption(value, "parts", 1, 1000000));
+    else if (key == "seed") options.seed = static_cast<uint64_t>(integerOption(value, "seed", 0, int64_t(1) << 52));
+    else if (key == "candidates") options.candidates = static_cast<int>(integerOption(value, "candidates", 1, 10000));
+    else if (key == "rank") options.ranking = parseCandidateRanking(stringOption(value, "rank"));
+    else if (key == "mode") options.mode = parseDesignMode(stringOption(value, "mode"));
+    else if (key == "minPartSize") options.minPartSize = static_cast<int>(integerOption(value, "minPartSize", 0, 1000000));
+    else if (key == "nodeLimit") options.nodeLimit = integerOption(value, "nodeLimit", 0, int64_t(1) << 52);
+    else if (key == "keyDirection") options.keyDirection = parseAxisDirection(stringOption(value, "keyDirection"));
+    else if (key == "groups") options.groups = groupsFromJson(value, shape, "design options");
+    else if (key == "timeLimit") {
+      if (!value.is_number() || !(value.get<double>() >= 0)) throwBadInput("", "design option 'timeLimit' must be seconds >= 0, got " + value.dump());
+      options.timeLimitSeconds = value.get<double>();
+    } else {
+      throwBadInput("", "unknown design option '" + key + "'");
+    }
+  }
+  return options;
+}
+
+std::string designProgressToJson(const DesignProgress& progress) {
+  return json{{"nodesVisited", progress.nodesVisited},
+              {"depth", progress.depth + 1},  // parts placed, the remainder counted: as users count
+              {"bestDepth", progress.bestDepth + 1},
+              {"targetParts", progress.targetParts},
+              {"elapsedSeconds", progress.elapsedSeconds}}
+      .dump();
+}
+
+std::string designResultToJson(const VoxelDesignResult& result, int indent) {
+  json root;
+  root["status"] = designStatusName(result.status);
+  root["message"] = result.message;
+  json progress = json::parse(designProgressToJson(result.progress));
+  progress.erase("elapsedSeconds");  // timing differs between runs; keep results reproducible
+  root["progress"] = progress;
+  if (result.status == DesignStatus::Success) {
+    const AssemblyDocument document = documentFromVoxels(result.puzzle);
+    root["puz"] = formatPuz(result.puzzle);
+    root["document"] = json::parse(documentToJson(document, -1));
+    root["verification"] = json::parse(checkReportToJson(document, result.verification, -1));
+  } else {
+    root["puz"] = nullptr;
+    root["document"] = nullptr;
+    root["verification"] = nullptr;
+  }
+  return root.dump(indent);
+}
+
+}  // namespace desia
