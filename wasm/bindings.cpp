@@ -49,6 +49,26 @@ val guarded(Operation&& operation) {
   error.throw_();
 }
 
+// Runs `operation` (returning void or a value convertible by embind) and turns exceptions into
+// JS Errors like guarded().
+template <typename Operation>
+auto guardedCall(Operation&& operation) -> decltype(operation()) {
+  std::string message, code;
+  try {
+    return operation();
+  } catch (const desia::Error& e) {
+    message = e.what();
+    code = desia::errorCodeName(e.code());
+  } catch (const std::exception& e) {
+    message = std::string("internal error: ") + e.what();
+    code = "internal";
+  }
+  val error = val::global("Error").new_(val(message));
+  error.set("code", val(code));
+  error.set("name", val(std::string("DesiaError")));
+  error.throw_();
+}
+
 val check(const std::string& text, const std::string& method, const std::string& source) {
   return guarded([&] {
     desia::CheckOptions options;
@@ -113,6 +133,52 @@ val designVoxel(const std::string& shapeText, const std::string& optionsJson, co
   });
 }
 
+// The interactive design session (a long-lived handle: JS must call delete(), which the facade's
+// dispose() does). Every method returns plain data.
+class DesignSession {
+ public:
+  DesignSession(const std::string& shapeText, const std::string& optionsJson, const std::string& source)
+      : session_(makeSession(shapeText, optionsJson, source)) {}
+
+  val state() const {
+    return guarded([&] {
+      val result = val::object();
+      result.set("partsPlaced", session_->partsPlaced() + 1);  // parts in the current assembly
+      result.set("targetParts", session_->targetParts());
+      result.set("complete", session_->complete());
+      result.set("document", parseJsonText(desia::documentToJson(desia::documentFromVoxels(session_->current()), -1)));
+      return result;
+    });
+  }
+  int childCount() { return guardedCall([&] { return session_->childCount(); }); }
+  val preview(int n) {
+    return guarded([&] { return parseJsonText(desia::documentToJson(desia::documentFromVoxels(session_->childPreview(n)), -1)); });
+  }
+  void choose(int n) { guardedCall([&] { session_->chooseChild(n); }); }
+  bool next() { return guardedCall([&] { return session_->generateNextPart(); }); }
+  bool back() { return guardedCall([&] { return session_->goBack(); }); }
+  val check() const {
+    return guarded([&] {
+      const desia::AssemblyDocument document = desia::documentFromVoxels(session_->current());
+      return parseJsonText(desia::checkReportToJson(document, session_->check(), -1));
+    });
+  }
+
+ private:
+  static std::unique_ptr<desia::VoxelDesignSession> makeSession(const std::string& shapeText, const std::string& optionsJson,
+                                                               const std::string& source) {
+    return guardedCall([&] {
+      const desia::AssemblyDocument document = desia::parseAssemblyText(shapeText, source);
+      if (document.kind != desia::AssemblyKind::Voxel) {
+        throw desia::Error(desia::ErrorCode::BadInput, source + ": a design session needs a voxel shape");
+      }
+      return std::make_unique<desia::VoxelDesignSession>(document.voxels, desia::parseDesignOptionsJson(optionsJson, document.voxels));
+    });
+  }
+
+  std::unique_ptr<desia::VoxelDesignSession> session_;
+};
+
 std::string version() { return desia::kVersion; }
 
 }  // namespace
@@ -123,4 +189,13 @@ EMSCRIPTEN_BINDINGS(desia) {
   emscripten::function("voxelize", &voxelize);
   emscripten::function("designVoxel", &designVoxel);
   emscripten::function("version", &version);
+  emscripten::class_<DesignSession>("DesignSession")
+      .constructor<std::string, std::string, std::string>()
+      .function("state", &DesignSession::state)
+      .function("childCount", &DesignSession::childCount)
+      .function("preview", &DesignSession::preview)
+      .function("choose", &DesignSession::choose)
+      .function("next", &DesignSession::next)
+      .function("back", &DesignSession::back)
+      .function("check", &DesignSession::check);
 }

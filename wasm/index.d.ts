@@ -148,6 +148,28 @@ export interface DesignResult {
   verification: CheckReport | null;
 }
 
+/**
+ * Step-by-step design. Holds WebAssembly memory until dispose() is called.
+ */
+export interface DesignSession {
+  /** The current assembly: partsPlaced counts its parts (placed parts plus the remainder). */
+  state(): { partsPlaced: number; targetParts: number; complete: boolean; document: AssemblyDocument };
+  /** The number of ranked children of the current node (generated on first call). */
+  childCount(): number;
+  /** The assembly the n-th child (0 = best ranked) would give. */
+  preview(n: number): AssemblyDocument;
+  /** Moves to the n-th child. */
+  choose(n: number): void;
+  /** Moves to the best-ranked child; false when the node has none (go back). */
+  next(): boolean;
+  /** Moves to the parent; false at the root. */
+  back(): boolean;
+  /** The check report of the current assembly. */
+  check(): CheckReport;
+  /** Frees the session; later calls throw. */
+  dispose(): void;
+}
+
 /** Synchronous core, for workers and node. */
 export interface DesiaCore {
   check(text: string, options?: CheckOptions): CheckReport;
@@ -162,6 +184,7 @@ export interface DesiaCore {
    */
   voxelize(mesh: MeshInput, options?: VoxelizeOptions): AssemblyDocument;
   designVoxel(shapeText: string, options: DesignVoxelOptions): DesignResult;
+  designSession(shapeText: string, options: Omit<DesignVoxelOptions, 'onProgress'>): DesignSession;
   version(): string;
 }
 
@@ -172,6 +195,7 @@ export interface Desia {
   /** Solid voxelization of a closed OBJ / STL mesh; see {@link DesiaCore.voxelize}. */
   voxelize(mesh: MeshInput, options?: VoxelizeOptions): Promise<AssemblyDocument>;
   designVoxel(shapeText: string, options: DesignVoxelOptions): Promise<DesignResult>;
+  designSession(shapeText: string, options: Omit<DesignVoxelOptions, 'onProgress'>): Promise<DesignSession>;
   version(): string;
 }
 

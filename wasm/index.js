@@ -132,6 +132,47 @@ function makeCore(module) {
         rethrow(error);
       }
     },
+    /**
+     * An interactive design session (the original tool's "Generate Next Part", "Child Index",
+     * "Go Back"). It holds WebAssembly memory: call dispose() when done.
+     */
+    designSession(shapeText, { source = '<input>', ...options } = {}) {
+      requireText(shapeText, 'designSession: shape');
+      let handle;
+      try {
+        handle = new module.DesignSession(shapeText, JSON.stringify(options), String(source));
+      } catch (error) {
+        rethrow(error);
+      }
+      const call = (name, ...args) => {
+        if (!handle) throw new DesiaError('designSession: the session was disposed', 'bad-input');
+        try {
+          return handle[name](...args);
+        } catch (error) {
+          rethrow(error);
+        }
+      };
+      return {
+        /** { partsPlaced, targetParts, complete, document } of the current assembly. */
+        state: () => call('state'),
+        /** Number of ranked children of the current node (generated on first call). */
+        childCount: () => call('childCount'),
+        /** The JSON document the n-th child (0 = best) would give. */
+        preview: (n) => call('preview', n),
+        /** Move to the n-th child. */
+        choose: (n) => call('choose', n),
+        /** Move to the best child; false when there is none. */
+        next: () => call('next'),
+        /** Move to the parent; false at the root. */
+        back: () => call('back'),
+        /** The check report of the current assembly. */
+        check: () => call('check'),
+        dispose() {
+          if (handle) handle.delete();
+          handle = null;
+        },
+      };
+    },
     version() {
       return module.version();
     },
@@ -149,6 +190,7 @@ export async function createDesia(options = {}) {
     parseDocument: async (text, parseOptions) => core.parseDocument(text, parseOptions),
     voxelize: async (mesh, voxelizeOptions) => core.voxelize(mesh, voxelizeOptions),
     designVoxel: async (shapeText, designOptions) => core.designVoxel(shapeText, designOptions),
+    designSession: async (shapeText, designOptions) => core.designSession(shapeText, designOptions),
     version: () => core.version(),
   };
 }

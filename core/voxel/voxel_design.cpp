@@ -126,64 +126,105 @@ bool verifyPuzzle(const VoxelGrid& grid, int parts, CheckReport* report) {
   return true;
 }
 
-struct Level {
-  std::vector<Candidate> children;
-  size_t next = 0;
+// The construction tree of Algorithm 1 along the current path: one level per node from the root,
+// each with its ranked children (generated when first needed) and the next one to try. The grid
+// always holds the current node's assembly.
+class ConstructionTree {
+ public:
+  ConstructionTree(VoxelGrid grid, const VoxelDesignOptions& options, DesignContext& context)
+      : grid_(std::move(grid)), options_(options), context_(context), levels_(1) {}
+
+  const VoxelGrid& grid() const { return grid_; }
+  int depth() const { return static_cast<int>(levels_.size()) - 1; }  // parts placed
+
+  const std::vector<Candidate>& children() {
+    Level& level = levels_.back();
+    if (!level.generated) {
+      level.children = generateChildren();
+      level.generated = true;
+    }
+    return level.children;
+  }
+
+  VoxelGrid preview(size_t child) {
+    VoxelGrid copy = grid_;
+    design::applyCandidate(copy, depth() + 1, children().at(child));
+    return copy;
+  }
+
+  void descend(size_t child) {
+    const Candidate& candidate = children().at(child);
+    levels_.back().next = std::max(levels_.back().next, child + 1);
+    design::applyCandidate(grid_, depth() + 1, candidate);
+    levels_.emplace_back();
+  }
+
+  // Algorithm 1: the next untried child of the current node, if any.
+  bool descendToNextUntriedChild() {
+    if (levels_.back().next >= children().size()) return false;
+    descend(levels_.back().next);
+    return true;
+  }
+
+  // Back to the parent (its remaining children stay available); false at the root.
+  bool ascend() {
+    if (levels_.size() == 1) return false;
+    levels_.pop_back();
+    design::undoCandidate(grid_, depth() + 1);
+    return true;
+  }
+
+ private:
+  struct Level {
+    std::vector<Candidate> children;
+    bool generated = false;
+    size_t next = 0;
+  };
+
+  std::vector<Candidate> generateChildren() {
+    const int remainder = depth() + 1;
+    const int partsLeft = options_.parts - depth();  // parts still to make, the final remainder included
+    if (partsLeft <= 1) return {};
+    const int target = design::targetPartSize(countLabel(grid_, remainder), partsLeft);
+    if (depth() == 0) return design::generateKeyCandidates(grid_, context_, target);
+    return design::generatePartCandidates(grid_, remainder, context_, target, partsLeft - 1);
+  }
+
+  VoxelGrid grid_;
+  const VoxelDesignOptions& options_;
+  DesignContext& context_;
+  std::vector<Level> levels_;
 };
 
 class Search {
  public:
   Search(VoxelGrid grid, const VoxelDesignOptions& options, DesignContext& context)
-      : grid_(std::move(grid)), options_(options), context_(context), start_(std::chrono::steady_clock::now()) {}
+      : tree_(std::move(grid), options, context), options_(options), start_(std::chrono::steady_clock::now()) {}
 
   VoxelDesignResult run() {
     VoxelDesignResult result;
-    levels_.push_back({childrenOfCurrentNode()});
     while (true) {
       if (const auto stop = stopReason()) return finish(*stop, result);
-      Level& level = levels_.back();
-      if (level.next == level.children.size()) {
-        if (!backtrack()) return finish(DesignStatus::NotFound, result);
+      if (!tree_.descendToNextUntriedChild()) {
+        // Algorithm 1 lines 18-29: siblings first, then the nearest ancestor's next sibling.
+        if (!tree_.ascend()) return finish(DesignStatus::NotFound, result);
+        ++backtracks_;
         continue;
       }
-      const int remainder = depth_ + 1;
-      design::applyCandidate(grid_, remainder, level.children[level.next++]);
-      ++depth_;
       ++progress_.nodesVisited;
-      if (depth_ > progress_.bestDepth) progress_.bestDepth = depth_;
+      progress_.bestDepth = std::max(progress_.bestDepth, tree_.depth());
       if (!report()) return finish(DesignStatus::Cancelled, result);
-      if (depth_ == options_.parts - 1) {
-        if (verifyPuzzle(grid_, options_.parts, &result.verification)) {
-          result.puzzle = grid_;
+      if (tree_.depth() == options_.parts - 1) {
+        if (verifyPuzzle(tree_.grid(), options_.parts, &result.verification)) {
+          result.puzzle = tree_.grid();
           return finish(DesignStatus::Success, result);
         }
         ++verificationFailures_;  // never expected: every level was checked exactly
-        levels_.push_back({});
-        continue;
       }
-      levels_.push_back({childrenOfCurrentNode()});
     }
   }
 
  private:
-  std::vector<Candidate> childrenOfCurrentNode() {
-    const int remainder = depth_ + 1;
-    const int partsLeft = options_.parts - depth_;  // parts still to make, the final remainder included
-    const int target = design::targetPartSize(countLabel(grid_, remainder), partsLeft);
-    if (depth_ == 0) return design::generateKeyCandidates(grid_, context_, target);
-    return design::generatePartCandidates(grid_, remainder, context_, target, partsLeft - 1);
-  }
-
-  // Algorithm 1 lines 18-29: the next sibling, or the nearest ancestor's next sibling.
-  bool backtrack() {
-    levels_.pop_back();
-    if (levels_.empty()) return false;
-    design::undoCandidate(grid_, depth_);
-    --depth_;
-    ++backtracks_;
-    return true;
-  }
-
   double elapsed() const {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
   }
@@ -194,17 +235,19 @@ class Search {
     return std::nullopt;
   }
 
-  bool report() {
-    progress_.depth = depth_;
+  void updateProgress() {
+    progress_.depth = tree_.depth();
     progress_.targetParts = options_.parts;
     progress_.elapsedSeconds = elapsed();
+  }
+
+  bool report() {
+    updateProgress();
     return !options_.onProgress || options_.onProgress(progress_);
   }
 
   VoxelDesignResult& finish(DesignStatus status, VoxelDesignResult& result) {
-    progress_.depth = depth_;
-    progress_.targetParts = options_.parts;
-    progress_.elapsedSeconds = elapsed();
+    updateProgress();
     result.status = status;
     result.progress = progress_;
     std::ostringstream message;
@@ -233,26 +276,71 @@ class Search {
     return result;
   }
 
-  VoxelGrid grid_;
+  ConstructionTree tree_;
   const VoxelDesignOptions& options_;
-  DesignContext& context_;
   std::chrono::steady_clock::time_point start_;
-  std::vector<Level> levels_;
-  int depth_ = 0;
   int64_t backtracks_ = 0;
   int64_t verificationFailures_ = 0;
   DesignProgress progress_;
 };
+
+// Options with the automatic values filled in.
+VoxelDesignOptions effectiveOptions(const VoxelDesignOptions& options, int64_t voxelCount) {
+  VoxelDesignOptions effective = options;
+  if (effective.minPartSize <= 0) effective.minPartSize = std::max<int>(2, static_cast<int>(voxelCount / options.parts / 4));
+  return effective;
+}
 
 }  // namespace
 
 VoxelDesignResult designVoxelPuzzle(const VoxelGrid& shape, const VoxelDesignOptions& options) {
   int64_t voxelCount = 0;
   VoxelGrid grid = normalizedShape(shape, options, &voxelCount);
-  VoxelDesignOptions effective = options;
-  if (effective.minPartSize <= 0) effective.minPartSize = std::max<int>(2, static_cast<int>(voxelCount / options.parts / 4));
+  const VoxelDesignOptions effective = effectiveOptions(options, voxelCount);
   DesignContext context = makeContext(grid, effective, voxelCount);
   return Search(std::move(grid), effective, context).run();
 }
+
+struct VoxelDesignSession::State {
+  VoxelDesignOptions options;
+  DesignContext context;
+  ConstructionTree tree;
+  State(VoxelGrid grid, VoxelDesignOptions effective, int64_t voxelCount)
+      : options(std::move(effective)), context(makeContext(grid, options, voxelCount)), tree(std::move(grid), options, context) {}
+};
+
+VoxelDesignSession::VoxelDesignSession(const VoxelGrid& shape, const VoxelDesignOptions& options) {
+  int64_t voxelCount = 0;
+  VoxelGrid grid = normalizedShape(shape, options, &voxelCount);
+  state_ = std::make_unique<State>(std::move(grid), effectiveOptions(options, voxelCount), voxelCount);
+}
+
+VoxelDesignSession::~VoxelDesignSession() = default;
+
+const VoxelGrid& VoxelDesignSession::current() const { return state_->tree.grid(); }
+int VoxelDesignSession::partsPlaced() const { return state_->tree.depth(); }
+int VoxelDesignSession::targetParts() const { return state_->options.parts; }
+bool VoxelDesignSession::complete() const { return state_->tree.depth() == state_->options.parts - 1; }
+int VoxelDesignSession::childCount() { return static_cast<int>(state_->tree.children().size()); }
+
+VoxelGrid VoxelDesignSession::childPreview(int n) {
+  if (n < 0 || n >= childCount()) throwBadInput("", "child " + std::to_string(n) + " does not exist (the node has " + std::to_string(childCount()) + " children)");
+  return state_->tree.preview(static_cast<size_t>(n));
+}
+
+void VoxelDesignSession::chooseChild(int n) {
+  if (n < 0 || n >= childCount()) throwBadInput("", "child " + std::to_string(n) + " does not exist (the node has " + std::to_string(childCount()) + " children)");
+  state_->tree.descend(static_cast<size_t>(n));
+}
+
+bool VoxelDesignSession::generateNextPart() {
+  if (childCount() == 0) return false;
+  state_->tree.descend(0);
+  return true;
+}
+
+bool VoxelDesignSession::goBack() { return state_->tree.ascend(); }
+
+CheckReport VoxelDesignSession::check() const { return checkAssembly(documentFromVoxels(state_->tree.grid())); }
 
 }  // namespace desia

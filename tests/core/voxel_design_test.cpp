@@ -246,3 +246,60 @@ TEST(VoxelDesign, ImpossibleRequestsAreBadInput) {
 
 }  // namespace
 }  // namespace desia
+
+namespace desia {
+namespace {
+
+TEST(DesignSession, StepsForwardBrowsesChildrenAndGoesBack) {
+  const VoxelGrid cube = testing::loadReference("input_puz/Cube_4x4x4_origin.puz").voxels;
+  VoxelDesignOptions options;
+  options.parts = 6;
+  options.seed = 7;
+  VoxelDesignSession session(cube, options);
+  EXPECT_EQ(session.partsPlaced(), 0);
+  EXPECT_FALSE(session.goBack());  // at the root
+  ASSERT_GT(session.childCount(), 1);
+  // A preview is the child's assembly; choosing it makes it current.
+  const VoxelGrid second = session.childPreview(1);
+  EXPECT_EQ(second.maxLabel(), 2);
+  session.chooseChild(1);
+  EXPECT_EQ(session.partsPlaced(), 1);
+  EXPECT_EQ(session.current().labels(), second.labels());
+  // Back at the root the same children are offered again.
+  EXPECT_TRUE(session.goBack());
+  EXPECT_EQ(session.partsPlaced(), 0);
+  EXPECT_EQ(session.childPreview(1).labels(), second.labels());
+  EXPECT_THROW(session.chooseChild(session.childCount()), Error);
+  // Generating parts until complete gives a verified puzzle, or a node without children.
+  while (!session.complete() && session.generateNextPart()) {
+  }
+  if (session.complete()) {
+    const CheckReport report = session.check();
+    EXPECT_EQ(report.result.verdict, Verdict::Interlocking);
+    EXPECT_EQ(report.result.key, 0);
+  } else {
+    EXPECT_EQ(session.childCount(), 0);
+  }
+  // Every intermediate assembly with 3 or more parts is interlocking with part 1 as key.
+  while (session.partsPlaced() >= 2) {
+    EXPECT_EQ(session.check().result.verdict, Verdict::Interlocking) << session.partsPlaced();
+    session.goBack();
+  }
+}
+
+TEST(DesignSession, SameSeedSameChildrenAsTheAutomaticSearch) {
+  const VoxelGrid cube = testing::loadReference("input_puz/Cube_4x4x4_origin.puz").voxels;
+  VoxelDesignOptions options;
+  options.parts = 5;
+  options.seed = 1;
+  const VoxelDesignResult automatic = designVoxelPuzzle(cube, options);
+  ASSERT_EQ(automatic.status, DesignStatus::Success);
+  ASSERT_EQ(automatic.progress.nodesVisited, 4);  // no backtracking: always the best child
+  VoxelDesignSession session(cube, options);
+  while (session.generateNextPart() && !session.complete()) {
+  }
+  EXPECT_EQ(session.current().labels(), automatic.puzzle.labels());
+}
+
+}  // namespace
+}  // namespace desia

@@ -81,3 +81,30 @@ test('impossible requests and bad options are DesiaErrors with the core message'
   }
   assert.throws(() => core.designVoxel('3 1 1\n1 0 1\n', { parts: 3 }), /not face-connected/);
 });
+
+test('a design session steps forward, browses children, goes back and is disposed', () => {
+  const cube = fs.readFileSync(shapePath('Cube_4x4x4_origin.puz'), 'utf8');
+  const session = core.designSession(cube, { parts: 5, seed: 1 });
+  try {
+    assert.deepEqual({ ...session.state(), document: undefined }, { partsPlaced: 1, targetParts: 5, complete: false, document: undefined });
+    assert.equal(session.back(), false);
+    const children = session.childCount();
+    assert.ok(children > 1);
+    const preview = session.preview(1);
+    session.choose(1);
+    assert.deepEqual(session.state().document.voxel.labels, preview.voxel.labels);
+    assert.equal(session.back(), true);
+    while (!session.state().complete && session.next()) { /* generate the next part */ }
+    assert.equal(session.state().complete, true);
+    // The same seed's automatic design takes the best child every time here.
+    const automatic = core.designVoxel(cube, { parts: 5, seed: 1 });
+    assert.equal(automatic.progress.nodesVisited, 4);
+    assert.deepEqual(session.state().document.voxel.labels, automatic.document.voxel.labels);
+    assert.equal(session.check().interlocking, true);
+    assert.throws(() => session.choose(999), (error) => error instanceof DesiaError && /child 999 does not exist/.test(error.message));
+  } finally {
+    session.dispose();
+  }
+  assert.throws(() => session.state(), /the session was disposed/);
+  assert.throws(() => core.designSession(cube, { parts: 1 }), /needs at least 3 parts/);
+});

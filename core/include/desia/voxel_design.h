@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -63,6 +64,40 @@ struct VoxelDesignResult {
   VoxelGrid puzzle;           // on success: part 1 = key, ..., part N = last remainder
   CheckReport verification;   // on success: the check that verified the puzzle
   DesignProgress progress;    // final counters
+};
+
+// Step-by-step design, as the original tool's GUI ("Generate Next Part", "Child Index", "Go Back"):
+// the construction tree is walked by hand. Children of a node are generated (and ranked) when first
+// asked for. Re-entrant: each session owns its state. Throws BadInput like designVoxelPuzzle.
+class VoxelDesignSession {
+ public:
+  VoxelDesignSession(const VoxelGrid& shape, const VoxelDesignOptions& options);
+  ~VoxelDesignSession();
+  VoxelDesignSession(const VoxelDesignSession&) = delete;
+  VoxelDesignSession& operator=(const VoxelDesignSession&) = delete;
+
+  // The current assembly A_i: parts 1..i placed, part i+1 the remainder.
+  const VoxelGrid& current() const;
+  int partsPlaced() const;   // i
+  int targetParts() const;   // N
+  bool complete() const;     // i == N - 1: the current assembly has N parts
+
+  // The ranked children of the current node (generated on first call); at most options.candidates.
+  int childCount();
+  // The assembly the n-th child (0 = best ranked) would give, without moving to it.
+  VoxelGrid childPreview(int n);
+  // Moves to the n-th child. Throws BadInput when n is out of range.
+  void chooseChild(int n);
+  // Moves to the best-ranked child; false when the node has no children (then go back).
+  bool generateNextPart();
+  // Moves to the parent; false at the root.
+  bool goBack();
+  // The project's check of the current assembly (interlocking, key, disassembly).
+  CheckReport check() const;
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
 };
 
 // Throws BadInput for impossible requests (N < 3, N larger than the voxel count, a shape that is
