@@ -8,6 +8,20 @@ set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$root"
 
+if [ "${1:-}" = "design" ]; then
+  # The voxel designer against Table 1 (issue 3): native then WebAssembly; extra arguments go to
+  # both (e.g. --seeds 3 --time-limit 60 --only bunny). Can take tens of minutes.
+  shift
+  bash scripts/build.sh native
+  bash scripts/build.sh wasm
+  echo "== voxel designer, native"
+  build/native/tests/benchmarks/desia_design_bench "$@"
+  echo
+  echo "== voxel designer, WebAssembly (node)"
+  node tests/benchmarks/wasm_design_bench.mjs "$@"
+  exit 0
+fi
+
 echo "== building (native, wasm)"
 bash scripts/build.sh native
 bash scripts/build.sh wasm
