@@ -13,6 +13,7 @@
 #include "desia/design_io.h"
 #include "desia/document.h"
 #include "desia/error.h"
+#include "desia/puz_format.h"
 #include "desia/mesh.h"
 #include "desia/version.h"
 #include "desia/voxelize.h"
@@ -75,6 +76,18 @@ val check(const std::string& text, const std::string& method, const std::string&
     options.method = desia::parseCheckMethod(method);
     const desia::AssemblyDocument document = desia::parseAssemblyText(text, source);
     return parseJsonText(desia::checkReportToJson(document, desia::checkAssembly(document, options), -1));
+  });
+}
+
+// A voxel assembly (.puz or JSON text) as DESIA .puz text, byte for byte as the original writer.
+val toPuz(const std::string& text, const std::string& source) {
+  return guarded([&] {
+    const desia::AssemblyDocument document = desia::parseAssemblyText(text, source);
+    if (document.kind != desia::AssemblyKind::Voxel) {
+      throw desia::Error(desia::ErrorCode::BadInput, source + ": only voxel assemblies have a .puz form, this is a " +
+                                                         std::string(desia::assemblyKindName(document.kind)) + " document");
+    }
+    return val(desia::formatPuz(document.voxels));
   });
 }
 
@@ -186,6 +199,7 @@ std::string version() { return desia::kVersion; }
 EMSCRIPTEN_BINDINGS(desia) {
   emscripten::function("check", &check);
   emscripten::function("parseDocument", &parseDocument);
+  emscripten::function("toPuz", &toPuz);
   emscripten::function("voxelize", &voxelize);
   emscripten::function("designVoxel", &designVoxel);
   emscripten::function("version", &version);

@@ -183,6 +183,8 @@ export interface DesiaCore {
    * limits ('too-large').
    */
   voxelize(mesh: MeshInput, options?: VoxelizeOptions): AssemblyDocument;
+  /** A voxel assembly (.puz text, JSON text or a document object) as DESIA .puz text. */
+  toPuz(assembly: string | AssemblyDocument, options?: { source?: string }): string;
   designVoxel(shapeText: string, options: DesignVoxelOptions): DesignResult;
   designSession(shapeText: string, options: Omit<DesignVoxelOptions, 'onProgress'>): DesignSession;
   version(): string;
@@ -194,6 +196,7 @@ export interface Desia {
   parseDocument(text: string, options?: { source?: string }): Promise<AssemblyDocument>;
   /** Solid voxelization of a closed OBJ / STL mesh; see {@link DesiaCore.voxelize}. */
   voxelize(mesh: MeshInput, options?: VoxelizeOptions): Promise<AssemblyDocument>;
+  toPuz(assembly: string | AssemblyDocument, options?: { source?: string }): Promise<string>;
   designVoxel(shapeText: string, options: DesignVoxelOptions): Promise<DesignResult>;
   designSession(shapeText: string, options: Omit<DesignVoxelOptions, 'onProgress'>): Promise<DesignSession>;
   version(): string;

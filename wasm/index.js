@@ -114,6 +114,16 @@ function makeCore(module) {
         rethrow(error);
       }
     },
+    /** A voxel assembly (.puz text or a JSON document, as text or object) as .puz text. */
+    toPuz(assembly, { source = '<input>' } = {}) {
+      const text = typeof assembly === 'object' && assembly !== null ? JSON.stringify(assembly) : assembly;
+      requireText(text, 'toPuz: assembly');
+      try {
+        return module.toPuz(text, String(source));
+      } catch (error) {
+        rethrow(error);
+      }
+    },
     /**
      * Designs an N-part interlocking voxel puzzle from a shape (.puz or JSON text). Resolves to
      * { status, message, progress, puz, document, verification }: `puz` and `document` are set when
@@ -189,6 +199,7 @@ export async function createDesia(options = {}) {
     check: async (text, checkOptions) => core.check(text, checkOptions),
     parseDocument: async (text, parseOptions) => core.parseDocument(text, parseOptions),
     voxelize: async (mesh, voxelizeOptions) => core.voxelize(mesh, voxelizeOptions),
+    toPuz: async (assembly, toPuzOptions) => core.toPuz(assembly, toPuzOptions),
     designVoxel: async (shapeText, designOptions) => core.designVoxel(shapeText, designOptions),
     designSession: async (shapeText, designOptions) => core.designSession(shapeText, designOptions),
     version: () => core.version(),

@@ -1,22 +1,42 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The playground's compute worker: the only place where the WebAssembly core runs, so a long
-// check never freezes the page and a crashed module can be thrown away with its worker.
+// check or design never freezes the page and a crashed (or cancelled) module can be thrown away
+// with its worker.
 //
 // Protocol (plain structured-clone messages):
 //   in:  { type: 'init' }
-//        { type: 'run', id, op: 'check' | 'parse', text, options }
+//        { type: 'run', id, op, text, options }
+//          op 'check' | 'parse'   text = the assembly, options = the core's options
+//          op 'design'            text = the voxel shape, options = designVoxel's options (no onProgress)
+//          op 'session-open'      text = the voxel shape, options = designSession's options
+//          op 'session-next' | 'session-back' | 'session-close'
+//          op 'session-choose' | 'session-preview'   options = { n } (child index)
 //   out: { type: 'ready', version }
+//        { type: 'progress', id, value }         design only: { nodesVisited, depth, bestDepth,
+//                                                targetParts, elapsedSeconds }, at most ~10 per
+//                                                second, always including the last one
 //        { type: 'result', id, value, elapsedMs }   elapsedMs: time spent in the core
 //        { type: 'error', id, message, fatal? }   id is null for a failed init.
 // `fatal: true` says the module itself is broken (a WebAssembly trap or abort): the page should
 // start a fresh worker instead of sending more work here.
+//
+// Cancelling: while the core runs, this worker cannot read messages, so there is no 'cancel'
+// message; the page terminates the worker and starts a new one (which also ends any session).
+//
+// Session results are snapshots { partsPlaced, targetParts, complete, childCount, document,
+// report, moved? } (report = the core's check of the current assembly); a preview is
+// { index, document, report }. One session per worker: opening one disposes the previous one.
 
 import { loadDesiaModule } from '../wasm/index.js';
 
 const WASM_URL = new URL('../dist/desia_wasm.wasm', import.meta.url).href;
+/** Progress messages are for eyes, not for logs: ten a second is plenty. */
+const PROGRESS_INTERVAL_MS = 100;
 
 let corePromise = null;
+/** The open design session (a WebAssembly handle: dispose it before dropping it). */
+let session = null;
 
 /** Loads the core once; later calls share the same promise (and messages keep their order). */
 function loadCore() {
@@ -28,14 +48,103 @@ function loadCore() {
 const OPERATIONS = {
   check: (core, text, options) => [core.check(text, options ?? {}), []],
   parse: (core, text, options) => withTransferableLabels(core.parseDocument(text, options ?? {})),
+  design: designOperation,
+  'session-open': (core, text, options) => {
+    closeSession();
+    session = core.designSession(text, options ?? {});
+    return sessionSnapshot();
+  },
+  'session-next': () => sessionSnapshot({ moved: openSession().next() }),
+  'session-back': () => sessionSnapshot({ moved: openSession().back() }),
+  'session-choose': (core, text, options) => {
+    openSession().choose(childIndex(options));
+    return sessionSnapshot();
+  },
+  'session-preview': (core, text, options) => {
+    const index = childIndex(options);
+    const document = openSession().preview(index);
+    // The core checks the previewed assembly from its own JSON document.
+    const report = core.check(JSON.stringify(document), { source: `child ${index}` });
+    return withTransferableLabels({ index, document, report }, 'document');
+  },
+  'session-close': () => {
+    closeSession();
+    return [null, []];
+  },
 };
 
-/** Voxel labels become an Int32Array so they can be transferred instead of copied. */
-function withTransferableLabels(document) {
+/** Runs designVoxel, posting throttled progress for request `id`. */
+function designOperation(core, text, options, id) {
+  const progress = progressPoster(id);
+  const result = core.designVoxel(text, { ...(options ?? {}), onProgress: progress.report });
+  progress.flush();
+  return withTransferableLabels(result, 'document');
+}
+
+/**
+ * onProgress is called after every node, which can be thousands of times a second: post the
+ * first one at once, then at most one per interval, and `flush()` the last one the page has not
+ * seen, so the final numbers always arrive before the result.
+ */
+function progressPoster(id) {
+  let latest = null;
+  let unsent = false;
+  let lastPostedAt = -Infinity;
+  const post = () => {
+    self.postMessage({ type: 'progress', id, value: latest });
+    unsent = false;
+    lastPostedAt = performance.now();
+  };
+  return {
+    report(value) {
+      latest = value;
+      unsent = true;
+      if (performance.now() - lastPostedAt >= PROGRESS_INTERVAL_MS) post();
+      // Returning nothing lets the search go on; the page stops it by terminating the worker.
+    },
+    flush() {
+      if (unsent) post();
+    },
+  };
+}
+
+function openSession() {
+  if (!session) throw Object.assign(new Error('no design session is open (start one first)'), { code: 'bad-input' });
+  return session;
+}
+
+function closeSession() {
+  session?.dispose();
+  session = null;
+}
+
+function childIndex(options) {
+  const n = options?.n;
+  if (!Number.isInteger(n)) throw Object.assign(new Error(`child index must be an integer, got ${String(n)}`), { code: 'bad-input' });
+  return n;
+}
+
+/** The current node of the session, with its check report and the number of its children. */
+function sessionSnapshot(extra = {}) {
+  const current = openSession();
+  const { partsPlaced, targetParts, complete, document } = current.state();
+  // A complete puzzle has no children; asking would only generate an empty list.
+  const childCount = complete ? 0 : current.childCount();
+  const snapshot = { ...extra, partsPlaced, targetParts, complete, childCount, document, report: current.check() };
+  return withTransferableLabels(snapshot, 'document');
+}
+
+/**
+ * Voxel labels become an Int32Array so they can be transferred instead of copied. `field` names
+ * where the document sits in `value` (none: `value` is the document).
+ */
+function withTransferableLabels(value, field) {
+  const document = field ? value?.[field] : value;
   const labels = document?.voxel?.labels;
-  if (!Array.isArray(labels)) return [document, []];
+  if (!Array.isArray(labels)) return [value, []];
   const packed = Int32Array.from(labels);
-  return [{ ...document, voxel: { ...document.voxel, labels: packed } }, [packed.buffer]];
+  const repacked = { ...document, voxel: { ...document.voxel, labels: packed } };
+  return [field ? { ...value, [field]: repacked } : repacked, [packed.buffer]];
 }
 
 /** Human-readable text for anything thrown by the core or the loader. */
@@ -73,7 +182,7 @@ async function handleInit() {
 }
 
 async function handleRun({ id, op, text, options }) {
-  const operation = OPERATIONS[op];
+  const operation = Object.hasOwn(OPERATIONS, op) ? OPERATIONS[op] : null;
   if (!operation) {
     self.postMessage({ type: 'error', id, message: `unknown operation: ${op}` });
     return;
@@ -87,7 +196,7 @@ async function handleRun({ id, op, text, options }) {
   }
   try {
     const started = performance.now();
-    const [value, transfer] = operation(core, String(text ?? ''), options);
+    const [value, transfer] = operation(core, String(text ?? ''), options, id);
     const elapsedMs = performance.now() - started;
     self.postMessage({ type: 'result', id, value, elapsedMs }, transfer);
   } catch (error) {

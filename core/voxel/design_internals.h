@@ -82,6 +82,18 @@ class PartBuilder {
   bool canBePart(int64_t voxel) const { return state_[voxel] == kFree || state_[voxel] == kPart; }
   bool canBeRemainder(int64_t voxel) const { return state_[voxel] == kFree || state_[voxel] == kForcedRemainder; }
 
+  // Saves and restores the builder's choices, to try another design after a failed one.
+  struct Snapshot {
+    std::vector<uint8_t> state;
+    std::vector<int64_t> part, forcedPart;
+  };
+  Snapshot snapshot() const { return {state_, part_, forcedPart_}; }
+  void restore(Snapshot snapshot) {
+    state_ = std::move(snapshot.state);
+    part_ = std::move(snapshot.part);
+    forcedPart_ = std::move(snapshot.forcedPart);
+  }
+
   const std::vector<int64_t>& partVoxels() const { return part_; }
   std::vector<int64_t> sortedPartVoxels() const;
   int size() const { return static_cast<int>(part_.size()); }

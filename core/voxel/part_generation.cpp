@@ -11,6 +11,7 @@
 // cleared along its removal direction and grown to size. Every realized candidate is checked
 // exactly (candidate_checks.h) before it joins the construction tree.
 #include <algorithm>
+#include <random>
 #include <set>
 
 #include "desia/blocking_graph.h"
@@ -182,6 +183,25 @@ std::vector<int64_t> seedPool(const VoxelGrid& grid, int remainder, const std::v
   return pool;
 }
 
+// Fisher-Yates with raw engine outputs: std::shuffle's algorithm differs between standard
+// libraries (libstdc++ natively, libc++ in WebAssembly), which would break native/wasm equality.
+template <typename T>
+void shuffleDeterministically(std::vector<T>& items, std::mt19937_64& random) {
+  for (size_t k = items.size(); k > 1; --k) std::swap(items[k - 1], items[random() % k]);
+}
+
+// P_i's removal direction: one along which its seed is exposed (nothing of the remainder right in
+// front), chosen at random; any axis when the seed is enclosed.
+Int3 removalDirectionFor(const VoxelGrid& grid, int remainder, int64_t seed, std::mt19937_64& random) {
+  std::vector<Int3> exposed;
+  for (const Int3& step : kAxisSteps) {
+    const int64_t front = neighbourIndex(grid, seed, step);
+    if (front < 0 || grid.labelAt(front) != remainder) exposed.push_back(step);
+  }
+  if (exposed.empty()) return kAxisSteps[random() % 6];
+  return exposed[random() % exposed.size()];
+}
+
 }  // namespace
 
 std::vector<Candidate> generatePartCandidates(const VoxelGrid& grid, int remainder, DesignContext& context,
@@ -197,8 +217,11 @@ std::vector<Candidate> generatePartCandidates(const VoxelGrid& grid, int remaind
   int64_t remainderVoxels = 0;
   for (int64_t v = 0; v < grid.voxelCount(); ++v) remainderVoxels += grid.labelAt(v) == remainder ? 1 : 0;
 
-  const int minSize = std::max(options.minPartSize, targetSize - targetSize / 4);
-  const int maxSize = targetSize + targetSize / 4 + 1;
+  // Part sizes within a quarter of the target, which keeps the search flexible; the final split
+  // (P_(N-1) and the last remainder) only needs both parts to be of a reasonable size.
+  const bool finalSplit = partsStillToPlace == 1;
+  const int minSize = std::max(options.minPartSize, finalSplit ? targetSize / 2 : targetSize - targetSize / 4);
+  const int maxSize = finalSplit ? static_cast<int>(remainderVoxels) - minSize : targetSize + targetSize / 4 + 1;
   // R_i must keep room for the parts still to come.
   const int64_t remainderFloor = static_cast<int64_t>(partsStillToPlace) * std::max(1, options.minPartSize);
 
@@ -207,17 +230,27 @@ std::vector<Candidate> generatePartCandidates(const VoxelGrid& grid, int remaind
   std::set<std::vector<int64_t>> seen;
   const int attempts = 40 * options.candidates + 200;
   for (int attempt = 0; attempt < attempts && static_cast<int>(candidates.size()) < options.candidates; ++attempt) {
-    const Int3 removal = kAxisSteps[context.random() % 6];
     const int64_t seedVoxel = seeds[context.random() % seeds.size()];
     const Int3 seed = grid.coordinates(seedVoxel);
+    const Int3 removal = removalDirectionFor(grid, remainder, seedVoxel, context.random);
     PartBuilder builder(grid, remainder, context, access);
     bool ok = builder.forcePart(seedVoxel);
     bool someAxisFreeOfPairs = false;
     for (int axis = 0; axis < 3 && ok; ++axis) {
-      const std::vector<AxisDesign> allowed = allowedDesigns(axis, removal);
-      const AxisDesign design = allowed[context.random() % allowed.size()];
-      someAxisFreeOfPairs = someAxisFreeOfPairs || design != AxisDesign::TwoInternal;
-      ok = realizeAxis(design, axis, axes[axis], grid, seed, context.random, builder);
+      // Try the allowed designs in random order; a design that cannot be realized here is rolled
+      // back before the next is tried (thin walls host only some of them).
+      std::vector<AxisDesign> allowed = allowedDesigns(axis, removal);
+      shuffleDeterministically(allowed, context.random);
+      ok = false;
+      for (AxisDesign design : allowed) {
+        PartBuilder::Snapshot before = builder.snapshot();
+        if (realizeAxis(design, axis, axes[axis], grid, seed, context.random, builder)) {
+          someAxisFreeOfPairs = someAxisFreeOfPairs || design != AxisDesign::TwoInternal;
+          ok = true;
+          break;
+        }
+        builder.restore(std::move(before));
+      }
     }
     ok = ok && someAxisFreeOfPairs && builder.connect() && builder.clearPathAlong(removal) &&
          builder.growTo(minSize, maxSize, removal, context.random);

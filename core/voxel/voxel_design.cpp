@@ -75,10 +75,10 @@ VoxelGrid normalizedShape(const VoxelGrid& shape, const VoxelDesignOptions& opti
     throwBadInput("", "the shape is not face-connected: a puzzle needs one connected voxel set");
   }
   if (options.parts < 3) {
-    throwBadInput("", "--parts " + std::to_string(options.parts) + ": an interlocking puzzle needs at least 3 parts");
+    throwBadInput("", "parts = " + std::to_string(options.parts) + ": an interlocking puzzle needs at least 3 parts");
   }
   if (static_cast<int64_t>(options.parts) * 2 > count) {
-    throwBadInput("", "--parts " + std::to_string(options.parts) + " is too many for a shape of " + std::to_string(count) +
+    throwBadInput("", "parts = " + std::to_string(options.parts) + " is too many for a shape of " + std::to_string(count) +
                           " voxels (each part needs at least 2 voxels, so at most " + std::to_string(count / 2) + " parts)");
   }
   if (options.candidates < 1) throwBadInput("", "--candidates must be at least 1");
@@ -132,7 +132,9 @@ bool verifyPuzzle(const VoxelGrid& grid, int parts, CheckReport* report) {
 class ConstructionTree {
  public:
   ConstructionTree(VoxelGrid grid, const VoxelDesignOptions& options, DesignContext& context)
-      : grid_(std::move(grid)), options_(options), context_(context), levels_(1) {}
+      : grid_(std::move(grid)), options_(options), context_(context), levels_(1) {
+    levels_[0].seed = options.seed;
+  }
 
   const VoxelGrid& grid() const { return grid_; }
   int depth() const { return static_cast<int>(levels_.size()) - 1; }  // parts placed
@@ -156,7 +158,9 @@ class ConstructionTree {
     const Candidate& candidate = children().at(child);
     levels_.back().next = std::max(levels_.back().next, child + 1);
     design::applyCandidate(grid_, depth() + 1, candidate);
+    const uint64_t parentSeed = levels_.back().seed;
     levels_.emplace_back();
+    levels_.back().seed = childSeed(parentSeed, child);
   }
 
   // Algorithm 1: the next untried child of the current node, if any.
@@ -179,9 +183,20 @@ class ConstructionTree {
     std::vector<Candidate> children;
     bool generated = false;
     size_t next = 0;
+    uint64_t seed = 0;  // the node's own random stream: children depend on the path only
   };
 
+  // SplitMix64 of the parent's seed and the child's rank: a node's children do not depend on
+  // which other nodes were expanded before (the step-by-step session and the search agree).
+  static uint64_t childSeed(uint64_t parent, size_t child) {
+    uint64_t z = parent + 0x9E3779B97F4A7C15ull * (static_cast<uint64_t>(child) + 1);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+  }
+
   std::vector<Candidate> generateChildren() {
+    context_.random.seed(levels_.back().seed);
     const int remainder = depth() + 1;
     const int partsLeft = options_.parts - depth();  // parts still to make, the final remainder included
     if (partsLeft <= 1) return {};

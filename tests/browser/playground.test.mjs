@@ -11,17 +11,9 @@
 
 import { after, before, describe, it } from 'node:test';
 import assert from 'node:assert/strict';
-import { spawn } from 'node:child_process';
-import { existsSync } from 'node:fs';
-import { mkdir, mkdtemp, rm } from 'node:fs/promises';
-import os from 'node:os';
-import path from 'node:path';
-import { fileURLToPath } from 'node:url';
-import { chromium } from 'playwright-core';
-
-const CHROMIUM_PATH = '/usr/bin/chromium';
-const REPO_ROOT = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..', '..');
-const ARTIFACTS_DIR = path.join(REPO_ROOT, 'test-artifacts');
+import {
+  assertInterlockingWithKey, checkPrerequisites, openBrowser, screenshot, waitForReady, waitForSettled,
+} from './support.mjs';
 
 const FIRST_EXAMPLE = 'Cube_4x4x4_K9.puz';
 const BUNNY_EXAMPLE = 'bunny_15x14x11_K80.puz';
@@ -34,70 +26,6 @@ const EXAMPLES = [
   { file: 'cartoon_dog.puz', parts: 14, keyDirection: '+y' },
   { file: 'bunny_15x14x11_K80.puz', parts: 80, keyDirection: '+y' },
 ];
-const SETTLE_TIMEOUT_MS = 30_000;
-
-// Flags from shared/toolchain.md (no background traffic on a closed network), plus SwiftShader:
-// with --disable-gpu, current Chromium only offers software WebGL when explicitly allowed.
-const CHROMIUM_ARGS = [
-  '--headless',
-  '--no-sandbox',
-  '--disable-gpu',
-  '--disable-quic',
-  '--no-first-run',
-  '--disable-background-networking',
-  '--disable-component-update',
-  '--disable-sync',
-  '--enable-unsafe-swiftshader',
-  '--use-angle=swiftshader',
-];
-
-/** Fails early, with the fix in the message, when something the test needs is missing. */
-function checkPrerequisites() {
-  const required = [
-    [CHROMIUM_PATH, 'Chromium is missing: install Debian\'s chromium package (bash scripts/setup.sh)'],
-    [path.join(REPO_ROOT, 'node_modules/three/build/three.module.js'), 'three is missing: run npm ci'],
-    [path.join(REPO_ROOT, 'wasm/index.js'), 'wasm/index.js is missing'],
-    [path.join(REPO_ROOT, 'dist/desia_wasm.wasm'), 'the WebAssembly build is missing: run bash scripts/build.sh wasm'],
-    ...EXAMPLES.map(({ file }) => [path.join(REPO_ROOT, 'examples/voxel', file), `examples/voxel/${file} is missing`]),
-  ];
-  for (const [file, message] of required) {
-    if (!existsSync(file)) throw new Error(`${message} (${file} not found)`);
-  }
-}
-
-/** Starts scripts/serve.mjs on a free port; resolves with { url, stop }. */
-function startServer() {
-  const child = spawn(process.execPath, [path.join(REPO_ROOT, 'scripts/serve.mjs'), '--port', '0'], {
-    cwd: REPO_ROOT,
-    stdio: ['ignore', 'pipe', 'pipe'],
-  });
-  let stderr = '';
-  child.stderr.on('data', (chunk) => { stderr += chunk; });
-  const stop = () => new Promise((resolve) => {
-    if (child.exitCode !== null || child.signalCode !== null) return resolve();
-    child.once('exit', () => resolve());
-    child.kill('SIGTERM');
-  });
-  return new Promise((resolve, reject) => {
-    const timer = setTimeout(() => {
-      stop();
-      reject(new Error(`scripts/serve.mjs printed no URL within 10 s; stderr: ${stderr}`));
-    }, 10_000);
-    let stdout = '';
-    child.stdout.on('data', (chunk) => {
-      stdout += chunk;
-      const match = /^(http:\/\/127\.0\.0\.1:\d+\/web\/)\s*$/m.exec(stdout);
-      if (match) {
-        clearTimeout(timer);
-        resolve({ url: match[1], stop });
-      }
-    });
-    child.once('exit', (code) => {
-      clearTimeout(timer);
-      reject(new Error(`scripts/serve.mjs exited with code ${code}; stderr: ${stderr}`));
-    });
-  });
-}
 
 /** Deterministic non-text bytes: what a user gets when picking the wrong file. */
 function garbageBytes(length) {
@@ -110,88 +38,26 @@ function garbageBytes(length) {
   return bytes;
 }
 
-async function screenshot(page, name) {
-  await page.screenshot({ path: path.join(ARTIFACTS_DIR, `${name}.png`) });
-}
-
-async function pageState(page) {
-  return page.evaluate(() => ({
-    status: document.body.dataset.status,
-    source: document.body.dataset.source,
-    webgl: document.body.dataset.webgl,
-    verdict: document.querySelector('#verdict')?.textContent ?? '',
-    verdictCode: document.querySelector('#verdict')?.dataset.verdict ?? '',
-    key: document.querySelector('#verdict')?.dataset.key ?? '',
-    parts: document.querySelector('#parts-count')?.textContent ?? '',
-    keyDirections: document.querySelector('#key-directions')?.textContent ?? '',
-    meshes: document.querySelector('#viewport')?.dataset.parts ?? '',
-    error: document.querySelector('#error')?.hidden ? '' : document.querySelector('#error')?.textContent ?? '',
-  }));
-}
-
-/** Waits until the page has finished with `source` (ready or error) and returns its state. */
-async function waitForSettled(page, source) {
-  try {
-    await page.waitForFunction(
-      (expected) => document.body.dataset.source === expected
-        && (document.body.dataset.status === 'ready' || document.body.dataset.status === 'error'),
-      source,
-      { timeout: SETTLE_TIMEOUT_MS },
-    );
-  } catch (error) {
-    const state = await pageState(page).catch(() => ({}));
-    await screenshot(page, `timeout-${source}`).catch(() => {});
-    throw new Error(`page did not settle on ${source} within ${SETTLE_TIMEOUT_MS} ms: ${JSON.stringify(state)}`);
-  }
-  return pageState(page);
-}
-
-/** Like waitForSettled, but a page error is a test failure that quotes the page's message. */
-async function waitForReady(page, source) {
-  const state = await waitForSettled(page, source);
-  if (state.status !== 'ready') {
-    await screenshot(page, `error-${source}`);
-    assert.fail(`the page shows an error for ${source}: ${state.error}`);
-  }
-  return state;
-}
-
-function assertInterlockingWithKey(state, key) {
-  assert.equal(state.verdictCode, 'interlocking', `verdict: ${state.verdict}`);
-  assert.match(state.verdict, new RegExp(`^Interlocking\\b.*\\bpart ${key}$`));
-  assert.equal(state.key, String(key));
-}
-
 describe('playground in headless Chromium', { timeout: 60_000 }, () => {
+  let browser;
   let server;
   let context;
   let page;
-  let userDataDir;
   const requestedUrls = [];
   const pageErrors = [];
 
   before(async () => {
-    checkPrerequisites();
-    await mkdir(ARTIFACTS_DIR, { recursive: true });
-    server = await startServer();
-    userDataDir = await mkdtemp(path.join(os.tmpdir(), 'desia-chromium-'));
-    context = await chromium.launchPersistentContext(userDataDir, {
-      executablePath: CHROMIUM_PATH,
-      headless: true,
-      args: CHROMIUM_ARGS,
-      viewport: { width: 1280, height: 800 },
-    });
+    checkPrerequisites(EXAMPLES.map(({ file }) => file));
+    browser = await openBrowser();
+    ({ server, context, page } = browser);
     // Context-wide, so requests from the worker are seen as well as the page's.
     context.on('request', (request) => requestedUrls.push(request.url()));
-    page = context.pages()[0] ?? await context.newPage();
     page.on('request', (request) => requestedUrls.push(request.url()));
     page.on('pageerror', (error) => pageErrors.push(error.message));
   });
 
   after(async () => {
-    await context?.close();
-    await server?.stop();
-    if (userDataDir) await rm(userDataDir, { recursive: true, force: true });
+    await browser?.close();
   });
 
   it('loads and reports the first example as interlocking with key 1', async () => {

@@ -228,9 +228,9 @@ TEST(VoxelDesign, ImpossibleRequestsAreBadInput) {
     }
     return std::string("accepted");
   };
-  EXPECT_EQ(message(cube, optionsFor(2, 1)), "--parts 2: an interlocking puzzle needs at least 3 parts");
+  EXPECT_EQ(message(cube, optionsFor(2, 1)), "parts = 2: an interlocking puzzle needs at least 3 parts");
   EXPECT_EQ(message(cube, optionsFor(33, 1)),
-            "--parts 33 is too many for a shape of 64 voxels (each part needs at least 2 voxels, so at most 32 parts)");
+            "parts = 33 is too many for a shape of 64 voxels (each part needs at least 2 voxels, so at most 32 parts)");
   VoxelGrid twoPieces(3, 1, 1);
   twoPieces.setLabel(0, 0, 0, 1);
   twoPieces.setLabel(2, 0, 0, 1);
@@ -299,6 +299,30 @@ TEST(DesignSession, SameSeedSameChildrenAsTheAutomaticSearch) {
   while (session.generateNextPart() && !session.complete()) {
   }
   EXPECT_EQ(session.current().labels(), automatic.puzzle.labels());
+}
+
+}  // namespace
+}  // namespace desia
+
+namespace desia {
+namespace {
+
+TEST(DesignSession, ChildrenDependOnThePathNotOnWhatWasExploredBefore) {
+  const VoxelGrid cube = testing::loadReference("input_puz/Cube_4x4x4_origin.puz").voxels;
+  VoxelDesignOptions options;
+  options.parts = 7;
+  options.seed = 5;
+  // Session A expands child 0 first, then goes back and takes child 2; session B takes child 2
+  // directly. Both must then offer the same children.
+  VoxelDesignSession a(cube, options), b(cube, options);
+  ASSERT_GT(a.childCount(), 2);
+  a.chooseChild(0);
+  ASSERT_GE(a.childCount(), 0);
+  a.goBack();
+  a.chooseChild(2);
+  b.chooseChild(2);
+  ASSERT_EQ(a.childCount(), b.childCount());
+  for (int n = 0; n < a.childCount(); ++n) EXPECT_EQ(a.childPreview(n).labels(), b.childPreview(n).labels()) << n;
 }
 
 }  // namespace

@@ -81,3 +81,13 @@ test("Fig. 4's assembly: only the linear program sees the motion", async () => {
   assert.equal(report.witness.direction, null);
   assert.deepEqual(report.witness.velocities, [[1, 0, 0], [0, 1, 0]]);
 });
+
+test('toPuz writes .puz text byte for byte as the original writer, from .puz or JSON', async () => {
+  const core = await loadDesiaModule();
+  assert.equal(core.toPuz(k9), k9);
+  const document = core.parseDocument(k9);
+  assert.equal(core.toPuz(document), k9);
+  assert.equal(core.toPuz(JSON.stringify(document)), k9);
+  const figure4 = fs.readFileSync(path.join(root, 'examples/contacts/figure4_two_parts_move_at_once.json'), 'utf8');
+  assert.throws(() => core.toPuz(figure4, { source: 'fig4.json' }), /fig4\.json: only voxel assemblies have a \.puz form/);
+});

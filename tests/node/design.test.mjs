@@ -63,8 +63,8 @@ test('a node limit ends the search with how far it got', () => {
 test('impossible requests and bad options are DesiaErrors with the core message', () => {
   const cube = fs.readFileSync(shapePath('Cube_4x4x4_origin.puz'), 'utf8');
   const cases = [
-    [{ parts: 2 }, /--parts 2: an interlocking puzzle needs at least 3 parts/],
-    [{ parts: 40 }, /--parts 40 is too many for a shape of 64 voxels/],
+    [{ parts: 2 }, /parts = 2: an interlocking puzzle needs at least 3 parts/],
+    [{ parts: 40 }, /parts = 40 is too many for a shape of 64 voxels/],
     [{ parts: 5, rank: 'prettiest' }, /unknown ranking 'prettiest'/],
     [{ parts: 5, colour: 'red' }, /unknown design option 'colour'/],
     [{ parts: 5, groups: [[[9, 9, 9]]] }, /groups\[0\]: voxel \[9,9,9\] is not in the shape/],

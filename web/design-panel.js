@@ -1,0 +1,402 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The Design panel: designs an N-part interlocking voxel puzzle from the assembly on screen
+// (all its voxels are the shape), automatically (designVoxel, with live progress) or step by
+// step (a design session). Everything runs in the worker; the panel only collects parameters,
+// shows progress and hands finished assemblies to the page. Cancel terminates the worker (a
+// busy WebAssembly worker cannot read a message), so the page keeps what it showed before.
+//
+// For tests: body[data-design] = '' | running | success | not-found | limit-reached |
+// cancelled | error (the last outcome), #design-message (the core's message),
+// #design-progress-box[data-updates] (progress messages seen in the current run),
+// #session-state[data-parts, data-children, data-complete] (the open session's node).
+
+import { byId } from './dom.js';
+import { readUrlState, writeUrlState } from './url-state.js';
+
+/** The fields of the form, by URL key; their values go to the core as they are. */
+const FIELDS = {
+  parts: byId('design-parts'),
+  seed: byId('design-seed'),
+  candidates: byId('design-candidates'),
+  timeLimit: byId('design-time-limit'),
+  rank: byId('design-rank'),
+  mode: byId('design-mode'),
+};
+const NUMBER_FIELDS = ['parts', 'seed', 'candidates', 'timeLimit'];
+const FIELD_NAMES = { parts: 'Parts N', seed: 'Seed', candidates: 'Candidates m', timeLimit: 'Time limit' };
+
+const ui = {
+  form: byId('design-form'),
+  designButton: byId('design-button'),
+  cancelButton: byId('design-cancel'),
+  progressBox: byId('design-progress-box'),
+  progress: byId('design-progress'),
+  progressText: byId('design-progress-text'),
+  message: byId('design-message'),
+  sessionStart: byId('session-start'),
+  sessionNext: byId('session-next'),
+  sessionBack: byId('session-back'),
+  sessionClose: byId('session-close'),
+  sessionChild: byId('session-child'),
+  sessionPreview: byId('session-preview'),
+  sessionChoose: byId('session-choose'),
+  sessionState: byId('session-state'),
+};
+
+/** How often the elapsed time moves while the core is busy between progress messages. */
+const CLOCK_INTERVAL_MS = 100;
+
+/**
+ * A reasonable N for a shape of `voxels` voxels: about a dozen voxels per part (80 parts at
+ * most, like the largest published puzzle), 7 for small shapes, never more than the core allows
+ * (two voxels per part). Only a starting value: the user's N always wins.
+ */
+export function defaultParts(voxels) {
+  let parts = Math.max(Math.round(voxels / 12), 7);
+  parts = Math.min(parts, Math.floor(voxels / 2), 80);
+  return Math.max(parts, 3);
+}
+
+/** 'Cube_4x4x4_origin.puz' -> 'Cube_4x4x4'; names of earlier designs lose their suffix too. */
+function baseName(name) {
+  return name.replace(/\.[^.]*$/, '').replace(/_N\d+_seed\d+$/, '').replace(/_step\d+of\d+(_child\d+)?$/, '').replace(/_origin$/, '');
+}
+
+function seconds(ms) {
+  return `${(ms / 1000).toFixed(1)} s`;
+}
+
+/**
+ * Wires the panel. `core` is the page's CoreWorker; `getShape()` returns `{ name, text }` of the
+ * assembly on screen or null; `showAssembly({ name, text, document, report, elapsedMs,
+ * timingLabel })` puts an assembly on screen; `setBusy(busy, label)` locks the page's other
+ * inputs while the worker is busy for us.
+ */
+export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
+  let busy = false;
+  let partsTouched = false;
+  /** The open step-by-step session: { generation, base, snapshot }, or null. */
+  let session = null;
+  /** The latest run (design or session step): { started, latest, updates, clock, withProgress }. */
+  let run = null;
+
+  // -------------------------------------------------------------------------------------------
+  // Parameters
+
+  function prefillFromUrl() {
+    const state = readUrlState();
+    for (const [key, field] of Object.entries(FIELDS)) {
+      if (state[key] === undefined) continue;
+      if (field instanceof HTMLSelectElement && ![...field.options].some((option) => option.value === state[key])) continue;
+      field.value = state[key];
+    }
+    // A shared link's N is deliberate: do not replace it with the shape's default.
+    if (state.parts !== undefined) partsTouched = true;
+  }
+
+  function syncUrl() {
+    const changes = {};
+    for (const [key, field] of Object.entries(FIELDS)) changes[key] = field.value;
+    writeUrlState(changes);
+  }
+
+  /**
+   * The options for the core. Empty fields are left out (the core's defaults apply; a missing N
+   * gets the core's message). Only what the browser cannot hand over is caught here: text in a
+   * number field, which the field reports as empty.
+   */
+  function readOptions() {
+    const options = {};
+    for (const key of NUMBER_FIELDS) {
+      const field = FIELDS[key];
+      if (field.validity.badInput) throw new Error(`${FIELD_NAMES[key]}: not a number`);
+      if (field.value.trim() !== '') options[key] = Number(field.value);
+    }
+    options.rank = FIELDS.rank.value;
+    options.mode = FIELDS.mode.value;
+    return options;
+  }
+
+  // -------------------------------------------------------------------------------------------
+  // Busy state, progress and messages
+
+  function setOutcome(outcome, message) {
+    document.body.dataset.design = outcome;
+    ui.message.dataset.outcome = outcome;
+    ui.message.textContent = message ?? '';
+    ui.message.hidden = !message;
+  }
+
+  function begin(label, { withProgress }) {
+    busy = true;
+    setBusy(true, label);
+    document.body.dataset.design = 'running';
+    ui.message.hidden = true;
+    run = { started: performance.now(), latest: null, updates: 0, clock: 0, withProgress };
+    if (withProgress) {
+      ui.progressBox.hidden = false;
+      ui.progressBox.dataset.updates = '0';
+      ui.progress.max = 1;
+      ui.progress.value = 0;
+      run.clock = setInterval(renderProgress, CLOCK_INTERVAL_MS);
+      renderProgress();
+    }
+    refreshControls();
+  }
+
+  /** Ends the run; returns its wall-clock time in ms. */
+  function end() {
+    const elapsed = performance.now() - run.started;
+    clearInterval(run.clock);
+    // A run that failed before its first node has no progress worth keeping on screen.
+    if (run.withProgress && run.latest) renderProgress();
+    else ui.progressBox.hidden = true;
+    busy = false;
+    setBusy(false);
+    refreshControls();
+    return elapsed;
+  }
+
+  function onProgress(value) {
+    if (!run) return;
+    run.latest = value;
+    run.updates += 1;
+    ui.progressBox.dataset.updates = String(run.updates);
+    renderProgress();
+  }
+
+  /** Parts placed of N (the deepest node so far), nodes, current depth, wall-clock time. */
+  function renderProgress() {
+    const elapsed = seconds(performance.now() - run.started);
+    const latest = run.latest;
+    if (!latest) {
+      ui.progressText.textContent = `Starting… ${elapsed}`;
+      return;
+    }
+    ui.progress.max = latest.targetParts;
+    ui.progress.value = latest.bestDepth;
+    ui.progressText.textContent = `${latest.bestDepth} of ${latest.targetParts} parts placed · `
+      + `${latest.nodesVisited} nodes visited · depth ${latest.depth} · ${elapsed}`;
+  }
+
+  function cancel() {
+    if (!busy) return;
+    // Rejects the pending request with a CancelledError, handled where it was sent.
+    core.cancel();
+  }
+
+  // -------------------------------------------------------------------------------------------
+  // Automatic design
+
+  async function design() {
+    if (busy) return;
+    const shape = getShape();
+    if (!shape) {
+      setOutcome('error', 'Load a voxel shape first (an example, or your own .puz / .json).');
+      return;
+    }
+    let options;
+    try {
+      options = readOptions();
+    } catch (error) {
+      setOutcome('error', error.message);
+      return;
+    }
+    syncUrl();
+    begin('Designing…', { withProgress: true });
+    try {
+      const { value: result, elapsedMs } = await core.run('design', shape.text, { ...options, source: shape.name }, { onProgress });
+      end();
+      if (result.status === 'success') {
+        showAssembly({
+          name: `${baseName(shape.name)}_N${result.progress.targetParts}_seed${options.seed ?? 1}.puz`,
+          text: result.puz,
+          document: result.document,
+          report: result.verification,
+          elapsedMs,
+          timingLabel: 'Design time',
+        });
+      }
+      // The core's message says what was found, or how far the search got.
+      setOutcome(result.status, result.message);
+    } catch (error) {
+      const elapsed = end();
+      if (error.cancelled) setOutcome('cancelled', cancelledMessage(run.latest, elapsed));
+      else setOutcome('error', error.message);
+    }
+  }
+
+  function cancelledMessage(latest, elapsed) {
+    if (!latest) return `Cancelled after ${seconds(elapsed)}, before the first node.`;
+    return `Cancelled after ${seconds(elapsed)}: the deepest node had ${latest.bestDepth} of `
+      + `${latest.targetParts} parts (${latest.nodesVisited} nodes visited).`;
+  }
+
+  // -------------------------------------------------------------------------------------------
+  // Step by step
+
+  /** A session lives in one worker: after a crash or a cancel it is gone. */
+  function sessionAlive() {
+    if (session && session.generation !== core.generation) session = null;
+    return session !== null;
+  }
+
+  /**
+   * Sends one session operation; resolves with `{ value, elapsedMs }`, or null when it failed
+   * (the message is on screen then).
+   */
+  async function sessionCall(op, text, options, label) {
+    if (busy) return null;
+    begin(label, { withProgress: false });
+    try {
+      const answer = await core.run(op, text, options);
+      end();
+      return answer;
+    } catch (error) {
+      end();
+      if (error.cancelled) {
+        session = null;
+        setOutcome('cancelled', 'Cancelled; the step-by-step session ended with its worker.');
+      } else {
+        setOutcome('error', error.message);
+      }
+      refreshControls();
+      return null;
+    }
+  }
+
+  async function startSession() {
+    const shape = getShape();
+    if (!shape) {
+      setOutcome('error', 'Load a voxel shape first (an example, or your own .puz / .json).');
+      return;
+    }
+    let options;
+    try {
+      options = readOptions();
+    } catch (error) {
+      setOutcome('error', error.message);
+      return;
+    }
+    delete options.timeLimit; // A session makes one step per click: no search to limit.
+    syncUrl();
+    const generation = core.generation;
+    const answer = await sessionCall('session-open', shape.text, { ...options, source: shape.name }, 'Starting the session…');
+    if (!answer) return;
+    session = { generation, base: baseName(shape.name), snapshot: answer.value };
+    showSnapshot(answer.elapsedMs);
+    setOutcome('', '');
+  }
+
+  async function step(op, options = {}) {
+    if (!sessionAlive()) return refreshControls();
+    const answer = await sessionCall(op, '', options, 'Working on the session…');
+    if (!answer || !sessionAlive()) return;
+    session.snapshot = answer.value;
+    showSnapshot(answer.elapsedMs);
+    if (answer.value.moved === false) {
+      setOutcome('not-found', op === 'session-next'
+        ? 'This step has no children: go back and choose another.'
+        : 'Already at the first step.');
+    } else {
+      setOutcome('', '');
+    }
+  }
+
+  async function preview() {
+    if (!sessionAlive()) return refreshControls();
+    const n = Number(ui.sessionChild.value);
+    const answer = await sessionCall('session-preview', '', { n }, 'Previewing…');
+    if (!answer) return;
+    const { index, document: document_, report } = answer.value;
+    const { partsPlaced, targetParts } = session.snapshot;
+    showSessionAssembly(`${session.base}_step${partsPlaced}of${targetParts}_child${index}`, document_, report, answer.elapsedMs);
+    setOutcome('', `Preview of child ${index}: choose it to continue from there.`);
+  }
+
+  async function closeSession() {
+    if (sessionAlive()) await sessionCall('session-close', '', {}, 'Closing the session…');
+    session = null;
+    refreshControls();
+  }
+
+  function showSnapshot(elapsedMs) {
+    const { partsPlaced, targetParts, document: document_, report } = session.snapshot;
+    showSessionAssembly(`${session.base}_step${partsPlaced}of${targetParts}`, document_, report, elapsedMs);
+    ui.sessionChild.value = '0';
+    refreshControls();
+  }
+
+  /** Session assemblies have no .puz text from the core: the page keeps them as JSON documents. */
+  function showSessionAssembly(name, document_, report, elapsedMs) {
+    const plain = { ...document_, voxel: { ...document_.voxel, labels: Array.from(document_.voxel.labels) } };
+    showAssembly({ name: `${name}.json`, text: JSON.stringify(plain), document: document_, report, elapsedMs, timingLabel: 'Step time' });
+  }
+
+  function describeSession() {
+    if (!session) return 'No session.';
+    const { partsPlaced, targetParts, complete, childCount } = session.snapshot;
+    if (complete) return `Complete: ${partsPlaced} of ${targetParts} parts.`;
+    const children = childCount === 0 ? 'no children (go back)' : `${childCount} children (0 = best ranked)`;
+    return `${partsPlaced} of ${targetParts} parts (the last is the remainder) · ${children}.`;
+  }
+
+  // -------------------------------------------------------------------------------------------
+  // Controls
+
+  function refreshControls() {
+    const alive = sessionAlive();
+    const childCount = alive ? session.snapshot.childCount : 0;
+    ui.designButton.disabled = busy;
+    ui.cancelButton.disabled = !busy;
+    ui.sessionStart.disabled = busy;
+    ui.sessionStart.textContent = alive ? 'Restart' : 'Start';
+    ui.sessionNext.disabled = busy || !alive || childCount === 0;
+    ui.sessionBack.disabled = busy || !alive || session.snapshot.partsPlaced <= 1;
+    ui.sessionClose.disabled = busy || !alive;
+    ui.sessionChild.disabled = busy || !alive || childCount === 0;
+    ui.sessionChild.max = String(Math.max(childCount - 1, 0));
+    ui.sessionPreview.disabled = ui.sessionChild.disabled;
+    ui.sessionChoose.disabled = ui.sessionChild.disabled;
+    ui.sessionState.textContent = describeSession();
+    ui.sessionState.dataset.parts = alive ? String(session.snapshot.partsPlaced) : '';
+    ui.sessionState.dataset.children = String(childCount);
+    ui.sessionState.dataset.complete = String(alive && session.snapshot.complete);
+  }
+
+  function wire() {
+    ui.form.addEventListener('submit', (event) => {
+      event.preventDefault();
+      design();
+    });
+    ui.cancelButton.addEventListener('click', cancel);
+    FIELDS.parts.addEventListener('input', () => { partsTouched = true; });
+    ui.form.addEventListener('input', syncUrl);
+    ui.form.addEventListener('change', syncUrl);
+    ui.sessionStart.addEventListener('click', startSession);
+    ui.sessionNext.addEventListener('click', () => step('session-next'));
+    ui.sessionBack.addEventListener('click', () => step('session-back'));
+    ui.sessionChoose.addEventListener('click', () => step('session-choose', { n: Number(ui.sessionChild.value) }));
+    ui.sessionPreview.addEventListener('click', preview);
+    ui.sessionClose.addEventListener('click', closeSession);
+  }
+
+  prefillFromUrl();
+  wire();
+  refreshControls();
+
+  return {
+    get busy() {
+      return busy;
+    },
+    /** A new shape is on screen: N follows its size until the user sets N. */
+    shapeLoaded(voxelCount) {
+      if (partsTouched || !(voxelCount > 0)) return;
+      FIELDS.parts.value = String(defaultParts(voxelCount));
+      syncUrl();
+    },
+    /** The worker was replaced (crash or cancel): forget what lived in the old one. */
+    refresh: refreshControls,
+  };
+}
