@@ -17,30 +17,15 @@
 #include "desia/blocking_graph.h"
 #include "voxel/candidate_checks.h"
 #include "voxel/design_internals.h"
+#include "voxel/graph_design.h"
 
 namespace desia::design {
 namespace {
 
-enum class AxisDesign { TwoInternal, OneInternalPartToRemainder, OneInternalRemainderToPart, NoInternal };
-
-// An inherited contact along +e between R_(i-1) and an earlier part.
-struct ExternalContact {
-  int64_t voxel;  // the R_(i-1) voxel of the contact
-  int part;       // the earlier part's label
-};
-
-// Everything about one axis e of A_(i-1) that graph design needs.
-struct AxisInfo {
-  std::vector<ExternalContact> remainderBlockedBy;  // R voxel v, part at v+e: edge R -> part in G(+e)
-  std::vector<ExternalContact> blockingPart;        // R voxel w, part at w-e: edge part -> R in G(+e)
-  std::vector<int64_t> pairForward;                 // R voxel a with a+e in R
-  std::vector<int64_t> pairBackward;                // R voxel a with a-e in R
-  std::vector<int64_t> pairBoth;                    // both
-  std::vector<std::vector<bool>> reaches;           // [from][to] over earlier parts, avoiding R
-};
-
 int64_t voxelOf(int64_t voxel) { return voxel; }
 int64_t voxelOf(const ExternalContact& contact) { return contact.voxel; }
+
+}  // namespace
 
 AxisInfo describeAxis(const VoxelGrid& grid, int remainder, int axis, const DirectedGraph& graph, bool recursive) {
   AxisInfo info;
@@ -77,6 +62,8 @@ AxisInfo describeAxis(const VoxelGrid& grid, int remainder, int axis, const Dire
   return info;
 }
 
+namespace {
+
 // One of the `spread` entries of `list` nearest to `seed` among those `usable` accepts, chosen at
 // random; null if there is none.
 template <typename T, typename Usable>
@@ -110,6 +97,8 @@ bool pickCycleContacts(const AxisInfo& info, const VoxelGrid& grid, const Int3& 
   *in = *second;
   return true;
 }
+
+}  // namespace
 
 // Designs allowed on axis `axis` when P_i leaves along `removal` (Section 4.3: no internal edge
 // may block the removal).
@@ -171,6 +160,8 @@ bool realizeAxis(AxisDesign design, int axis, const AxisInfo& info, const VoxelG
   }
   return false;
 }
+
+namespace {
 
 // Seeds for P_i: exposed remainder voxels (low accessibility), where parts come off easily.
 std::vector<int64_t> seedPool(const VoxelGrid& grid, int remainder, const std::vector<double>& access) {
