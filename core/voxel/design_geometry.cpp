@@ -10,28 +10,30 @@
 namespace desia::design {
 
 std::vector<double> accessibility(const VoxelGrid& grid, int label) {
+  // The set's voxels and, once, their in-set neighbours: the three passes then touch only the set
+  // (this runs for every ranked candidate, on grids of tens of thousands of voxels).
+  std::vector<int64_t> voxels;
+  for (int64_t i = 0; i < grid.voxelCount(); ++i) {
+    if (grid.labelAt(i) == label) voxels.push_back(i);
+  }
+  std::vector<std::array<int64_t, 6>> neighbours(voxels.size());
+  std::vector<uint8_t> neighbourCount(voxels.size(), 0);
+  for (size_t k = 0; k < voxels.size(); ++k) {
+    for (const Int3& step : kAxisSteps) {
+      const int64_t j = neighbourIndex(grid, voxels[k], step);
+      if (j >= 0 && grid.labelAt(j) == label) neighbours[k][neighbourCount[k]++] = j;
+    }
+  }
   const int64_t n = grid.voxelCount();
   std::vector<double> current(static_cast<size_t>(n), 0.0), next(static_cast<size_t>(n), 0.0);
-  for (int64_t i = 0; i < n; ++i) {
-    if (grid.labelAt(i) != label) continue;
-    int count = 0;
-    for (const Int3& step : kAxisSteps) {
-      const int64_t j = neighbourIndex(grid, i, step);
-      count += (j >= 0 && grid.labelAt(j) == label) ? 1 : 0;
-    }
-    current[i] = count;
-  }
+  for (size_t k = 0; k < voxels.size(); ++k) current[voxels[k]] = neighbourCount[k];
   double weight = 1.0;
   for (int pass = 1; pass <= 3; ++pass) {
     weight *= 0.1;  // beta^pass with beta = 0.1
-    for (int64_t i = 0; i < n; ++i) {
-      if (grid.labelAt(i) != label) continue;
+    for (size_t k = 0; k < voxels.size(); ++k) {
       double sum = 0;
-      for (const Int3& step : kAxisSteps) {
-        const int64_t j = neighbourIndex(grid, i, step);
-        if (j >= 0 && grid.labelAt(j) == label) sum += current[j];
-      }
-      next[i] = current[i] + weight * sum;
+      for (uint8_t m = 0; m < neighbourCount[k]; ++m) sum += current[neighbours[k][m]];
+      next[voxels[k]] = current[voxels[k]] + weight * sum;
     }
     std::swap(current, next);
   }
@@ -108,17 +110,31 @@ int targetPartSize(int64_t remainderVoxels, int partsLeftIncludingRemainder) {
 
 PartBuilder::PartBuilder(const VoxelGrid& grid, int remainderLabel, const DesignContext& context,
                          const std::vector<double>& access)
-    : grid_(grid), context_(context), access_(access), state_(static_cast<size_t>(grid.voxelCount()), kOther) {
+    : grid_(grid),
+      context_(context),
+      access_(access),
+      state_(static_cast<size_t>(grid.voxelCount()), kOther),
+      cameFrom_(static_cast<size_t>(grid.voxelCount()), -2),
+      connected_(static_cast<size_t>(grid.voxelCount()), false) {
   for (int64_t i = 0; i < grid.voxelCount(); ++i) {
     if (grid.labelAt(i) == remainderLabel) state_[i] = kFree;
   }
+}
+
+void PartBuilder::restore(const Snapshot& snapshot) {
+  while (journal_.size() > snapshot.journal) {
+    state_[journal_.back().first] = journal_.back().second;
+    journal_.pop_back();
+  }
+  part_.resize(snapshot.part);
+  forcedPart_.resize(snapshot.forcedPart);
 }
 
 bool PartBuilder::addToPart(int64_t voxel) {
   auto addOne = [&](int64_t v) {
     if (state_[v] == kPart) return true;
     if (state_[v] != kFree) return false;
-    state_[v] = kPart;
+    setState(v, kPart);
     part_.push_back(v);
     return true;
   };
@@ -140,7 +156,7 @@ bool PartBuilder::forceRemainder(int64_t voxel) {
   auto forceOne = [&](int64_t v) {
     if (state_[v] == kForcedRemainder) return true;
     if (state_[v] != kFree) return false;
-    state_[v] = kForcedRemainder;
+    setState(v, kForcedRemainder);
     return true;
   };
   const int group = context_.groupOf.empty() ? -1 : context_.groupOf[voxel];
@@ -153,42 +169,39 @@ bool PartBuilder::forceRemainder(int64_t voxel) {
 
 bool PartBuilder::connect() {
   if (forcedPart_.empty()) return false;
-  std::vector<bool> connected(state_.size(), false);
-  std::vector<int64_t> component;
+  std::vector<int64_t> component;  // also the list of connected_ entries to clear at the end
   // Adds `from` and every part voxel face-connected to it to the connected component.
   auto flood = [&](int64_t from) {
-    if (connected[from]) return;
+    if (connected_[from]) return;
     std::vector<int64_t> stack{from};
-    connected[from] = true;
+    connected_[from] = true;
     while (!stack.empty()) {
       const int64_t v = stack.back();
       stack.pop_back();
       component.push_back(v);
       for (const Int3& step : kAxisSteps) {
         const int64_t w = neighbourIndex(grid_, v, step);
-        if (w < 0 || connected[w] || state_[w] != kPart) continue;
-        connected[w] = true;
+        if (w < 0 || connected_[w] || state_[w] != kPart) continue;
+        connected_[w] = true;
         stack.push_back(w);
       }
     }
   };
-  flood(forcedPart_[0]);
-  for (size_t k = 1; k < forcedPart_.size(); ++k) {
-    const int64_t target = forcedPart_[k];
-    if (connected[target]) continue;
-    // Breadth-first from the whole component: the first time the target is reached, the path
-    // back is a shortest connection through voxels the part may take.
-    std::vector<int64_t> cameFrom(state_.size(), -2);
+  // Breadth-first from the whole component: the first time the target is reached, the path back
+  // is a shortest connection through voxels the part may take.
+  auto reach = [&](int64_t target) {
+    std::vector<int64_t> touched(component.begin(), component.end());
     std::deque<int64_t> queue(component.begin(), component.end());
-    for (int64_t v : component) cameFrom[v] = -1;
+    for (int64_t v : component) cameFrom_[v] = -1;
     bool reached = false;
     while (!queue.empty() && !reached) {
       const int64_t v = queue.front();
       queue.pop_front();
       for (const Int3& step : kAxisSteps) {
         const int64_t w = neighbourIndex(grid_, v, step);
-        if (w < 0 || cameFrom[w] != -2 || (state_[w] != kFree && state_[w] != kPart)) continue;
-        cameFrom[w] = v;
+        if (w < 0 || cameFrom_[w] != -2 || (state_[w] != kFree && state_[w] != kPart)) continue;
+        cameFrom_[w] = v;
+        touched.push_back(w);
         if (w == target) {
           reached = true;
           break;
@@ -196,17 +209,23 @@ bool PartBuilder::connect() {
         queue.push_back(w);
       }
     }
-    if (!reached) return false;
-    for (int64_t v = target; cameFrom[v] >= 0; v = cameFrom[v]) {
-      if (!addToPart(v)) return false;
-    }
-    flood(target);
+    bool added = reached;
+    for (int64_t v = target; reached && cameFrom_[v] >= 0; v = cameFrom_[v]) added = added && addToPart(v);
+    for (int64_t v : touched) cameFrom_[v] = -2;
+    return added;
+  };
+  bool ok = true;
+  flood(forcedPart_[0]);
+  for (size_t k = 1; k < forcedPart_.size() && ok; ++k) {
+    const int64_t target = forcedPart_[k];
+    if (connected_[target]) continue;
+    ok = reach(target);
+    if (ok) flood(target);
   }
   // Group members added along the way must be attached too.
-  for (int64_t v : part_) {
-    if (!connected[v]) return false;
-  }
-  return true;
+  for (int64_t v : part_) ok = ok && connected_[v];
+  for (int64_t v : component) connected_[v] = false;
+  return ok;
 }
 
 std::vector<int64_t> PartBuilder::columnFrom(int64_t voxel, const Int3& direction) const {
@@ -254,14 +273,12 @@ bool PartBuilder::growTo(int minSize, int maxSize, const Int3& direction, std::m
       bool blocked = false;
       for (int64_t v : column) blocked = blocked || state_[v] == kForcedRemainder;
       if (blocked) continue;
-      const std::vector<uint8_t> before = state_;
-      const size_t sizeBefore = part_.size();
+      const Snapshot before = snapshot();
       bool ok = addToPart(candidate);
       for (int64_t v : column) ok = ok && addToPart(v);
       ok = ok && clearPathAlong(direction);
       if (!ok || size() > maxSize) {
-        state_ = before;
-        part_.resize(sizeBefore);
+        restore(before);
         continue;
       }
       grown = true;

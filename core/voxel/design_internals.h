@@ -82,17 +82,15 @@ class PartBuilder {
   bool canBePart(int64_t voxel) const { return state_[voxel] == kFree || state_[voxel] == kPart; }
   bool canBeRemainder(int64_t voxel) const { return state_[voxel] == kFree || state_[voxel] == kForcedRemainder; }
 
-  // Saves and restores the builder's choices, to try another design after a failed one.
+  // Saves and restores the builder's choices, to try another design after a failed one. Changes
+  // are journaled, so both cost what the attempt touched, not the size of the grid.
   struct Snapshot {
-    std::vector<uint8_t> state;
-    std::vector<int64_t> part, forcedPart;
+    size_t journal = 0, part = 0, forcedPart = 0;
   };
-  Snapshot snapshot() const { return {state_, part_, forcedPart_}; }
-  void restore(Snapshot snapshot) {
-    state_ = std::move(snapshot.state);
-    part_ = std::move(snapshot.part);
-    forcedPart_ = std::move(snapshot.forcedPart);
-  }
+  Snapshot snapshot() const { return {journal_.size(), part_.size(), forcedPart_.size()}; }
+  void restore(const Snapshot& snapshot);
+  // Back to the state right after construction (for the next attempt at the same node).
+  void reset() { restore(Snapshot{}); }
 
   const std::vector<int64_t>& partVoxels() const { return part_; }
   std::vector<int64_t> sortedPartVoxels() const;
@@ -101,6 +99,10 @@ class PartBuilder {
  private:
   enum : uint8_t { kOther = 0, kFree = 1, kPart = 2, kForcedRemainder = 3 };
   bool addToPart(int64_t voxel);  // with its group; false if it meets a forced-remainder voxel
+  void setState(int64_t voxel, uint8_t state) {
+    journal_.push_back({voxel, state_[voxel]});
+    state_[voxel] = state;
+  }
   std::vector<int64_t> columnFrom(int64_t voxel, const Int3& direction) const;
 
   const VoxelGrid& grid_;
@@ -109,6 +111,10 @@ class PartBuilder {
   std::vector<uint8_t> state_;
   std::vector<int64_t> part_;
   std::vector<int64_t> forcedPart_;
+  std::vector<std::pair<int64_t, uint8_t>> journal_;  // (voxel, previous state), in order
+  // Scratch buffers of connect(), grid-sized once; entries used are cleared after each use.
+  std::vector<int64_t> cameFrom_;
+  std::vector<bool> connected_;
 };
 
 // Key generation (Section 4.2): candidates {A_1} for [P1, R1] with P1 free along the key direction

@@ -28,6 +28,9 @@ struct AxisInfo {
   std::vector<int64_t> pairBackward;                // R voxel a with a-e in R
   std::vector<int64_t> pairBoth;                    // both
   std::vector<std::vector<bool>> reaches;           // [from][to] over earlier parts, avoiding R
+  // Position of each voxel in the lists above (-1: absent), so picks near a seed can search the
+  // neighbourhood instead of whole lists.
+  std::vector<int32_t> remainderBlockedByIndex, blockingPartIndex, pairForwardIndex, pairBackwardIndex, pairBothIndex;
 };
 
 // Contacts, blocking pairs and reachability of one axis of A_(i-1) whose remainder has label

@@ -120,6 +120,7 @@ std::vector<Candidate> generateKeyCandidates(const VoxelGrid& grid, DesignContex
     undoCandidate(work, remainder);
   };
   const std::vector<int64_t> anchors = anchorVoxels(grid, remainder, d);
+  PartBuilder builder(grid, remainder, context, access);  // reset for every attempt
   for (int64_t seed : seedVoxels(grid, remainder, d, access)) {
     const Int3 s = grid.coordinates(seed);
     std::vector<int64_t> near = anchors;
@@ -128,11 +129,11 @@ std::vector<Candidate> generateKeyCandidates(const VoxelGrid& grid, DesignContex
     });
     if (near.size() > static_cast<size_t>(kAnchorsPerSeed)) near.resize(kAnchorsPerSeed);
     for (int64_t anchor : near) {
-      PartBuilder builder(grid, remainder, context, access);
+      builder.reset();
       if (builder.forcePart(seed) && forceBlocking(grid, d, anchor, builder)) consider(builder);
     }
     for (int variant = 0; variant < kAnchorsPerSeed / 2; ++variant) {
-      PartBuilder builder(grid, remainder, context, access);
+      builder.reset();
       if (builder.forcePart(seed) && forceBlockingPairs(grid, remainder, d, s, context.random, builder)) consider(builder);
     }
   }

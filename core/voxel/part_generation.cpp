@@ -22,8 +22,6 @@
 namespace desia::design {
 namespace {
 
-int64_t voxelOf(int64_t voxel) { return voxel; }
-int64_t voxelOf(const ExternalContact& contact) { return contact.voxel; }
 
 }  // namespace
 
@@ -36,11 +34,16 @@ AxisInfo describeAxis(const VoxelGrid& grid, int remainder, int axis, const Dire
     const int front = f >= 0 ? grid.labelAt(f) : 0, behind = b >= 0 ? grid.labelAt(b) : 0;
     // In recursive mode (Fig. 11) only P_(i-1) may close the cycles.
     auto usable = [&](int label) { return label > 0 && label != remainder && (!recursive || label == remainder - 1); };
-    if (usable(front)) info.remainderBlockedBy.push_back({v, front});
-    if (usable(behind)) info.blockingPart.push_back({v, behind});
-    if (front == remainder) info.pairForward.push_back(v);
-    if (behind == remainder) info.pairBackward.push_back(v);
-    if (front == remainder && behind == remainder) info.pairBoth.push_back(v);
+    auto record = [&](auto& list, std::vector<int32_t>& index, const auto& entry) {
+      if (index.empty()) index.assign(static_cast<size_t>(grid.voxelCount()), -1);
+      index[v] = static_cast<int32_t>(list.size());
+      list.push_back(entry);
+    };
+    if (usable(front)) record(info.remainderBlockedBy, info.remainderBlockedByIndex, ExternalContact{v, front});
+    if (usable(behind)) record(info.blockingPart, info.blockingPartIndex, ExternalContact{v, behind});
+    if (front == remainder) record(info.pairForward, info.pairForwardIndex, v);
+    if (behind == remainder) record(info.pairBackward, info.pairBackwardIndex, v);
+    if (front == remainder && behind == remainder) record(info.pairBoth, info.pairBothIndex, v);
   }
   // Reachability between earlier parts in G(+e) without passing R_(i-1) (a part reaches itself).
   const int parts = remainder - 1;
@@ -64,20 +67,47 @@ AxisInfo describeAxis(const VoxelGrid& grid, int remainder, int axis, const Dire
 
 namespace {
 
-// One of the `spread` entries of `list` nearest to `seed` among those `usable` accepts, chosen at
-// random; null if there is none.
-template <typename T, typename Usable>
-const T* nearestPick(const std::vector<T>& list, const VoxelGrid& grid, const Int3& seed, Usable usable,
-                     std::mt19937_64& random) {
-  constexpr size_t kSpread = 3;
-  std::vector<std::pair<int, size_t>> byDistance;
-  for (size_t k = 0; k < list.size(); ++k) {
-    if (usable(list[k])) byDistance.push_back({manhattan(grid.coordinates(voxelOf(list[k])), seed), k});
+// Calls visit(voxel) for every grid voxel at Manhattan distance r from `center`.
+template <typename Visit>
+void forEachAtDistance(const VoxelGrid& grid, const Int3& center, int r, Visit visit) {
+  for (int dx = -r; dx <= r; ++dx) {
+    const int x = center.x + dx;
+    if (x < 0 || x >= grid.nx()) continue;
+    const int restX = r - std::abs(dx);
+    for (int dy = -restX; dy <= restX; ++dy) {
+      const int y = center.y + dy;
+      if (y < 0 || y >= grid.ny()) continue;
+      const int restY = restX - std::abs(dy);
+      for (int dz : {-restY, restY}) {
+        const int z = center.z + dz;
+        if (z >= 0 && z < grid.nz()) visit(grid.index(x, y, z));
+        if (restY == 0) break;
+      }
+    }
   }
-  if (byDistance.empty()) return nullptr;
-  const size_t keep = std::min(kSpread, byDistance.size());
-  std::partial_sort(byDistance.begin(), byDistance.begin() + keep, byDistance.end());
-  return &list[byDistance[random() % keep].second];
+}
+
+// One of the `spread` entries of `list` nearest to `seed` among those `usable` accepts, chosen at
+// random (ties by voxel index); null if there is none. Searches shells of growing Manhattan
+// distance around the seed, so the cost follows the neighbourhood, not the list (a 35^3 cube has
+// lists of tens of thousands of voxels).
+template <typename T, typename Usable>
+const T* nearestPick(const std::vector<T>& list, const std::vector<int32_t>& indexOf, const VoxelGrid& grid,
+                     const Int3& seed, Usable usable, std::mt19937_64& random) {
+  constexpr size_t kSpread = 3;
+  if (list.empty()) return nullptr;
+  std::vector<std::pair<int, int64_t>> found;  // (distance, voxel)
+  const int maxRadius = grid.nx() + grid.ny() + grid.nz();
+  for (int r = 0; r <= maxRadius && found.size() < kSpread; ++r) {
+    forEachAtDistance(grid, seed, r, [&](int64_t v) {
+      const int32_t k = indexOf[v];
+      if (k >= 0 && usable(list[k])) found.push_back({r, v});
+    });
+  }
+  if (found.empty()) return nullptr;
+  std::sort(found.begin(), found.end());
+  const size_t keep = std::min(kSpread, found.size());
+  return &list[indexOf[found[random() % keep].second]];
 }
 
 // Two external contacts that close a cycle through earlier parts: one towards P_out (from
@@ -86,10 +116,10 @@ const T* nearestPick(const std::vector<T>& list, const VoxelGrid& grid, const In
 template <typename OutUsable, typename InUsable>
 bool pickCycleContacts(const AxisInfo& info, const VoxelGrid& grid, const Int3& seed, std::mt19937_64& random,
                        OutUsable outUsable, InUsable inUsable, ExternalContact* out, ExternalContact* in) {
-  const ExternalContact* first = nearestPick(info.remainderBlockedBy, grid, seed,
+  const ExternalContact* first = nearestPick(info.remainderBlockedBy, info.remainderBlockedByIndex, grid, seed,
                                              [&](const ExternalContact& c) { return outUsable(c.voxel); }, random);
   if (!first) return false;
-  const ExternalContact* second = nearestPick(info.blockingPart, grid, seed, [&](const ExternalContact& c) {
+  const ExternalContact* second = nearestPick(info.blockingPart, info.blockingPartIndex, grid, seed, [&](const ExternalContact& c) {
     return inUsable(c.voxel) && info.reaches[first->part][c.part];
   }, random);
   if (!second) return false;
@@ -123,7 +153,7 @@ bool realizeAxis(AxisDesign design, int axis, const AxisInfo& info, const VoxelG
   auto toRemainder = [&](int64_t v) { return builder.canBeRemainder(v); };
   switch (design) {
     case AxisDesign::TwoInternal: {
-      const int64_t* anchor = nearestPick(info.pairBoth, grid, seed, [&](int64_t v) {
+      const int64_t* anchor = nearestPick(info.pairBoth, info.pairBothIndex, grid, seed, [&](int64_t v) {
         return toPart(v) && toRemainder(shifted(v, 1)) && toRemainder(shifted(v, -1));
       }, random);
       return anchor && builder.forcePart(*anchor) && builder.forceRemainder(shifted(*anchor, 1)) &&
@@ -131,7 +161,7 @@ bool realizeAxis(AxisDesign design, int axis, const AxisInfo& info, const VoxelG
     }
     case AxisDesign::OneInternalPartToRemainder: {
       // P -> R -> P_out ~> P_in -> P: the R side takes the contact with P_out, P the one with P_in.
-      const int64_t* anchor = nearestPick(info.pairForward, grid, seed,
+      const int64_t* anchor = nearestPick(info.pairForward, info.pairForwardIndex, grid, seed,
                                           [&](int64_t v) { return toPart(v) && toRemainder(shifted(v, 1)); }, random);
       if (!anchor || !builder.forcePart(*anchor) || !builder.forceRemainder(shifted(*anchor, 1))) return false;
       ExternalContact out{}, in{};
@@ -140,7 +170,7 @@ bool realizeAxis(AxisDesign design, int axis, const AxisInfo& info, const VoxelG
     }
     case AxisDesign::OneInternalRemainderToPart: {
       // R -> P -> P_out ~> P_in -> R: P takes the contact with P_out, R the one with P_in.
-      const int64_t* anchor = nearestPick(info.pairBackward, grid, seed,
+      const int64_t* anchor = nearestPick(info.pairBackward, info.pairBackwardIndex, grid, seed,
                                           [&](int64_t v) { return toPart(v) && toRemainder(shifted(v, -1)); }, random);
       if (!anchor || !builder.forcePart(*anchor) || !builder.forceRemainder(shifted(*anchor, -1))) return false;
       ExternalContact out{}, in{};
@@ -219,12 +249,13 @@ std::vector<Candidate> generatePartCandidates(const VoxelGrid& grid, int remaind
   VoxelGrid work = grid;
   std::vector<Candidate> candidates;
   std::set<std::vector<int64_t>> seen;
+  PartBuilder builder(grid, remainder, context, access);  // reset for every attempt
   const int attempts = 40 * options.candidates + 200;
   for (int attempt = 0; attempt < attempts && static_cast<int>(candidates.size()) < options.candidates; ++attempt) {
     const int64_t seedVoxel = seeds[context.random() % seeds.size()];
     const Int3 seed = grid.coordinates(seedVoxel);
     const Int3 removal = removalDirectionFor(grid, remainder, seedVoxel, context.random);
-    PartBuilder builder(grid, remainder, context, access);
+    builder.reset();
     bool ok = builder.forcePart(seedVoxel);
     bool someAxisFreeOfPairs = false;
     for (int axis = 0; axis < 3 && ok; ++axis) {
@@ -234,13 +265,13 @@ std::vector<Candidate> generatePartCandidates(const VoxelGrid& grid, int remaind
       shuffleDeterministically(allowed, context.random);
       ok = false;
       for (AxisDesign design : allowed) {
-        PartBuilder::Snapshot before = builder.snapshot();
+        const PartBuilder::Snapshot before = builder.snapshot();
         if (realizeAxis(design, axis, axes[axis], grid, seed, context.random, builder)) {
           someAxisFreeOfPairs = someAxisFreeOfPairs || design != AxisDesign::TwoInternal;
           ok = true;
           break;
         }
-        builder.restore(std::move(before));
+        builder.restore(before);
       }
     }
     ok = ok && someAxisFreeOfPairs && builder.connect() && builder.clearPathAlong(removal) &&
