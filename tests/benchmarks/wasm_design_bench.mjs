@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The voxel designer in WebAssembly (node), through the package API: the same cases as the native
 // desia_design_bench (desia mode), several seeds, success rate and median time beside the paper's.
-//   node tests/benchmarks/wasm_design_bench.mjs [--seeds N] [--time-limit S] [--only TEXT]
+//   node tests/benchmarks/wasm_design_bench.mjs [--seeds N] [--time-limit S] [--only TEXT] [--modes desia,recursive]
 import fs from 'node:fs';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -39,23 +39,33 @@ const seeds = Number(option('--seeds', 3));
 const timeLimit = Number(option('--time-limit', 60));
 const only = option('--only', '');
 const core = await loadDesiaModule();
-console.log(`Voxel designer in WebAssembly (node ${process.version}): ${seeds} seeds, ${timeLimit} s limit per run, desia mode.\n`);
-console.log('| case | paper | success | median time (successes) | median nodes | best parts reached |');
-console.log('| --- | ---: | ---: | ---: | ---: | ---: |');
-for (const [name, file, parts, paper] of cases) {
-  if (only && !name.includes(only)) continue;
-  const shape = fs.readFileSync(path.join(inputs, file), 'utf8');
+const modes = option('--modes', 'desia,recursive').split(',');
+console.log(`Voxel designer in WebAssembly (node ${process.version}): ${seeds} seeds, ${timeLimit} s limit per run.\n`);
+console.log('| case | mode | paper | success | median time (successes) | median nodes | best parts reached |');
+console.log('| --- | --- | ---: | ---: | ---: | ---: | ---: |');
+const median = (values) => (values.length ? [...values].sort((a, b) => a - b)[Math.floor(values.length / 2)] : null);
+
+// Runs one case in one mode for every seed: successes' times, nodes visited, best depth.
+function runCase(shape, parts, mode) {
   const times = [];
   const nodes = [];
   let best = 0;
   for (let seed = 1; seed <= seeds; seed++) {
     const start = performance.now();
-    const result = core.designVoxel(shape, { parts, seed, timeLimit });
+    const result = core.designVoxel(shape, { parts, seed, timeLimit, mode });
     const elapsed = (performance.now() - start) / 1000;
     if (result.status === 'success') times.push(elapsed);
     nodes.push(result.progress.nodesVisited);
     best = Math.max(best, result.progress.bestDepth);
   }
-  const median = (values) => (values.length ? [...values].sort((a, b) => a - b)[Math.floor(values.length / 2)] : null);
-  console.log(`| ${name} | ${seconds(paper)} | ${times.length}/${seeds} | ${seconds(median(times))} | ${median(nodes)} | ${best} of ${parts} |`);
+  return { times, nodes, best };
+}
+
+for (const [name, file, parts, paper] of cases) {
+  if (only && !name.includes(only)) continue;
+  const shape = fs.readFileSync(path.join(inputs, file), 'utf8');
+  for (const mode of modes) {
+    const { times, nodes, best } = runCase(shape, parts, mode);
+    console.log(`| ${name} | ${mode} | ${seconds(paper)} | ${times.length}/${seeds} | ${seconds(median(times))} | ${median(nodes)} | ${best} of ${parts} |`);
+  }
 }
