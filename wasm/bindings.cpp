@@ -24,10 +24,11 @@ using emscripten::val;
 
 val parseJsonText(const std::string& text) { return val::global("JSON").call<val>("parse", val(text)); }
 
-// Runs `operation` and converts any exception into a thrown JS Error. The JS throw happens after
-// the catch block has ended, so C++ destructors and exception cleanup have run (toolchain.md #8).
+// Runs `operation` and converts any exception into a thrown JS Error carrying the core's message
+// and a `code`. The JS throw happens after the catch block has ended, so C++ destructors and
+// exception cleanup have run (toolchain.md #8).
 template <typename Operation>
-val guarded(Operation&& operation) {
+auto guarded(Operation&& operation) -> decltype(operation()) {
   std::string message, code;
   try {
     return operation();
@@ -42,26 +43,6 @@ val guarded(Operation&& operation) {
     code = "internal";
   } catch (...) {
     message = "internal error: unknown exception";
-    code = "internal";
-  }
-  val error = val::global("Error").new_(val(message));
-  error.set("code", val(code));
-  error.set("name", val(std::string("DesiaError")));
-  error.throw_();
-}
-
-// Runs `operation` (returning void or a value convertible by embind) and turns exceptions into
-// JS Errors like guarded().
-template <typename Operation>
-auto guardedCall(Operation&& operation) -> decltype(operation()) {
-  std::string message, code;
-  try {
-    return operation();
-  } catch (const desia::Error& e) {
-    message = e.what();
-    code = desia::errorCodeName(e.code());
-  } catch (const std::exception& e) {
-    message = std::string("internal error: ") + e.what();
     code = "internal";
   }
   val error = val::global("Error").new_(val(message));
@@ -163,13 +144,13 @@ class DesignSession {
       return result;
     });
   }
-  int childCount() { return guardedCall([&] { return session_->childCount(); }); }
+  int childCount() { return guarded([&] { return session_->childCount(); }); }
   val preview(int n) {
     return guarded([&] { return parseJsonText(desia::documentToJson(desia::documentFromVoxels(session_->childPreview(n)), -1)); });
   }
-  void choose(int n) { guardedCall([&] { session_->chooseChild(n); }); }
-  bool next() { return guardedCall([&] { return session_->generateNextPart(); }); }
-  bool back() { return guardedCall([&] { return session_->goBack(); }); }
+  void choose(int n) { guarded([&] { session_->chooseChild(n); }); }
+  bool next() { return guarded([&] { return session_->generateNextPart(); }); }
+  bool back() { return guarded([&] { return session_->goBack(); }); }
   val check() const {
     return guarded([&] {
       const desia::AssemblyDocument document = desia::documentFromVoxels(session_->current());
@@ -180,7 +161,7 @@ class DesignSession {
  private:
   static std::unique_ptr<desia::VoxelDesignSession> makeSession(const std::string& shapeText, const std::string& optionsJson,
                                                                const std::string& source) {
-    return guardedCall([&] {
+    return guarded([&] {
       const desia::AssemblyDocument document = desia::parseAssemblyText(shapeText, source);
       if (document.kind != desia::AssemblyKind::Voxel) {
         throw desia::Error(desia::ErrorCode::BadInput, source + ": a design session needs a voxel shape");

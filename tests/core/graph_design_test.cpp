@@ -57,15 +57,25 @@ bool hasDesignCycle(AxisDesign design, const DirectedGraph& g, int part, int rem
   return design == AxisDesign::TwoInternal && edge(part, remainder) && edge(remainder, part);
 }
 
-TEST(GraphDesign, EveryCaseRealizedPutsItsCycleIntoTheBlockingGraph) {
-  // A real intermediate assembly: the 4x4x4 cube after three placed parts (labels 1..3, R = 4).
-  const VoxelGrid cube = testing::loadReference("input_puz/Cube_4x4x4_origin.puz").voxels;
+// A real intermediate assembly: the 4x4x4 cube after three placed parts (labels 1..3, R = 4).
+VoxelGrid cubeAfterThreeParts(const VoxelDesignOptions& options) {
+  VoxelDesignSession session(testing::loadReference("input_puz/Cube_4x4x4_origin.puz").voxels, options);
+  for (int k = 0; k < 3; ++k) {
+    if (!session.generateNextPart()) throw std::runtime_error("fixture: the session stopped early");
+  }
+  return session.current();
+}
+
+VoxelDesignOptions eightPartOptions() {
   VoxelDesignOptions options;
   options.parts = 8;
   options.seed = 3;
-  VoxelDesignSession session(cube, options);
-  for (int k = 0; k < 3; ++k) ASSERT_TRUE(session.generateNextPart());
-  const VoxelGrid grid = session.current();
+  return options;
+}
+
+TEST(GraphDesign, EveryCaseRealizedPutsItsCycleIntoTheBlockingGraph) {
+  const VoxelDesignOptions options = eightPartOptions();
+  const VoxelGrid grid = cubeAfterThreeParts(options);
   const int remainder = 4;
   ASSERT_EQ(grid.maxLabel(), remainder);
   const Assembly before = assemblyFromVoxels(grid);
@@ -118,13 +128,7 @@ TEST(GraphDesign, TheRemovalDirectionForbidsTheBlockingInternalEdge) {
 }
 
 TEST(GraphDesign, RecursiveModeClosesCyclesThroughThePreviousPartOnly) {
-  const VoxelGrid cube = testing::loadReference("input_puz/Cube_4x4x4_origin.puz").voxels;
-  VoxelDesignOptions options;
-  options.parts = 8;
-  options.seed = 3;
-  VoxelDesignSession session(cube, options);
-  for (int k = 0; k < 3; ++k) ASSERT_TRUE(session.generateNextPart());
-  const VoxelGrid& grid = session.current();
+  const VoxelGrid grid = cubeAfterThreeParts(eightPartOptions());
   const auto graphs = buildBaseBlockingGraphs(assemblyFromVoxels(grid));
   for (int axis = 0; axis < 3; ++axis) {
     const design::AxisInfo info = design::describeAxis(grid, 4, axis, graphs[axis].graph, true);
