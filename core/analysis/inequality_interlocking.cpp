@@ -175,7 +175,7 @@ MotionSearch solveMotionProgram(const Assembly& assembly, const MotionQuery& que
   return search;
 }
 
-// Is there a motion in which a watched part moves? Eq. 2 first (its solution separates contacts,
+// Is there a motion in which a watched part moves? Eq. 2's question first (its solution separates contacts,
 // the clearest witness), then the generic functional in both signs for sliding motions.
 MotionSearch findWatchedMotion(const Assembly& assembly, const MotionQuery& query) {
   int velocityCount = 0;

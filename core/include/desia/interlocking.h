@@ -34,8 +34,9 @@ struct InterlockingResult {
 InterlockingResult testInterlockingByGraphs(const Assembly& assembly,
                                             const std::vector<DirectionalBlockingGraph>& graphs);
 
-// Inequality-based test (Eq. 2) with GLPK, extended by a null-space check so that motions that
-// slide along every contact (all t_ij = 0 but v != 0) are detected too.
+// Inequality-based test (Eq. 2) with GLPK. Exact for any contact normals: motions that slide along
+// every contact (all t_ij = 0 but v != 0) are found by a second LP on a generic functional, and
+// round 2 fixes only a reference part, so groups moving with the key are caught too.
 InterlockingResult testInterlockingByInequalities(const Assembly& assembly);
 
 // Lower level pieces of the inequality test, exposed for tests.
