@@ -8,11 +8,13 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "desia/check.h"
 #include "desia/design_io.h"
 #include "desia/document.h"
 #include "desia/error.h"
+#include "desia/export.h"
 #include "desia/puz_format.h"
 #include "desia/mesh.h"
 #include "desia/version.h"
@@ -173,6 +175,23 @@ class DesignSession {
   std::unique_ptr<desia::VoxelDesignSession> session_;
 };
 
+// A voxel assembly (.puz or JSON text) as file bytes: "stl", "stl-ascii", "obj" or "xmpuzzle";
+// part 0 = all parts. Returns a Uint8Array that owns its bytes (copied out of the heap at once:
+// a later memory growth would detach a view, toolchain.md #9).
+val exportAssembly(const std::string& text, const std::string& format, int part, double voxelSize,
+                   const std::string& source) {
+  return guarded([&] {
+    desia::ExportOptions options;
+    options.part = part;
+    options.voxelSize = voxelSize;
+    options.source = source;
+    const desia::ExportFormat exportFormat = desia::parseExportFormat(format);
+    const std::vector<uint8_t> bytes =
+        desia::exportAssembly(desia::parseAssemblyText(text, source), exportFormat, options);
+    return val(emscripten::typed_memory_view(bytes.size(), bytes.data())).call<val>("slice");
+  });
+}
+
 std::string version() { return desia::kVersion; }
 
 }  // namespace
@@ -183,6 +202,7 @@ EMSCRIPTEN_BINDINGS(desia) {
   emscripten::function("toPuz", &toPuz);
   emscripten::function("voxelize", &voxelize);
   emscripten::function("designVoxel", &designVoxel);
+  emscripten::function("exportAssembly", &exportAssembly);
   emscripten::function("version", &version);
   emscripten::class_<DesignSession>("DesignSession")
       .constructor<std::string, std::string, std::string>()

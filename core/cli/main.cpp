@@ -24,6 +24,7 @@ const char* kUsage =
     "       desia design voxel --input SHAPE.puz|.json --parts N --output OUT.puz|.json\n"
     "             [--seed S] [--candidates M] [--rank compactness|x|y|z|-x|-y|-z] [--mode desia|recursive]\n"
     "             [--min-part-size K] [--groups FILE] [--time-limit SECONDS] [--node-limit N] [--key-direction +y]\n"
+    "       desia export FILE --format stl|stl-ascii|obj|xmpuzzle [--part N] [--voxel-size S] --output OUT\n"
     "       desia --version | --help\n"
     "\n"
     "check   tests whether the assembly in FILE (.puz voxel puzzle or JSON assembly document)\n"
@@ -38,6 +39,9 @@ const char* kUsage =
     "design  builds an N-part interlocking puzzle from a voxel shape (paper Sections 4, 5.1) and writes\n"
     "        it once the project's own check verified it (part 1 = key); exit 0 written, 1 none found\n"
     "        within the limits (or Ctrl-C), 2 bad input\n"
+    "export  writes a voxel assembly as closed part meshes (binary or ASCII STL, OBJ with one object\n"
+    "        per part; --part N for one part, --voxel-size S scales voxel units) or as a BurrTools\n"
+    "        .xmpuzzle (gzip XML; the whole puzzle); exit 0 when written\n"
     "exit    0 interlocking, 1 not interlocking (or deadlocked), 2 bad input or usage\n";
 
 struct UsageError {
@@ -89,6 +93,7 @@ int main(int argc, char** argv) {
     if (args[0] == "check") return runCheck({args.begin() + 1, args.end()});
     if (args[0] == "voxelize") return runVoxelizeCommand({args.begin() + 1, args.end()});
     if (args[0] == "design") return runDesignCommand({args.begin() + 1, args.end()});
+    if (args[0] == "export") return runExportCommand({args.begin() + 1, args.end()});
     throw UsageError{"unknown command '" + args[0] + "'"};
   } catch (const UsageError& e) {
     std::cerr << "desia: " << e.message << "\n\n" << kUsage;

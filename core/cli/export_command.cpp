@@ -1,0 +1,100 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// `desia export`: a voxel assembly as part meshes (STL, OBJ) or as a BurrTools .xmpuzzle.
+#include <cstdint>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "cli_files.h"
+#include "commands.h"
+#include "desia/document.h"
+#include "desia/export.h"
+
+namespace {
+
+constexpr int kExitBadInput = 2;
+
+const char* kExportUsage =
+    "usage: desia export FILE --format stl|stl-ascii|obj|xmpuzzle [--part N] [--voxel-size S] --output OUT\n";
+
+struct ExportUsageError {
+  std::string message;
+};
+
+int parsePart(const std::string& text) {
+  bool digits = !text.empty() && text.size() <= 9;
+  for (char c : text) digits = digits && c >= '0' && c <= '9';
+  if (!digits) throw ExportUsageError{"--part needs a part number (0 = all parts), got '" + text + "'"};
+  return std::stoi(text);
+}
+
+double parseVoxelSize(const std::string& text) {
+  size_t used = 0;
+  double value = 0;
+  try {
+    value = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (text.empty() || used != text.size()) throw ExportUsageError{"--voxel-size needs a number, got '" + text + "'"};
+  return value;  // the range is checked by the core
+}
+
+int exportFile(const std::vector<std::string>& args) {
+  std::string input, output, format;
+  desia::ExportOptions options;
+  for (size_t i = 0; i < args.size(); ++i) {
+    const std::string& arg = args[i];
+    if (arg.rfind("-", 0) != 0 || arg == "-") {
+      if (!input.empty()) throw ExportUsageError{"export takes one FILE, got also " + arg};
+      input = arg;
+      continue;
+    }
+    std::string name = arg, value;
+    bool hasValue = false;
+    const size_t equals = arg.find('=');
+    if (arg.rfind("--", 0) == 0 && equals != std::string::npos) {
+      name = arg.substr(0, equals);
+      value = arg.substr(equals + 1);
+      hasValue = true;
+    }
+    if (name != "--format" && name != "--part" && name != "--voxel-size" && name != "--output") {
+      throw ExportUsageError{"unknown option " + arg};
+    }
+    if (!hasValue) {
+      if (i + 1 == args.size()) throw ExportUsageError{name + " needs a value"};
+      value = args[++i];
+    }
+    if (name == "--format") format = value;
+    if (name == "--output") output = value;
+    if (name == "--part") options.part = parsePart(value);
+    if (name == "--voxel-size") options.voxelSize = parseVoxelSize(value);
+  }
+  if (input.empty()) throw ExportUsageError{"export needs a FILE (.puz or JSON voxel assembly)"};
+  if (format.empty()) throw ExportUsageError{"export needs --format stl|stl-ascii|obj|xmpuzzle"};
+  if (output.empty()) throw ExportUsageError{"export needs --output OUT"};
+  const desia::ExportFormat exportFormat = desia::parseExportFormat(format);
+
+  options.source = input;
+  const desia::AssemblyDocument document = desia::parseAssemblyText(desia::cli::readInputFile(input), input);
+  const std::vector<uint8_t> bytes = desia::exportAssembly(document, exportFormat, options);
+  desia::cli::writeOutputFile(output, std::string(bytes.begin(), bytes.end()));
+  const int parts = document.voxels.maxLabel();
+  std::cout << input << ": "
+            << (options.part == 0 ? (parts == 1 ? std::string("1 part") : "all " + std::to_string(parts) + " parts")
+                                  : "part " + std::to_string(options.part) + " of " + std::to_string(parts))
+            << " as " << desia::exportFormatName(exportFormat) << ", " << bytes.size() << " bytes; wrote " << output
+            << "\n";
+  return 0;
+}
+
+}  // namespace
+
+int runExportCommand(const std::vector<std::string>& args) {
+  try {
+    return exportFile(args);
+  } catch (const ExportUsageError& e) {
+    std::cerr << "desia: export: " << e.message << "\n" << kExportUsage;
+    return kExitBadInput;
+  }
+}

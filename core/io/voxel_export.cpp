@@ -1,0 +1,155 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// exportAssembly: checks the request, then hands over to the mesh writers or the xmpuzzle writer.
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "desia/error.h"
+#include "desia/export.h"
+#include "io/export_internals.h"
+
+namespace desia {
+namespace {
+
+constexpr double kMinVoxelSize = 1e-6, kMaxVoxelSize = 1e6;
+
+// Lower bounds of the bytes per triangle, to refuse an oversized export before building it.
+int64_t minimumBytesPerTriangle(ExportFormat format) {
+  switch (format) {
+    case ExportFormat::StlBinary:
+      return 50;
+    case ExportFormat::StlAscii:
+      return 100;  // facet, loop and three vertex lines with one-digit numbers
+    case ExportFormat::Obj:
+      return 8;  // "f a b c\n"
+    case ExportFormat::XmPuzzle:
+      return 0;
+  }
+  return 0;
+}
+
+// Squares of the part surface: voxel faces whose neighbour is not in the same part.
+int64_t boundaryFaceCount(const VoxelGrid& grid, const std::vector<int64_t>& voxels) {
+  int64_t faces = 0;
+  for (const int64_t i : voxels) {
+    const Int3 c = grid.coordinates(i);
+    const int label = grid.labelAt(i);
+    const Int3 neighbours[6] = {{c.x - 1, c.y, c.z}, {c.x + 1, c.y, c.z}, {c.x, c.y - 1, c.z},
+                                {c.x, c.y + 1, c.z}, {c.x, c.y, c.z - 1}, {c.x, c.y, c.z + 1}};
+    for (const Int3& n : neighbours) faces += !(grid.inside(n.x, n.y, n.z) && grid.label(n.x, n.y, n.z) == label);
+  }
+  return faces;
+}
+
+std::vector<uint8_t> bytesOf(const std::string& text) { return std::vector<uint8_t>(text.begin(), text.end()); }
+
+std::vector<uint8_t> exportMeshes(const AssemblyDocument& document, ExportFormat format, const ExportOptions& options) {
+  const VoxelGrid& grid = document.voxels;
+  const std::vector<std::vector<int64_t>> voxels = voxelsByPart(grid);
+  const int parts = static_cast<int>(voxels.size()) - 1;
+  std::vector<int> chosen;
+  for (int part = 1; part <= parts; ++part) {
+    if (options.part == 0 || options.part == part) chosen.push_back(part);
+  }
+  int64_t triangles = 0;
+  for (const int part : chosen) {
+    if (voxels[part].empty()) throwBadInput(options.source, "part " + std::to_string(part) + " has no voxels");
+    triangles += 2 * boundaryFaceCount(grid, voxels[part]);
+  }
+  if (triangles * minimumBytesPerTriangle(format) > kMaxExportBytes) {
+    throwExportTooLarge(
+        options.source,
+        std::string(exportFormatName(format)) + " file (" + std::to_string(triangles) + " triangles or more)",
+        triangles * minimumBytesPerTriangle(format));
+  }
+  std::vector<NamedMesh> meshes;
+  for (const int part : chosen) meshes.push_back({part, surfaceOfVoxels(grid, part, voxels[part], options.voxelSize)});
+
+  const std::string what = options.part == 0
+                               ? (parts == 1 ? std::string("1 part") : "all " + std::to_string(parts) + " parts")
+                               : "part " + std::to_string(options.part) + " of " + std::to_string(parts);
+  const std::string title = "voxel export, " + what + ", voxel size " + formatNumber(options.voxelSize);
+  std::string bytes;
+  switch (format) {
+    case ExportFormat::StlBinary:
+      bytes = binaryStl(meshes, title);
+      break;
+    case ExportFormat::StlAscii:
+      bytes = asciiStl(meshes, options.part == 0 ? "assembly" : "part" + std::to_string(options.part));
+      break;
+    case ExportFormat::Obj:
+      bytes = wavefrontObj(meshes, title + "; grid axes kept (+y up as in .puz)");
+      break;
+    case ExportFormat::XmPuzzle:
+      break;
+  }
+  if (static_cast<int64_t>(bytes.size()) > kMaxExportBytes) {
+    throwExportTooLarge(options.source, std::string(exportFormatName(format)) + " file",
+                        static_cast<int64_t>(bytes.size()));
+  }
+  return bytesOf(bytes);
+}
+
+}  // namespace
+
+ExportFormat parseExportFormat(const std::string& name) {
+  if (name == "stl") return ExportFormat::StlBinary;
+  if (name == "stl-ascii") return ExportFormat::StlAscii;
+  if (name == "obj") return ExportFormat::Obj;
+  if (name == "xmpuzzle") return ExportFormat::XmPuzzle;
+  throwBadInput("", "unknown export format '" + name + "' (expected stl, stl-ascii, obj or xmpuzzle)");
+}
+
+const char* exportFormatName(ExportFormat format) {
+  switch (format) {
+    case ExportFormat::StlBinary:
+      return "stl";
+    case ExportFormat::StlAscii:
+      return "stl-ascii";
+    case ExportFormat::Obj:
+      return "obj";
+    case ExportFormat::XmPuzzle:
+      return "xmpuzzle";
+  }
+  return "stl";
+}
+
+void throwExportTooLarge(const std::string& source, const std::string& what, int64_t bytes) {
+  throw Error(ErrorCode::TooLarge, source + ": the " + what + " would be at least " + std::to_string(bytes >> 20) +
+                                       " MiB, more than the export limit of " + std::to_string(kMaxExportBytes >> 20) +
+                                       " MiB");
+}
+
+void requireExportableVoxels(const AssemblyDocument& document, const std::string& source) {
+  if (document.kind != AssemblyKind::Voxel) {
+    throwBadInput(source, std::string("export needs a voxel assembly, this is a ") + assemblyKindName(document.kind) +
+                              " document");
+  }
+  if (document.voxels.voxelCount() == 0 || document.voxels.maxLabel() == 0) {
+    throwBadInput(source, "the assembly is empty: it has no voxels to export");
+  }
+}
+
+std::vector<uint8_t> exportAssembly(const AssemblyDocument& document, ExportFormat format,
+                                    const ExportOptions& options) {
+  requireExportableVoxels(document, options.source);
+  const int parts = document.voxels.maxLabel();
+  if (options.part < 0 || options.part > parts) {
+    throwBadInput(options.source, "part " + std::to_string(options.part) +
+                                      " does not exist: the assembly has parts 1 to " + std::to_string(parts) +
+                                      " (0 = all parts)");
+  }
+  if (!(options.voxelSize >= kMinVoxelSize && options.voxelSize <= kMaxVoxelSize)) {
+    throwBadInput(options.source,
+                  "the voxel size must be a number from 0.000001 to 1000000, got " + formatNumber(options.voxelSize));
+  }
+  if (format != ExportFormat::XmPuzzle) return exportMeshes(document, format, options);
+  if (options.part != 0) {
+    throwBadInput(options.source, "a BurrTools .xmpuzzle holds the whole puzzle, so it cannot hold only part " +
+                                      std::to_string(options.part) + " (choose all parts, part 0)");
+  }
+  return xmpuzzleFile(document, options.source);
+}
+
+}  // namespace desia

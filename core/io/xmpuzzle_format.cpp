@@ -1,0 +1,132 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The BurrTools puzzle file (.xmpuzzle): gzip-compressed XML, puzzle version 2, cube grid. Written
+// from the format description in shared/reference/original-code-notes.md, section E.
+#include <algorithm>
+#include <array>
+#include <string>
+#include <vector>
+
+#include "desia/error.h"
+#include "desia/export.h"
+#include "io/export_internals.h"
+
+namespace desia {
+namespace {
+
+// XML text and attribute values: the five special characters as entities; control characters
+// (not allowed in XML 1.0, and a name is one line) become spaces.
+std::string escapeXml(const std::string& text) {
+  std::string out;
+  out.reserve(text.size());
+  for (const char c : text) {
+    switch (c) {
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&apos;";
+        break;
+      default:
+        out += static_cast<unsigned char>(c) < 0x20 ? ' ' : c;
+    }
+  }
+  return out;
+}
+
+struct Box {
+  std::array<int, 3> low{0, 0, 0}, high{-1, -1, -1};  // inclusive
+  int size(int axis) const { return high[axis] - low[axis] + 1; }
+};
+
+// A <voxel> shape: x*y*z characters in index order x + X*(y + Y*z), '#' filled, '_' empty, no
+// whitespace (BurrTools rejects any other character in the voxel text).
+std::string voxelElement(const VoxelGrid& grid, const Box& box, int partId, const std::string& name) {
+  std::string out = "  <voxel x=\"" + std::to_string(box.size(0)) + "\" y=\"" + std::to_string(box.size(1)) +
+                    "\" z=\"" + std::to_string(box.size(2)) + "\" name=\"" + escapeXml(name) + "\" type=\"0\">";
+  for (int z = box.low[2]; z <= box.high[2]; ++z) {
+    for (int y = box.low[1]; y <= box.high[1]; ++y) {
+      for (int x = box.low[0]; x <= box.high[0]; ++x) {
+        const int label = grid.label(x, y, z);
+        out += (partId == 0 ? label > 0 : label == partId) ? '#' : '_';
+      }
+    }
+  }
+  return out + "</voxel>\n";
+}
+
+}  // namespace
+
+// Layout (the one BurrTools writes): shape 0 is the result, the assembled puzzle in the full grid;
+// shapes 1..K are parts 1..K, each cropped to its bounding box. BurrTools places the pieces itself
+// when it solves (it tries every position and rotation), so a piece's position in the file carries
+// no meaning for it; cropping keeps the file near the size of the grid instead of K times it (the
+// gzip stream is stored, not compressed). The crop offsets are listed in the comment, so the
+// assembly can still be rebuilt from the file. One problem uses every piece once, with shape 0 as
+// result, state 0 (unsolved) and no solutions: BurrTools solves and disassembles it itself.
+std::string xmpuzzleXml(const AssemblyDocument& document, const std::string& source) {
+  requireExportableVoxels(document, source);
+  const VoxelGrid& grid = document.voxels;
+  const int parts = grid.maxLabel();
+  std::vector<Box> boxes(static_cast<size_t>(parts) + 1);
+  for (int64_t i = 0; i < grid.voxelCount(); ++i) {
+    const int label = grid.labelAt(i);
+    if (label == 0) continue;
+    const Int3 c = grid.coordinates(i);
+    Box& box = boxes[label];
+    const std::array<int, 3> p{c.x, c.y, c.z};
+    const bool first = box.high[0] < box.low[0];
+    for (int axis = 0; axis < 3; ++axis) {
+      box.low[axis] = first ? p[axis] : std::min(box.low[axis], p[axis]);
+      box.high[axis] = first ? p[axis] : std::max(box.high[axis], p[axis]);
+    }
+  }
+  Box whole;
+  whole.high = {grid.nx() - 1, grid.ny() - 1, grid.nz() - 1};
+  // One character per voxel of the grid and of every box: refuse before building a huge string.
+  int64_t voxelCharacters = grid.voxelCount();
+  for (int part = 1; part <= parts; ++part) {
+    if (boxes[part].high[0] < boxes[part].low[0])
+      throwBadInput(source, "part " + std::to_string(part) + " has no voxels");
+    voxelCharacters += int64_t{boxes[part].size(0)} * boxes[part].size(1) * boxes[part].size(2);
+  }
+  if (voxelCharacters > kMaxExportBytes) throwExportTooLarge(source, "xmpuzzle file", voxelCharacters);
+
+  const std::string title = document.name.empty() ? "assembly" : document.name;
+  std::string xml = "<?xml version=\"1.0\"?>\n<puzzle version=\"2\">\n <gridType type=\"0\"/>\n <colors/>\n <shapes>\n";
+  xml += voxelElement(grid, whole, 0, title);
+  std::string offsets;
+  for (int part = 1; part <= parts; ++part) {
+    const int index = document.assembly.indexOfId(part);
+    const std::string partName = index >= 0 && !document.assembly.parts[index].name.empty()
+                                     ? document.assembly.parts[index].name
+                                     : "part " + std::to_string(part);
+    xml += voxelElement(grid, boxes[part], part, partName);
+    offsets += "part " + std::to_string(part) + ": " + std::to_string(boxes[part].low[0]) + " " +
+               std::to_string(boxes[part].low[1]) + " " + std::to_string(boxes[part].low[2]) + "\n";
+  }
+  xml += " </shapes>\n <problems>\n  <problem name=\"desia\" state=\"0\">\n   <shapes>\n";
+  for (int part = 1; part <= parts; ++part) xml += "    <shape id=\"" + std::to_string(part) + "\" count=\"1\"/>\n";
+  xml += "   </shapes>\n   <result id=\"0\"/>\n   <bitmap/>\n  </problem>\n </problems>\n";
+  xml += " <comment>" +
+         escapeXml("Exported by desia from " + title + ". Shape 0 is the assembled puzzle (grid " +
+                   std::to_string(grid.nx()) + " x " + std::to_string(grid.ny()) + " x " + std::to_string(grid.nz()) +
+                   "); shapes 1 to " + std::to_string(parts) + " are parts 1 to " + std::to_string(parts) +
+                   ", each cropped to its bounding box. Offsets of the boxes in the grid (x y z):") +
+         "\n" + offsets + "</comment>\n</puzzle>\n";
+  return xml;
+}
+
+std::vector<uint8_t> xmpuzzleFile(const AssemblyDocument& document, const std::string& source) {
+  return gzipStored(xmpuzzleXml(document, source));
+}
+
+}  // namespace desia
