@@ -473,7 +473,10 @@ void checkClosedMesh(const TriangleMesh& mesh, const std::string& source) {
     size_t end = k + 1;
     while (end < edges.size() && edges[end] == edges[k]) ++end;
     const size_t uses = end - k;
-    if (uses != 2) {
+    // The ray-parity test needs the surface to be a cycle mod 2: every edge in an even number of
+    // triangles. Two is the usual case; four happens where two solid blocks touch only along an
+    // edge, e.g. a voxel part's STL export, whose readers weld the two copies of a pinch edge.
+    if (uses % 2 != 0) {
       throwBadInput(source, "the mesh is not closed: edge between vertices " + std::to_string((edges[k] >> 32) + 1) +
                                 " and " + std::to_string((edges[k] & 0xffffffffu) + 1) + " belongs to " +
                                 std::to_string(uses) + (uses == 1 ? " triangle" : " triangles") +

@@ -525,13 +525,29 @@ TEST(ClosedMesh, MissingTriangleNamesTheOpenEdge) {
             "needs 2)");
 }
 
-TEST(ClosedMesh, EdgesSharedByMoreThanTwoTriangles) {
-  TriangleMesh doubled = boxMesh({0, 0, 0}, {1, 1, 1});
-  const auto triangles = doubled.triangles;
-  doubled.triangles.insert(doubled.triangles.end(), triangles.begin(), triangles.end());
-  EXPECT_EQ(errorOf([&] { checkClosedMesh(doubled, "twice.obj"); }),
-            "twice.obj: the mesh is not closed: edge between vertices 1 and 2 belongs to 4 triangles (a closed solid "
+TEST(ClosedMesh, EdgesSharedByThreeTrianglesAreOpen) {
+  TriangleMesh fin = boxMesh({0, 0, 0}, {1, 1, 1});
+  // A fin hanging off edge 1-2 of the cube: that edge now has three triangles.
+  fin.vertices.push_back({0.5, -1, 0});
+  fin.triangles.push_back({0, 1, 8});
+  EXPECT_EQ(errorOf([&] { checkClosedMesh(fin, "fin.obj"); }),
+            "fin.obj: the mesh is not closed: edge between vertices 1 and 2 belongs to 3 triangles (a closed solid "
             "needs 2)");
+}
+
+TEST(ClosedMesh, TwoBoxesTouchingAlongAnEdgeAreClosed) {
+  // Two unit boxes sharing only the edge x = 1, y = 1 after welding: four triangles use it.
+  TriangleMesh pair = boxMesh({0, 0, 0}, {1, 1, 1});
+  const TriangleMesh second = boxMesh({1, 1, 0}, {2, 2, 1});
+  std::vector<int> index;
+  for (const auto& v : second.vertices) {
+    const auto found = std::find(pair.vertices.begin(), pair.vertices.end(), v);
+    index.push_back(static_cast<int>(found - pair.vertices.begin()));
+    if (found == pair.vertices.end()) pair.vertices.push_back(v);
+  }
+  for (const auto& t : second.triangles) pair.triangles.push_back({index[t[0]], index[t[1]], index[t[2]]});
+  ASSERT_EQ(pair.vertices.size(), 14u) << "the boxes share the two end points of one edge";
+  EXPECT_NO_THROW(checkClosedMesh(pair, "pair.obj"));
 }
 
 TEST(ClosedMesh, EmptyAndMalformedMeshes) {

@@ -37,8 +37,9 @@ TriangleMesh parseStl(const std::string& bytes, const std::string& source = "<in
 TriangleMesh parseMesh(const std::string& bytes, const std::string& source = "<input>");
 
 // Throws BadInput unless the mesh has vertices and triangles, finite coordinates, indices in
-// range, no triangle repeating a vertex, and every undirected edge in exactly two triangles
-// (the first offending edge in vertex order is named, 1-based).
+// range, no triangle repeating a vertex, and every undirected edge in an even number of triangles
+// (two, or four where solids touch along an edge; the first offending edge in vertex order is
+// named, 1-based).
 void checkClosedMesh(const TriangleMesh& mesh, const std::string& source = "<input>");
 
 // The file name of `source` without folders and extension ("models/bunny.obj" -> "bunny"); empty
