@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Type declarations of the desia package (hand-written; tests/node/api.test.mjs checks that the
-// names here match what wasm/index.js exports).
+// names here match what wasm/index.js exports, and that the methods of the objects it returns
+// match the interfaces below).
 
 /** Where to find the WebAssembly binary; by default `dist/desia_wasm.wasm` beside the package. */
 export interface LoadOptions {
@@ -12,7 +13,14 @@ export interface LoadOptions {
 
 export type CheckMethod = 'dbg' | 'lp' | 'both';
 export type VerdictName = 'interlocking' | 'deadlocked' | 'not-interlocking';
-export type ErrorCode = 'bad-input' | 'too-large' | 'unsupported' | 'internal';
+/**
+ * Why a call failed. From the core: 'bad-input' (the message names file, line and value, as the
+ * CLI does), 'too-large' (above the grid or mesh limits, or out of memory), 'unsupported' (e.g. a
+ * designer that has not landed yet), 'internal' (a bug, a trap or a crashed worker). From
+ * {@link createDesia}: 'terminated' (terminate() was called while the call was pending) and
+ * 'session-lost' (the worker that held a design session was stopped).
+ */
+export type ErrorCode = 'bad-input' | 'too-large' | 'unsupported' | 'internal' | 'terminated' | 'session-lost';
 
 export interface CheckOptions {
   /** 'dbg' (directional blocking graphs, default), 'lp' (linear program) or 'both'. */
@@ -101,6 +109,20 @@ export interface VoxelizeOptions {
   source?: string;
 }
 
+/** Options every call of the promise-based API ({@link Desia}) accepts besides its own. */
+export interface CallOptions {
+  /**
+   * Aborts the call. Already aborted: the call rejects at once. Aborted while the call runs in the
+   * worker: the worker is terminated at once (any design sessions in it are lost), the call
+   * rejects with `signal.reason` (a DOMException named 'AbortError' when `abort()` was called
+   * without a reason, as with fetch) and the next call starts a fresh worker. Aborted while the call
+   * waits behind another one: it is simply dropped. With `{ worker: false }` a running call blocks
+   * the thread, so an abort takes effect before the call starts, or (for designs) when `abort()`
+   * is called from inside `onProgress`: the search then stops at its next node.
+   */
+  signal?: AbortSignal;
+}
+
 /** Options of designVoxel (the same meaning as `desia design voxel`'s flags). */
 export interface DesignVoxelOptions {
   /** N, the number of parts (at least 3). */
@@ -120,7 +142,12 @@ export interface DesignVoxelOptions {
   keyDirection?: '+x' | '-x' | '+y' | '-y' | '+z' | '-z';
   /** Appearance constraints: voxel coordinates [x, y, z] that must end up in one part. */
   groups?: [number, number, number][][];
-  /** Called after every visited node; return false to stop the search. */
+  /**
+   * Progress of the search. The synchronous core ({@link DesiaCore.designVoxel}) calls it after
+   * every visited node, and returning false stops the search (status 'cancelled'). The
+   * promise-based API ({@link Desia.designVoxel}) calls it about ten times a second, always with
+   * the final progress before the promise resolves; its return value is ignored (use `signal`).
+   */
   onProgress?: (progress: DesignProgress) => boolean | void;
   /** Name used in error messages. */
   source?: string;
@@ -148,12 +175,24 @@ export interface DesignResult {
   verification: CheckReport | null;
 }
 
+
+/** The current node of a design session. */
+export interface DesignSessionState {
+  /** Parts in the current assembly (placed parts plus the remainder). */
+  partsPlaced: number;
+  targetParts: number;
+  /** True when the assembly has all its parts. */
+  complete: boolean;
+  document: AssemblyDocument;
+}
+
 /**
- * Step-by-step design. Holds WebAssembly memory until dispose() is called.
+ * Step-by-step design with the synchronous core (the original tool's "Generate Next Part",
+ * "Child Index" and "Go Back"). Holds WebAssembly memory until dispose() is called.
  */
 export interface DesignSession {
   /** The current assembly: partsPlaced counts its parts (placed parts plus the remainder). */
-  state(): { partsPlaced: number; targetParts: number; complete: boolean; document: AssemblyDocument };
+  state(): DesignSessionState;
   /** The number of ranked children of the current node (generated on first call). */
   childCount(): number;
   /** The assembly the n-th child (0 = best ranked) would give. */
@@ -170,9 +209,57 @@ export interface DesignSession {
   dispose(): void;
 }
 
-/** Synchronous core, for workers and node. */
+/**
+ * Step-by-step design with the promise-based API: the same methods as {@link DesignSession},
+ * each forwarded to the session, which lives in the worker. When that worker is stopped (an
+ * aborted call, terminate() or a crash), every method rejects with a DesiaError with code
+ * 'session-lost' (dispose() then simply resolves).
+ */
+export interface AsyncDesignSession {
+  state(): Promise<DesignSessionState>;
+  childCount(): Promise<number>;
+  preview(n: number): Promise<AssemblyDocument>;
+  choose(n: number): Promise<void>;
+  next(): Promise<boolean>;
+  back(): Promise<boolean>;
+  check(): Promise<CheckReport>;
+  /** Frees the session in the worker; later calls reject with code 'bad-input'. */
+  dispose(): Promise<void>;
+}
+
+/**
+ * Export formats: 'stl' (binary STL), 'stl-ascii', 'obj' (Wavefront OBJ, one object per part) and
+ * 'xmpuzzle' (BurrTools, voxel puzzles only).
+ */
+export type ExportFormat = 'stl' | 'stl-ascii' | 'obj' | 'xmpuzzle';
+
+export interface ExportOptions {
+  /** The file format (default 'stl'). */
+  format?: ExportFormat;
+  /** 0 (default): every part; k: only part k. */
+  part?: number;
+  /** Model units per voxel edge for voxel assemblies (default 1). */
+  voxelSize?: number;
+  /** Name used in error messages. */
+  source?: string;
+}
+
+/**
+ * Options of the plate and frame designers. Their cores have not landed yet: every call rejects
+ * with code 'unsupported' for now. The options will be the designers' own, as for designVoxel.
+ */
+export interface StructureDesignOptions {
+  onProgress?: (progress: DesignProgress) => boolean | void;
+  /** Name used in error messages. */
+  source?: string;
+  [option: string]: unknown;
+}
+
+/** The synchronous core, for workers and node scripts ({@link loadDesiaModule}). Every method throws a DesiaError for bad input. */
 export interface DesiaCore {
+  /** The interlocking check of .puz or JSON text; the same fields as `desia check --json`. */
   check(text: string, options?: CheckOptions): CheckReport;
+  /** Parses .puz or JSON text into the JSON assembly document. */
   parseDocument(text: string, options?: { source?: string }): AssemblyDocument;
   /**
    * Solid voxelization of a closed triangle mesh (OBJ, or ASCII / binary STL): one part (label 1)
@@ -185,21 +272,86 @@ export interface DesiaCore {
   voxelize(mesh: MeshInput, options?: VoxelizeOptions): AssemblyDocument;
   /** A voxel assembly (.puz text, JSON text or a document object) as DESIA .puz text. */
   toPuz(assembly: string | AssemblyDocument, options?: { source?: string }): string;
+  /**
+   * An assembly (.puz text, JSON text or a document object) as a file for other tools: STL or OBJ
+   * meshes of its parts (3D printing), or a BurrTools .xmpuzzle. Returns the file's bytes.
+   */
+  exportAssembly(assembly: string | AssemblyDocument, options?: ExportOptions): Uint8Array;
+  /**
+   * Designs an N-part interlocking voxel puzzle from a shape (.puz or JSON text). `puz` and
+   * `document` are set when status is 'success' (the puzzle passed the project's own check);
+   * otherwise they are null and `message` says how far the search got.
+   */
   designVoxel(shapeText: string, options: DesignVoxelOptions): DesignResult;
+  /** An interactive design session; call dispose() when done. */
   designSession(shapeText: string, options: Omit<DesignVoxelOptions, 'onProgress'>): DesignSession;
+  /** Designs a plate structure. Not yet: throws a DesiaError with code 'unsupported'. */
+  designPlate(input: string | AssemblyDocument, options?: StructureDesignOptions): DesignResult;
+  /** Designs a frame structure. Not yet: throws a DesiaError with code 'unsupported'. */
+  designFrame(input: string | AssemblyDocument, options?: StructureDesignOptions): DesignResult;
+  /** The core's version, e.g. '0.1.0'. */
   version(): string;
 }
 
-/** Promise-based API. */
+/** Options of {@link createDesia}. */
+export interface CreateOptions extends LoadOptions {
+  /**
+   * true (default): the core runs in a worker (a module Web Worker in browsers, a worker_threads
+   * Worker in node), so long calls never block the caller and an AbortSignal stops them at once.
+   * false: the core runs in the calling thread (e.g. where workers are not allowed); the API is
+   * the same, but a running call blocks the thread, so aborting works only before a call starts
+   * or from inside a design's onProgress.
+   */
+  worker?: boolean;
+  /**
+   * Where the package's worker script (`wasm/worker.js`) is, when a bundler or a CDN moved it. In
+   * browsers it must be same-origin with the page (a rule of Web Workers).
+   */
+  workerUrl?: string | URL;
+}
+
+/**
+ * The promise-based API, the same in browsers and node. Calls run one at a time, in the order
+ * they were made; each accepts a `signal` (see {@link CallOptions}). Bad input rejects with a
+ * {@link DesiaError} carrying the core's message (the same text as the CLI's) and its `code`.
+ * In node an idle worker does not keep the process alive; a crashed worker fails the call it
+ * was running (code 'internal', `fatal` true) and is replaced by the next call.
+ */
 export interface Desia {
-  check(text: string, options?: CheckOptions): Promise<CheckReport>;
-  parseDocument(text: string, options?: { source?: string }): Promise<AssemblyDocument>;
-  /** Solid voxelization of a closed OBJ / STL mesh; see {@link DesiaCore.voxelize}. */
-  voxelize(mesh: MeshInput, options?: VoxelizeOptions): Promise<AssemblyDocument>;
-  toPuz(assembly: string | AssemblyDocument, options?: { source?: string }): Promise<string>;
-  designVoxel(shapeText: string, options: DesignVoxelOptions): Promise<DesignResult>;
-  designSession(shapeText: string, options: Omit<DesignVoxelOptions, 'onProgress'>): Promise<DesignSession>;
+  /** The interlocking check of .puz or JSON text; the same fields as `desia check --json`. */
+  check(text: string, options?: CheckOptions & CallOptions): Promise<CheckReport>;
+  /** Parses .puz or JSON text into the JSON assembly document. */
+  parseDocument(text: string, options?: { source?: string } & CallOptions): Promise<AssemblyDocument>;
+  /**
+   * Solid voxelization of a closed OBJ / STL mesh; see {@link DesiaCore.voxelize}. The bytes are
+   * copied once and the copy is moved to the worker: the caller's buffer stays usable.
+   */
+  voxelize(mesh: MeshInput, options?: VoxelizeOptions & CallOptions): Promise<AssemblyDocument>;
+  /** A voxel assembly as DESIA .puz text; see {@link DesiaCore.toPuz}. */
+  toPuz(assembly: string | AssemblyDocument, options?: { source?: string } & CallOptions): Promise<string>;
+  /** An assembly as an STL, OBJ or BurrTools file; see {@link DesiaCore.exportAssembly}. */
+  exportAssembly(assembly: string | AssemblyDocument, options?: ExportOptions & CallOptions): Promise<Uint8Array>;
+  /**
+   * Designs an N-part interlocking voxel puzzle; resolves to the same object as
+   * {@link DesiaCore.designVoxel} (byte-identical `.puz` for the same seed). `onProgress` is
+   * called about ten times a second and once more with the final progress before the promise
+   * resolves.
+   */
+  designVoxel(shapeText: string, options: DesignVoxelOptions & CallOptions): Promise<DesignResult>;
+  /** An interactive design session living in the worker; dispose() it when done. */
+  designSession(shapeText: string, options: Omit<DesignVoxelOptions, 'onProgress'> & CallOptions): Promise<AsyncDesignSession>;
+  /** Designs a plate structure. Not yet: rejects with a DesiaError with code 'unsupported'. */
+  designPlate(input: string | AssemblyDocument, options?: StructureDesignOptions & CallOptions): Promise<DesignResult>;
+  /** Designs a frame structure. Not yet: rejects with a DesiaError with code 'unsupported'. */
+  designFrame(input: string | AssemblyDocument, options?: StructureDesignOptions & CallOptions): Promise<DesignResult>;
+  /** The core's version, e.g. '0.1.0' (known since createDesia resolved). */
   version(): string;
+  /**
+   * Ends the worker (in-process: drops the module). Pending calls reject with code 'terminated'
+   * and design sessions are lost; a later call starts a fresh worker, so terminate() is also how
+   * to free the worker's memory between bursts of work.
+   */
+  terminate(): Promise<void>;
 }
 
 /** Error thrown for bad input (with the core's message, naming file, line and value) and failures. */
@@ -207,9 +359,29 @@ export class DesiaError extends Error {
   constructor(message: string, code?: ErrorCode, options?: { fatal?: boolean });
   readonly name: 'DesiaError';
   readonly code: ErrorCode;
-  /** True when the WebAssembly instance trapped (e.g. out of memory): load a new module. */
+  /**
+   * True when the WebAssembly instance trapped (e.g. out of memory) or the worker died: with
+   * createDesia the next call runs in a fresh worker; with loadDesiaModule load a new module.
+   */
   readonly fatal: boolean;
 }
 
+/**
+ * Loads the WebAssembly module in the calling thread and returns the synchronous core: for use
+ * inside a worker of your own, or in node scripts that need nothing asynchronous.
+ */
 export function loadDesiaModule(options?: LoadOptions): Promise<DesiaCore>;
-export function createDesia(options?: LoadOptions): Promise<Desia>;
+
+/**
+ * The promise-based API (see {@link Desia}); resolves once the core is loaded in its worker.
+ *
+ * ```js
+ * import { createDesia } from 'desia';
+ * const desia = await createDesia();
+ * const report = await desia.check(puzText);
+ * const controller = new AbortController();
+ * const result = await desia.designVoxel(shapeText, { parts: 7, seed: 1, signal: controller.signal,
+ *   onProgress: (p) => console.log(p.bestDepth, 'of', p.targetParts) });
+ * ```
+ */
+export function createDesia(options?: CreateOptions): Promise<Desia>;

@@ -1,25 +1,74 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The package API in node: loading without setup, results, errors, and the TypeScript
-// declarations matching what the module really exports.
+// The package API in node: loading without setup, the worker-backed promise API against the
+// native CLI (checks, seeded designs, progress, errors, step-by-step sessions, exports), and the
+// TypeScript declarations matching what the module really exports and returns. Aborting,
+// crashes, terminate() and idle exit: tests/node/package-worker.test.mjs.
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
+import os from 'node:os';
 import path from 'node:path';
-import { test } from 'node:test';
+import { after, test } from 'node:test';
 
 import * as desiaPackage from '../../wasm/index.js';
 import { createDesia, DesiaError, loadDesiaModule } from '../../wasm/index.js';
-import { referenceDir, root } from './support.mjs';
+import { referenceDir, referenceFiles, root, runCli } from './support.mjs';
 
 const k9 = fs.readFileSync(path.join(referenceDir, 'result_puz/Cube_4x4x4_K9.puz'), 'utf8');
+const cubeShape = fs.readFileSync(path.join(referenceDir, 'input_puz/Cube_4x4x4_origin.puz'), 'utf8');
+const declarations = fs.readFileSync(path.join(root, 'wasm/index.d.ts'), 'utf8');
+const tmp = fs.mkdtempSync(path.join(os.tmpdir(), 'desia-api-'));
+
+// One worker-backed instance for the tests that do not stop workers, and one synchronous core
+// (each load in this thread adds Emscripten's process listeners).
+const desia = await createDesia();
+const core = await loadDesiaModule();
+after(async () => {
+  await desia.terminate();
+  fs.rmSync(tmp, { recursive: true, force: true });
+});
+
+/** The method names an interface of index.d.ts declares (`name(` at the start of a member line). */
+function declaredMethods(interfaceName) {
+  const match = new RegExp(`^export interface ${interfaceName}\\b[^{]*\\{([\\s\\S]*?)^\\}`, 'm').exec(declarations);
+  assert.ok(match, `interface ${interfaceName} not found in index.d.ts`);
+  return [...match[1].matchAll(/^ {2}(\w+)\(/gm)].map((m) => m[1]).sort();
+}
+
+/** Splits a binary STL into its triangle count and the extent of its vertices per axis. */
+function binaryStlSummary(bytes) {
+  const view = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength);
+  const triangles = view.getUint32(80, true);
+  const min = [Infinity, Infinity, Infinity];
+  const max = [-Infinity, -Infinity, -Infinity];
+  for (let t = 0; t < triangles; t++) {
+    for (let v = 0; v < 3; v++) {
+      for (let axis = 0; axis < 3; axis++) {
+        const value = view.getFloat32(84 + 50 * t + 12 + 12 * v + 4 * axis, true);
+        min[axis] = Math.min(min[axis], value);
+        max[axis] = Math.max(max[axis], value);
+      }
+    }
+  }
+  return { triangles, byteLength: bytes.byteLength, extent: max.map((m, axis) => m - min[axis]) };
+}
 
 test('declared exports in index.d.ts are exactly the runtime exports', () => {
-  const declarations = fs.readFileSync(path.join(root, 'wasm/index.d.ts'), 'utf8');
   const declared = [...declarations.matchAll(/^export (?:declare )?(?:function|class|const) (\w+)/gm)].map((m) => m[1]).sort();
   assert.deepEqual(Object.keys(desiaPackage).sort(), declared);
 });
 
+test('the declared interfaces list exactly the methods of the objects the package returns', async () => {
+  assert.deepEqual(Object.keys(desia).sort(), declaredMethods('Desia'));
+  assert.deepEqual(Object.keys(core).sort(), declaredMethods('DesiaCore'));
+  const session = await desia.designSession(cubeShape, { parts: 5 });
+  assert.deepEqual(Object.keys(session).sort(), declaredMethods('AsyncDesignSession'));
+  await session.dispose();
+  const syncSession = core.designSession(cubeShape, { parts: 5 });
+  assert.deepEqual(Object.keys(syncSession).sort(), declaredMethods('DesignSession'));
+  syncSession.dispose();
+});
+
 test('createDesia needs no setup and checks a reference puzzle', async () => {
-  const desia = await createDesia();
   assert.match(desia.version(), /^\d+\.\d+\.\d+$/);
   const report = await desia.check(k9);
   assert.equal(report.verdict, 'interlocking');
@@ -34,7 +83,6 @@ test('createDesia needs no setup and checks a reference puzzle', async () => {
 });
 
 test('parseDocument returns the JSON assembly document', async () => {
-  const core = await loadDesiaModule();
   const document = core.parseDocument(k9);
   assert.equal(document.format, 'desia-assembly');
   assert.equal(document.kind, 'voxel');
@@ -46,7 +94,6 @@ test('parseDocument returns the JSON assembly document', async () => {
 });
 
 test('bad input rejects with a DesiaError carrying the core message', async () => {
-  const desia = await createDesia();
   await assert.rejects(desia.check('4 4 4\n1 1 1 1\n1 1\n', { source: 'ragged.puz' }), (error) => {
     assert.ok(error instanceof DesiaError);
     assert.ok(error instanceof Error);
@@ -63,7 +110,6 @@ test('bad input rejects with a DesiaError carrying the core message', async () =
 });
 
 test('two parts in a row are a verdict, not a crash', async () => {
-  const desia = await createDesia();
   for (const text of ['2 1 1\n1 2\n', '3 1 1\n1 2 3\n', '1 2 1\n1\n2\n', '1 1 2\n1\n\n2\n']) {
     const report = await desia.check(text, { method: 'both' });
     assert.equal(report.interlocking, false, text);
@@ -72,7 +118,6 @@ test('two parts in a row are a verdict, not a crash', async () => {
 });
 
 test("Fig. 4's assembly: only the linear program sees the motion", async () => {
-  const desia = await createDesia();
   const text = fs.readFileSync(path.join(root, 'examples/contacts/figure4_two_parts_move_at_once.json'), 'utf8');
   const report = await desia.check(text, { method: 'both' });
   assert.equal(report.methods.dbg.verdict, 'deadlocked');
@@ -83,11 +128,190 @@ test("Fig. 4's assembly: only the linear program sees the motion", async () => {
 });
 
 test('toPuz writes .puz text byte for byte as the original writer, from .puz or JSON', async () => {
-  const core = await loadDesiaModule();
   assert.equal(core.toPuz(k9), k9);
   const document = core.parseDocument(k9);
   assert.equal(core.toPuz(document), k9);
   assert.equal(core.toPuz(JSON.stringify(document)), k9);
   const figure4 = fs.readFileSync(path.join(root, 'examples/contacts/figure4_two_parts_move_at_once.json'), 'utf8');
   assert.throws(() => core.toPuz(figure4, { source: 'fig4.json' }), /fig4\.json: only voxel assemblies have a \.puz form/);
+});
+
+test('the worker-backed check equals `desia check --json` on every reference file, with every method', async () => {
+  const inputs = [...referenceFiles(), path.join(root, 'examples/contacts/figure4_two_parts_move_at_once.json')];
+  for (const file of inputs) {
+    for (const method of ['dbg', 'lp', 'both']) {
+      const cli = runCli(['check', file, '--method', method, '--json']);
+      assert.equal(cli.stderr, '', file);
+      const report = await desia.check(fs.readFileSync(file, 'utf8'), { method, source: file });
+      assert.deepEqual(report, JSON.parse(cli.stdout), `${file} --method ${method}`);
+    }
+  }
+});
+
+for (const worker of [true, false]) {
+  test(`designVoxel (${worker ? 'in a worker' : 'in-process'}) gives the CLI's puzzle for the same seed, with progress`, async () => {
+    const api = worker ? desia : await createDesia({ worker: false });
+    const shapeFile = path.join(referenceDir, 'input_puz/Cube_5x5x5_origin.puz');
+    const output = path.join(tmp, `cube5-${worker}.puz`);
+    const cli = runCli(['design', 'voxel', '--input', shapeFile, '--parts', '12', '--seed', '4', '--output', output]);
+    assert.equal(cli.status, 0, cli.stderr);
+    const seen = [];
+    const result = await api.designVoxel(fs.readFileSync(shapeFile, 'utf8'), {
+      parts: 12, seed: 4, source: 'Cube_5x5x5_origin.puz', onProgress: (progress) => seen.push(progress),
+    });
+    assert.equal(result.status, 'success', result.message);
+    assert.equal(result.puz, fs.readFileSync(output, 'utf8'));
+    // The same object as the synchronous core's, labels as a plain array included.
+      assert.deepEqual(result, core.designVoxel(fs.readFileSync(shapeFile, 'utf8'), { parts: 12, seed: 4, source: 'Cube_5x5x5_origin.puz' }));
+    assert.ok(Array.isArray(result.document.voxel.labels));
+    assert.equal(result.verification.interlocking, true);
+    assert.equal(result.verification.key, 1);
+    // Progress arrived, and the last one is the final state of the search (plus its time).
+    assert.ok(seen.length >= 1);
+    const { elapsedSeconds, ...last } = seen.at(-1);
+    assert.ok(elapsedSeconds >= 0);
+    assert.deepEqual(last, result.progress);
+    assert.equal(seen.at(-1).bestDepth, 12);
+    for (let i = 1; i < seen.length; i++) assert.ok(seen[i].nodesVisited > seen[i - 1].nodesVisited, 'progress moves forward');
+    if (!worker) await api.terminate();
+  });
+}
+
+test('bad design input and options reject with a DesiaError with the core message and code', async () => {
+  const cases = [
+    [cubeShape, { parts: 2 }, 'bad-input', /parts = 2: an interlocking puzzle needs at least 3 parts/],
+    [cubeShape, { parts: 5, rank: 'prettiest' }, 'bad-input', /unknown ranking 'prettiest'/],
+    [cubeShape, {}, 'bad-input', /design option 'parts' is required/],
+    ['3 1 1\n1 0 1\n', { parts: 3, source: 'split.puz' }, 'bad-input', /^split\.puz: .*not face-connected/],
+    [cubeShape, { parts: 5, onProgress: 'loudly' }, 'bad-input', /designVoxel: onProgress must be a function/],
+    [cubeShape, { parts: 5, signal: 'stop' }, 'bad-input', /designVoxel: signal must be an AbortSignal/],
+    [cubeShape, { parts: 5, shape: () => 1 }, 'bad-input', /designVoxel: the arguments cannot be sent to the worker/],
+  ];
+  for (const [shape, options, code, message] of cases) {
+    await assert.rejects(desia.designVoxel(shape, options), (error) => {
+      assert.ok(error instanceof DesiaError, String(error));
+      assert.equal(error.code, code);
+      assert.equal(error.fatal, false);
+      assert.match(error.message, message);
+      return true;
+    });
+  }
+  // The same message as the CLI prints for the same file.
+  const ragged = path.join(tmp, 'ragged.puz');
+  fs.writeFileSync(ragged, '4 4 4\n1 1 1 1\n1 1\n');
+  const cli = runCli(['design', 'voxel', '--input', ragged, '--parts', '5', '--output', path.join(tmp, 'never.puz')]);
+  assert.equal(cli.status, 2);
+  await assert.rejects(desia.designVoxel('4 4 4\n1 1 1 1\n1 1\n', { parts: 5, source: ragged }),
+    (error) => error.code === 'bad-input' && `desia: error: ${error.message}\n` === cli.stderr);
+  await assert.rejects(desia.voxelize(42), (error) => error instanceof DesiaError && /voxelize: mesh must be a Uint8Array/.test(error.message));
+  // The worker is still fine.
+  assert.equal((await desia.check(k9)).key, 1);
+});
+
+test('designPlate and designFrame reject as unsupported until their cores land', async () => {
+  for (const [name, kind] of [['designPlate', 'plate'], ['designFrame', 'frame']]) {
+    const expected = (error) => {
+      assert.ok(error instanceof DesiaError, String(error));
+      assert.equal(error.code, 'unsupported');
+      assert.match(error.message, new RegExp(`^${name}: the ${kind} designer core has not landed yet`));
+      return true;
+    };
+    await assert.rejects(desia[name]('{}', { parts: 4 }), expected);
+    assert.throws(() => core[name]('{}', { parts: 4 }), expected);
+  }
+});
+
+test('a design session in the worker steps like the synchronous one', async () => {
+  const options = { parts: 6, seed: 2 };
+  const local = core.designSession(cubeShape, options);
+  const remote = await desia.designSession(cubeShape, options);
+  try {
+    assert.deepEqual(await remote.state(), local.state());
+    assert.equal(await remote.back(), false);
+    assert.equal(await remote.next(), local.next());
+    const children = await remote.childCount();
+    assert.equal(children, local.childCount());
+    assert.ok(children > 2);
+    const preview = await remote.preview(2);
+    assert.deepEqual(preview, local.preview(2));
+    assert.ok(Array.isArray(preview.voxel.labels));
+    assert.equal(await remote.choose(2), undefined);
+    local.choose(2);
+    assert.deepEqual((await remote.state()).document, preview);
+    assert.deepEqual(await remote.check(), local.check());
+    assert.equal(await remote.back(), true);
+    local.back();
+    while (!(await remote.state()).complete && (await remote.next())) local.next();
+    assert.deepEqual(await remote.state(), local.state());
+    await assert.rejects(remote.choose(999), (error) => error instanceof DesiaError && /child 999 does not exist/.test(error.message));
+  } finally {
+    local.dispose();
+    await remote.dispose();
+  }
+  await assert.rejects(remote.state(), (error) => error.code === 'bad-input' && /the session was disposed/.test(error.message));
+  await remote.dispose(); // twice is fine
+  await assert.rejects(desia.designSession(cubeShape, { parts: 1 }), /needs at least 3 parts/);
+});
+
+test('voxelize in the worker moves a copy: the caller keeps its buffer', async () => {
+  const bytes = fs.readFileSync(path.join(root, 'tests/data/meshes/octahedron.obj'));
+  const expected = core.voxelize(bytes, { resolution: 8, source: 'octahedron.obj' });
+  const text = bytes.toString('utf8');
+  // A node Buffer (whose slice() is a view), a plain Uint8Array, an ArrayBuffer and a view into it.
+  const array = new Uint8Array(bytes);
+  for (const input of [bytes, array, array.buffer, new DataView(array.buffer, 0, array.byteLength)]) {
+    const document = await desia.voxelize(input, { resolution: 8, source: 'octahedron.obj' });
+    assert.deepEqual(document, expected);
+    assert.ok(Array.isArray(document.voxel.labels));
+  }
+  assert.equal(bytes.toString('utf8'), text);
+  assert.equal(new TextDecoder().decode(array), text);
+  assert.equal(array.buffer.byteLength, bytes.byteLength);
+});
+
+// exportAssembly needs the exporter binding in dist/ (scripts/build.sh wasm).
+test('exportAssembly writes STL, OBJ and BurrTools files of a voxel puzzle', async () => {
+  const stl = await desia.exportAssembly(k9, { format: 'stl', source: 'k9.puz' });
+  assert.ok(stl instanceof Uint8Array);
+  assert.deepEqual(stl, core.exportAssembly(k9, { source: 'k9.puz' }), 'the default format is binary STL, the same in the worker');
+  const all = binaryStlSummary(stl);
+  assert.equal(all.byteLength, 84 + 50 * all.triangles);
+  assert.deepEqual(all.extent, [4, 4, 4]);
+  // One part, and a voxel size that scales the model.
+  const key = binaryStlSummary(await desia.exportAssembly(core.parseDocument(k9), { format: 'stl', part: 1 }));
+  assert.ok(key.triangles > 0 && key.triangles < all.triangles);
+  assert.deepEqual(binaryStlSummary(await desia.exportAssembly(k9, { voxelSize: 2.5 })).extent, [10, 10, 10]);
+  const ascii = new TextDecoder().decode(await desia.exportAssembly(k9, { format: 'stl-ascii' }));
+  assert.match(ascii, /^solid/);
+  assert.match(ascii, /endsolid[^\n]*\n?$/);
+  assert.equal(ascii.match(/\bfacet normal\b/g).length, all.triangles);
+  const obj = new TextDecoder().decode(await desia.exportAssembly(k9, { format: 'obj' }));
+  assert.match(obj, /^v -?[\d.]+ -?[\d.]+ -?[\d.]+$/m);
+  assert.match(obj, /^f \d+/m);
+  const xmpuzzle = await desia.exportAssembly(k9, { format: 'xmpuzzle' });
+  const gzip = xmpuzzle[0] === 0x1f && xmpuzzle[1] === 0x8b;
+  assert.ok(gzip || /^<\?xml/.test(new TextDecoder().decode(xmpuzzle.subarray(0, 5))), 'gzip or XML');
+  // Bad arguments and inputs.
+  const rejectsWith = (promise, code, message) => assert.rejects(promise, (error) => {
+    assert.ok(error instanceof DesiaError, String(error));
+    assert.equal(error.code, code);
+    assert.match(error.message, message);
+    return true;
+  });
+  // Byte for byte what `desia export` writes, for every format.
+  const k9File = path.join(referenceDir, 'result_puz/Cube_4x4x4_K9.puz');
+  for (const [format, part, voxelSize] of [['stl', 0, 1], ['stl', 3, 2], ['stl-ascii', 0, 1], ['obj', 2, 0.5], ['xmpuzzle', 0, 1]]) {
+    const output = path.join(tmp, `k9-${part}.${format}`);
+    const cli = runCli(['export', k9File, '--format', format, '--part', String(part), '--voxel-size', String(voxelSize), '--output', output]);
+    assert.equal(cli.status, 0, cli.stderr);
+    const bytes = await desia.exportAssembly(k9, { format, part, voxelSize, source: k9File });
+    assert.deepEqual(bytes, new Uint8Array(fs.readFileSync(output)), `${format} part ${part}`);
+  }
+  await rejectsWith(desia.exportAssembly(k9, { part: 'key' }), 'bad-input', /exportAssembly: part must be 0 \(every part\) or a part id, got key/);
+  await rejectsWith(desia.exportAssembly(k9, { voxelSize: -1 }), 'bad-input', /exportAssembly: voxelSize must be a positive number/);
+  await rejectsWith(desia.exportAssembly(k9, { format: 7 }), 'bad-input', /exportAssembly: format must be a string/);
+  await rejectsWith(desia.exportAssembly(42), 'bad-input', /exportAssembly: assembly must be a string/);
+  await rejectsWith(desia.exportAssembly(k9, { format: 'dxf' }), 'bad-input', /dxf/);
+  await rejectsWith(desia.exportAssembly('4 4 4\n1 1 1 1\n1 1\n', { source: 'ragged.puz' }), 'bad-input',
+    /^ragged\.puz:3: row 2 of layer 1 has 2 values, expected Nx = 4$/);
 });

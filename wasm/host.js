@@ -1,0 +1,198 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The far end of createDesia's protocol: it sits next to the synchronous core, inside the package
+// worker (wasm/worker.js: a module Web Worker in browsers, a worker_threads Worker in node) or in
+// the caller's thread ({ worker: false }). It only moves messages: every operation is one call of
+// the core (loadDesiaModule's functions), and every answer is plain structured-clone data.
+//
+// Protocol:
+//   in:  { type: 'init', wasmUrl?, wasmBinary? }      load the core (once; later inits are no-ops)
+//        { type: 'run', id, op, args }               op: a key of OPERATIONS, args: its arguments
+//   out: { type: 'ready', version }                  the core is loaded
+//        { type: 'progress', id, value }             designers only: ~10 a second, and always the
+//                                                    last one before the result
+//        { type: 'result', id, value }
+//        { type: 'error', id, message, code, fatal } id null: loading failed; fatal: the module
+//                                                    trapped, the client must start a fresh host
+// The client sends one 'run' at a time (see wasm/index.js); cancelling is terminating the worker,
+// since a busy single-threaded WebAssembly worker cannot read a 'cancel' message.
+//
+// Transfers: voxel labels of returned documents travel as an Int32Array (the client turns them
+// back into the plain array the core returns) and exported files as a Uint8Array, both moved, not
+// copied.
+
+/** Progress is for eyes, not logs: ten messages a second are plenty. */
+const PROGRESS_INTERVAL_MS = 100;
+
+/** The methods of a design session the client may call by name. */
+const SESSION_METHODS = new Set(['state', 'childCount', 'preview', 'choose', 'next', 'back', 'check']);
+
+function hostError(message, code) {
+  return Object.assign(new Error(message), { code });
+}
+
+/**
+ * A request handler around the core. `loadCore(options)` loads it (loadDesiaModule);
+ * `post(message, transfer)` sends to the client; `isCancelled()` (in-process only) lets a design
+ * stop at its next node once the client has given up on it.
+ */
+export function createCoreHost(loadCore, post, { isCancelled = () => false } = {}) {
+  let corePromise = null;
+  /** Open design sessions by id; each holds WebAssembly memory until disposed. */
+  const sessions = new Map();
+  let nextSessionId = 1;
+
+  /**
+   * onProgress is called after every search node, thousands of times a second: post the first
+   * at once, then at most one per interval, and flush() the last unseen one before the result.
+   */
+  function progressPoster(id) {
+    let latest = null;
+    let unsent = false;
+    let lastPostedAt = -Infinity;
+    const send = () => {
+      post({ type: 'progress', id, value: latest }, []);
+      unsent = false;
+      lastPostedAt = performance.now();
+    };
+    return {
+      report(value) {
+        latest = value;
+        unsent = true;
+        if (performance.now() - lastPostedAt >= PROGRESS_INTERVAL_MS) send();
+        // false stops the search (status 'cancelled'); in a worker nobody is left to read the
+        // answer when the client gave up: it terminates the worker instead.
+        return !isCancelled();
+      },
+      flush() {
+        if (unsent) send();
+      },
+    };
+  }
+
+  function withProgress(id, run) {
+    const progress = progressPoster(id);
+    const result = run(progress.report);
+    progress.flush();
+    return result;
+  }
+
+  function openSession(sessionId) {
+    const session = sessions.get(sessionId);
+    if (!session) {
+      throw hostError('designSession: the session was lost (its worker was restarted) or disposed', 'session-lost');
+    }
+    return session;
+  }
+
+  // Each operation: (core, args, id) -> value. The designers take the client's options without
+  // onProgress/signal (they cannot cross a worker boundary) and get progress from here.
+  const OPERATIONS = {
+    check: (core, [text, options]) => core.check(text, options),
+    parseDocument: (core, [text, options]) => core.parseDocument(text, options),
+    voxelize: (core, [mesh, options]) => core.voxelize(mesh, options),
+    toPuz: (core, [assembly, options]) => core.toPuz(assembly, options),
+    exportAssembly: (core, [assembly, options]) => core.exportAssembly(assembly, options),
+    designVoxel: (core, [shape, options], id) =>
+      withProgress(id, (onProgress) => core.designVoxel(shape, { ...options, onProgress })),
+    designPlate: (core, [input, options], id) =>
+      withProgress(id, (onProgress) => core.designPlate(input, { ...options, onProgress })),
+    designFrame: (core, [input, options], id) =>
+      withProgress(id, (onProgress) => core.designFrame(input, { ...options, onProgress })),
+    'session-open': (core, [shape, options]) => {
+      const session = core.designSession(shape, options);
+      const sessionId = nextSessionId++;
+      sessions.set(sessionId, session);
+      return sessionId;
+    },
+    'session-call': (core, [sessionId, method, args]) => {
+      if (!SESSION_METHODS.has(method)) throw hostError(`designSession: no method '${String(method)}'`, 'bad-input');
+      return openSession(sessionId)[method](...(Array.isArray(args) ? args : []));
+    },
+    'session-dispose': (core, [sessionId]) => {
+      sessions.get(sessionId)?.dispose();
+      sessions.delete(sessionId);
+      return null;
+    },
+    version: (core) => core.version(),
+  };
+
+  function loadOnce(options) {
+    corePromise ??= loadCore(options);
+    return corePromise;
+  }
+
+  async function handleInit({ wasmUrl, wasmBinary }) {
+    try {
+      const core = await loadOnce({ wasmUrl, wasmBinary });
+      post({ type: 'ready', version: String(core.version()) }, []);
+    } catch (error) {
+      corePromise = null;
+      post({ type: 'error', id: null, ...describeError(error), fatal: true }, []);
+    }
+  }
+
+  async function handleRun({ id, op, args }) {
+    let core;
+    try {
+      core = await loadOnce({});
+    } catch (error) {
+      post({ type: 'error', id, ...describeError(error), fatal: true }, []);
+      return;
+    }
+    try {
+      if (!Object.hasOwn(OPERATIONS, op)) throw hostError(`unknown operation '${String(op)}'`, 'internal');
+      const [value, transfer] = packForTransfer(OPERATIONS[op](core, Array.isArray(args) ? args : [], id));
+      post({ type: 'result', id, value }, transfer);
+    } catch (error) {
+      post({ type: 'error', id, ...describeError(error) }, []);
+    }
+  }
+
+  return {
+    /** Handles one message from the client. */
+    handle(message) {
+      if (message?.type === 'init') return handleInit(message);
+      if (message?.type === 'run') return handleRun(message);
+      post({ type: 'error', id: message?.id ?? null, message: `unknown message type '${String(message?.type)}'`, code: 'internal', fatal: false }, []);
+      return undefined;
+    },
+    /** Frees every open session (in-process hosts; a worker's memory goes with the worker). */
+    dispose() {
+      for (const session of sessions.values()) session.dispose();
+      sessions.clear();
+    },
+  };
+}
+
+/** message, code and fatal of anything the core or the loader threw. */
+function describeError(error) {
+  const message = error instanceof Error ? error.message || error.name : typeof error === 'number'
+    ? `internal error: uncaught native exception (${error})` : String(error);
+  const code = typeof error?.code === 'string' ? error.code : 'internal';
+  // A trap or an Emscripten abort leaves the instance unusable (the facade marks those fatal).
+  const fatal = error?.fatal === true || (typeof WebAssembly === 'object' && error instanceof WebAssembly.RuntimeError)
+    || /^Aborted\(/.test(message);
+  return { message, code, fatal };
+}
+
+/**
+ * The value and its transfer list: the labels of a document (the value itself or its `document`
+ * field) become an Int32Array, exported bytes go as they are.
+ */
+function packForTransfer(value) {
+  if (value instanceof Uint8Array) {
+    const own = value.byteOffset === 0 && value.byteLength === value.buffer.byteLength ? value : value.slice();
+    return [own, [own.buffer]];
+  }
+  const transfer = [];
+  const pack = (document) => {
+    const labels = document?.voxel?.labels;
+    if (!Array.isArray(labels)) return document;
+    const packed = Int32Array.from(labels);
+    transfer.push(packed.buffer);
+    return { ...document, voxel: { ...document.voxel, labels: packed } };
+  };
+  if (value?.voxel) return [pack(value), transfer];
+  if (value?.document?.voxel) return [{ ...value, document: pack(value.document) }, transfer];
+  return [value, transfer];
+}
