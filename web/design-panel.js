@@ -193,7 +193,7 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
     if (busy) return;
     const shape = getShape();
     if (!shape) {
-      setOutcome('error', 'Load a voxel shape first (an example, or your own .puz / .json).');
+      setOutcome('error', 'Load a voxel shape first (an example, your own .puz / .json, or a mesh to voxelize).');
       return;
     }
     let options;
@@ -269,7 +269,7 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
   async function startSession() {
     const shape = getShape();
     if (!shape) {
-      setOutcome('error', 'Load a voxel shape first (an example, or your own .puz / .json).');
+      setOutcome('error', 'Load a voxel shape first (an example, your own .puz / .json, or a mesh to voxelize).');
       return;
     }
     let options;

@@ -8,14 +8,18 @@
 //
 // For tests the page exposes: body[data-status] = loading | ready | error, body[data-source] =
 // the assembly shown, body[data-webgl] = on | off, body[data-core] = starting | ready (the
-// worker), #verdict (text, data-verdict, data-key) and #error; design-panel.js adds its own.
+// worker), #verdict (text, data-verdict, data-key) and #error; design-panel.js, mesh-input.js,
+// export-panel.js and offline.js add their own.
 
 import { byId, element } from './dom.js';
-import { AssemblyView } from './view.js';
-import { renderReport, resetReport } from './report.js';
+import { AssemblyView, createPlaybackControls } from './view.js';
+import { highlightRemovalStep, renderReport, resetReport } from './report.js';
 import { CoreWorker, MAX_FAILED_STARTS } from './worker-client.js';
 import { createDesignPanel } from './design-panel.js';
 import { readUrlState, writeUrlState } from './url-state.js';
+import { createMeshInput, isMeshName } from './mesh-input.js';
+import { createExportPanel } from './export-panel.js';
+import { keepForOffline, registerServiceWorker } from './offline.js';
 
 // ---------------------------------------------------------------------------------------------
 // Configuration
@@ -58,6 +62,12 @@ const ui = {
   viewerNotice: byId('viewer-notice'),
   disassemblyRange: byId('disassembly-range'),
   disassemblyStep: byId('disassembly-step'),
+  viewerControls: byId('viewer-controls'),
+  disassemblyPlay: byId('disassembly-play'),
+  disassemblySpeed: byId('disassembly-speed'),
+  disassemblyLoop: byId('disassembly-loop'),
+  disassemblyMoves: byId('disassembly-moves'),
+  explodedRange: byId('exploded-range'),
   error: byId('error'),
   sourceName: byId('source-name'),
   coreVersion: byId('core-version'),
@@ -84,14 +94,37 @@ function hideError() {
 // ---------------------------------------------------------------------------------------------
 // The assembly on screen
 
-const view = new AssemblyView(ui.viewport, ui.viewerNotice);
+const view = new AssemblyView(ui.viewport, {
+  notice: ui.viewerNotice,
+  onWebGL: (on) => { document.body.dataset.webgl = on ? 'on' : 'off'; },
+});
+// Play/pause, slider, speed, loop and explode (view.js); the removal shown is marked in the report.
+const playback = createPlaybackControls(view, {
+  range: ui.disassemblyRange,
+  label: ui.disassemblyStep,
+  moves: ui.disassemblyMoves,
+  playButton: ui.disassemblyPlay,
+  speedSelect: ui.disassemblySpeed,
+  loopCheckbox: ui.disassemblyLoop,
+  explodedRange: ui.explodedRange,
+  root: ui.viewerControls,
+}, { onStep: ({ index }) => highlightRemovalStep(index) });
+// A small read-only handle for tests and debugging in the console.
+window.__desiaView = {
+  partPositions: () => view.partPositions(),
+  get step() { return view.disassemblyStep; },
+  get steps() { return playback.player.length; },
+  get playing() { return playback.player.playing; },
+  get exploded() { return view.exploded; },
+};
 let coreReady = false;
 /** { name, text } of the assembly on screen: re-checked with another method, designed from, downloaded. */
 let current = null;
 let loadGeneration = 0; // Only the newest load may touch the page.
 let lastUserFile = null; // The user's last file, so its select entry can load it again.
 
-function setCurrent(assembly) {
+function setCurrent(assembly, report = null) {
+  exportPanel.setAssembly(assembly, report);
   current = assembly;
   ui.downloadButton.disabled = !current;
   ui.downloadButton.textContent = isJsonName(current?.name) ? 'Download .json' : 'Download .puz';
@@ -118,7 +151,7 @@ function showAssembly({ name, text, document: document_, report, elapsedMs, timi
   ui.sourceName.textContent = name;
   hideError();
   view.show(document_);
-  setCurrent({ name, text });
+  setCurrent({ name, text }, report);
   renderReport(report, elapsedMs, timingLabel);
   view.applyReport(report);
   setUpDisassemblySlider(view.available ? report.disassembly : null);
@@ -131,7 +164,7 @@ function showAssembly({ name, text, document: document_, report, elapsedMs, timi
  * Shows one assembly: `readText` yields its text (a fetch or a file read, so that their errors
  * land in the same error box as the core's).
  */
-async function loadAssembly(name, readText) {
+async function loadAssembly(name, readText, { origin = name } = {}) {
   const generation = ++loadGeneration;
   const isCurrent = () => generation === loadGeneration;
   setStatus('loading', coreReady ? 'Checking…' : 'Starting the core…');
@@ -149,7 +182,7 @@ async function loadAssembly(name, readText) {
     view.show(document_);
     const { value: report, elapsedMs } = await core.run('check', text, { method: ui.methodSelect.value, source: name });
     if (!isCurrent()) return;
-    setCurrent({ name, text });
+    setCurrent({ name, text }, report);
     renderReport(report, elapsedMs);
     view.applyReport(report);
     setUpDisassemblySlider(view.available ? report.disassembly : null);
@@ -162,7 +195,8 @@ async function loadAssembly(name, readText) {
     setUpDisassemblySlider(null);
     resetReport('No result');
     // The core's messages start with the source name already; others (fetch, worker) get it here.
-    const message = error.message.startsWith(name) ? error.message : `${name}: ${error.message}`;
+    // `origin` is the file the text came from when it is not `name` (a mesh and its voxels).
+    const message = error.message.startsWith(name) || error.message.startsWith(origin) ? error.message : `${name}: ${error.message}`;
     showError(message);
     setStatus('error');
   }
@@ -176,6 +210,8 @@ async function fetchExampleText(file) {
 }
 
 function loadExample(file) {
+  if (meshInput.isExample(file)) return meshInput.openExample(file);
+  meshInput.forget();
   return loadAssembly(file, () => fetchExampleText(file));
 }
 
@@ -185,6 +221,8 @@ function loadUserFile(file) {
   option.textContent = `Your file: ${file.name}`;
   option.hidden = false;
   ui.exampleSelect.value = USER_FILE_OPTION;
+  if (isMeshName(file.name)) return meshInput.openFile(file);
+  meshInput.forget();
   return loadAssembly(file.name, async () => {
     if (file.size > MAX_FILE_BYTES) {
       throw new Error(`the file is ${(file.size / 1048576).toFixed(1)} MiB; the playground accepts up to ${MAX_FILE_BYTES / 1048576} MiB`);
@@ -208,26 +246,8 @@ function decodeText(name, buffer) {
 // ---------------------------------------------------------------------------------------------
 // The disassembly slider: 0 = assembled, i..i+1 = the (i+1)-th part of the order moving out.
 
-let shownDisassembly = null;
-
 function setUpDisassemblySlider(disassembly) {
-  const removable = (disassembly?.order?.length ?? 0) - 1;
-  shownDisassembly = removable > 0 ? disassembly : null;
-  ui.disassemblyRange.disabled = !shownDisassembly;
-  ui.disassemblyRange.max = String(Math.max(removable, 1));
-  ui.disassemblyRange.value = '0';
-  ui.disassemblyStep.textContent = shownDisassembly ? 'assembled' : '';
-}
-
-function showDisassemblyStep() {
-  const step = Number(ui.disassemblyRange.value);
-  view.setDisassemblyStep(step);
-  if (!shownDisassembly) return;
-  const { order } = shownDisassembly;
-  const index = Math.min(Math.floor(step), order.length - 1);
-  if (step === 0) ui.disassemblyStep.textContent = 'assembled';
-  else if (index >= order.length - 1) ui.disassemblyStep.textContent = `part ${order[order.length - 1]} left`;
-  else ui.disassemblyStep.textContent = `removing part ${order[index]} (${index + 1} of ${order.length - 1})`;
+  playback.setDisassembly(disassembly);
 }
 
 
@@ -280,6 +300,8 @@ let statusBeforeBusy = null;
  */
 function setBusy(busy, label) {
   for (const control of [ui.exampleSelect, ui.fileInput, ui.methodSelect]) control.disabled = busy;
+  meshInput.setDisabled(busy);
+  exportPanel.setDisabled(busy);
   if (busy) {
     statusBeforeBusy = { status: document.body.dataset.status, text: ui.statusText.textContent };
     setStatus('loading', label);
@@ -288,6 +310,9 @@ function setBusy(busy, label) {
     statusBeforeBusy = null;
   }
 }
+
+const meshInput = createMeshInput({ core, loadAssembly });
+const exportPanel = createExportPanel({ core });
 
 const designPanel = createDesignPanel({
   core,
@@ -315,12 +340,16 @@ function fillExampleSelect() {
   const shapes = document.createElement('optgroup');
   shapes.label = 'Shapes to design from';
   shapes.append(...EXAMPLES.filter((example) => example.shape).map(exampleOption));
-  ui.exampleSelect.replaceChildren(userOption, puzzles, shapes);
+  const meshes = document.createElement('optgroup');
+  meshes.label = 'Meshes to voxelize';
+  meshes.append(...meshInput.examples.map(exampleOption));
+  ui.exampleSelect.replaceChildren(userOption, puzzles, shapes, meshes);
 }
 
 function initialExample() {
   const requested = readUrlState().example;
-  return EXAMPLES.some((example) => example.file === requested) ? requested : EXAMPLES[0].file;
+  const known = EXAMPLES.some((example) => example.file === requested) || meshInput.isExample(requested);
+  return known ? requested : EXAMPLES[0].file;
 }
 
 function wireDragAndDrop() {
@@ -368,7 +397,6 @@ function wireControls() {
     const { name, text } = current;
     loadAssembly(name, async () => text);
   });
-  ui.disassemblyRange.addEventListener('input', showDisassemblyStep);
   ui.downloadButton.addEventListener('click', downloadCurrent);
 }
 
@@ -380,7 +408,12 @@ function main() {
   core.start();
   const file = initialExample();
   ui.exampleSelect.value = file;
-  loadExample(file);
+  registerServiceWorker();
+  // Once the first assembly is on screen, keep the playground's files for offline use.
+  loadExample(file).finally(() => keepForOffline([
+    ...EXAMPLES.map((example) => new URL(example.file, EXAMPLES_URL).href),
+    ...meshInput.exampleUrls,
+  ]));
 }
 
 main();

@@ -1,9 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The report panel: verdict, key, directions, removal order and paths, blocking graphs. It
-// formats the core's check report (the same fields as `desia check --json`) and nothing else.
+// The report panel: verdict, key, directions, removal order and paths, blocking graphs (drawn
+// by dbg-panel.js, and as a table). It formats the core's check report (the same fields as
+// `desia check --json`) and nothing else.
+//
+// For tests: #verdict[data-verdict, data-key], #paths li[aria-current] (the removal shown by the
+// disassembly animation), #dbg-panel (see dbg-panel.js).
 
 import { byId, element } from './dom.js';
+import { clearBlockingGraphs, renderBlockingGraphs } from './dbg-panel.js';
 
 const VERDICT_TITLES = {
   interlocking: 'Interlocking',
@@ -13,6 +18,7 @@ const VERDICT_TITLES = {
 
 const ui = {
   verdict: byId('verdict'),
+  method: byId('method'),
   reason: byId('reason'),
   partsCount: byId('parts-count'),
   key: byId('key'),
@@ -24,7 +30,10 @@ const ui = {
   timingLabel: byId('timing-label'),
   paths: byId('paths'),
   graphs: byId('graphs'),
+  dbgPanel: byId('dbg-panel'),
 };
+
+const METHOD_NAMES = { dbg: 'graphs (DBG)', lp: 'linear program (LP)', both: 'graphs and linear program' };
 
 function formatList(values, empty = 'none') {
   return values?.length ? values.join(', ') : empty;
@@ -81,10 +90,11 @@ export function renderReport(report, elapsedMs, timingLabel = 'Check time') {
   ui.verdict.dataset.verdict = verdict;
   ui.verdict.dataset.key = hasKey ? String(report.key) : '';
   ui.reason.textContent = [report.reason, formatMethods(report.methods)].filter(Boolean).join('. ');
+  ui.method.textContent = METHOD_NAMES[report.method] ?? report.method ?? '—';
   ui.partsCount.textContent = String(report.parts ?? report.partIds?.length ?? '—');
   ui.key.textContent = hasKey ? `part ${report.key}` : 'none';
   ui.keyDirections.textContent = formatList(report.keyDirections);
-  ui.baseDirections.textContent = formatList(report.baseDirections?.map((direction) => direction.label));
+  ui.baseDirections.textContent = formatDirections(report.baseDirections);
   ui.order.textContent = report.disassembly
     ? formatOrder(report.disassembly.order)
     : formatDisassemblyFailure(report.disassemblyFailure);
@@ -93,6 +103,25 @@ export function renderReport(report, elapsedMs, timingLabel = 'Check time') {
   ui.timing.textContent = Number.isFinite(elapsedMs) ? formatDuration(elapsedMs) : '—';
   renderPaths(report.disassembly);
   renderGraphs(report.graphs);
+  renderBlockingGraphs(ui.dbgPanel, report);
+}
+
+/** Plates and contact graphs can have many base directions: say how many before listing them. */
+function formatDirections(directions) {
+  const labels = directions?.map((direction) => direction.label) ?? [];
+  if (labels.length <= 6) return formatList(labels);
+  return `${labels.length}: ${labels.join(', ')}`;
+}
+
+/**
+ * Marks the removal the disassembly animation shows (`index` into the order; -1 for none) in
+ * the list of removal paths.
+ */
+export function highlightRemovalStep(index) {
+  [...ui.paths.children].forEach((item, position) => {
+    if (position === index) item.setAttribute('aria-current', 'step');
+    else item.removeAttribute('aria-current');
+  });
 }
 
 /** Milliseconds below ten seconds, seconds above: a design can take minutes. */
@@ -127,10 +156,11 @@ export function resetReport(message) {
   ui.verdict.dataset.key = '';
   ui.reason.textContent = '';
   ui.timingLabel.textContent = 'Check time';
-  for (const field of [ui.partsCount, ui.key, ui.keyDirections, ui.baseDirections, ui.order, ui.witness, ui.timing]) {
+  for (const field of [ui.method, ui.partsCount, ui.key, ui.keyDirections, ui.baseDirections, ui.order, ui.witness, ui.timing]) {
     field.textContent = '—';
   }
   ui.paths.replaceChildren();
   ui.graphs.replaceChildren();
+  clearBlockingGraphs(ui.dbgPanel);
 }
 

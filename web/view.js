@@ -1,12 +1,19 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The playground's three.js view of a voxel assembly: one merged surface per part, the key
-// highlighted, and the computed disassembly played back along the report's removal paths.
-// It only draws: every fact it shows (parts, key, paths) comes from the core's report.
+// The shared three.js renderer of the playground and of the drop-in viewer (viewer.js): one
+// merged surface per voxel part in its own colour, the key highlighted, the computed disassembly
+// played back along the report's removal paths, and an exploded view. It only draws: every fact
+// it shows (parts, key, order, paths) comes from the core's report.
+//
+// Exports: AssemblyView (the 3D view inside a container element), DisassemblyPlayer (the
+// play/pause clock of the disassembly), createPlaybackControls (wires a slider, a play button, a
+// speed select and an explode slider to a view), describeDisassemblyStep, partColorCss.
+//
+// For tests the container gets data-parts (meshes drawn), data-step (the disassembly step shown)
+// and data-exploded (the explode factor); AssemblyView.partPositions() reads the parts back.
 
 import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
-import { element } from './dom.js';
 
 // ---------------------------------------------------------------------------------------------
 // Voxel geometry: one merged surface per part, only faces that do not touch the same part.
@@ -25,8 +32,8 @@ const CUBE_FACES = [
  * Builds, for every part id, the triangles of its boundary: a face between two voxels of the
  * same part is interior and skipped; faces against empty space or another part are kept (the
  * latter show up when parts move apart). Labels are in index order x + nx*(y + ny*z).
- * Returns Map(partId -> { positions, normals, indices }) as typed arrays, plus the bounds of
- * all occupied voxels.
+ * Returns Map(partId -> { positions, normals, indices, voxelSum, voxelCount }) with typed arrays,
+ * plus the bounds of all occupied voxels. voxelSum / voxelCount is the part's centroid.
  */
 function buildPartSurfaces([nx, ny, nz], labels) {
   const labelAt = (x, y, z) => (x < 0 || y < 0 || z < 0 || x >= nx || y >= ny || z >= nz
@@ -47,9 +54,13 @@ function buildPartSurfaces([nx, ny, nz], labels) {
         }
         let builder = builders.get(part);
         if (!builder) {
-          builder = { positions: [], normals: [], indices: [] };
+          builder = { positions: [], normals: [], indices: [], voxelSum: [0, 0, 0], voxelCount: 0 };
           builders.set(part, builder);
         }
+        builder.voxelSum[0] += x + 0.5;
+        builder.voxelSum[1] += y + 0.5;
+        builder.voxelSum[2] += z + 0.5;
+        builder.voxelCount += 1;
         for (const face of CUBE_FACES) {
           const [dx, dy, dz] = face.normal;
           if (labelAt(x + dx, y + dy, z + dz) === part) continue;
@@ -65,6 +76,8 @@ function buildPartSurfaces([nx, ny, nz], labels) {
       positions: new Float32Array(builder.positions),
       normals: new Float32Array(builder.normals),
       indices: new Uint32Array(builder.indices),
+      voxelSum: builder.voxelSum,
+      voxelCount: builder.voxelCount,
     });
   }
   return { surfaces, min, max };
@@ -85,6 +98,7 @@ function surfaceGeometry({ positions, normals, indices }) {
   geometry.setAttribute('normal', new THREE.BufferAttribute(normals, 3));
   geometry.setIndex(new THREE.BufferAttribute(indices, 1));
   geometry.computeBoundingSphere();
+  geometry.computeBoundingBox();
   return geometry;
 }
 
@@ -100,21 +114,42 @@ function directionVector(label, baseDirections = []) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Colours: the key in a warm gold, every other part a well-separated hue away from it.
+// Colours: the key in a warm gold, every other part a well-separated hue away from it. A part's
+// colour depends on its id only, so the 3D view and the blocking-graph drawing (dbg-panel.js)
+// agree without talking to each other.
 
 const KEY_COLOR = new THREE.Color(0xffc21a);
+export const KEY_COLOR_CSS = `#${KEY_COLOR.getHexString()}`;
 const GOLDEN_RATIO_CONJUGATE = 0.618033988749895;
+const GOLD_HUE_BAND = 0.13;
 
-function partColor(index) {
-  let hue = (0.55 + index * GOLDEN_RATIO_CONJUGATE) % 1;
-  // Keep clear of the key's gold so the key stays unmistakable.
-  if (hue > 0.08 && hue < 0.18) hue = (hue + 0.12) % 1;
-  const lightness = index % 2 === 0 ? 0.56 : 0.46;
-  return new THREE.Color().setHSL(hue, 0.55, lightness);
+/** The colour of part `partId` (ids start at 1): hues a golden angle apart, two lightness levels. */
+export function partColor(partId) {
+  const index = Math.max(Math.trunc(Number(partId)) - 1, 0);
+  // Golden-ratio steps spread any number of hues evenly; they are squeezed into the circle minus
+  // the key's gold (hues 0.07 to 0.2), so no part looks like the key.
+  const spread = (0.55 + index * GOLDEN_RATIO_CONJUGATE) % 1;
+  const hue = (0.2 + spread * (1 - GOLD_HUE_BAND)) % 1;
+  const lightness = index % 2 === 0 ? 0.58 : 0.45;
+  const saturation = index % 3 === 2 ? 0.42 : 0.6;
+  return new THREE.Color().setHSL(hue, saturation, lightness);
+}
+
+/** The CSS colour of part `partId` as drawn: gold when it is the key. */
+export function partColorCss(partId, keyId = null) {
+  return partId === keyId ? KEY_COLOR_CSS : `#${partColor(partId).getHexString()}`;
 }
 
 // ---------------------------------------------------------------------------------------------
 // The three.js view
+
+const EDGE_COLOR = 0x101215;
+const KEY_EDGE_COLOR = 0xfff3c4;
+const MOVING_EDGE_COLOR = 0xffffff;
+/** At explode factor 1 every part sits this many times farther from the centre than assembled. */
+const EXPLODE_SCALE = 1.2;
+/** How far a part keeps going after its last move before it disappears, in voxels. */
+const RUN_OUT_VOXELS = 2;
 
 export class AssemblyView {
   #container;
@@ -123,34 +158,56 @@ export class AssemblyView {
   #scene;
   #camera;
   #controls;
+  #lift = new THREE.Group(); // Raises exploded parts above the floor.
   #content = new THREE.Group();
   #meshes = new Map();
   #motions = new Map();
+  /** Per part: the direction (and length) it moves at explode factor 1. */
+  #explodeOffsets = new Map();
+  #floorY = 0;
+  #step = 0;
+  #exploded = 0;
+  #keyId = null;
   #frameRequest = 0;
   #raycaster = new THREE.Raycaster();
-  #hoverLabel;
+  #hoverLabel = null;
+  #resizeObserver = null;
+  #disposed = false;
 
-  constructor(container, notice) {
+  /**
+   * `container` receives the canvas (and must have a size). Options: `notice` (an element for
+   * messages such as "no WebGL"; one is created in the container when missing), `onWebGL(on)`
+   * (told once whether WebGL works), `background` (a CSS colour).
+   * A second argument that is an element is taken as `notice`.
+   */
+  constructor(container, options = {}) {
+    const { notice = null, onWebGL = () => {}, background = 0x1b1e24 } = options instanceof Element ? { notice: options } : options;
     this.#container = container;
-    this.#notice = notice;
+    const ownerDocument = container.ownerDocument;
+    this.#notice = notice ?? this.#makeNotice(ownerDocument);
     try {
       this.#renderer = new THREE.WebGLRenderer({ antialias: true });
     } catch (error) {
-      // No WebGL (blocked GPU, old driver): the report panel still works without a picture.
+      // No WebGL (blocked GPU, old driver): the report still works without a picture.
       this.#showNotice(`3D view unavailable: ${error.message}`);
-      document.body.dataset.webgl = 'off';
+      onWebGL(false);
       return;
     }
-    document.body.dataset.webgl = 'on';
-    this.#renderer.setPixelRatio(Math.min(window.devicePixelRatio || 1, 2));
+    onWebGL(true);
+    const view = ownerDocument.defaultView ?? window;
+    this.#renderer.setPixelRatio(Math.min(view.devicePixelRatio || 1, 2));
+    this.#renderer.domElement.setAttribute('role', 'img');
+    this.#renderer.domElement.setAttribute('aria-label', '3D view of the assembly');
     container.append(this.#renderer.domElement);
-    this.#hoverLabel = element('div', '', 'hover-label');
+    this.#hoverLabel = ownerDocument.createElement('div');
+    this.#hoverLabel.className = 'hover-label';
     this.#hoverLabel.hidden = true;
     container.append(this.#hoverLabel);
 
     this.#scene = new THREE.Scene();
-    this.#scene.background = new THREE.Color(0x1b1e24);
-    this.#scene.add(this.#content);
+    this.#scene.background = new THREE.Color(background);
+    this.#lift.add(this.#content);
+    this.#scene.add(this.#lift);
     this.#camera = new THREE.PerspectiveCamera(40, 1, 0.1, 1000);
     this.#addLights();
 
@@ -158,12 +215,30 @@ export class AssemblyView {
     this.#controls.addEventListener('change', () => this.requestRender());
     this.#renderer.domElement.addEventListener('pointermove', (event) => this.#updateHover(event));
     this.#renderer.domElement.addEventListener('pointerleave', () => { this.#hoverLabel.hidden = true; });
-    new ResizeObserver(() => this.#resize()).observe(container);
+    this.#resizeObserver = new ResizeObserver(() => this.#resize());
+    this.#resizeObserver.observe(container);
     this.#resize();
   }
 
   get available() {
-    return this.#renderer !== null;
+    return this.#renderer !== null && !this.#disposed;
+  }
+
+  /** The disassembly step shown (0 = assembled; see setDisassemblyStep). */
+  get disassemblyStep() {
+    return this.#step;
+  }
+
+  get exploded() {
+    return this.#exploded;
+  }
+
+  #makeNotice(ownerDocument) {
+    const notice = ownerDocument.createElement('p');
+    notice.className = 'viewer-notice';
+    notice.hidden = true;
+    this.#container.append(notice);
+    return notice;
   }
 
   #addLights() {
@@ -197,19 +272,23 @@ export class AssemblyView {
     // Integer offsets keep voxel boundaries on the grid lines.
     const offset = new THREE.Vector3(-Math.floor((min[0] + max[0]) / 2), -min[1], -Math.floor((min[2] + max[2]) / 2));
     this.#content.position.copy(offset);
-    this.#addParts(surfaces);
+    this.#floorY = min[1] + offset.y;
+    this.#addParts(surfaces, min, max);
     this.#addGrid(min, max, offset);
-    this.#fitCamera(min, max, offset);
     this.#container.dataset.parts = String(this.#meshes.size);
-    this.requestRender();
+    this.#updatePositions();
+    // The explode factor outlives the assembly: frame what is actually shown.
+    this.#fitCamera(this.#framingBox());
   }
 
-  #addParts(surfaces) {
+  #addParts(surfaces, min, max) {
+    const center = new THREE.Vector3(...min).add(new THREE.Vector3(...max)).multiplyScalar(0.5);
     const partIds = [...surfaces.keys()].sort((a, b) => a - b);
-    partIds.forEach((partId, index) => {
-      const geometry = surfaceGeometry(surfaces.get(partId));
+    for (const partId of partIds) {
+      const surface = surfaces.get(partId);
+      const geometry = surfaceGeometry(surface);
       const material = new THREE.MeshStandardMaterial({
-        color: partColor(index),
+        color: partColor(partId),
         roughness: 0.7,
         metalness: 0.0,
         // Push the faces back a little so the outline edges win the depth test.
@@ -220,18 +299,23 @@ export class AssemblyView {
       const mesh = new THREE.Mesh(geometry, material);
       mesh.name = `part ${partId}`;
       mesh.userData.partId = partId;
+      mesh.userData.edgeColor = EDGE_COLOR;
       const edges = new THREE.LineSegments(
         new THREE.EdgesGeometry(geometry, 30),
-        new THREE.LineBasicMaterial({ color: 0x101215, transparent: true, opacity: 0.55 }),
+        new THREE.LineBasicMaterial({ color: EDGE_COLOR, transparent: true, opacity: 0.55 }),
       );
       mesh.add(edges);
       this.#content.add(mesh);
       this.#meshes.set(partId, mesh);
-    });
+      // Exploded view: every part moves away from the assembly's centre along the line through
+      // its centroid, proportionally to its distance (the usual exploded drawing).
+      const centroid = new THREE.Vector3(...surface.voxelSum).divideScalar(surface.voxelCount);
+      this.#explodeOffsets.set(partId, centroid.sub(center).multiplyScalar(EXPLODE_SCALE));
+    }
   }
 
   #addGrid(min, max, offset) {
-    const extent = Math.max(max[0] - min[0], max[2] - min[2]);
+    const extent = Math.max(max[0] - min[0], max[2] - min[2]) * (1 + EXPLODE_SCALE);
     // An even size keeps grid lines on integer coordinates, i.e. on voxel boundaries.
     const size = 2 * Math.ceil((extent + 4) / 2);
     const grid = new THREE.GridHelper(size, size, 0x59606e, 0x353a44);
@@ -240,48 +324,58 @@ export class AssemblyView {
     this.#scene.add(grid);
   }
 
-  #fitCamera(min, max, offset) {
-    const box = new THREE.Box3(new THREE.Vector3(...min), new THREE.Vector3(...max));
-    box.translate(offset);
+  /** Puts the camera in front of `box` from the usual three-quarter view. */
+  #fitCamera(box) {
     const center = box.getCenter(new THREE.Vector3());
+    const distance = this.#fitDistance(box);
+    const viewDirection = new THREE.Vector3(1, 0.85, 1.5).normalize();
+    this.#camera.position.copy(center).addScaledVector(viewDirection, distance);
+    this.#controls.target.copy(center);
+    this.#setDepthRange(distance);
+    this.#controls.update();
+    this.#framed = { center, distance };
+  }
+
+  /** What the camera was last fitted to, so explode changes can keep the same framing. */
+  #framed = null;
+
+  #fitDistance(box) {
     const radius = Math.max(box.getSize(new THREE.Vector3()).length() / 2, 1);
     // The narrower of the vertical and horizontal fields of view decides what fits.
     const verticalHalfFov = THREE.MathUtils.degToRad(this.#camera.fov / 2);
     const horizontalHalfFov = Math.atan(Math.tan(verticalHalfFov) * this.#camera.aspect);
-    const distance = (radius / Math.sin(Math.min(verticalHalfFov, horizontalHalfFov))) * 1.25;
-    const viewDirection = new THREE.Vector3(1, 0.85, 1.5).normalize();
-    this.#camera.position.copy(center).addScaledVector(viewDirection, distance);
+    return (radius / Math.sin(Math.min(verticalHalfFov, horizontalHalfFov))) * 1.25;
+  }
+
+  #setDepthRange(distance) {
     this.#camera.near = distance / 100;
     this.#camera.far = distance * 50;
     this.#camera.updateProjectionMatrix();
-    this.#controls.target.copy(center);
     this.#controls.maxDistance = distance * 10;
-    this.#controls.update();
   }
 
   /** Highlights the key (or the witness group on failure) and prepares the removal animation. */
   applyReport(report) {
     if (!this.available) return;
-    const keyId = report.key;
-    const witnessParts = new Set(report.witness?.parts ?? []);
+    this.#keyId = report?.key ?? null;
+    const witnessParts = new Set(report?.witness?.parts ?? []);
     for (const [partId, mesh] of this.#meshes) {
-      const isKey = partId === keyId;
+      const isKey = partId === this.#keyId;
       const dimmed = witnessParts.size > 0 && !witnessParts.has(partId);
       const material = mesh.material;
-      if (isKey) {
-        material.color.copy(KEY_COLOR);
-        material.emissive.copy(KEY_COLOR).multiplyScalar(0.35);
-        mesh.children[0].material.color.set(0xfff3c4);
-        mesh.children[0].material.opacity = 1;
-      }
-      material.transparent = dimmed;
-      material.opacity = dimmed ? 0.18 : 1;
-      material.depthWrite = !dimmed;
+      const edges = mesh.children[0].material;
+      material.color.copy(isKey ? KEY_COLOR : partColor(partId));
+      material.emissive.copy(isKey ? KEY_COLOR : new THREE.Color(0)).multiplyScalar(isKey ? 0.35 : 0);
+      mesh.userData.edgeColor = isKey ? KEY_EDGE_COLOR : EDGE_COLOR;
+      edges.color.set(mesh.userData.edgeColor);
+      mesh.userData.baseEdgeOpacity = dimmed ? 0.12 : (isKey ? 1 : 0.55);
+      mesh.userData.baseOpacity = dimmed ? 0.18 : 1;
       material.needsUpdate = true;
-      if (dimmed) mesh.children[0].material.opacity = 0.12;
     }
-    this.#motions = removalMotions(report);
+    this.#motions = removalMotions(report ?? {});
     this.setDisassemblyStep(0);
+    // Parts leaving along their paths should stay in the picture: frame their way out too.
+    if (this.#motions.size > 0 && this.#meshes.size > 0) this.#fitCamera(this.#framingBox());
   }
 
   /**
@@ -290,18 +384,122 @@ export class AssemblyView {
    * which has no path, stays.
    */
   setDisassemblyStep(step) {
+    this.#step = Number.isFinite(step) ? Math.max(step, 0) : 0;
+    this.#updatePositions();
+  }
+
+  /**
+   * Exploded view, composable with the disassembly: 0 = assembled, 1 = every part
+   * 1 + EXPLODE_SCALE times as far from the centre. The camera keeps its direction and zoom
+   * relative to the assembly's size, so the whole exploded assembly stays in view.
+   */
+  setExploded(factor) {
+    const clamped = THREE.MathUtils.clamp(Number(factor) || 0, 0, 1);
+    if (clamped === this.#exploded) return;
+    this.#exploded = clamped;
+    this.#updatePositions();
+    this.#reframe();
+  }
+
+  /** Every mesh at its exploded position plus its removal motion; the moving part outlined. */
+  #updatePositions() {
+    if (!this.available) return;
+    const moving = new THREE.Vector3();
     for (const [partId, mesh] of this.#meshes) {
       const motion = this.#motions.get(partId);
-      if (!motion) {
-        mesh.position.set(0, 0, 0);
+      let isMoving = false;
+      let fade = 1;
+      if (motion) {
+        const progress = THREE.MathUtils.clamp(this.#step - motion.index, 0, 1);
+        mesh.visible = progress < 1 || motion.waypoints.length === 1;
+        moving.copy(pointAlong(motion.waypoints, progress));
+        isMoving = progress > 0 && progress < 1;
+        // Past the end of its path the part runs out and fades away.
+        if (progress > motion.fadeFrom && motion.fadeFrom < 1) fade = 1 - (progress - motion.fadeFrom) / (1 - motion.fadeFrom);
+      } else {
         mesh.visible = true;
-        continue;
+        moving.set(0, 0, 0);
       }
-      const progress = THREE.MathUtils.clamp(step - motion.index, 0, 1);
-      mesh.visible = progress < 1 || motion.waypoints.length === 1;
-      mesh.position.copy(pointAlong(motion.waypoints, progress));
+      this.#setFade(mesh, fade);
+      mesh.position.copy(this.#explodeOffsets.get(partId)).multiplyScalar(this.#exploded).add(moving);
+      const edges = mesh.children[0].material;
+      edges.color.set(isMoving ? MOVING_EDGE_COLOR : mesh.userData.edgeColor);
     }
+    // Exploding moves the lower parts down: lift everything so the lowest stays on the floor.
+    this.#lift.position.y = Math.max(this.#floorY - this.#explodedBox().min.y, 0);
+    this.#container.dataset.step = this.#step.toFixed(2);
+    this.#container.dataset.exploded = this.#exploded.toFixed(2);
     this.requestRender();
+  }
+
+  /** Multiplies the part's own opacity (1, or dimmed for a witness) by `fade`. */
+  #setFade(mesh, fade) {
+    const material = mesh.material;
+    const base = mesh.userData.baseOpacity ?? 1;
+    const opacity = base * fade;
+    const transparent = opacity < 1;
+    if (material.transparent !== transparent) material.needsUpdate = true;
+    material.transparent = transparent;
+    material.opacity = opacity;
+    material.depthWrite = !transparent;
+    mesh.children[0].material.opacity = (mesh.userData.baseEdgeOpacity ?? 0.55) * fade;
+  }
+
+  /** What the camera frames: the parts as exploded, and where their removal paths take them. */
+  #framingBox() {
+    const box = this.#explodedBox();
+    const partBox = new THREE.Box3();
+    for (const [partId, mesh] of this.#meshes) {
+      const motion = this.#motions.get(partId);
+      if (!motion || motion.waypoints.length < 2) continue;
+      partBox.copy(mesh.geometry.boundingBox)
+        .translate(this.#content.position)
+        .translate(this.#explodeOffsets.get(partId).clone().multiplyScalar(this.#exploded))
+        .translate(motion.pathEnd);
+      box.union(partBox);
+    }
+    return box.translate(new THREE.Vector3(0, this.#lift.position.y, 0));
+  }
+
+  /** The bounds of all parts at the current explode factor, before the lift (removal motions left out). */
+  #explodedBox() {
+    const box = new THREE.Box3();
+    const partBox = new THREE.Box3();
+    for (const [partId, mesh] of this.#meshes) {
+      partBox.copy(mesh.geometry.boundingBox)
+        .translate(this.#content.position)
+        .translate(this.#explodeOffsets.get(partId).clone().multiplyScalar(this.#exploded));
+      box.union(partBox);
+    }
+    return box;
+  }
+
+  /** Keeps the user's viewing direction and relative zoom while the exploded assembly grows or shrinks. */
+  #reframe() {
+    if (!this.#framed || this.#meshes.size === 0) return;
+    const box = this.#framingBox();
+    const center = box.getCenter(new THREE.Vector3());
+    const distance = this.#fitDistance(box);
+    const ratio = distance / this.#framed.distance;
+    const offset = this.#camera.position.clone().sub(this.#controls.target).multiplyScalar(ratio);
+    this.#controls.target.copy(center);
+    this.#camera.position.copy(center).add(offset);
+    this.#setDepthRange(Math.max(distance, offset.length()));
+    this.#controls.update();
+    this.#framed = { center, distance };
+    this.requestRender();
+  }
+
+  /** Positions of the visible parts (for tests and debugging): { partId: [x, y, z] } in scene units. */
+  partPositions() {
+    const positions = {};
+    const world = new THREE.Vector3();
+    for (const [partId, mesh] of this.#meshes) {
+      if (!mesh.visible) continue;
+      mesh.getWorldPosition(world);
+      positions[partId] = world.toArray().map((value) => Math.round(value * 1000) / 1000);
+    }
+    return positions;
   }
 
   clear() {
@@ -315,6 +513,11 @@ export class AssemblyView {
     this.#content.clear();
     this.#meshes.clear();
     this.#motions = new Map();
+    this.#explodeOffsets.clear();
+    this.#keyId = null;
+    this.#step = 0;
+    this.#framed = null;
+    this.#lift.position.set(0, 0, 0);
     if (!this.available) return;
     this.#showNotice('');
     const grid = this.#scene.getObjectByName('grid');
@@ -327,12 +530,29 @@ export class AssemblyView {
     this.requestRender();
   }
 
+  /** Frees the GPU resources and removes the canvas; the view cannot be used afterwards. */
+  dispose() {
+    if (this.#disposed) return;
+    this.clear();
+    this.#disposed = true;
+    if (this.#frameRequest) cancelAnimationFrame(this.#frameRequest);
+    this.#frameRequest = 0;
+    this.#resizeObserver?.disconnect();
+    this.#controls?.dispose();
+    if (this.#renderer) {
+      this.#renderer.dispose();
+      this.#renderer.forceContextLoss();
+      this.#renderer.domElement.remove();
+    }
+    this.#hoverLabel?.remove();
+  }
+
   /** Renders on demand (at most once per frame) instead of spinning a render loop. */
   requestRender() {
     if (!this.available || this.#frameRequest) return;
     this.#frameRequest = requestAnimationFrame(() => {
       this.#frameRequest = 0;
-      this.#renderer.render(this.#scene, this.#camera);
+      if (this.available) this.#renderer.render(this.#scene, this.#camera);
     });
   }
 
@@ -354,14 +574,14 @@ export class AssemblyView {
     this.#raycaster.setFromCamera(pointer, this.#camera);
     const hit = this.#raycaster
       .intersectObjects([...this.#meshes.values()], false)
-      .find((candidate) => candidate.object.visible && candidate.object.material.opacity === 1);
+      .find((candidate) => candidate.object.visible && (candidate.object.userData.baseOpacity ?? 1) === 1);
     this.#hoverLabel.hidden = !hit;
-    if (hit) this.#hoverLabel.textContent = `part ${hit.object.userData.partId}`;
+    if (hit) {
+      const partId = hit.object.userData.partId;
+      this.#hoverLabel.textContent = partId === this.#keyId ? `part ${partId} (key)` : `part ${partId}`;
+    }
   }
 }
-
-/** How far a part keeps going after its last move before it disappears, in voxels. */
-const RUN_OUT_VOXELS = 2;
 
 /**
  * The removal motion of each part, from the report's disassembly: the waypoints of its path
@@ -379,20 +599,28 @@ function removalMotions(report) {
       const step = directionVector(move.dir, report.baseDirections).multiplyScalar(Number(move.steps) || 0);
       waypoints.push(waypoints[waypoints.length - 1].clone().add(step));
     }
+    const pathEnd = waypoints[waypoints.length - 1].clone();
+    const pathLength = polylineLength(waypoints);
+    let fadeFrom = 1;
     if (path.length > 0) {
       const last = directionVector(path[path.length - 1].dir, report.baseDirections);
-      waypoints.push(waypoints[waypoints.length - 1].clone().addScaledVector(last, RUN_OUT_VOXELS));
+      waypoints.push(pathEnd.clone().addScaledVector(last, RUN_OUT_VOXELS));
+      fadeFrom = pathLength / (pathLength + RUN_OUT_VOXELS);
     }
-    motions.set(partId, { index, waypoints });
+    motions.set(partId, { index, waypoints, pathEnd, fadeFrom });
   });
   return motions;
 }
 
-/** The point at `fraction` (0..1) of the polyline's length. */
-function pointAlong(waypoints, fraction) {
+function polylineLength(waypoints) {
   let total = 0;
   for (let i = 1; i < waypoints.length; i += 1) total += waypoints[i].distanceTo(waypoints[i - 1]);
-  let remaining = fraction * total;
+  return total;
+}
+
+/** The point at `fraction` (0..1) of the polyline's length. */
+function pointAlong(waypoints, fraction) {
+  let remaining = fraction * polylineLength(waypoints);
   for (let i = 1; i < waypoints.length; i += 1) {
     const length = waypoints[i].distanceTo(waypoints[i - 1]);
     if (remaining <= length && length > 0) return waypoints[i - 1].clone().lerp(waypoints[i], remaining / length);
@@ -401,3 +629,227 @@ function pointAlong(waypoints, fraction) {
   return waypoints[waypoints.length - 1].clone();
 }
 
+// ---------------------------------------------------------------------------------------------
+// Playback: a clock that moves the disassembly step, and the controls that drive it.
+
+/** Steps per second at speed 1: one part leaves per second. */
+const STEPS_PER_SECOND = 1;
+/** A looping animation rests this long when fully assembled or fully taken apart. */
+const LOOP_PAUSE_SECONDS = 0.9;
+/** A frame after a long stall (hidden tab) does not jump the animation ahead. */
+const MAX_FRAME_SECONDS = 0.1;
+
+/**
+ * Plays the disassembly step from 0 (assembled) to `length` (every part but the last removed).
+ * Without `loop` it stops at the end; with `loop` it rests, plays back to assembled (the
+ * assembly is the disassembly reversed), rests, and starts again. `onStep(step)` on every
+ * change, `onPlayingChange(playing)` when it starts or stops.
+ */
+export class DisassemblyPlayer {
+  #length = 0;
+  #step = 0;
+  #direction = 1;
+  #restSeconds = 0;
+  #playing = false;
+  #frameRequest = 0;
+  #lastTime = 0;
+  #onStep;
+  #onPlayingChange;
+  speed = 1;
+  loop = false;
+
+  constructor({ onStep = () => {}, onPlayingChange = () => {} } = {}) {
+    this.#onStep = onStep;
+    this.#onPlayingChange = onPlayingChange;
+  }
+
+  get length() {
+    return this.#length;
+  }
+
+  get step() {
+    return this.#step;
+  }
+
+  get playing() {
+    return this.#playing;
+  }
+
+  /** A new disassembly of `length` steps: back to assembled, stopped. */
+  setLength(length) {
+    this.pause();
+    this.#length = Math.max(Number(length) || 0, 0);
+    this.#direction = 1;
+    this.seek(0);
+  }
+
+  seek(step) {
+    this.#step = Math.min(Math.max(Number(step) || 0, 0), this.#length);
+    this.#onStep(this.#step);
+  }
+
+  play() {
+    if (this.#playing || this.#length <= 0) return;
+    // Play from the end means: start again (or, looping, go back the way it came).
+    if (this.#step >= this.#length) {
+      if (this.loop) this.#direction = -1;
+      else this.seek(0);
+    }
+    if (this.#step <= 0) this.#direction = 1;
+    this.#playing = true;
+    this.#restSeconds = 0;
+    this.#lastTime = 0;
+    this.#frameRequest = requestAnimationFrame((time) => this.#tick(time));
+    this.#onPlayingChange(true);
+  }
+
+  pause() {
+    if (!this.#playing) return;
+    this.#playing = false;
+    cancelAnimationFrame(this.#frameRequest);
+    this.#frameRequest = 0;
+    this.#onPlayingChange(false);
+  }
+
+  toggle() {
+    if (this.#playing) this.pause();
+    else this.play();
+  }
+
+  dispose() {
+    this.pause();
+    this.#onStep = () => {};
+    this.#onPlayingChange = () => {};
+  }
+
+  #tick(time) {
+    if (!this.#playing) return;
+    const seconds = this.#lastTime ? Math.min((time - this.#lastTime) / 1000, MAX_FRAME_SECONDS) : 0;
+    this.#lastTime = time;
+    if (this.#restSeconds > 0) {
+      this.#restSeconds -= seconds;
+    } else {
+      const next = this.#step + this.#direction * seconds * STEPS_PER_SECOND * this.speed;
+      const atEnd = this.#direction > 0 ? next >= this.#length : next <= 0;
+      this.seek(next);
+      if (atEnd) {
+        if (!this.loop) {
+          this.pause();
+          return;
+        }
+        this.#direction = -this.#direction;
+        this.#restSeconds = LOOP_PAUSE_SECONDS;
+      }
+    }
+    this.#frameRequest = requestAnimationFrame((next) => this.#tick(next));
+  }
+}
+
+function formatMoves(path) {
+  return (path ?? []).map((move) => `${move.dir}×${move.steps}`).join(', then ');
+}
+
+/**
+ * What the disassembly shows at `step`: `{ text, partId, index, moves }`, e.g. "removing part 3
+ * (2 of 8)" with moves "+z×1, then -x×2"; "assembled" at 0 and "part 9 left" at the end.
+ */
+export function describeDisassemblyStep(disassembly, step) {
+  const order = disassembly?.order ?? [];
+  if (order.length < 2) return { text: '', partId: null, index: -1, moves: '' };
+  if (step <= 0) return { text: 'assembled', partId: null, index: -1, moves: '' };
+  const index = Math.min(Math.floor(step), order.length - 1);
+  if (index >= order.length - 1) {
+    return { text: `part ${order[order.length - 1]} left`, partId: order[order.length - 1], index, moves: '' };
+  }
+  return {
+    text: `removing part ${order[index]} (${index + 1} of ${order.length - 1})`,
+    partId: order[index],
+    index,
+    moves: formatMoves(disassembly.paths?.[index]),
+  };
+}
+
+/**
+ * Wires playback controls to `view`. `elements`: `range` (input[type=range], the step),
+ * `label` (where describeDisassemblyStep's text goes), and optional `moves` (the moving part's
+ * path), `playButton`, `speedSelect` (values are speed factors), `loopCheckbox`, `explodedRange`
+ * (0..1), `root` (gets data-playing). `onStep({ step, index, partId })` is told about every
+ * change (e.g. to highlight the current removal in a list). Returns { setDisassembly, play,
+ * pause, seek, setExploded, player, dispose }.
+ */
+export function createPlaybackControls(view, elements, { onStep = () => {}, loop = false } = {}) {
+  const { range, label, moves, playButton, speedSelect, loopCheckbox, explodedRange, root } = elements;
+  let disassembly = null;
+
+  const player = new DisassemblyPlayer({
+    onStep(step) {
+      view.setDisassemblyStep(step);
+      if (range && Number(range.value) !== step) range.value = String(step);
+      const described = describeDisassemblyStep(disassembly, step);
+      if (label) label.textContent = described.text;
+      if (moves) moves.textContent = described.moves;
+      onStep({ step, index: described.index, partId: described.partId });
+    },
+    onPlayingChange(playing) {
+      if (playButton) {
+        playButton.textContent = playing ? 'Pause' : 'Play';
+        playButton.setAttribute('aria-pressed', String(playing));
+      }
+      if (root) root.dataset.playing = String(playing);
+    },
+  });
+  player.loop = loopCheckbox ? loopCheckbox.checked : loop;
+  if (speedSelect) player.speed = Number(speedSelect.value) || 1;
+
+  const listeners = [];
+  const listen = (target, type, handler) => {
+    if (!target) return;
+    target.addEventListener(type, handler);
+    listeners.push(() => target.removeEventListener(type, handler));
+  };
+  // Dragging the slider takes over from the clock.
+  listen(range, 'input', () => {
+    player.pause();
+    player.seek(Number(range.value));
+  });
+  listen(playButton, 'click', () => player.toggle());
+  listen(speedSelect, 'change', () => { player.speed = Number(speedSelect.value) || 1; });
+  listen(loopCheckbox, 'change', () => { player.loop = loopCheckbox.checked; });
+  listen(explodedRange, 'input', () => view.setExploded(Number(explodedRange.value)));
+
+  function setDisassembly(next) {
+    const removable = (next?.order?.length ?? 0) - 1;
+    disassembly = removable > 0 && view.available ? next : null;
+    const length = disassembly ? removable : 0;
+    if (range) {
+      range.disabled = !disassembly;
+      range.max = String(Math.max(length, 1));
+    }
+    if (playButton) playButton.disabled = !disassembly;
+    if (explodedRange) {
+      explodedRange.disabled = !view.available;
+      view.setExploded(Number(explodedRange.value));
+    }
+    player.setLength(length);
+  }
+
+  return {
+    player,
+    setDisassembly,
+    play: () => player.play(),
+    pause: () => player.pause(),
+    seek: (step) => {
+      player.pause();
+      player.seek(step);
+    },
+    setExploded(factor) {
+      const clamped = Math.min(Math.max(Number(factor) || 0, 0), 1);
+      if (explodedRange) explodedRange.value = String(clamped);
+      view.setExploded(clamped);
+    },
+    dispose() {
+      player.dispose();
+      for (const remove of listeners) remove();
+    },
+  };
+}

@@ -78,9 +78,10 @@ export class CoreWorker {
 
   /**
    * Runs `op` (see worker.js) on `text`; resolves with `{ value, elapsedMs }`. `onProgress(value)`
-   * receives the worker's progress messages for this request.
+   * receives the worker's progress messages for this request. `bytes` (a Uint8Array, e.g. a mesh)
+   * is copied to the worker, so the caller keeps its own copy for the next request.
    */
-  run(op, text, options = {}, { onProgress } = {}) {
+  run(op, text, options = {}, { onProgress, bytes } = {}) {
     if (!this.#worker) {
       // We gave up restarting after repeated failures; a new request is worth one more try.
       this.#failedStarts = 0;
@@ -89,7 +90,9 @@ export class CoreWorker {
     const id = this.#nextId++;
     return new Promise((resolve, reject) => {
       this.#pending.set(id, { resolve, reject, onProgress });
-      this.#worker.postMessage({ type: 'run', id, op, text, options });
+      const message = { type: 'run', id, op, text, options };
+      if (bytes !== undefined) message.bytes = bytes;
+      this.#worker.postMessage(message);
     });
   }
 
@@ -121,7 +124,7 @@ export class CoreWorker {
           this.#crash(message.message);
           break;
         }
-        this.#settle(message.id, (request) => request.reject(new Error(message.message)));
+        this.#settle(message.id, (request) => request.reject(Object.assign(new Error(message.message), message.code ? { code: message.code } : {})));
         // The module trapped or aborted: its state is gone, so is its usefulness.
         if (message.fatal) this.#crash(message.message);
         break;

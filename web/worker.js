@@ -6,8 +6,14 @@
 //
 // Protocol (plain structured-clone messages):
 //   in:  { type: 'init' }
-//        { type: 'run', id, op, text, options }
+//        { type: 'run', id, op, text, options, bytes? }
 //          op 'check' | 'parse'   text = the assembly, options = the core's options
+//          op 'voxelize'          bytes = the mesh (OBJ or STL), options = { resolution, source };
+//                                 result { text (the shape's JSON document), voxels, size }
+//          op 'to-puz'            text = a voxel assembly; result = its .puz text
+//          op 'document-json'     text = any assembly; result = its JSON document as text
+//          op 'export'            text = the assembly, options = exportAssembly's { format,
+//                                 part, voxelSize, source }; result = bytes (transferred)
 //          op 'design'            text = the voxel shape, options = designVoxel's options (no onProgress)
 //          op 'session-open'      text = the voxel shape, options = designSession's options
 //          op 'session-next' | 'session-back' | 'session-close'
@@ -17,7 +23,8 @@
 //                                                targetParts, elapsedSeconds }, at most ~10 per
 //                                                second, always including the last one
 //        { type: 'result', id, value, elapsedMs }   elapsedMs: time spent in the core
-//        { type: 'error', id, message, fatal? }   id is null for a failed init.
+//        { type: 'error', id, message, fatal?, code? }   id is null for a failed init; code is
+//                                                the core's DesiaError code when it has one.
 // `fatal: true` says the module itself is broken (a WebAssembly trap or abort): the page should
 // start a fresh worker instead of sending more work here.
 //
@@ -49,6 +56,25 @@ const OPERATIONS = {
   check: (core, text, options) => [core.check(text, options ?? {}), []],
   parse: (core, text, options) => withTransferableLabels(core.parseDocument(text, options ?? {})),
   design: designOperation,
+  voxelize: (core, text, options, { bytes }) => {
+    if (!(bytes instanceof Uint8Array)) throw Object.assign(new Error('voxelize: no mesh bytes were sent'), { code: 'bad-input' });
+    const document = core.voxelize(bytes, options ?? {});
+    // The page keeps the shape as JSON text (what the design panel and the checks take) and
+    // shows its size; stringifying here spares the page a large object copy.
+    const value = { text: JSON.stringify(document), voxels: document.parts?.[0]?.voxelCount ?? 0, size: document.voxel?.size ?? [] };
+    return [value, []];
+  },
+  'to-puz': (core, text, options) => [core.toPuz(text, options ?? {}), []],
+  'document-json': (core, text, options) => [JSON.stringify(core.parseDocument(text, options ?? {})), []],
+  export: (core, text, options) => {
+    if (typeof core.exportAssembly !== 'function') {
+      throw Object.assign(new Error('this build of the core has no exporter (rebuild: bash scripts/build.sh wasm)'), { code: 'unsupported' });
+    }
+    const exported = core.exportAssembly(text, options ?? {});
+    // Transfer a buffer that holds exactly these bytes (a view into a larger one would ship it all).
+    const bytes = exported.byteOffset === 0 && exported.byteLength === exported.buffer.byteLength ? exported : exported.slice();
+    return [bytes, [bytes.buffer]];
+  },
   'session-open': (core, text, options) => {
     closeSession();
     session = core.designSession(text, options ?? {});
@@ -74,7 +100,7 @@ const OPERATIONS = {
 };
 
 /** Runs designVoxel, posting throttled progress for request `id`. */
-function designOperation(core, text, options, id) {
+function designOperation(core, text, options, { id }) {
   const progress = progressPoster(id);
   const result = core.designVoxel(text, { ...(options ?? {}), onProgress: progress.report });
   progress.flush();
@@ -181,7 +207,7 @@ async function handleInit() {
   }
 }
 
-async function handleRun({ id, op, text, options }) {
+async function handleRun({ id, op, text, options, bytes }) {
   const operation = Object.hasOwn(OPERATIONS, op) ? OPERATIONS[op] : null;
   if (!operation) {
     self.postMessage({ type: 'error', id, message: `unknown operation: ${op}` });
@@ -196,13 +222,14 @@ async function handleRun({ id, op, text, options }) {
   }
   try {
     const started = performance.now();
-    const [value, transfer] = operation(core, String(text ?? ''), options, id);
+    const [value, transfer] = operation(core, String(text ?? ''), options, { id, bytes });
     const elapsedMs = performance.now() - started;
     self.postMessage({ type: 'result', id, value, elapsedMs }, transfer);
   } catch (error) {
     const fatal = isFatal(error);
     const message = fatal ? `internal error in the WebAssembly core: ${messageOf(error)}` : messageOf(error);
-    self.postMessage({ type: 'error', id, message, fatal });
+    // `code` is the core's error code ('bad-input', 'too-large', …) when there is one.
+    self.postMessage({ type: 'error', id, message, fatal, code: typeof error?.code === 'string' ? error.code : undefined });
   }
 }
 

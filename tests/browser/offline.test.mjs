@@ -1,0 +1,149 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The playground offline in headless Chromium: after one visit the service worker (web/sw.js)
+// holds every file the playground needs; with the server gone, and then with the browser
+// offline as well, a reload still shows the page, its worker loads the WebAssembly core from the
+// cache, and examples (a puzzle, a shape and a mesh) are checked and voxelized.
+//
+//   node --test tests/browser/offline.test.mjs
+//
+// Needs what playground.test.mjs needs. Screenshots go to test-artifacts/offline-*.png.
+
+import { after, before, describe, it } from 'node:test';
+import assert from 'node:assert/strict';
+import { readFile, readdir } from 'node:fs/promises';
+import path from 'node:path';
+import {
+  REPO_ROOT, assertInterlockingWithKey, checkPrerequisites, openBrowser, screenshot, waitForReady,
+} from './support.mjs';
+
+const FIRST_EXAMPLE = 'Cube_4x4x4_K9.puz';
+const SHAPE_EXAMPLE = 'Cube_4x4x4_origin.puz';
+const SAVE_TIMEOUT_MS = 60_000;
+
+/**
+ * Every module the page imports, directly or not, found by reading the import statements from
+ * web/main.js on (relative imports only; `three` is checked on its own).
+ */
+async function pageModules() {
+  const found = new Set();
+  const queue = ['main.js'];
+  while (queue.length > 0) {
+    const file = queue.pop();
+    if (found.has(file)) continue;
+    found.add(file);
+    const source = await readFile(path.join(REPO_ROOT, 'web', file), 'utf8');
+    for (const [, target] of source.matchAll(/\bfrom\s+'\.\/([\w-]+\.js)'/g)) queue.push(target);
+  }
+  return [...found].sort();
+}
+
+/** The URLs in the newest complete snapshot of the service worker's caches. */
+async function cachedUrls(page) {
+  return page.evaluate(async () => {
+    const urls = new Set();
+    for (const name of await caches.keys()) {
+      if (!name.startsWith('desia-playground-')) continue;
+      const cache = await caches.open(name);
+      for (const request of await cache.keys()) urls.add(request.url);
+    }
+    return [...urls];
+  });
+}
+
+describe('playground offline in headless Chromium', { timeout: 120_000 }, () => {
+  let browser;
+  let server;
+  let context;
+  let page;
+  const pageErrors = [];
+  /** Responses after the server was stopped, and whether the service worker gave them. */
+  const responsesWhileDown = [];
+  let serverDown = false;
+
+  before(async () => {
+    checkPrerequisites([FIRST_EXAMPLE, SHAPE_EXAMPLE]);
+    browser = await openBrowser();
+    ({ server, context, page } = browser);
+    page.on('pageerror', (error) => pageErrors.push(error.message));
+    page.on('response', (response) => {
+      if (serverDown) responsesWhileDown.push({ url: response.url(), fromServiceWorker: response.fromServiceWorker(), status: response.status() });
+    });
+  });
+
+  after(async () => {
+    await browser?.close();
+  });
+
+  it('keeps every file of the playground once it has loaded', async () => {
+    await page.goto(server.url);
+    assertInterlockingWithKey(await waitForReady(page, FIRST_EXAMPLE), 1);
+    await page.waitForFunction(() => ['ready', 'unavailable'].includes(document.body.dataset.offline), null, { timeout: SAVE_TIMEOUT_MS });
+    const indicator = await page.evaluate(() => ({
+      state: document.body.dataset.offline,
+      text: document.querySelector('#offline-status').textContent,
+      hidden: document.querySelector('#offline-status').hidden,
+      controlled: navigator.serviceWorker.controller !== null,
+    }));
+    assert.equal(indicator.state, 'ready', `offline cache: ${JSON.stringify(indicator)}`);
+    assert.equal(indicator.text, 'Available offline');
+    assert.equal(indicator.hidden, false);
+    assert.equal(indicator.controlled, true, 'the service worker controls the page');
+    await screenshot(page, 'offline-saved');
+
+    const cached = new Set(await cachedUrls(page));
+    const origin = new URL(server.url).origin;
+    const expected = [
+      '/web/', '/web/index.html', '/web/style.css', '/web/worker.js',
+      ...(await pageModules()).map((file) => `/web/${file}`),
+      '/wasm/index.js', '/dist/desia_wasm.js', '/dist/desia_wasm.wasm',
+      '/node_modules/three/build/three.module.js',
+      ...(await readdir(path.join(REPO_ROOT, 'examples/voxel'))).filter((file) => file.endsWith('.puz')).map((file) => `/examples/voxel/${file}`),
+      '/examples/meshes/torus.obj',
+    ];
+    const missing = expected.filter((file) => !cached.has(`${origin}${file}`));
+    assert.deepEqual(missing, [], 'files the offline playground would lack');
+    assert.ok([...cached].every((url) => url.startsWith(`${origin}/`)), 'only this origin is cached');
+  });
+
+  it('loads, starts its worker and checks examples with the server gone', async () => {
+    await server.stop();
+    serverDown = true;
+    await page.reload();
+    assertInterlockingWithKey(await waitForReady(page, FIRST_EXAMPLE), 1);
+    assert.equal(await page.evaluate(() => document.body.dataset.core), 'ready', 'the worker loaded the core');
+    await page.selectOption('#example-select', SHAPE_EXAMPLE);
+    const shape = await waitForReady(page, SHAPE_EXAMPLE);
+    assert.equal(shape.parts, '1');
+  });
+
+  it('loads, starts its worker, checks and voxelizes examples with the browser offline', async () => {
+    await context.setOffline(true);
+    assert.equal(await page.evaluate(() => navigator.onLine), false);
+    await page.goto(`${server.url}?example=${SHAPE_EXAMPLE}`);
+    const shape = await waitForReady(page, SHAPE_EXAMPLE);
+    assert.equal(shape.parts, '1');
+    assert.equal(await page.evaluate(() => document.body.dataset.core), 'ready', 'the worker loaded the core');
+    await page.selectOption('#example-select', FIRST_EXAMPLE);
+    const puzzle = await waitForReady(page, FIRST_EXAMPLE);
+    assertInterlockingWithKey(puzzle, 1);
+    assert.equal(puzzle.parts, '9');
+    await page.selectOption('#example-select', 'torus.obj');
+    await page.fill('#mesh-resolution', '16');
+    const torus = await waitForReady(page, 'torus_r16.json');
+    assert.equal(torus.parts, '1');
+    // The indicator still says so: the snapshot of the first visit is serving the page.
+    await page.waitForFunction(() => document.body.dataset.offline === 'ready', null, { timeout: SAVE_TIMEOUT_MS });
+    await screenshot(page, 'offline-reloaded');
+  });
+
+  it('served everything from the service worker and threw no page errors', () => {
+    assert.ok(responsesWhileDown.length > 0);
+    const fromNetwork = responsesWhileDown.filter((response) => !response.fromServiceWorker);
+    assert.deepEqual(fromNetwork, [], 'responses that did not come from the service worker');
+    for (const file of ['/web/main.js', '/web/worker.js', '/dist/desia_wasm.wasm', '/examples/meshes/torus.obj']) {
+      assert.ok(responsesWhileDown.some((response) => new URL(response.url).pathname === file), `${file} was served`);
+    }
+    assert.deepEqual(pageErrors, []);
+  });
+});

@@ -1,0 +1,86 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Offline support, the page's side: registers the service worker (web/sw.js) and, once the
+// playground has loaded, hands it the list of files to keep: everything this page loaded (its
+// modules, three.js, the style sheet), the worker's files (which the page cannot see load), the
+// core and every bundled example. The service worker fetches them all afresh and keeps them as
+// one snapshot; a small indicator then says the playground works offline.
+//
+// Only on http(s) pages (service workers need one; a file:// page simply runs online only).
+// For tests: body[data-offline] = '' | saving | ready | unavailable, #offline-status.
+
+import { byId } from './dom.js';
+
+/** Files the worker loads: resource timing of the page does not list them. */
+const WORKER_FILES = ['./worker.js', '../wasm/index.js', '../dist/desia_wasm.js', '../dist/desia_wasm.wasm'];
+/** The page under both of its names (a link to web/ and to web/index.html). */
+const PAGE_FILES = ['./', './index.html'];
+const SNAPSHOT_TIMEOUT_MS = 120_000;
+
+function setOfflineState(state, text, title = '') {
+  const status = byId('offline-status');
+  document.body.dataset.offline = state;
+  status.textContent = text;
+  status.title = title;
+  status.hidden = !text;
+}
+
+/** Same-origin files this page has loaded so far, without query or fragment. */
+function loadedFiles() {
+  const files = [];
+  for (const entry of performance.getEntriesByType('resource')) {
+    const url = new URL(entry.name);
+    // Blob URLs carry this origin too, but are not files: only http(s) requests are kept.
+    if (!/^https?:$/.test(url.protocol) || url.origin !== location.origin || url.search) continue;
+    url.hash = '';
+    files.push(url.href);
+  }
+  return files;
+}
+
+/** Registers the service worker; resolves with the registration, or null where there is none. */
+export async function registerServiceWorker() {
+  if (!/^https?:$/.test(location.protocol) || !('serviceWorker' in navigator)) return null;
+  try {
+    return await navigator.serviceWorker.register(new URL('./sw.js', import.meta.url), { scope: './' });
+  } catch (error) {
+    setOfflineState('unavailable', 'Online only', `The offline cache could not be set up: ${error.message}`);
+    return null;
+  }
+}
+
+/**
+ * Asks the active service worker to keep the playground's files; `extraUrls` are files the page
+ * may need later (the examples). Updates the indicator with the outcome.
+ */
+export async function keepForOffline(extraUrls = []) {
+  if (!/^https?:$/.test(location.protocol) || !('serviceWorker' in navigator)) return;
+  const registration = await navigator.serviceWorker.ready;
+  const worker = registration.active;
+  if (!worker) return;
+  const urls = [
+    ...PAGE_FILES.map((file) => new URL(file, import.meta.url).href),
+    ...WORKER_FILES.map((file) => new URL(file, import.meta.url).href),
+    ...loadedFiles(),
+    ...extraUrls.map((url) => new URL(url, location.href).href),
+  ];
+  setOfflineState('saving', 'Saving for offline…');
+  const channel = new MessageChannel();
+  const answer = new Promise((resolve) => {
+    const timer = setTimeout(() => resolve({ ok: false, message: 'the service worker did not answer', cached: false }), SNAPSHOT_TIMEOUT_MS);
+    channel.port1.onmessage = (event) => {
+      clearTimeout(timer);
+      resolve(event.data);
+    };
+  });
+  worker.postMessage({ type: 'snapshot', urls }, [channel.port2]);
+  const result = await answer;
+  if (result.ok) {
+    setOfflineState('ready', 'Available offline', `${result.files} files (${(result.bytes / 1048576).toFixed(1)} MiB) kept by the browser`);
+  } else if (result.cached) {
+    // Offline now, or the server is gone: an earlier snapshot is serving this page.
+    setOfflineState('ready', 'Available offline', `Kept from an earlier visit (could not refresh: ${result.message})`);
+  } else {
+    setOfflineState('unavailable', 'Online only', `Could not keep the files for offline use: ${result.message}`);
+  }
+}
