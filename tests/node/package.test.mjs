@@ -58,7 +58,23 @@ test('the tarball holds the package and nothing else', () => {
   const manifest = JSON.parse(fs.readFileSync(path.join(root, 'package.json'), 'utf8'));
   assert.deepEqual(manifest.dependencies ?? {}, {}, 'no hard dependencies');
   assert.equal(manifest.peerDependenciesMeta?.three?.optional, true, 'three is an optional peer (the viewer only)');
-  assert.equal(manifest.exports['./viewer'], './web/viewer.js');
+  assert.deepEqual(manifest.exports['./viewer'], { types: './web/viewer.d.ts', default: './web/viewer.js' });
+  assert.ok(shipped.includes('web/viewer.d.ts'), 'the viewer\'s types are shipped');
+});
+
+test("the viewer's declarations match what viewer.js exports and what mountViewer returns", () => {
+  const source = fs.readFileSync(path.join(root, 'web/viewer.js'), 'utf8');
+  const declarations = fs.readFileSync(path.join(root, 'web/viewer.d.ts'), 'utf8');
+  const exported = (text, pattern) => [...text.matchAll(pattern)].map((match) => match[1]).sort();
+  assert.deepEqual(exported(declarations, /^export (?:declare )?(?:function|class) (\w+)/gm),
+    exported(source, /^export (?:function|class) (\w+)/gm));
+  // The members of the handle object literal (4-space indented keys, getters and methods).
+  const handleSource = source.slice(source.indexOf('const handle = {'), source.indexOf('mountedViewers.set(host, handle)'));
+  const handleMembers = exported(handleSource, /^ {4}(?:get )?(\w+)\s*(?:\(|,|:)/gm);
+  const handleType = declarations.slice(declarations.indexOf('interface ViewerHandle'), declarations.indexOf('export function mountViewer'));
+  const declaredMembers = exported(handleType, /^ {2}(?:readonly )?(\w+)\s*[(:]/gm);
+  assert.ok(handleMembers.length >= 10, `found only ${handleMembers}`);
+  assert.deepEqual(declaredMembers, handleMembers);
 });
 
 test('installed from the tarball with no network, `desia` works in node by name', () => {
