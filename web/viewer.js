@@ -159,14 +159,19 @@ async function fetchAssemblyText(src, baseUri) {
   }
   let response;
   try {
-    response = await fetch(url, { credentials: 'same-origin' });
+    // No redirects: one could lead off this origin, and the browser would follow it before we saw.
+    response = await fetch(url, { credentials: 'same-origin', redirect: 'error' });
   } catch (error) {
-    throw new Error(`${name}: cannot fetch ${url.pathname}: ${error.message}`);
+    throw new Error(`${name}: cannot fetch ${url.pathname}: ${error.message} (redirects are not followed)`);
   }
   if (!response.ok) throw new Error(`${name}: cannot fetch ${url.pathname} (HTTP ${response.status})`);
   const declared = Number(response.headers.get('content-length'));
   if (declared > MAX_FILE_BYTES) throw new Error(`${name}: the file is too large (${(declared / 1048576).toFixed(1)} MiB)`);
   const buffer = await response.arrayBuffer();
+  // Content-Length may be absent (chunked responses): check what actually arrived too.
+  if (buffer.byteLength > MAX_FILE_BYTES) {
+    throw new Error(`${name}: the file is too large (${(buffer.byteLength / 1048576).toFixed(1)} MiB)`);
+  }
   try {
     return { name, text: new TextDecoder('utf-8', { fatal: true }).decode(buffer) };
   } catch {
@@ -454,7 +459,11 @@ export class DesiaViewerElement extends HTMLElement {
     if (!this.#viewer || oldValue === value) return;
     if (name === 'exploded') this.#viewer.setExploded(explodedFromAttribute(value));
     else if (name === 'loop') this.#viewer.setLoop(value !== null);
-    else if (name === 'src') this.#load();
+    else if (name === 'src' && value === null) {
+      // No file any more: show nothing rather than the previous puzzle.
+      this.#viewer.dispose();
+      this.#mount();
+    } else if (name === 'src') this.#load();
     else {
       // Control bar, graphs or autoplay changed: build the viewer again around the same file.
       this.#viewer.dispose();

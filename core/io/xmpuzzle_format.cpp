@@ -8,6 +8,7 @@
 
 #include "desia/error.h"
 #include "desia/export.h"
+#include "desia/mesh.h"
 #include "io/export_internals.h"
 
 namespace desia {
@@ -100,7 +101,10 @@ std::string xmpuzzleXml(const AssemblyDocument& document, const std::string& sou
   }
   if (voxelCharacters > kMaxExportBytes) throwExportTooLarge(source, "xmpuzzle file", voxelCharacters);
 
-  const std::string title = document.name.empty() ? "assembly" : document.name;
+  // A .puz has no name of its own: the file's stem names the result shape, as BurrTools users
+  // would name it.
+  const std::string stem = meshShapeName(source);
+  const std::string title = !document.name.empty() ? document.name : !stem.empty() ? stem : "assembly";
   std::string xml = "<?xml version=\"1.0\"?>\n<puzzle version=\"2\">\n <gridType type=\"0\"/>\n <colors/>\n <shapes>\n";
   xml += voxelElement(grid, whole, 0, title);
   std::string offsets;

@@ -539,6 +539,18 @@ TEST(ExportXmPuzzle, PiecesReproduceTheLabelsOfEveryReferencePuzzle) {
   }
 }
 
+TEST(ExportXmPuzzle, AnUnnamedPuzzleIsNamedAfterItsFile) {
+  AssemblyDocument document = loadReference("result_puz/Cube_4x4x4_K9.puz");
+  document.name.clear();
+  ExportOptions options;
+  options.source = "puzzles/Cube_4x4x4_K9.puz";
+  EXPECT_EQ(shapesOf(gunzipStored(exportAssembly(document, ExportFormat::XmPuzzle, options)).data)[0].name,
+            "Cube_4x4x4_K9");
+  options.source = "<input>";
+  EXPECT_EQ(shapesOf(gunzipStored(exportAssembly(document, ExportFormat::XmPuzzle, options)).data)[0].name,
+            "assembly");
+}
+
 TEST(ExportXmPuzzle, DocumentStructureAndEscapedNames) {
   const std::string json = R"({"format": "desia-assembly", "kind": "voxel", "name": "Tom & Jerry's <\"cube\">\nv2",
     "voxel": {"size": [3, 1, 1], "labels": [1, 2, 3]}})";
