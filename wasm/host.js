@@ -13,21 +13,50 @@
 //        { type: 'result', id, value }
 //        { type: 'error', id, message, code, fatal } id null: loading failed; fatal: the module
 //                                                    trapped, the client must start a fresh host
-// The client sends one 'run' at a time (see wasm/index.js); cancelling is terminating the worker,
+// The client sends one 'run' at a time (see wasm/client.js); cancelling is terminating the worker,
 // since a busy single-threaded WebAssembly worker cannot read a 'cancel' message.
 //
 // Transfers: voxel labels of returned documents travel as an Int32Array (the client turns them
 // back into the plain array the core returns) and exported files as a Uint8Array, both moved, not
 // copied.
 
+import { documentedCode } from './core.js';
+
 /** Progress is for eyes, not logs: ten messages a second are plenty. */
-const PROGRESS_INTERVAL_MS = 100;
+export const PROGRESS_INTERVAL_MS = 100;
 
 /** The methods of a design session the client may call by name. */
 const SESSION_METHODS = new Set(['state', 'childCount', 'preview', 'choose', 'next', 'back', 'check']);
 
 function hostError(message, code) {
   return Object.assign(new Error(message), { code });
+}
+
+/**
+ * A design's onProgress is called after every search node, thousands of times a second:
+ * `report(value)` sends the first value at once, then at most one per interval, and `flush()`
+ * sends the last unseen one, so the final numbers always arrive before the result. Shared with
+ * the playground's worker (web/worker.js).
+ */
+export function createProgressThrottle(send, intervalMs = PROGRESS_INTERVAL_MS) {
+  let latest = null;
+  let unsent = false;
+  let lastSentAt = -Infinity;
+  const sendLatest = () => {
+    send(latest);
+    unsent = false;
+    lastSentAt = performance.now();
+  };
+  return {
+    report(value) {
+      latest = value;
+      unsent = true;
+      if (performance.now() - lastSentAt >= intervalMs) sendLatest();
+    },
+    flush() {
+      if (unsent) sendLatest();
+    },
+  };
 }
 
 /**
@@ -41,37 +70,14 @@ export function createCoreHost(loadCore, post, { isCancelled = () => false } = {
   const sessions = new Map();
   let nextSessionId = 1;
 
-  /**
-   * onProgress is called after every search node, thousands of times a second: post the first
-   * at once, then at most one per interval, and flush() the last unseen one before the result.
-   */
-  function progressPoster(id) {
-    let latest = null;
-    let unsent = false;
-    let lastPostedAt = -Infinity;
-    const send = () => {
-      post({ type: 'progress', id, value: latest }, []);
-      unsent = false;
-      lastPostedAt = performance.now();
-    };
-    return {
-      report(value) {
-        latest = value;
-        unsent = true;
-        if (performance.now() - lastPostedAt >= PROGRESS_INTERVAL_MS) send();
-        // false stops the search (status 'cancelled'); in a worker nobody is left to read the
-        // answer when the client gave up: it terminates the worker instead.
-        return !isCancelled();
-      },
-      flush() {
-        if (unsent) send();
-      },
-    };
-  }
-
   function withProgress(id, run) {
-    const progress = progressPoster(id);
-    const result = run(progress.report);
+    const progress = createProgressThrottle((value) => post({ type: 'progress', id, value }, []));
+    const result = run((value) => {
+      progress.report(value);
+      // false stops the search (status 'cancelled'); in a worker nobody is left to read the
+      // answer when the client gave up: it terminates the worker instead.
+      return !isCancelled();
+    });
     progress.flush();
     return result;
   }
@@ -164,23 +170,36 @@ export function createCoreHost(loadCore, post, { isCancelled = () => false } = {
   };
 }
 
-/** message, code and fatal of anything the core or the loader threw. */
-function describeError(error) {
-  const message = error instanceof Error ? error.message || error.name : typeof error === 'number'
-    ? `internal error: uncaught native exception (${error})` : String(error);
-  const code = typeof error?.code === 'string' ? error.code : 'internal';
-  // A trap or an Emscripten abort leaves the instance unusable (the facade marks those fatal).
+/** Human-readable text for anything the core or the loader threw. */
+export function errorMessage(error) {
+  if (error instanceof Error) return error.message || error.name;
+  if (typeof error === 'number') return `internal error: uncaught native exception (${error})`;
+  return String(error);
+}
+
+/**
+ * message, code and fatal of anything the core or the loader threw; code is one of the package's
+ * documented codes. Fatal: the instance is not to be trusted any more, because it trapped or
+ * aborted (its runtime state is gone) or reported 'internal' (a bug in the core, whose state
+ * may be inconsistent). Input errors ('bad-input', 'too-large', 'unsupported') leave it usable.
+ * The same rule for the package's host and the playground's worker.
+ */
+export function describeError(error) {
+  const message = errorMessage(error);
+  const code = documentedCode(typeof error?.code === 'string' ? error.code : 'internal');
   const fatal = error?.fatal === true || (typeof WebAssembly === 'object' && error instanceof WebAssembly.RuntimeError)
-    || /^Aborted\(/.test(message);
+    || code === 'internal' || /^Aborted\(/.test(message);
   return { message, code, fatal };
 }
 
 /**
- * The value and its transfer list: the labels of a document (the value itself or its `document`
- * field) become an Int32Array, exported bytes go as they are.
+ * The value and its transfer list: the voxel labels of a document (the value itself or its
+ * `document` field) become an Int32Array that is moved, not copied; bytes (exported files) are
+ * moved as they are. Shared with the playground's worker.
  */
-function packForTransfer(value) {
+export function packForTransfer(value) {
   if (value instanceof Uint8Array) {
+    // Move a buffer that holds exactly these bytes (a view into a larger one would ship it all).
     const own = value.byteOffset === 0 && value.byteLength === value.buffer.byteLength ? value : value.slice();
     return [own, [own.buffer]];
   }
@@ -195,4 +214,12 @@ function packForTransfer(value) {
   if (value?.voxel) return [pack(value), transfer];
   if (value?.document?.voxel) return [{ ...value, document: pack(value.document) }, transfer];
   return [value, transfer];
+}
+
+/** The packed voxel labels (Int32Array) back as the plain array the core returns (in place). */
+export function unpackLabels(value) {
+  for (const document of [value, value?.document]) {
+    if (document?.voxel?.labels instanceof Int32Array) document.voxel.labels = Array.from(document.voxel.labels);
+  }
+  return value;
 }

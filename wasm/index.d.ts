@@ -195,9 +195,12 @@ export interface DesignSession {
   state(): DesignSessionState;
   /** The number of ranked children of the current node (generated on first call). */
   childCount(): number;
-  /** The assembly the n-th child (0 = best ranked) would give. */
+  /**
+   * The assembly the n-th child (0 = best ranked) would give. `n` must be an integer from 0 to
+   * 2^31 - 1 (else a DesiaError 'bad-input'); a child that does not exist is one too.
+   */
   preview(n: number): AssemblyDocument;
-  /** Moves to the n-th child. */
+  /** Moves to the n-th child (`n` as for preview). */
   choose(n: number): void;
   /** Moves to the best-ranked child; false when the node has none (go back). */
   next(): boolean;
@@ -255,7 +258,12 @@ export interface StructureDesignOptions {
   [option: string]: unknown;
 }
 
-/** The synchronous core, for workers and node scripts ({@link loadDesiaModule}). Every method throws a DesiaError for bad input. */
+/**
+ * The synchronous core, for workers and node scripts ({@link loadDesiaModule}). Every method
+ * throws a DesiaError for bad input. Options are undefined or a plain object; anything else, and
+ * any option name a function does not know, is a DesiaError with code 'bad-input' (the designers'
+ * option names are checked by the core).
+ */
 export interface DesiaCore {
   /** The interlocking check of .puz or JSON text; the same fields as `desia check --json`. */
   check(text: string, options?: CheckOptions): CheckReport;
@@ -308,6 +316,12 @@ export interface CreateOptions extends LoadOptions {
    * browsers it must be same-origin with the page (a rule of Web Workers).
    */
   workerUrl?: string | URL;
+  /**
+   * Milliseconds a worker may take to load the core (default 30000). A worker that has not
+   * loaded it by then is stopped and the pending call (createDesia itself, at first) rejects with
+   * a fatal DesiaError (code 'internal').
+   */
+  startTimeout?: number;
 }
 
 /**

@@ -4,7 +4,7 @@
 // loads the synchronous core with loadDesiaModule, so a long check or design never blocks the
 // caller's thread and cancelling is terminating this worker.
 
-import { loadDesiaModule } from './index.js';
+import { loadDesiaModule } from './core.js';
 import { createCoreHost } from './host.js';
 
 const inNode = typeof process === 'object' && typeof process.versions?.node === 'string'

@@ -24,7 +24,7 @@
 //                                                second, always including the last one
 //        { type: 'result', id, value, elapsedMs }   elapsedMs: time spent in the core
 //        { type: 'error', id, message, fatal?, code? }   id is null for a failed init; code is
-//                                                the core's DesiaError code when it has one.
+//                                                one of the package's error codes (index.d.ts).
 // `fatal: true` says the module itself is broken (a WebAssembly trap or abort): the page should
 // start a fresh worker instead of sending more work here.
 //
@@ -36,10 +36,11 @@
 // { index, document, report }. One session per worker: opening one disposes the previous one.
 
 import { loadDesiaModule } from '../wasm/index.js';
+// The package host's helpers: progress throttling, label packing and error classification are
+// the same for the playground as for createDesia.
+import { createProgressThrottle, describeError, errorMessage, packForTransfer } from '../wasm/host.js';
 
 const WASM_URL = new URL('../dist/desia_wasm.wasm', import.meta.url).href;
-/** Progress messages are for eyes, not for logs: ten a second is plenty. */
-const PROGRESS_INTERVAL_MS = 100;
 
 let corePromise = null;
 /** The open design session (a WebAssembly handle: dispose it before dropping it). */
@@ -54,7 +55,7 @@ function loadCore() {
 // Each operation returns `[value, transferList]`.
 const OPERATIONS = {
   check: (core, text, options) => [core.check(text, options ?? {}), []],
-  parse: (core, text, options) => withTransferableLabels(core.parseDocument(text, options ?? {})),
+  parse: (core, text, options) => packForTransfer(core.parseDocument(text, options ?? {})),
   design: designOperation,
   voxelize: (core, text, options, { bytes }) => {
     if (!(bytes instanceof Uint8Array)) throw Object.assign(new Error('voxelize: no mesh bytes were sent'), { code: 'bad-input' });
@@ -70,10 +71,7 @@ const OPERATIONS = {
     if (typeof core.exportAssembly !== 'function') {
       throw Object.assign(new Error('this build of the core has no exporter (rebuild: bash scripts/build.sh wasm)'), { code: 'unsupported' });
     }
-    const exported = core.exportAssembly(text, options ?? {});
-    // Transfer a buffer that holds exactly these bytes (a view into a larger one would ship it all).
-    const bytes = exported.byteOffset === 0 && exported.byteLength === exported.buffer.byteLength ? exported : exported.slice();
-    return [bytes, [bytes.buffer]];
+    return packForTransfer(core.exportAssembly(text, options ?? {}));
   },
   'session-open': (core, text, options) => {
     closeSession();
@@ -91,7 +89,7 @@ const OPERATIONS = {
     const document = openSession().preview(index);
     // The core checks the previewed assembly from its own JSON document.
     const report = core.check(JSON.stringify(document), { source: `child ${index}` });
-    return withTransferableLabels({ index, document, report }, 'document');
+    return packForTransfer({ index, document, report });
   },
   'session-close': () => {
     closeSession();
@@ -101,37 +99,12 @@ const OPERATIONS = {
 
 /** Runs designVoxel, posting throttled progress for request `id`. */
 function designOperation(core, text, options, { id }) {
-  const progress = progressPoster(id);
+  // Returning nothing from onProgress lets the search go on; the page stops it by terminating
+  // the worker.
+  const progress = createProgressThrottle((value) => self.postMessage({ type: 'progress', id, value }));
   const result = core.designVoxel(text, { ...(options ?? {}), onProgress: progress.report });
   progress.flush();
-  return withTransferableLabels(result, 'document');
-}
-
-/**
- * onProgress is called after every node, which can be thousands of times a second: post the
- * first one at once, then at most one per interval, and `flush()` the last one the page has not
- * seen, so the final numbers always arrive before the result.
- */
-function progressPoster(id) {
-  let latest = null;
-  let unsent = false;
-  let lastPostedAt = -Infinity;
-  const post = () => {
-    self.postMessage({ type: 'progress', id, value: latest });
-    unsent = false;
-    lastPostedAt = performance.now();
-  };
-  return {
-    report(value) {
-      latest = value;
-      unsent = true;
-      if (performance.now() - lastPostedAt >= PROGRESS_INTERVAL_MS) post();
-      // Returning nothing lets the search go on; the page stops it by terminating the worker.
-    },
-    flush() {
-      if (unsent) post();
-    },
-  };
+  return packForTransfer(result);
 }
 
 function openSession() {
@@ -157,39 +130,7 @@ function sessionSnapshot(extra = {}) {
   // A complete puzzle has no children; asking would only generate an empty list.
   const childCount = complete ? 0 : current.childCount();
   const snapshot = { ...extra, partsPlaced, targetParts, complete, childCount, document, report: current.check() };
-  return withTransferableLabels(snapshot, 'document');
-}
-
-/**
- * Voxel labels become an Int32Array so they can be transferred instead of copied. `field` names
- * where the document sits in `value` (none: `value` is the document).
- */
-function withTransferableLabels(value, field) {
-  const document = field ? value?.[field] : value;
-  const labels = document?.voxel?.labels;
-  if (!Array.isArray(labels)) return [value, []];
-  const packed = Int32Array.from(labels);
-  const repacked = { ...document, voxel: { ...document.voxel, labels: packed } };
-  return [field ? { ...value, [field]: repacked } : repacked, [packed.buffer]];
-}
-
-/** Human-readable text for anything thrown by the core or the loader. */
-function messageOf(error) {
-  if (error instanceof Error) return error.message || error.name;
-  if (typeof error === 'number') return `internal error in the WebAssembly core (code ${error})`;
-  return String(error);
-}
-
-/**
- * Traps and aborts can leave the Emscripten runtime unusable; input errors (the facade's
- * DesiaError codes 'bad-input', 'too-large', 'unsupported') do not. An 'internal' error is a
- * bug somewhere in the core, so we do not trust the instance after it either.
- */
-function isFatal(error) {
-  return error?.fatal === true
-    || error instanceof WebAssembly.RuntimeError
-    || error?.code === 'internal'
-    || /^Aborted\(/.test(messageOf(error));
+  return packForTransfer(snapshot);
 }
 
 async function handleInit() {
@@ -201,7 +142,7 @@ async function handleInit() {
     self.postMessage({
       type: 'error',
       id: null,
-      message: `could not load the WebAssembly core: ${messageOf(error)}`,
+      message: `could not load the WebAssembly core: ${errorMessage(error)}`,
       fatal: true,
     });
   }
@@ -217,7 +158,7 @@ async function handleRun({ id, op, text, options, bytes }) {
   try {
     core = await loadCore();
   } catch (error) {
-    self.postMessage({ type: 'error', id, message: `core not loaded: ${messageOf(error)}`, fatal: true });
+    self.postMessage({ type: 'error', id, message: `core not loaded: ${errorMessage(error)}`, fatal: true });
     return;
   }
   try {
@@ -226,10 +167,10 @@ async function handleRun({ id, op, text, options, bytes }) {
     const elapsedMs = performance.now() - started;
     self.postMessage({ type: 'result', id, value, elapsedMs }, transfer);
   } catch (error) {
-    const fatal = isFatal(error);
-    const message = fatal ? `internal error in the WebAssembly core: ${messageOf(error)}` : messageOf(error);
-    // `code` is the core's error code ('bad-input', 'too-large', …) when there is one.
-    self.postMessage({ type: 'error', id, message, fatal, code: typeof error?.code === 'string' ? error.code : undefined });
+    // Fatal (a trap, an abort or an 'internal' error: the instance is not to be trusted) by the
+    // same rule as the package's host; `code` is one of the package's error codes.
+    const { message, code, fatal } = describeError(error);
+    self.postMessage({ type: 'error', id, message: fatal ? `internal error in the WebAssembly core: ${message}` : message, fatal, code });
   }
 }
 

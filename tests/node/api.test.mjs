@@ -4,6 +4,7 @@
 // TypeScript declarations matching what the module really exports and returns. Aborting,
 // crashes, terminate() and idle exit: tests/node/package-worker.test.mjs.
 import assert from 'node:assert/strict';
+import { gunzipSync } from 'node:zlib';
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
@@ -289,8 +290,11 @@ test('exportAssembly writes STL, OBJ and BurrTools files of a voxel puzzle', asy
   assert.match(obj, /^v -?[\d.]+ -?[\d.]+ -?[\d.]+$/m);
   assert.match(obj, /^f \d+/m);
   const xmpuzzle = await desia.exportAssembly(k9, { format: 'xmpuzzle' });
-  const gzip = xmpuzzle[0] === 0x1f && xmpuzzle[1] === 0x8b;
-  assert.ok(gzip || /^<\?xml/.test(new TextDecoder().decode(xmpuzzle.subarray(0, 5))), 'gzip or XML');
+  // BurrTools always writes gzip; ours must unzip (CRC and length checked by zlib) to the XML.
+  const xml = gunzipSync(xmpuzzle).toString('utf8');
+  assert.match(xml, /^<\?xml version="1\.0"\?>\n<puzzle version="2">/);
+  assert.equal(xml.match(/<voxel /g).length, 10, 'the result shape and the 9 pieces');
+  assert.deepEqual(xmpuzzle, core.exportAssembly(k9, { format: 'xmpuzzle' }), 'worker and sync core agree');
   // Bad arguments and inputs.
   const rejectsWith = (promise, code, message) => assert.rejects(promise, (error) => {
     assert.ok(error instanceof DesiaError, String(error));
@@ -307,8 +311,11 @@ test('exportAssembly writes STL, OBJ and BurrTools files of a voxel puzzle', asy
     const bytes = await desia.exportAssembly(k9, { format, part, voxelSize, source: k9File });
     assert.deepEqual(bytes, new Uint8Array(fs.readFileSync(output)), `${format} part ${part}`);
   }
-  await rejectsWith(desia.exportAssembly(k9, { part: 'key' }), 'bad-input', /exportAssembly: part must be 0 \(every part\) or a part id, got key/);
-  await rejectsWith(desia.exportAssembly(k9, { voxelSize: -1 }), 'bad-input', /exportAssembly: voxelSize must be a positive number/);
+  await rejectsWith(desia.exportAssembly(k9, { part: 'key' }), 'bad-input', /^exportAssembly: part must be an integer \(32-bit\), got a string \("key"\)$/);
+  await rejectsWith(desia.exportAssembly(k9, { voxelSize: '2' }), 'bad-input', /^exportAssembly: voxelSize must be a number, got a string/);
+  // Ranges are the core's to name.
+  await rejectsWith(desia.exportAssembly(k9, { voxelSize: -1 }), 'bad-input', /the voxel size must be a number from 0\.000001 to 1000000, got -1$/);
+  await rejectsWith(desia.exportAssembly(k9, { part: -1 }), 'bad-input', /part -1 does not exist: the assembly has parts 1 to 9/);
   await rejectsWith(desia.exportAssembly(k9, { format: 7 }), 'bad-input', /exportAssembly: format must be a string/);
   await rejectsWith(desia.exportAssembly(42), 'bad-input', /exportAssembly: assembly must be a string/);
   await rejectsWith(desia.exportAssembly(k9, { format: 'dxf' }), 'bad-input', /dxf/);

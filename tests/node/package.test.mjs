@@ -33,7 +33,7 @@ const tarball = path.join(tmp, packed.filename);
 const shipped = packed.files.map((file) => file.path);
 
 test('the tarball holds the package and nothing else', () => {
-  for (const file of ['package.json', 'README.md', 'LICENSE', 'wasm/index.js', 'wasm/index.d.ts', 'wasm/host.js', 'wasm/worker.js',
+  for (const file of ['package.json', 'README.md', 'LICENSE', 'wasm/index.js', 'wasm/index.d.ts', 'wasm/core.js', 'wasm/client.js', 'wasm/host.js', 'wasm/worker.js',
     'dist/desia_wasm.js', 'dist/desia_wasm.wasm', 'web/viewer.js']) {
     assert.ok(shipped.includes(file), `${file} is missing from the tarball`);
   }

@@ -1,0 +1,401 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The synchronous side of the desia package: `loadDesiaModule()` loads the WebAssembly module in
+// the calling thread (inside a worker, or in node scripts) and returns the core's functions with
+// their arguments checked for type, so that a mistake gives a DesiaError that names the function
+// and the value instead of a silent default. Ranges and meanings are the core's to check: its
+// messages name the value and the accepted range. All analysis happens in the C++ core.
+
+const isNode = typeof process === 'object' && typeof process.versions?.node === 'string' &&
+  typeof window === 'undefined' && typeof importScripts === 'undefined';
+
+/** The error codes of the package (index.d.ts ErrorCode); anything else is reported as 'internal'. */
+export const ERROR_CODES = Object.freeze(['bad-input', 'too-large', 'unsupported', 'internal', 'terminated', 'session-lost']);
+
+/** `code` when it is one of ERROR_CODES, else 'internal' (e.g. node's 'ENOENT'). */
+export function documentedCode(code) {
+  return ERROR_CODES.includes(code) ? code : 'internal';
+}
+
+/**
+ * Error thrown for bad input and failures. `code`: from the core 'bad-input', 'too-large',
+ * 'unsupported' or 'internal'; from createDesia also 'terminated' (terminate() was called) and
+ * 'session-lost' (the worker holding a design session was stopped).
+ */
+export class DesiaError extends Error {
+  constructor(message, code = 'internal', { fatal = false } = {}) {
+    super(message);
+    this.name = 'DesiaError';
+    this.code = documentedCode(code);
+    /** True when the WebAssembly instance trapped or the worker died: createDesia replaces it by itself. */
+    this.fatal = fatal;
+  }
+}
+
+function rethrow(error) {
+  if (error instanceof DesiaError) throw error;
+  if (typeof WebAssembly === 'object' && error instanceof WebAssembly.RuntimeError) {
+    throw new DesiaError(`WebAssembly trap: ${error.message}; this module instance cannot be used again`, 'internal', { fatal: true });
+  }
+  if (error instanceof Error) throw new DesiaError(error.message, typeof error.code === 'string' ? error.code : 'internal');
+  // A bare number is a C++ exception that escaped the bindings' guard: a bug, but never hide it.
+  throw new DesiaError(`internal error: uncaught native exception (${String(error)})`, 'internal');
+}
+
+/** A short description of a value's type for messages: "a string ('obj')", "an array", "null". */
+export function describeValue(value) {
+  if (value === null) return 'null';
+  if (Array.isArray(value)) return 'an array';
+  if (typeof value === 'string') return `a string (${JSON.stringify(value.length > 40 ? `${value.slice(0, 40)}…` : value)})`;
+  if (typeof value === 'object') {
+    const name = Object.getPrototypeOf(value)?.constructor?.name;
+    return name && name !== 'Object' ? `a ${name}` : 'an object';
+  }
+  if (typeof value === 'bigint') return `a bigint (${value}n)`;
+  return `a ${typeof value}${typeof value === 'number' || typeof value === 'boolean' ? ` (${String(value)})` : ''}`;
+}
+
+function isPlainObject(value) {
+  if (typeof value !== 'object' || value === null) return false;
+  const prototype = Object.getPrototypeOf(value);
+  return prototype === Object.prototype || prototype === null;
+}
+
+function listOf(names) {
+  return names.length < 2 ? names.join('') : `${names.slice(0, -1).join(', ')} or ${names.at(-1)}`;
+}
+
+/**
+ * The options every function with a fixed set takes (the designers' options are the core's to
+ * check: it rejects unknown ones itself). The promise-based API adds `signal`.
+ */
+export const OPTION_NAMES = Object.freeze({
+  check: ['method', 'source'],
+  parseDocument: ['source'],
+  voxelize: ['resolution', 'source'],
+  toPuz: ['source'],
+  exportAssembly: ['format', 'part', 'voxelSize', 'source'],
+});
+
+/**
+ * `options` of function `name`: undefined (none) or a plain object whose keys are all in
+ * `accepted` (null: any key). Anything else, e.g. a format string passed where the options go,
+ * is a DesiaError rather than a silently ignored value.
+ */
+export function requireOptions(name, options, accepted = null) {
+  if (options === undefined) return {};
+  if (!isPlainObject(options)) {
+    throw new DesiaError(`${name}: options must be an object, got ${describeValue(options)}`, 'bad-input');
+  }
+  if (accepted) {
+    for (const key of Object.keys(options)) {
+      if (!accepted.includes(key)) throw new DesiaError(`${name}: unknown option '${key}' (expected ${listOf(accepted)})`, 'bad-input');
+    }
+  }
+  return options;
+}
+
+/** The options as JSON text for the core; values JSON cannot carry are bad input, not dropped. */
+function optionsJson(name, options) {
+  try {
+    return JSON.stringify(options, (key, value) => {
+      if (typeof value === 'bigint' || typeof value === 'function' || typeof value === 'symbol') {
+        throw new DesiaError(`${name}: option '${key}' must be JSON data (numbers, strings, arrays), got ${describeValue(value)}`, 'bad-input');
+      }
+      return value;
+    });
+  } catch (error) {
+    if (error instanceof DesiaError) throw error;
+    throw new DesiaError(`${name}: the options cannot be written as JSON: ${error?.message ?? error}`, 'bad-input');
+  }
+}
+
+function requireText(text, what) {
+  if (typeof text !== 'string') throw new DesiaError(`${what} must be a string, got ${describeValue(text)}`, 'bad-input');
+}
+
+function requireString(value, what) {
+  if (typeof value !== 'string') throw new DesiaError(`${what} must be a string, got ${describeValue(value)}`, 'bad-input');
+  return value;
+}
+
+/**
+ * An integer the bindings can take (a C++ int): the value's type, not its meaning, so the core
+ * still names the range it accepts.
+ */
+function requireInt32(value, what) {
+  if (!Number.isInteger(value) || Math.abs(value) > 2 ** 31 - 1) {
+    throw new DesiaError(`${what} must be an integer (32-bit), got ${describeValue(value)}`, 'bad-input');
+  }
+  return value;
+}
+
+/** A design session's child index: an integer from 0 to 2^31 - 1 (the bindings' unsigned range). */
+export function requireChildIndex(method, n) {
+  if (!Number.isInteger(n) || n < 0 || n > 2 ** 31 - 1) {
+    throw new DesiaError(`designSession: ${method}: the child index must be an integer from 0 to ${2 ** 31 - 1}, got ${describeValue(n)}`, 'bad-input');
+  }
+  return n;
+}
+
+// Mesh input as bytes: a Uint8Array (node's Buffer is one), any other typed-array view or
+// ArrayBuffer (viewed without copying), or OBJ text (encoded as UTF-8).
+export function meshBytes(input, what) {
+  if (input instanceof Uint8Array) return input;
+  if (input instanceof ArrayBuffer) return new Uint8Array(input);
+  if (ArrayBuffer.isView(input)) return new Uint8Array(input.buffer, input.byteOffset, input.byteLength);
+  if (typeof input === 'string') return new TextEncoder().encode(input);
+  throw new DesiaError(`${what} must be a Uint8Array, an ArrayBuffer or OBJ text, got ${describeValue(input)}`, 'bad-input');
+}
+
+/**
+ * Emscripten 3.1.6's ES6 output expects CommonJS globals in node (toolchain.md #6), whatever the
+ * module is given: define them before importing it.
+ */
+async function defineNodeGlobals() {
+  const [{ createRequire }, { fileURLToPath }] = await Promise.all([import('node:module'), import('node:url')]);
+  globalThis.require ??= createRequire(import.meta.url);
+  globalThis.__dirname ??= fileURLToPath(new URL('../dist/', import.meta.url));
+}
+
+/** node: the loader's fetch fails on file paths there (toolchain.md #3), so pass the bytes. */
+async function nodeWasmBinary(wasmUrl) {
+  const [{ fileURLToPath }, fs] = await Promise.all([import('node:url'), import('node:fs/promises')]);
+  const file = wasmUrl === undefined ? fileURLToPath(new URL('../dist/desia_wasm.wasm', import.meta.url))
+    : String(wasmUrl).startsWith('file:') ? fileURLToPath(String(wasmUrl)) : String(wasmUrl);
+  return fs.readFile(file);
+}
+
+const LOAD_OPTIONS = ['wasmUrl', 'wasmBinary'];
+
+/** Checks loadDesiaModule's and createDesia's wasmUrl / wasmBinary. */
+export function checkLoadOptions(name, { wasmUrl, wasmBinary }) {
+  if (wasmUrl !== undefined && typeof wasmUrl !== 'string' && !(wasmUrl instanceof URL)) {
+    throw new DesiaError(`${name}: wasmUrl must be a string or a URL, got ${describeValue(wasmUrl)}`, 'bad-input');
+  }
+  if (wasmBinary !== undefined && !(wasmBinary instanceof ArrayBuffer || ArrayBuffer.isView(wasmBinary))) {
+    throw new DesiaError(`${name}: wasmBinary must be an ArrayBuffer or a Uint8Array, got ${describeValue(wasmBinary)}`, 'bad-input');
+  }
+}
+
+/**
+ * Loads the WebAssembly module and returns a synchronous core (use it inside a worker or in node).
+ * @param {{wasmUrl?: string|URL, wasmBinary?: ArrayBuffer|Uint8Array}} [options]
+ */
+export async function loadDesiaModule(options) {
+  const { wasmUrl, wasmBinary } = requireOptions('loadDesiaModule', options, LOAD_OPTIONS);
+  checkLoadOptions('loadDesiaModule', { wasmUrl, wasmBinary });
+  let module;
+  try {
+    if (isNode) await defineNodeGlobals();
+    const { default: createDesiaModule } = await import('../dist/desia_wasm.js');
+    const moduleOptions = {};
+    if (wasmBinary !== undefined) {
+      moduleOptions.wasmBinary = wasmBinary;
+    } else if (isNode) {
+      moduleOptions.wasmBinary = await nodeWasmBinary(wasmUrl);
+    } else {
+      const url = wasmUrl !== undefined ? String(wasmUrl) : new URL('../dist/desia_wasm.wasm', import.meta.url).href;
+      moduleOptions.locateFile = (file) => (file.endsWith('.wasm') ? url : file);
+    }
+    module = await createDesiaModule(moduleOptions);
+  } catch (error) {
+    throw new DesiaError(`could not load the desia WebAssembly module: ${error?.message ?? error}`, 'internal');
+  }
+  return makeCore(module);
+}
+
+function makeCore(module) {
+  return {
+    /** Interlocking check of .puz or JSON text; same fields as `desia check --json`. */
+    check(text, options) {
+      const { method = 'dbg', source = '<input>' } = requireOptions('check', options, OPTION_NAMES.check);
+      requireText(text, 'check: text');
+      requireString(method, 'check: method');
+      requireString(source, 'check: source');
+      try {
+        return module.check(text, method, source);
+      } catch (error) {
+        rethrow(error);
+      }
+    },
+    /** Parses .puz or JSON text into the JSON assembly document (plain object). */
+    parseDocument(text, options) {
+      const { source = '<input>' } = requireOptions('parseDocument', options, OPTION_NAMES.parseDocument);
+      requireText(text, 'parseDocument: text');
+      requireString(source, 'parseDocument: source');
+      try {
+        return module.parseDocument(text, source);
+      } catch (error) {
+        rethrow(error);
+      }
+    },
+    /**
+     * Solid voxelization of a closed OBJ or STL mesh into a one-part voxel shape; returns the JSON
+     * assembly document (the same as `desia voxelize --output x.json`).
+     */
+    voxelize(mesh, options) {
+      const { resolution = 32, source = '<input>' } = requireOptions('voxelize', options, OPTION_NAMES.voxelize);
+      const bytes = meshBytes(mesh, 'voxelize: mesh');
+      requireInt32(resolution, 'voxelize: resolution');
+      requireString(source, 'voxelize: source');
+      try {
+        return module.voxelize(bytes, resolution, source);
+      } catch (error) {
+        rethrow(error);
+      }
+    },
+    /** A voxel assembly (.puz text or a JSON document, as text or object) as .puz text. */
+    toPuz(assembly, options) {
+      const { source = '<input>' } = requireOptions('toPuz', options, OPTION_NAMES.toPuz);
+      const text = assemblyText(assembly, 'toPuz: assembly');
+      requireString(source, 'toPuz: source');
+      try {
+        return module.toPuz(text, source);
+      } catch (error) {
+        rethrow(error);
+      }
+    },
+    /**
+     * An assembly (text or document object) as a file for other tools: 'stl' (binary), 'stl-ascii',
+     * 'obj' or 'xmpuzzle' (BurrTools, voxel puzzles only). `part` 0 exports every part, k only part
+     * k; `voxelSize` scales voxel assemblies (model units per voxel). Returns the file's bytes.
+     */
+    exportAssembly(assembly, options) {
+      const { format = 'stl', part = 0, voxelSize = 1, source = '<input>' } =
+        requireOptions('exportAssembly', options, OPTION_NAMES.exportAssembly);
+      const text = assemblyText(assembly, 'exportAssembly: assembly');
+      requireString(format, 'exportAssembly: format');
+      requireInt32(part, 'exportAssembly: part');
+      if (typeof voxelSize !== 'number') {
+        throw new DesiaError(`exportAssembly: voxelSize must be a number, got ${describeValue(voxelSize)}`, 'bad-input');
+      }
+      requireString(source, 'exportAssembly: source');
+      if (typeof module.exportAssembly !== 'function') {
+        throw new DesiaError('exportAssembly: this build of the WebAssembly module has no exporter (rebuild dist/ with scripts/build.sh wasm)', 'unsupported');
+      }
+      let bytes;
+      try {
+        bytes = module.exportAssembly(text, format, part, voxelSize, source);
+      } catch (error) {
+        rethrow(error);
+      }
+      // A view into the module's memory would be detached by the next memory growth: own a copy.
+      return bytes.buffer === module.HEAPU8?.buffer ? bytes.slice() : bytes;
+    },
+    /**
+     * Designs an N-part interlocking voxel puzzle from a shape (.puz or JSON text). Resolves to
+     * { status, message, progress, puz, document, verification }: `puz` and `document` are set when
+     * status is 'success' (the puzzle passed the project's own check); otherwise they are null and
+     * `message` says how far the search got. `onProgress(progress)` is called after every visited
+     * node; returning false stops the search (status 'cancelled'). The core checks the other
+     * options' names and values.
+     */
+    designVoxel(shapeText, options) {
+      const { onProgress, source = '<input>', ...designOptions } = requireOptions('designVoxel', options);
+      requireText(shapeText, 'designVoxel: shape');
+      requireString(source, 'designVoxel: source');
+      if (onProgress !== undefined && typeof onProgress !== 'function') {
+        throw new DesiaError('designVoxel: onProgress must be a function', 'bad-input');
+      }
+      const json = optionsJson('designVoxel', designOptions);
+      try {
+        return module.designVoxel(shapeText, json, source, onProgress);
+      } catch (error) {
+        rethrow(error);
+      }
+    },
+    /**
+     * An interactive design session (the original tool's "Generate Next Part", "Child Index",
+     * "Go Back"). It holds WebAssembly memory: call dispose() when done.
+     */
+    designSession(shapeText, options) {
+      const { source = '<input>', ...designOptions } = requireOptions('designSession', options);
+      requireText(shapeText, 'designSession: shape');
+      requireString(source, 'designSession: source');
+      if (designOptions.onProgress !== undefined) {
+        throw new DesiaError("designSession: unknown option 'onProgress' (only designVoxel, designPlate and designFrame report progress)", 'bad-input');
+      }
+      const json = optionsJson('designSession', designOptions);
+      let handle;
+      try {
+        handle = new module.DesignSession(shapeText, json, source);
+      } catch (error) {
+        rethrow(error);
+      }
+      const call = (name, ...args) => {
+        if (!handle) throw new DesiaError('designSession: the session was disposed', 'bad-input');
+        try {
+          return handle[name](...args);
+        } catch (error) {
+          rethrow(error);
+        }
+      };
+      return {
+        /** { partsPlaced, targetParts, complete, document } of the current assembly. */
+        state: () => call('state'),
+        /** Number of ranked children of the current node (generated on first call). */
+        childCount: () => call('childCount'),
+        /** The JSON document the n-th child (0 = best) would give. */
+        preview: (n) => call('preview', requireChildIndex('preview', n)),
+        /** Move to the n-th child. */
+        choose: (n) => call('choose', requireChildIndex('choose', n)),
+        /** Move to the best child; false when there is none. */
+        next: () => call('next'),
+        /** Move to the parent; false at the root. */
+        back: () => call('back'),
+        /** The check report of the current assembly. */
+        check: () => call('check'),
+        dispose() {
+          if (handle) handle.delete();
+          handle = null;
+        },
+      };
+    },
+    /** Designs a plate structure: not available until the plate designer core lands. */
+    designPlate(input, options) {
+      return forwardDesigner(module, 'designPlate', 'plate', input, options);
+    },
+    /** Designs a frame structure: not available until the frame designer core lands. */
+    designFrame(input, options) {
+      return forwardDesigner(module, 'designFrame', 'frame', input, options);
+    },
+    version() {
+      return module.version();
+    },
+  };
+}
+
+/** A document object as JSON text; text stays text; anything else is refused. */
+function assemblyText(assembly, what) {
+  if (isPlainObject(assembly)) {
+    try {
+      return JSON.stringify(assembly);
+    } catch (error) {
+      throw new DesiaError(`${what} cannot be written as JSON: ${error?.message ?? error}`, 'bad-input');
+    }
+  }
+  requireText(assembly, what);
+  return assembly;
+}
+
+/**
+ * The plate and frame designers, forwarded like designVoxel to a binding of the same name
+ * (`module.designPlate(text, optionsJson, source, onProgress)`) once the core provides one.
+ */
+function forwardDesigner(module, name, kind, input, options) {
+  const { onProgress, source = '<input>', ...designOptions } = requireOptions(name, options);
+  if (typeof module[name] !== 'function') {
+    throw new DesiaError(`${name}: the ${kind} designer core has not landed yet in this version of desia`, 'unsupported');
+  }
+  const text = assemblyText(input, `${name}: input`);
+  requireString(source, `${name}: source`);
+  if (onProgress !== undefined && typeof onProgress !== 'function') {
+    throw new DesiaError(`${name}: onProgress must be a function`, 'bad-input');
+  }
+  const json = optionsJson(name, designOptions);
+  try {
+    return module[name](text, json, source, onProgress);
+  } catch (error) {
+    rethrow(error);
+  }
+}
