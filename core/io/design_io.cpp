@@ -96,7 +96,9 @@ VoxelDesignOptions parseDesignOptionsJson(const std::string& text, const VoxelGr
       if (!value.is_number() || !(value.get<double>() >= 0)) throwBadInput("", "design option 'timeLimit' must be seconds >= 0, got " + value.dump());
       options.timeLimitSeconds = value.get<double>();
     } else {
-      throwBadInput("", "unknown design option '" + key + "'");
+      throwBadInput("", "unknown design option '" + key +
+                            "' (expected parts, seed, candidates, rank, mode, minPartSize, nodeLimit, "
+                            "keyDirection, groups or timeLimit)");
     }
   }
   return options;
