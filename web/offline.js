@@ -4,7 +4,8 @@
 // playground has loaded, hands it the list of files to keep: everything this page loaded (its
 // modules, three.js, the style sheet), the worker's files (which the page cannot see load), the
 // core and every bundled example. The service worker fetches them all afresh and keeps them as
-// one snapshot; a small indicator then says the playground works offline.
+// one snapshot; a small indicator then says whether THIS page works offline: only when it belongs
+// to a complete snapshot of its own version (see web/sw.js), never because of an older one.
 //
 // Only on http(s) pages (service workers need one; a file:// page simply runs online only).
 // For tests: body[data-offline] = '' | saving | ready | unavailable, #offline-status.
@@ -12,7 +13,8 @@
 import { byId } from './dom.js';
 
 /** Files the worker loads: resource timing of the page does not list them. */
-const WORKER_FILES = ['./worker.js', '../wasm/index.js', '../dist/desia_wasm.js', '../dist/desia_wasm.wasm'];
+/** The compute worker and everything it imports (the page's resource list does not show them). */
+const WORKER_FILES = ['./worker.js', '../wasm/core.js', '../wasm/host.js', '../dist/desia_wasm.js', '../dist/desia_wasm.wasm'];
 /** The page under both of its names (a link to web/ and to web/index.html). */
 const PAGE_FILES = ['./', './index.html'];
 const SNAPSHOT_TIMEOUT_MS = 120_000;
@@ -67,7 +69,7 @@ export async function keepForOffline(extraUrls = []) {
   setOfflineState('saving', 'Saving for offline…');
   const channel = new MessageChannel();
   const answer = new Promise((resolve) => {
-    const timer = setTimeout(() => resolve({ ok: false, message: 'the service worker did not answer', cached: false }), SNAPSHOT_TIMEOUT_MS);
+    const timer = setTimeout(() => resolve({ ok: false, message: 'the service worker did not answer', offline: null }), SNAPSHOT_TIMEOUT_MS);
     channel.port1.onmessage = (event) => {
       clearTimeout(timer);
       resolve(event.data);
@@ -75,12 +77,16 @@ export async function keepForOffline(extraUrls = []) {
   });
   worker.postMessage({ type: 'snapshot', urls }, [channel.port2]);
   const result = await answer;
-  if (result.ok) {
-    setOfflineState('ready', 'Available offline', `${result.files} files (${(result.bytes / 1048576).toFixed(1)} MiB) kept by the browser`);
-  } else if (result.cached) {
-    // Offline now, or the server is gone: an earlier snapshot is serving this page.
-    setOfflineState('ready', 'Available offline', `Kept from an earlier visit (could not refresh: ${result.message})`);
+  const kept = result.offline;
+  if (kept?.justTaken) {
+    setOfflineState('ready', 'Available offline', `${kept.files} files (${(kept.bytes / 1048576).toFixed(1)} MiB) kept by the browser`);
+  } else if (kept) {
+    // This page was itself served from an earlier snapshot (offline, or the server is gone), or
+    // belongs to one another tab took after this page loaded: the same version either way.
+    const refresh = result.ok ? '' : ` (could not refresh: ${result.message})`;
+    setOfflineState('ready', 'Available offline', `Kept on ${new Date(kept.completedAt).toLocaleString()}${refresh}`);
   } else {
-    setOfflineState('unavailable', 'Online only', `Could not keep the files for offline use: ${result.message}`);
+    // An older snapshot may exist, but it is not this page's version: it is not offered.
+    setOfflineState('unavailable', 'Online only', `Could not keep this version's files for offline use: ${result.message || 'no snapshot'}`);
   }
 }

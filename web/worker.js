@@ -35,7 +35,7 @@
 // report, moved? } (report = the core's check of the current assembly); a preview is
 // { index, document, report }. One session per worker: opening one disposes the previous one.
 
-import { loadDesiaModule } from '../wasm/index.js';
+import { loadDesiaModule } from '../wasm/core.js';
 // The package host's helpers: progress throttling, label packing and error classification are
 // the same for the playground as for createDesia.
 import { createProgressThrottle, describeError, errorMessage, packForTransfer } from '../wasm/host.js';

@@ -7,6 +7,11 @@
 //
 //   node --test tests/browser/offline.test.mjs
 //
+// A second browser checks that versions never mix: a page loaded from the network after the last
+// snapshot, whose own snapshot failed, does not claim to work offline, and offline its restarted
+// worker fails clearly instead of running the older snapshot's files; a page of that older
+// snapshot's time, in the same browser, still restarts its worker offline from it.
+//
 // Needs what playground.test.mjs needs. Screenshots go to test-artifacts/offline-*.png.
 
 import { after, before, describe, it } from 'node:test';
@@ -36,6 +41,29 @@ async function pageModules() {
     for (const [, target] of source.matchAll(/\bfrom\s+'\.\/([\w-]+\.js)'/g)) queue.push(target);
   }
   return [...found].sort();
+}
+
+/** A file the server does not have: asking the service worker to keep it makes the snapshot fail. */
+const MISSING_FILE = '__no-such-file__.js';
+/** The offline indicator. */
+async function offlineIndicator(page) {
+  return page.evaluate(() => ({
+    state: document.body.dataset.offline,
+    text: document.querySelector('#offline-status').textContent,
+    title: document.querySelector('#offline-status').title,
+  }));
+}
+
+/**
+ * Makes the page start a fresh worker the way a user does: Design, then Cancel at once (in one
+ * task, so the design cannot finish in between; Cancel terminates the busy worker).
+ */
+async function restartWorkerWithCancel(page) {
+  await page.evaluate(() => {
+    document.querySelector('#design-button').click();
+    document.querySelector('#design-cancel').click();
+  });
+  await page.waitForFunction(() => document.body.dataset.design === 'cancelled');
 }
 
 /** The URLs in the newest complete snapshot of the service worker's caches. */
@@ -96,7 +124,7 @@ describe('playground offline in headless Chromium', { timeout: 120_000 }, () => 
     const expected = [
       '/web/', '/web/index.html', '/web/style.css', '/web/worker.js',
       ...(await pageModules()).map((file) => `/web/${file}`),
-      '/wasm/index.js', '/dist/desia_wasm.js', '/dist/desia_wasm.wasm',
+      '/wasm/core.js', '/wasm/host.js', '/dist/desia_wasm.js', '/dist/desia_wasm.wasm',
       '/node_modules/three/build/three.module.js',
       ...(await readdir(path.join(REPO_ROOT, 'examples/voxel'))).filter((file) => file.endsWith('.puz')).map((file) => `/examples/voxel/${file}`),
       '/examples/meshes/torus.obj',
@@ -112,6 +140,12 @@ describe('playground offline in headless Chromium', { timeout: 120_000 }, () => 
     await page.reload();
     assertInterlockingWithKey(await waitForReady(page, FIRST_EXAMPLE), 1);
     assert.equal(await page.evaluate(() => document.body.dataset.core), 'ready', 'the worker loaded the core');
+    // The browser may stop an idle service worker at any time: what it knows about this page
+    // (served from the snapshot) must survive that.
+    const devtools = await context.newCDPSession(page);
+    await devtools.send('ServiceWorker.enable');
+    await devtools.send('ServiceWorker.stopAllWorkers');
+    await devtools.detach();
     await page.selectOption('#example-select', SHAPE_EXAMPLE);
     const shape = await waitForReady(page, SHAPE_EXAMPLE);
     assert.equal(shape.parts, '1');
@@ -144,6 +178,70 @@ describe('playground offline in headless Chromium', { timeout: 120_000 }, () => 
     for (const file of ['/web/main.js', '/web/worker.js', '/dist/desia_wasm.wasm', '/examples/meshes/torus.obj']) {
       assert.ok(responsesWhileDown.some((response) => new URL(response.url).pathname === file), `${file} was served`);
     }
+    assert.deepEqual(pageErrors, []);
+  });
+});
+
+describe('playground offline never mixes versions', { timeout: 120_000 }, () => {
+  let browser;
+  let server;
+  let context;
+  const pageErrors = [];
+
+  before(async () => {
+    checkPrerequisites([FIRST_EXAMPLE, SHAPE_EXAMPLE]);
+    browser = await openBrowser();
+    ({ server, context } = browser);
+  });
+
+  after(async () => {
+    await browser?.close();
+  });
+
+  it('offers no older snapshot to a newer page, and fails clearly offline instead', async () => {
+    // The first page: its snapshot completes, so it works offline.
+    const older = browser.page;
+    older.on('pageerror', (error) => pageErrors.push(error.message));
+    await older.goto(`${server.url}?example=${SHAPE_EXAMPLE}`);
+    assert.equal((await waitForReady(older, SHAPE_EXAMPLE)).parts, '1');
+    await older.waitForFunction(() => ['ready', 'unavailable'].includes(document.body.dataset.offline), null, { timeout: SAVE_TIMEOUT_MS });
+    assert.equal((await offlineIndicator(older)).state, 'ready');
+
+    // A page loaded from the network after that snapshot (as after an update of the server),
+    // whose own snapshot fails: one of its files is missing on the server.
+    const newer = await context.newPage();
+    newer.on('pageerror', (error) => pageErrors.push(error.message));
+    await newer.addInitScript((missing) => {
+      const post = ServiceWorker.prototype.postMessage;
+      ServiceWorker.prototype.postMessage = function postWithMissingFile(message, transfer) {
+        if (message?.type === 'snapshot') message = { ...message, urls: [...message.urls, new URL(missing, location.href).href] };
+        return post.call(this, message, transfer);
+      };
+    }, MISSING_FILE);
+    await newer.goto(`${server.url}?example=${SHAPE_EXAMPLE}`);
+    assert.equal((await waitForReady(newer, SHAPE_EXAMPLE)).parts, '1');
+    assert.equal(await newer.evaluate(() => navigator.serviceWorker.controller !== null), true, 'the service worker controls the page');
+    await newer.waitForFunction(() => ['ready', 'unavailable'].includes(document.body.dataset.offline), null, { timeout: SAVE_TIMEOUT_MS });
+    const indicator = await offlineIndicator(newer);
+    assert.equal(indicator.state, 'unavailable', `the older snapshot must not count for this page: ${JSON.stringify(indicator)}`);
+    assert.equal(indicator.text, 'Online only');
+    assert.ok(indicator.title.includes(MISSING_FILE), `the indicator says why: ${indicator.title}`);
+
+    // Offline, the newer page's fresh worker gets nothing from the older snapshot: it fails.
+    const servedToNewer = [];
+    newer.on('response', (response) => servedToNewer.push({ url: response.url(), fromServiceWorker: response.fromServiceWorker() }));
+    await context.setOffline(true);
+    await restartWorkerWithCancel(newer);
+    await newer.waitForFunction(() => /worker/i.test(document.querySelector('#error').textContent) && !document.querySelector('#error').hidden, null, { timeout: 30_000 });
+    assert.notEqual(await newer.evaluate(() => document.body.dataset.core), 'ready', 'no worker ran on older files');
+    await screenshot(newer, 'offline-no-mix');
+    assert.deepEqual(servedToNewer.filter((response) => response.fromServiceWorker), [], 'cached files handed to the newer page');
+
+    // The older page belongs to the snapshot: offline, its fresh worker loads the core from it.
+    await restartWorkerWithCancel(older);
+    await older.waitForFunction(() => document.body.dataset.design === 'cancelled' && document.body.dataset.core === 'ready', null, { timeout: 30_000 });
+    await older.selectOption('#example-select', FIRST_EXAMPLE);
+    assertInterlockingWithKey(await waitForReady(older, FIRST_EXAMPLE), 1);
     assert.deepEqual(pageErrors, []);
   });
 });

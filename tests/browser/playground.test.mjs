@@ -130,7 +130,7 @@ describe('playground in headless Chromium', { timeout: 60_000 }, () => {
     freshPage.on('pageerror', (error) => pageErrors.push(error.message));
     try {
       // The worker's import of the facade fails: the worker dies before it can say anything.
-      await freshPage.route('**/wasm/index.js', (route) => route.abort());
+      await freshPage.route('**/wasm/core.js', (route) => route.abort());
       await freshPage.goto(server.url);
       const failed = await waitForSettled(freshPage, FIRST_EXAMPLE);
       assert.equal(failed.status, 'error');
@@ -139,7 +139,7 @@ describe('playground in headless Chromium', { timeout: 60_000 }, () => {
       await freshPage.waitForFunction(() => /in a row/.test(document.querySelector('#error').textContent));
       await screenshot(freshPage, 'playground-worker-failure');
 
-      await freshPage.unroute('**/wasm/index.js');
+      await freshPage.unroute('**/wasm/core.js');
       await freshPage.selectOption('#example-select', BUNNY_EXAMPLE);
       assertInterlockingWithKey(await waitForReady(freshPage, BUNNY_EXAMPLE), 1);
     } finally {
