@@ -192,6 +192,24 @@ val exportAssembly(const std::string& text, const std::string& format, int part,
   });
 }
 
+// The surface of every part of a voxel assembly (.puz or JSON text), ready to draw: an array of
+// { partId, positions, normals } with Float32Arrays owning their floats (copied out of the heap at
+// once, like exportAssembly's bytes).
+val partSurfaces(const std::string& text, const std::string& source) {
+  return guarded([&] {
+    const std::vector<desia::PartSurface> surfaces = desia::partSurfaces(desia::parseAssemblyText(text, source), source);
+    val result = val::array();
+    for (const desia::PartSurface& surface : surfaces) {
+      val part = val::object();
+      part.set("partId", surface.partId);
+      part.set("positions", val(emscripten::typed_memory_view(surface.positions.size(), surface.positions.data())).call<val>("slice"));
+      part.set("normals", val(emscripten::typed_memory_view(surface.normals.size(), surface.normals.data())).call<val>("slice"));
+      result.call<void>("push", part);
+    }
+    return result;
+  });
+}
+
 std::string version() { return desia::kVersion; }
 
 }  // namespace
@@ -203,6 +221,7 @@ EMSCRIPTEN_BINDINGS(desia) {
   emscripten::function("voxelize", &voxelize);
   emscripten::function("designVoxel", &designVoxel);
   emscripten::function("exportAssembly", &exportAssembly);
+  emscripten::function("partSurfaces", &partSurfaces);
   emscripten::function("version", &version);
   emscripten::class_<DesignSession>("DesignSession")
       .constructor<std::string, std::string, std::string>()

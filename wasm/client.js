@@ -476,6 +476,7 @@ export async function createDesia(options) {
     },
     toPuz: simple('toPuz'),
     exportAssembly: simple('exportAssembly'),
+    partSurfaces: simple('partSurfaces'),
     designVoxel: simple('designVoxel'),
     designPlate: simple('designPlate'),
     designFrame: simple('designFrame'),

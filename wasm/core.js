@@ -74,6 +74,7 @@ export const OPTION_NAMES = Object.freeze({
   voxelize: ['resolution', 'source'],
   toPuz: ['source'],
   exportAssembly: ['format', 'part', 'voxelSize', 'source'],
+  partSurfaces: ['source'],
 });
 
 /**
@@ -281,6 +282,29 @@ function makeCore(module) {
       }
       // A view into the module's memory would be detached by the next memory growth: own a copy.
       return bytes.buffer === module.HEAPU8?.buffer ? bytes.slice() : bytes;
+    },
+    /**
+     * The surface of every part of a voxel assembly (text or document object), ready to draw:
+     * [{ partId, positions, normals }] in increasing part id, Float32Arrays of non-indexed
+     * triangles (9 floats each) with flat outward axis normals, in voxel units: the triangles of
+     * the part's STL/OBJ export.
+     */
+    partSurfaces(assembly, options) {
+      const { source = '<input>' } = requireOptions('partSurfaces', options, OPTION_NAMES.partSurfaces);
+      const text = assemblyText(assembly, 'partSurfaces: assembly');
+      requireString(source, 'partSurfaces: source');
+      if (typeof module.partSurfaces !== 'function') {
+        throw new DesiaError('partSurfaces: this build of the WebAssembly module has no part surfaces (rebuild dist/ with scripts/build.sh wasm)', 'unsupported');
+      }
+      let surfaces;
+      try {
+        surfaces = module.partSurfaces(text, source);
+      } catch (error) {
+        rethrow(error);
+      }
+      // Views into the module's memory would be detached by the next memory growth: own copies.
+      const own = (floats) => (floats.buffer === module.HEAPF32?.buffer ? floats.slice() : floats);
+      return surfaces.map(({ partId, positions, normals }) => ({ partId, positions: own(positions), normals: own(normals) }));
     },
     /**
      * Designs an N-part interlocking voxel puzzle from a shape (.puz or JSON text). Resolves to

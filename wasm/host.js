@@ -98,6 +98,7 @@ export function createCoreHost(loadCore, post, { isCancelled = () => false } = {
     voxelize: (core, [mesh, options]) => core.voxelize(mesh, options),
     toPuz: (core, [assembly, options]) => core.toPuz(assembly, options),
     exportAssembly: (core, [assembly, options]) => core.exportAssembly(assembly, options),
+    partSurfaces: (core, [assembly, options]) => core.partSurfaces(assembly, options),
     designVoxel: (core, [shape, options], id) =>
       withProgress(id, (onProgress) => core.designVoxel(shape, { ...options, onProgress })),
     designPlate: (core, [input, options], id) =>
@@ -194,10 +195,11 @@ export function describeError(error) {
 
 /**
  * The value and its transfer list: the voxel labels of a document (the value itself or its
- * `document` field) become an Int32Array that is moved, not copied; bytes (exported files) are
- * moved as they are. Shared with the playground's worker.
+ * `document` field) become an Int32Array that is moved, not copied; bytes (exported files) and
+ * the float arrays of part surfaces are moved as they are. Shared with the playground's worker.
  */
 export function packForTransfer(value) {
+  if (Array.isArray(value) && value.length > 0 && value.every(isPartSurface)) return [value, surfaceBuffers(value)];
   if (value instanceof Uint8Array) {
     // Move a buffer that holds exactly these bytes (a view into a larger one would ship it all).
     const own = value.byteOffset === 0 && value.byteLength === value.buffer.byteLength ? value : value.slice();
@@ -214,6 +216,21 @@ export function packForTransfer(value) {
   if (value?.voxel) return [pack(value), transfer];
   if (value?.document?.voxel) return [{ ...value, document: pack(value.document) }, transfer];
   return [value, transfer];
+}
+
+function isPartSurface(item) {
+  return item?.positions instanceof Float32Array && item?.normals instanceof Float32Array;
+}
+
+/** The buffers of part surfaces (partSurfaces' result) to transfer rather than copy. */
+export function surfaceBuffers(surfaces) {
+  const buffers = new Set();
+  for (const surface of surfaces ?? []) {
+    if (!isPartSurface(surface)) continue;
+    buffers.add(surface.positions.buffer);
+    buffers.add(surface.normals.buffer);
+  }
+  return [...buffers];
 }
 
 /** The packed voxel labels (Int32Array) back as the plain array the core returns (in place). */

@@ -248,6 +248,20 @@ export interface ExportOptions {
 }
 
 /**
+ * The surface of one part of a voxel assembly, ready to draw (e.g. as a three.js BufferGeometry
+ * with `position` and `normal` attributes and no index): the triangles of the part's STL/OBJ
+ * export, one square per voxel face against empty space, another part or the grid's border.
+ */
+export interface PartSurface {
+  /** The part's id (labels 1 to N of the document). */
+  partId: number;
+  /** Non-indexed triangles: 9 floats (3 vertices x, y, z) each, counter-clockwise seen from outside, in voxel units. */
+  positions: Float32Array;
+  /** One outward unit axis normal per vertex, the same for the 3 vertices of a triangle (flat shading). */
+  normals: Float32Array;
+}
+
+/**
  * Options of the plate and frame designers. Their cores have not landed yet: every call rejects
  * with code 'unsupported' for now. The options will be the designers' own, as for designVoxel.
  */
@@ -285,6 +299,12 @@ export interface DesiaCore {
    * meshes of its parts (3D printing), or a BurrTools .xmpuzzle. Returns the file's bytes.
    */
   exportAssembly(assembly: string | AssemblyDocument, options?: ExportOptions): Uint8Array;
+  /**
+   * The surface of every part of a voxel assembly (.puz text, JSON text or a document object),
+   * in increasing part id, computed by the core from the same faces as the STL/OBJ export. Throws
+   * a DesiaError ('bad-input') for a non-voxel document or one without voxels, as the export does.
+   */
+  partSurfaces(assembly: string | AssemblyDocument, options?: { source?: string }): PartSurface[];
   /**
    * Designs an N-part interlocking voxel puzzle from a shape (.puz or JSON text). `puz` and
    * `document` are set when status is 'success' (the puzzle passed the project's own check);
@@ -345,6 +365,11 @@ export interface Desia {
   toPuz(assembly: string | AssemblyDocument, options?: { source?: string } & CallOptions): Promise<string>;
   /** An assembly as an STL, OBJ or BurrTools file; see {@link DesiaCore.exportAssembly}. */
   exportAssembly(assembly: string | AssemblyDocument, options?: ExportOptions & CallOptions): Promise<Uint8Array>;
+  /**
+   * The surface of every part of a voxel assembly, ready to draw; see
+   * {@link DesiaCore.partSurfaces}. The float arrays are moved out of the worker, not copied.
+   */
+  partSurfaces(assembly: string | AssemblyDocument, options?: { source?: string } & CallOptions): Promise<PartSurface[]>;
   /**
    * Designs an N-part interlocking voxel puzzle; resolves to the same object as
    * {@link DesiaCore.designVoxel} (byte-identical `.puz` for the same seed). `onProgress` is

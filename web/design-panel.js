@@ -69,7 +69,7 @@ function seconds(ms) {
 
 /**
  * Wires the panel. `core` is the page's CoreWorker; `getShape()` returns `{ name, text }` of the
- * assembly on screen or null; `showAssembly({ name, text, document, report, elapsedMs,
+ * assembly on screen or null; `showAssembly({ name, text, document, surfaces, report, elapsedMs,
  * timingLabel })` puts an assembly on screen; `setBusy(busy, label)` locks the page's other
  * inputs while the worker is busy for us.
  */
@@ -213,6 +213,7 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
           name: `${baseName(shape.name)}_N${result.progress.targetParts}_seed${options.seed ?? 1}.puz`,
           text: result.puz,
           document: result.document,
+          surfaces: result.surfaces,
           report: result.verification,
           elapsedMs,
           timingLabel: 'Design time',
@@ -309,9 +310,9 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
     const n = Number(ui.sessionChild.value);
     const answer = await sessionCall('session-preview', '', { n }, 'Previewing…');
     if (!answer) return;
-    const { index, document: document_, report } = answer.value;
+    const { index, document: document_, surfaces, report } = answer.value;
     const { partsPlaced, targetParts } = session.snapshot;
-    showSessionAssembly(`${session.base}_step${partsPlaced}of${targetParts}_child${index}`, document_, report, answer.elapsedMs);
+    showSessionAssembly(`${session.base}_step${partsPlaced}of${targetParts}_child${index}`, document_, surfaces, report, answer.elapsedMs);
     setOutcome('', `Preview of child ${index}: choose it to continue from there.`);
   }
 
@@ -322,16 +323,16 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
   }
 
   function showSnapshot(elapsedMs) {
-    const { partsPlaced, targetParts, document: document_, report } = session.snapshot;
-    showSessionAssembly(`${session.base}_step${partsPlaced}of${targetParts}`, document_, report, elapsedMs);
+    const { partsPlaced, targetParts, document: document_, surfaces, report } = session.snapshot;
+    showSessionAssembly(`${session.base}_step${partsPlaced}of${targetParts}`, document_, surfaces, report, elapsedMs);
     ui.sessionChild.value = '0';
     refreshControls();
   }
 
   /** Session assemblies have no .puz text from the core: the page keeps them as JSON documents. */
-  function showSessionAssembly(name, document_, report, elapsedMs) {
+  function showSessionAssembly(name, document_, surfaces, report, elapsedMs) {
     const plain = { ...document_, voxel: { ...document_.voxel, labels: Array.from(document_.voxel.labels) } };
-    showAssembly({ name: `${name}.json`, text: JSON.stringify(plain), document: document_, report, elapsedMs, timingLabel: 'Step time' });
+    showAssembly({ name: `${name}.json`, text: JSON.stringify(plain), document: document_, surfaces, report, elapsedMs, timingLabel: 'Step time' });
   }
 
   function describeSession() {

@@ -142,15 +142,15 @@ function voxelCount(document_) {
 }
 
 /**
- * Puts an assembly on screen whose document and report are already known (a designed puzzle,
- * a design step). It supersedes any load still in flight.
+ * Puts an assembly on screen whose document, part surfaces and report are already known (a
+ * designed puzzle, a design step). It supersedes any load still in flight.
  */
-function showAssembly({ name, text, document: document_, report, elapsedMs, timingLabel }) {
+function showAssembly({ name, text, document: document_, surfaces, report, elapsedMs, timingLabel }) {
   loadGeneration += 1;
   document.body.dataset.source = name;
   ui.sourceName.textContent = name;
   hideError();
-  view.show(document_);
+  view.show(document_, surfaces);
   setCurrent({ name, text }, report);
   renderReport(report, elapsedMs, timingLabel);
   view.applyReport(report);
@@ -177,9 +177,9 @@ async function loadAssembly(name, readText, { origin = name } = {}) {
     const text = await readText();
     if (!isCurrent()) return;
     // `source` makes the core's error messages name the file (and line) they are about.
-    const { value: document_ } = await core.run('parse', text, { source: name });
+    const { value: { document: document_, surfaces } } = await core.run('parse', text, { source: name });
     if (!isCurrent()) return;
-    view.show(document_);
+    view.show(document_, surfaces);
     const { value: report, elapsedMs } = await core.run('check', text, { method: ui.methodSelect.value, source: name });
     if (!isCurrent()) return;
     setCurrent({ name, text }, report);

@@ -3,7 +3,8 @@
 // The shared three.js renderer of the playground and of the drop-in viewer (viewer.js): one
 // merged surface per voxel part in its own colour, the key highlighted, the computed disassembly
 // played back along the report's removal paths, and an exploded view. It only draws: every fact
-// it shows (parts, key, order, paths) comes from the core's report.
+// it shows (parts, key, order, paths) comes from the core's report, and the part surfaces from
+// the core's partSurfaces (the triangles of the STL/OBJ export).
 //
 // Exports: AssemblyView (the 3D view inside a container element), DisassemblyPlayer (the
 // play/pause clock of the disassembly), createPlaybackControls (wires a slider, a play button, a
@@ -16,32 +17,17 @@ import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 
 // ---------------------------------------------------------------------------------------------
-// Voxel geometry: one merged surface per part, only faces that do not touch the same part.
-
-/** The six cube faces: neighbour offset (= outward normal) and corners in CCW order seen from outside. */
-const CUBE_FACES = [
-  { normal: [1, 0, 0], corners: [[1, 0, 0], [1, 1, 0], [1, 1, 1], [1, 0, 1]] },
-  { normal: [-1, 0, 0], corners: [[0, 0, 0], [0, 0, 1], [0, 1, 1], [0, 1, 0]] },
-  { normal: [0, 1, 0], corners: [[0, 1, 0], [0, 1, 1], [1, 1, 1], [1, 1, 0]] },
-  { normal: [0, -1, 0], corners: [[0, 0, 0], [1, 0, 0], [1, 0, 1], [0, 0, 1]] },
-  { normal: [0, 0, 1], corners: [[0, 0, 1], [1, 0, 1], [1, 1, 1], [0, 1, 1]] },
-  { normal: [0, 0, -1], corners: [[0, 0, 0], [0, 1, 0], [1, 1, 0], [1, 0, 0]] },
-];
+// Voxel geometry. The part surfaces come from the core (desia.partSurfaces: the same triangles as
+// the STL/OBJ export); here only the bounds and centroids used to place the camera and explode.
 
 /**
- * Builds, for every part id, the triangles of its boundary: a face between two voxels of the
- * same part is interior and skipped; faces against empty space or another part are kept (the
- * latter show up when parts move apart). Labels are in index order x + nx*(y + ny*z).
- * Returns Map(partId -> { positions, normals, indices, voxelSum, voxelCount }) with typed arrays,
- * plus the bounds of all occupied voxels. voxelSum / voxelCount is the part's centroid.
+ * The bounds of all occupied voxels and, per part id, the sum and count of its voxel centres
+ * (voxelSum / voxelCount is the part's centroid). Labels are in index order x + nx*(y + ny*z).
  */
-function buildPartSurfaces([nx, ny, nz], labels) {
-  const labelAt = (x, y, z) => (x < 0 || y < 0 || z < 0 || x >= nx || y >= ny || z >= nz
-    ? 0 : labels[x + nx * (y + ny * z)]);
-  const builders = new Map();
+function voxelExtents([nx, ny, nz], labels) {
   const min = [Infinity, Infinity, Infinity];
   const max = [-Infinity, -Infinity, -Infinity];
-
+  const centroids = new Map();
   for (let z = 0; z < nz; z += 1) {
     for (let y = 0; y < ny; y += 1) {
       for (let x = 0; x < nx; x += 1) {
@@ -52,51 +38,24 @@ function buildPartSurfaces([nx, ny, nz], labels) {
           min[axis] = Math.min(min[axis], cell[axis]);
           max[axis] = Math.max(max[axis], cell[axis] + 1);
         }
-        let builder = builders.get(part);
-        if (!builder) {
-          builder = { positions: [], normals: [], indices: [], voxelSum: [0, 0, 0], voxelCount: 0 };
-          builders.set(part, builder);
+        let sums = centroids.get(part);
+        if (!sums) {
+          sums = { voxelSum: [0, 0, 0], voxelCount: 0 };
+          centroids.set(part, sums);
         }
-        builder.voxelSum[0] += x + 0.5;
-        builder.voxelSum[1] += y + 0.5;
-        builder.voxelSum[2] += z + 0.5;
-        builder.voxelCount += 1;
-        for (const face of CUBE_FACES) {
-          const [dx, dy, dz] = face.normal;
-          if (labelAt(x + dx, y + dy, z + dz) === part) continue;
-          appendFace(builder, cell, face);
-        }
+        for (let axis = 0; axis < 3; axis += 1) sums.voxelSum[axis] += cell[axis] + 0.5;
+        sums.voxelCount += 1;
       }
     }
   }
-
-  const surfaces = new Map();
-  for (const [part, builder] of builders) {
-    surfaces.set(part, {
-      positions: new Float32Array(builder.positions),
-      normals: new Float32Array(builder.normals),
-      indices: new Uint32Array(builder.indices),
-      voxelSum: builder.voxelSum,
-      voxelCount: builder.voxelCount,
-    });
-  }
-  return { surfaces, min, max };
+  return { centroids, min, max };
 }
 
-function appendFace(builder, [x, y, z], face) {
-  const base = builder.positions.length / 3;
-  for (const [cx, cy, cz] of face.corners) {
-    builder.positions.push(x + cx, y + cy, z + cz);
-    builder.normals.push(...face.normal);
-  }
-  builder.indices.push(base, base + 1, base + 2, base, base + 2, base + 3);
-}
-
-function surfaceGeometry({ positions, normals, indices }) {
+/** A core part surface (non-indexed triangles with flat normals) as a three.js geometry. */
+function surfaceGeometry({ positions, normals }) {
   const geometry = new THREE.BufferGeometry();
   geometry.setAttribute('position', new THREE.BufferAttribute(positions, 3));
   geometry.setAttribute('normal', new THREE.BufferAttribute(normals, 3));
-  geometry.setIndex(new THREE.BufferAttribute(indices, 1));
   geometry.computeBoundingSphere();
   geometry.computeBoundingBox();
   return geometry;
@@ -255,8 +214,11 @@ export class AssemblyView {
     this.#notice.hidden = !text;
   }
 
-  /** Draws a parsed document; `applyReport` adds what the check found. */
-  show(document_) {
+  /**
+   * Draws a parsed document with its part surfaces (desia.partSurfaces of that document: an
+   * array of { partId, positions, normals }); `applyReport` adds what the check found.
+   */
+  show(document_, surfaces) {
     this.clear();
     if (!this.available) return;
     if (document_?.kind !== 'voxel' || !document_.voxel) {
@@ -264,16 +226,20 @@ export class AssemblyView {
       return;
     }
     const { size, labels } = document_.voxel;
-    const { surfaces, min, max } = buildPartSurfaces(size, labels);
-    if (surfaces.size === 0) {
+    const { centroids, min, max } = voxelExtents(size, labels);
+    if (centroids.size === 0) {
       this.#showNotice('The assembly has no voxels.');
+      return;
+    }
+    if (!Array.isArray(surfaces)) {
+      this.#showNotice('No part surfaces were given for this assembly.');
       return;
     }
     // Integer offsets keep voxel boundaries on the grid lines.
     const offset = new THREE.Vector3(-Math.floor((min[0] + max[0]) / 2), -min[1], -Math.floor((min[2] + max[2]) / 2));
     this.#content.position.copy(offset);
     this.#floorY = min[1] + offset.y;
-    this.#addParts(surfaces, min, max);
+    this.#addParts(surfaces, centroids, min, max);
     this.#addGrid(min, max, offset);
     this.#container.dataset.parts = String(this.#meshes.size);
     this.#updatePositions();
@@ -281,11 +247,12 @@ export class AssemblyView {
     this.#fitCamera(this.#framingBox());
   }
 
-  #addParts(surfaces, min, max) {
+  #addParts(surfaces, centroids, min, max) {
     const center = new THREE.Vector3(...min).add(new THREE.Vector3(...max)).multiplyScalar(0.5);
-    const partIds = [...surfaces.keys()].sort((a, b) => a - b);
-    for (const partId of partIds) {
-      const surface = surfaces.get(partId);
+    for (const surface of [...surfaces].sort((a, b) => a.partId - b.partId)) {
+      const { partId } = surface;
+      const sums = centroids.get(partId);
+      if (!sums) continue;
       const geometry = surfaceGeometry(surface);
       const material = new THREE.MeshStandardMaterial({
         color: partColor(partId),
@@ -309,7 +276,7 @@ export class AssemblyView {
       this.#meshes.set(partId, mesh);
       // Exploded view: every part moves away from the assembly's centre along the line through
       // its centroid, proportionally to its distance (the usual exploded drawing).
-      const centroid = new THREE.Vector3(...surface.voxelSum).divideScalar(surface.voxelCount);
+      const centroid = new THREE.Vector3(...sums.voxelSum).divideScalar(sums.voxelCount);
       this.#explodeOffsets.set(partId, centroid.sub(center).multiplyScalar(EXPLODE_SCALE));
     }
   }

@@ -3,12 +3,13 @@
 // tests/node/package.test.mjs checks that the names here match what viewer.js exports and that
 // ViewerHandle lists the members mountViewer returns).
 
-import type { AssemblyDocument, CheckReport } from '../wasm/index.js';
+import type { AssemblyDocument, CheckReport, PartSurface } from '../wasm/index.js';
 
 /** What the viewer needs from a desia instance (by default one `createDesia()` per page). */
 export interface ViewerCore {
   check(text: string, options?: { source?: string }): Promise<CheckReport>;
   parseDocument(text: string, options?: { source?: string }): Promise<AssemblyDocument>;
+  partSurfaces(assembly: string | AssemblyDocument, options?: { source?: string }): Promise<PartSurface[]>;
 }
 
 /** Where load() gets an assembly: a same-origin URL, or the file's text and a name for messages. */
@@ -18,6 +19,8 @@ export interface ViewerOptions {
   /** A parsed document and its check report (desia.parseDocument / desia.check). */
   document?: AssemblyDocument;
   report?: CheckReport | null;
+  /** The document's part surfaces (desia.partSurfaces); fetched from `desia` when missing. */
+  surfaces?: PartSurface[];
   /** Or a URL (relative to the page, same origin only) of a .puz / JSON file. */
   src?: string;
   /** Or the file's text, with `name` used in messages. */
@@ -35,7 +38,7 @@ export interface ViewerOptions {
   graphs?: boolean;
   /** Animation speed factor (default 1). */
   speed?: number;
-  /** The core used to check and parse files (default: one createDesia() per page). */
+  /** The core used to check and parse files and get part surfaces (default: one createDesia() per page). */
   desia?: ViewerCore;
 }
 
@@ -43,8 +46,12 @@ export interface ViewerHandle {
   readonly element: Element;
   readonly report: CheckReport | null;
   readonly document: AssemblyDocument | null;
-  /** Shows another assembly whose document and report are known. */
-  update(document: AssemblyDocument, report: CheckReport | null, name?: string): void;
+  /**
+   * Shows another assembly whose document and report are known, with its part surfaces (fetched
+   * from the viewer's core when not given). Resolves once it is drawn; rejects (and shows the
+   * message) when the surfaces cannot be had.
+   */
+  update(document: AssemblyDocument, report: CheckReport | null, name?: string, surfaces?: PartSurface[]): Promise<void>;
   /** Loads and checks a file; rejects (and shows the message) on failure. */
   load(source: ViewerSource): Promise<CheckReport>;
   play(): void;

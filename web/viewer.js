@@ -8,13 +8,13 @@
 //   <desia-viewer src="puzzles/cube.puz" autoplay></desia-viewer>
 //
 //   import { mountViewer } from '/path/to/web/viewer.js';          // or from 'desia/viewer'
-//   const viewer = mountViewer(element, { document, report });   // or { src } / { text, name }
+//   const viewer = mountViewer(element, { document, report, surfaces });   // or { src } / { text, name }
 //   viewer.play(); viewer.pause(); viewer.setExploded(0.5); viewer.update(document, report); viewer.dispose();
 //
 // The host page provides an import map for the bare specifier 'three' (and 'three/addons/'); this
 // module brings its sibling files (view.js, dbg-panel.js) and the package's
 // createDesia (../wasm/index.js), which checks files in a worker to get the report (verdict, key,
-// removal order and paths, graphs). Everything the viewer draws lives in the host's shadow root,
+// removal order and paths, graphs) and the part surfaces to draw (desia.partSurfaces). Everything the viewer draws lives in the host's shadow root,
 // with its own styles: the page's styles do not leak in, the viewer's do not leak out.
 //
 // Attributes of <desia-viewer>: src (a .puz or JSON assembly on the page's origin), autoplay
@@ -182,6 +182,7 @@ async function fetchAssemblyText(src, baseUri) {
 /**
  * Mounts a viewer into `host` (its shadow root; one is attached when it has none). Options:
  *   document, report   a parsed document and its check report (desia.parseDocument / desia.check)
+ *   surfaces           and its part surfaces (desia.partSurfaces); fetched from `desia` when missing
  *   src                or a URL (relative to the page, same origin) of a .puz / JSON file
  *   text, name         or the file's text and a name for messages
  *   autoplay           play disassembly and assembly in a loop once shown (not with reduced motion)
@@ -190,10 +191,13 @@ async function fetchAssemblyText(src, baseUri) {
  *   controls           show the control bar (default true)
  *   graphs             offer the blocking-graph drawing (default false)
  *   speed              animation speed factor (default 1)
- *   desia              an object with check() and parseDocument() (default: one createDesia() per page)
- * Returns { element, report, document, update(document, report), load(source), play(), pause(),
- * setExploded(x), setStep(step), dispose() }; load() takes { src } or { text, name } or a URL
- * string and resolves with the report (it rejects, and shows the message, on failure).
+ *   desia              an object with check(), parseDocument() and partSurfaces() (default: one
+ *                      createDesia() per page)
+ * Returns { element, report, document, update(document, report, name, surfaces), load(source),
+ * play(), pause(), setExploded(x), setStep(step), dispose() }; load() takes { src } or
+ * { text, name } or a URL string and resolves with the report (it rejects, and shows the message,
+ * on failure); update() resolves once the assembly is drawn (it rejects, and shows the message,
+ * when its surfaces cannot be had).
  */
 export function mountViewer(host, options = {}) {
   if (!(host instanceof Element)) throw new TypeError('mountViewer: the first argument must be an element');
@@ -309,13 +313,46 @@ export function mountViewer(host, options = {}) {
     emit('error', { message: text });
   }
 
-  /** Draws `document_` with what `report` found; resolves once the first frame is drawn. */
-  function show(document_, report, name = '') {
+  /**
+   * The part surfaces of `document_` from the viewer's core (null for documents without voxels:
+   * the view says it cannot draw them).
+   */
+  async function surfacesOf(document_, name) {
+    if (document_?.kind !== 'voxel') return null;
+    const desia = desiaSource ?? await pageDesia();
+    return desia.partSurfaces(document_, { source: name || 'assembly' });
+  }
+
+  /**
+   * Draws `document_` (with its part surfaces, fetched from the core when not given) and what
+   * `report` found; resolves once it is drawn, rejects (and shows the message) on failure.
+   */
+  async function showDocument(document_, report, name = '', surfaces = undefined) {
+    if (disposed) throw new Error('mountViewer: this viewer was disposed');
+    if (surfaces !== undefined && surfaces !== null) {
+      show(document_, report, name, surfaces);
+      return;
+    }
+    const mine = ++generation;
+    playback.pause();
+    message.hidden = true;
+    setState('loading');
+    try {
+      const fetched = await surfacesOf(document_, name);
+      if (!disposed && mine === generation) show(document_, report, name, fetched);
+    } catch (error) {
+      if (!disposed && mine === generation) showError(error);
+      throw error;
+    }
+  }
+
+  /** Draws `document_` and its surfaces with what `report` found; 'ready' once the first frame is drawn. */
+  function show(document_, report, name, surfaces) {
     if (disposed) throw new Error('mountViewer: this viewer was disposed');
     generation += 1;
     current = { document: document_, report, name };
     message.hidden = true;
-    view.show(document_);
+    view.show(document_, surfaces);
     view.applyReport(report ?? {});
     playback.setDisassembly(report?.disassembly ?? null);
     renderBadge(report);
@@ -343,13 +380,16 @@ export function mountViewer(host, options = {}) {
         : { name: request.name ?? 'assembly', text: request.text };
       if (typeof text !== 'string') throw new Error('mountViewer: give src, or text with a name');
       const desia = desiaSource ?? await pageDesia();
-      // `source` makes the core's messages name the file (and the line) they are about.
-      const [document_, report] = await Promise.all([
+      // `source` makes the core's messages name the file (and the line) they are about. Only
+      // voxel assemblies have surfaces: their error counts once the document says it is one.
+      const [document_, report, surfaces] = await Promise.all([
         desia.parseDocument(text, { source: name }),
         desia.check(text, { source: name }),
+        desia.partSurfaces(text, { source: name }).catch((error) => error),
       ]);
+      if (document_?.kind === 'voxel' && surfaces instanceof Error) throw surfaces;
       if (disposed || mine !== generation) return report;
-      show(document_, report, name);
+      show(document_, report, name, surfaces instanceof Error ? null : surfaces);
       return report;
     } catch (error) {
       if (!disposed && mine === generation) showError(error);
@@ -367,9 +407,9 @@ export function mountViewer(host, options = {}) {
     get document() {
       return current.document;
     },
-    /** Shows another assembly whose document and report are known. */
-    update(document_, report, name) {
-      show(document_, report, name);
+    /** Shows another assembly whose document and report (and maybe surfaces) are known. */
+    update(document_, report, name, surfaces) {
+      return showDocument(document_, report ?? null, name ?? '', surfaces);
     },
     load,
     play() {
@@ -417,7 +457,8 @@ export function mountViewer(host, options = {}) {
   mountedViewers.set(host, handle);
 
   if (options.document) {
-    show(options.document, options.report ?? null, options.name ?? '');
+    // Failures are on screen and in the 'error' event.
+    showDocument(options.document, options.report ?? null, options.name ?? '', options.surfaces).catch(() => {});
   } else if (options.src !== undefined || options.text !== undefined) {
     // Failures are on screen and in the 'error' event; a caller who wants the promise calls load().
     load(options.src !== undefined ? { src: options.src } : { text: options.text, name: options.name }).catch(() => {});

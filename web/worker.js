@@ -7,7 +7,8 @@
 // Protocol (plain structured-clone messages):
 //   in:  { type: 'init' }
 //        { type: 'run', id, op, text, options, bytes? }
-//          op 'check' | 'parse'   text = the assembly, options = the core's options
+//          op 'check' | 'parse'   text = the assembly, options = the core's options; parse's
+//                                 result is { document, surfaces }
 //          op 'voxelize'          bytes = the mesh (OBJ or STL), options = { resolution, source };
 //                                 result { text (the shape's JSON document), voxels, size }
 //          op 'to-puz'            text = a voxel assembly; result = its .puz text
@@ -32,13 +33,14 @@
 // message; the page terminates the worker and starts a new one (which also ends any session).
 //
 // Session results are snapshots { partsPlaced, targetParts, complete, childCount, document,
-// report, moved? } (report = the core's check of the current assembly); a preview is
-// { index, document, report }. One session per worker: opening one disposes the previous one.
+// surfaces, report, moved? } (report = the core's check of the current assembly); a preview is
+// { index, document, surfaces, report }; a design result carries `surfaces` too. `surfaces` is
+// the core's partSurfaces of `document` (Float32Arrays, transferred) or null (no voxel document). One session per worker: opening one disposes the previous one.
 
 import { loadDesiaModule } from '../wasm/core.js';
 // The package host's helpers: progress throttling, label packing and error classification are
 // the same for the playground as for createDesia.
-import { createProgressThrottle, describeError, errorMessage, packForTransfer } from '../wasm/host.js';
+import { createProgressThrottle, describeError, errorMessage, packForTransfer, surfaceBuffers } from '../wasm/host.js';
 
 const WASM_URL = new URL('../dist/desia_wasm.wasm', import.meta.url).href;
 
@@ -55,7 +57,10 @@ function loadCore() {
 // Each operation returns `[value, transferList]`.
 const OPERATIONS = {
   check: (core, text, options) => [core.check(text, options ?? {}), []],
-  parse: (core, text, options) => packForTransfer(core.parseDocument(text, options ?? {})),
+  parse: (core, text, options) => {
+    const document = core.parseDocument(text, options ?? {});
+    return withSurfaces(core, { document }, options?.source);
+  },
   design: designOperation,
   voxelize: (core, text, options, { bytes }) => {
     if (!(bytes instanceof Uint8Array)) throw Object.assign(new Error('voxelize: no mesh bytes were sent'), { code: 'bad-input' });
@@ -76,20 +81,20 @@ const OPERATIONS = {
   'session-open': (core, text, options) => {
     closeSession();
     session = core.designSession(text, options ?? {});
-    return sessionSnapshot();
+    return sessionSnapshot(core);
   },
-  'session-next': () => sessionSnapshot({ moved: openSession().next() }),
-  'session-back': () => sessionSnapshot({ moved: openSession().back() }),
+  'session-next': (core) => sessionSnapshot(core, { moved: openSession().next() }),
+  'session-back': (core) => sessionSnapshot(core, { moved: openSession().back() }),
   'session-choose': (core, text, options) => {
     openSession().choose(childIndex(options));
-    return sessionSnapshot();
+    return sessionSnapshot(core);
   },
   'session-preview': (core, text, options) => {
     const index = childIndex(options);
     const document = openSession().preview(index);
     // The core checks the previewed assembly from its own JSON document.
     const report = core.check(JSON.stringify(document), { source: `child ${index}` });
-    return packForTransfer({ index, document, report });
+    return withSurfaces(core, { index, document, report }, `child ${index}`);
   },
   'session-close': () => {
     closeSession();
@@ -104,7 +109,7 @@ function designOperation(core, text, options, { id }) {
   const progress = createProgressThrottle((value) => self.postMessage({ type: 'progress', id, value }));
   const result = core.designVoxel(text, { ...(options ?? {}), onProgress: progress.report });
   progress.flush();
-  return packForTransfer(result);
+  return withSurfaces(core, result, options?.source);
 }
 
 function openSession() {
@@ -124,13 +129,25 @@ function childIndex(options) {
 }
 
 /** The current node of the session, with its check report and the number of its children. */
-function sessionSnapshot(extra = {}) {
+function sessionSnapshot(core, extra = {}) {
   const current = openSession();
   const { partsPlaced, targetParts, complete, document } = current.state();
   // A complete puzzle has no children; asking would only generate an empty list.
   const childCount = complete ? 0 : current.childCount();
   const snapshot = { ...extra, partsPlaced, targetParts, complete, childCount, document, report: current.check() };
-  return packForTransfer(snapshot);
+  return withSurfaces(core, snapshot, 'design session');
+}
+
+/**
+ * `value` (holding a `document`) with `surfaces`: the core's part surfaces of that document for
+ * the 3D view (null when it is not a voxel document), as `[value, transferList]`: the labels and
+ * the surfaces' float arrays are moved to the page, not copied.
+ */
+function withSurfaces(core, value, source = '<input>') {
+  const { document } = value;
+  const surfaces = document?.kind === 'voxel' ? core.partSurfaces(document, { source: String(source ?? '<input>') }) : null;
+  const [packed, transfer] = packForTransfer({ ...value, surfaces });
+  return [packed, [...transfer, ...surfaceBuffers(surfaces)]];
 }
 
 async function handleInit() {

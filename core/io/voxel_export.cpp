@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // exportAssembly: checks the request, then hands over to the mesh writers or the xmpuzzle writer.
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <string>
@@ -129,6 +130,65 @@ void requireExportableVoxels(const AssemblyDocument& document, const std::string
   if (document.voxels.voxelCount() == 0 || document.voxels.maxLabel() == 0) {
     throwBadInput(source, "the assembly is empty: it has no voxels to export");
   }
+}
+
+namespace {
+
+// The display form of the export meshes: triangles unshared, each with its face's axis normal.
+PartSurface drawableSurface(int partId, const TriangleMesh& mesh) {
+  PartSurface surface;
+  surface.partId = partId;
+  surface.positions.reserve(mesh.triangles.size() * 9);
+  surface.normals.reserve(mesh.triangles.size() * 9);
+  for (const std::array<int, 3>& triangle : mesh.triangles) {
+    const std::array<double, 3>& a = mesh.vertices[triangle[0]];
+    const std::array<double, 3>& b = mesh.vertices[triangle[1]];
+    const std::array<double, 3>& c = mesh.vertices[triangle[2]];
+    // Every triangle lies in a face of a voxel, so its (b - a) x (c - a) has exactly one nonzero
+    // component: that axis, with the cross product's sign (CCW from outside = outward), is the normal.
+    const double cross[3] = {(b[1] - a[1]) * (c[2] - a[2]) - (b[2] - a[2]) * (c[1] - a[1]),
+                             (b[2] - a[2]) * (c[0] - a[0]) - (b[0] - a[0]) * (c[2] - a[2]),
+                             (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])};
+    int axis = 0;
+    for (int k = 1; k < 3; ++k) {
+      if (std::fabs(cross[k]) > std::fabs(cross[axis])) axis = k;
+    }
+    float normal[3] = {0.0f, 0.0f, 0.0f};
+    normal[axis] = cross[axis] > 0 ? 1.0f : -1.0f;
+    for (const std::array<double, 3>* vertex : {&a, &b, &c}) {
+      for (int k = 0; k < 3; ++k) {
+        surface.positions.push_back(static_cast<float>((*vertex)[k]));
+        surface.normals.push_back(normal[k]);
+      }
+    }
+  }
+  return surface;
+}
+
+}  // namespace
+
+std::vector<PartSurface> partSurfaces(const AssemblyDocument& document, const std::string& source) {
+  requireExportableVoxels(document, source);
+  const VoxelGrid& grid = document.voxels;
+  const std::vector<std::vector<int64_t>> voxels = voxelsByPart(grid);
+  const int parts = static_cast<int>(voxels.size()) - 1;
+  // Positions and normals: 2 x 9 floats per triangle.
+  constexpr int64_t kBytesPerTriangle = 2 * 9 * static_cast<int64_t>(sizeof(float));
+  int64_t triangles = 0;
+  for (int part = 1; part <= parts; ++part) {
+    if (voxels[part].empty()) throwBadInput(source, "part " + std::to_string(part) + " has no voxels");
+    triangles += 2 * boundaryFaceCount(grid, voxels[part]);
+  }
+  if (triangles * kBytesPerTriangle > kMaxExportBytes) {
+    throwExportTooLarge(source, "part surfaces (" + std::to_string(triangles) + " triangles or more)",
+                        triangles * kBytesPerTriangle);
+  }
+  std::vector<PartSurface> surfaces;
+  surfaces.reserve(static_cast<size_t>(parts));
+  for (int part = 1; part <= parts; ++part) {
+    surfaces.push_back(drawableSurface(part, surfaceOfVoxels(grid, part, voxels[part], 1.0)));
+  }
+  return surfaces;
 }
 
 std::vector<uint8_t> exportAssembly(const AssemblyDocument& document, ExportFormat format,

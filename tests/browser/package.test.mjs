@@ -236,6 +236,25 @@ describe('the npm package installed from its tarball, in a page', { timeout: 180
     }
   });
 
+  it("updates the viewer with a document alone: the viewer's core supplies its part surfaces", async () => {
+    const out = await page.evaluate(async ({ bunny }) => {
+      const [document_, report, surfaces] = await Promise.all([
+        window.desia.parseDocument(bunny, { source: 'bunny.puz' }),
+        window.desia.check(bunny, { source: 'bunny.puz' }),
+        window.desia.partSurfaces(bunny, { source: 'bunny.puz' }),
+      ]);
+      await window.mounted.update(document_, report, 'bunny.puz');
+      const host = document.getElementById('mounted');
+      return { state: host.dataset.state, parts: host.shadowRoot.querySelector('.viewport').dataset.parts,
+        documentParts: document_.parts.length, surfaceParts: surfaces.map((surface) => surface.partId),
+        floats: surfaces.every((surface) => surface.positions instanceof Float32Array && surface.positions.length % 9 === 0) };
+    }, texts);
+    assert.equal(out.state, 'ready');
+    assert.equal(out.parts, String(out.documentParts), 'one mesh per part');
+    assert.deepEqual(out.surfaceParts, Array.from({ length: out.documentParts }, (_, k) => k + 1));
+    assert.equal(out.floats, true);
+  });
+
   it('asked nothing from other origins and threw no page errors', () => {
     const origin = `http://127.0.0.1:${siteServer.port}`;
     const elsewhere = requestedUrls.filter((url) => !url.startsWith(`${origin}/`) && !/^(data|blob):/.test(url));

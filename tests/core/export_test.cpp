@@ -657,5 +657,68 @@ TEST(ExportBytes, SameRequestSameBytesAndVoxelSizeScalesOnlyCoordinates) {
   }
 }
 
+// ---- part surfaces for display -------------------------------------------------------------------
+
+TEST(PartSurfaces, SameTrianglesAsTheExportAxisNormalsAndTheVolumeOfEveryPart) {
+  for (const std::string& file : kReferencePuzzles) {
+    const AssemblyDocument document = loadReference(file);
+    const std::vector<PartSurface> surfaces = partSurfaces(document, file);
+    ASSERT_EQ(surfaces.size(), static_cast<size_t>(document.voxels.maxLabel())) << file;
+    for (size_t k = 0; k < surfaces.size(); ++k) {
+      const PartSurface& surface = surfaces[k];
+      const int id = static_cast<int>(k) + 1;
+      ASSERT_EQ(surface.partId, id) << file << ": parts in increasing id";
+      ASSERT_EQ(surface.positions.size(), surface.normals.size()) << file;
+      ASSERT_EQ(surface.positions.size() % 9, 0u) << file;
+      const size_t triangles = surface.positions.size() / 9;
+      // The binary STL of this one part: its header's triangle count (bytes 80 to 83).
+      ExportOptions onePart;
+      onePart.part = id;
+      const std::vector<uint8_t> stl = exportAssembly(document, ExportFormat::StlBinary, onePart);
+      EXPECT_EQ(triangles, littleEndian(stl, 80, 4)) << file << " part " << id;
+      EXPECT_EQ(triangles, partSurfaceMesh(document.voxels, id).triangles.size()) << file << " part " << id;
+      double volume = 0;
+      for (size_t t = 0; t < triangles; ++t) {
+        const float* a = &surface.positions[9 * t];
+        const float* b = a + 3;
+        const float* c = a + 6;
+        const float* normal = &surface.normals[9 * t];
+        int nonzero = 0;
+        for (int axis = 0; axis < 3; ++axis) {
+          ASSERT_TRUE(normal[axis] == 0.0f || normal[axis] == 1.0f || normal[axis] == -1.0f) << file;
+          nonzero += normal[axis] != 0.0f;
+        }
+        ASSERT_EQ(nonzero, 1) << file << " part " << id << " triangle " << t << ": a unit axis normal";
+        for (int corner = 1; corner < 3; ++corner) {
+          for (int axis = 0; axis < 3; ++axis) ASSERT_EQ(normal[3 * corner + axis], normal[axis]) << "flat normals";
+        }
+        // The normal points along (b - a) x (c - a): counter-clockwise seen from outside.
+        const double e1[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, e2[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+        const double cross[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]};
+        ASSERT_GT(cross[0] * normal[0] + cross[1] * normal[1] + cross[2] * normal[2], 0.0) << file << " triangle " << t;
+        volume += (a[0] * (static_cast<double>(b[1]) * c[2] - static_cast<double>(b[2]) * c[1]) -
+                   a[1] * (static_cast<double>(b[0]) * c[2] - static_cast<double>(b[2]) * c[0]) +
+                   a[2] * (static_cast<double>(b[0]) * c[1] - static_cast<double>(b[1]) * c[0])) /
+                  6;
+      }
+      EXPECT_NEAR(volume, static_cast<double>(document.voxels.labelCounts()[id]), 1e-6) << file << " part " << id;
+    }
+  }
+}
+
+TEST(PartSurfaces, BadDocumentsGiveTheExportErrors) {
+  const std::string contacts = R"({"format": "desia-assembly", "kind": "contacts", "parts": [{"id": 1}, {"id": 2}],
+    "contacts": [{"a": 1, "b": 2, "normal": [1, 0, 0]}]})";
+  EXPECT_EQ(errorOf([&] { partSurfaces(parseAssemblyText(contacts, "c.json"), "c.json"); }),
+            "c.json: export needs a voxel assembly, this is a contacts document");
+  AssemblyDocument empty;
+  empty.voxels = VoxelGrid(2, 2, 2);
+  EXPECT_EQ(errorOf([&] { partSurfaces(empty, "e.puz"); }), "e.puz: the assembly is empty: it has no voxels to export");
+  // Labels 1 and 3 only: part 2 has no voxels, as the exports say.
+  empty.voxels.setLabelAt(0, 1);
+  empty.voxels.setLabelAt(7, 3);
+  EXPECT_EQ(errorOf([&] { partSurfaces(empty, "gap.puz"); }), "gap.puz: part 2 has no voxels");
+}
+
 }  // namespace
 }  // namespace desia

@@ -35,6 +35,13 @@ function declaredMethods(interfaceName) {
   return [...match[1].matchAll(/^ {2}(\w+)\(/gm)].map((m) => m[1]).sort();
 }
 
+/** The field names an interface of index.d.ts declares (`name:` or `name?:` at the start of a member line). */
+function declaredFields(interfaceName) {
+  const match = new RegExp(`^export interface ${interfaceName}\\b[^{]*\\{([\\s\\S]*?)^\\}`, 'm').exec(declarations);
+  assert.ok(match, `interface ${interfaceName} not found in index.d.ts`);
+  return [...match[1].matchAll(/^ {2}(\w+)\??:/gm)].map((m) => m[1]).sort();
+}
+
 /** Splits a binary STL into its triangle count and the extent of its vertices per axis. */
 function binaryStlSummary(bytes) {
   const view = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength);
@@ -67,6 +74,8 @@ test('the declared interfaces list exactly the methods of the objects the packag
   const syncSession = core.designSession(cubeShape, { parts: 5 });
   assert.deepEqual(Object.keys(syncSession).sort(), declaredMethods('DesignSession'));
   syncSession.dispose();
+  const [surface] = await desia.partSurfaces(k9);
+  assert.deepEqual(Object.keys(surface).sort(), declaredFields('PartSurface'));
 });
 
 test('createDesia needs no setup and checks a reference puzzle', async () => {
@@ -321,4 +330,35 @@ test('exportAssembly writes STL, OBJ and BurrTools files of a voxel puzzle', asy
   await rejectsWith(desia.exportAssembly(k9, { format: 'dxf' }), 'bad-input', /dxf/);
   await rejectsWith(desia.exportAssembly('4 4 4\n1 1 1 1\n1 1\n', { source: 'ragged.puz' }), 'bad-input',
     /^ragged\.puz:3: row 2 of layer 1 has 2 values, expected Nx = 4$/);
+});
+
+test('partSurfaces gives every part the triangles of its STL export, the same in the worker', async () => {
+  const rejectsWith = (promise, code, message) => assert.rejects(promise, (error) => {
+    assert.ok(error instanceof DesiaError);
+    assert.equal(error.code, code);
+    assert.match(error.message, message);
+    return true;
+  });
+  const surfaces = await desia.partSurfaces(k9, { source: 'k9.puz' });
+  const fromCore = core.partSurfaces(core.parseDocument(k9));
+  assert.deepEqual(surfaces.map((s) => s.partId), [1, 2, 3, 4, 5, 6, 7, 8, 9]);
+  assert.deepEqual(surfaces, fromCore, 'worker and sync core agree (text in, document object in)');
+  for (const { partId, positions, normals } of surfaces) {
+    assert.ok(positions instanceof Float32Array && normals instanceof Float32Array);
+    assert.equal(positions.length, normals.length);
+    const { triangles } = binaryStlSummary(core.exportAssembly(k9, { format: 'stl', part: partId }));
+    assert.equal(positions.length / 9, triangles, `part ${partId}: as many triangles as its binary STL`);
+    for (let v = 0; v < normals.length; v += 3) {
+      const n = [normals[v], normals[v + 1], normals[v + 2]];
+      assert.equal(n.filter((c) => c !== 0).length, 1, `part ${partId}: an axis normal`);
+      assert.ok(n.every((c) => c === 0 || Math.abs(c) === 1), `part ${partId}: a unit normal`);
+    }
+  }
+  await rejectsWith(desia.partSurfaces(k9, { format: 'stl' }), 'bad-input', /^partSurfaces: unknown option 'format' \(expected source or signal\)$/);
+  assert.throws(() => core.partSurfaces(k9, 'k9.puz'),
+    (error) => error instanceof DesiaError && /^partSurfaces: options must be an object, got a string/.test(error.message));
+  await rejectsWith(desia.partSurfaces(42), 'bad-input', /^partSurfaces: assembly must be a string, got a number/);
+  const contacts = JSON.stringify({ format: 'desia-assembly', kind: 'contacts', parts: [{ id: 1 }, { id: 2 }],
+    contacts: [{ a: 1, b: 2, normal: [1, 0, 0] }] });
+  await rejectsWith(desia.partSurfaces(contacts, { source: 'c.json' }), 'bad-input', /^c\.json: export needs a voxel assembly, this is a contacts document$/);
 });

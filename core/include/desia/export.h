@@ -39,6 +39,21 @@ std::vector<uint8_t> exportAssembly(const AssemblyDocument& document, ExportForm
 
 constexpr int64_t kMaxExportBytes = 512LL << 20;
 
+// The surface of one part ready to draw: non-indexed triangles (3 floats per vertex, 9 per
+// triangle) with flat per-face normals along the grid axes, outward, counter-clockwise seen from
+// outside, in voxel units. The same triangles as the part's STL/OBJ export, so a viewer draws
+// exactly what gets printed.
+struct PartSurface {
+  int partId = 0;
+  std::vector<float> positions;
+  std::vector<float> normals;
+};
+
+// The surface of every part of `document` (a voxel assembly), parts in increasing id. Same checks
+// and errors as exportAssembly (BadInput for a non-voxel document, no voxels or an empty part;
+// TooLarge past kMaxExportBytes of floats); `source` names the input in messages.
+std::vector<PartSurface> partSurfaces(const AssemblyDocument& document, const std::string& source = "<input>");
+
 // The closed surface of part `partId`: one square per voxel face that does not touch the same
 // part (faces against empty space, another part or the grid's border), as outward triangles, in
 // grid coordinates times `voxelSize` (voxel (x, y, z) spans [x, x+1] x [y, y+1] x [z, z+1]).
