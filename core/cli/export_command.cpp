@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "cli_arguments.h"
 #include "cli_files.h"
 #include "commands.h"
 #include "desia/document.h"
@@ -17,15 +18,10 @@ constexpr int kExitBadInput = 2;
 const char* kExportUsage =
     "usage: desia export FILE --format stl|stl-ascii|obj|xmpuzzle [--part N] [--voxel-size S] --output OUT\n";
 
-struct ExportUsageError {
-  std::string message;
-};
+using desia::cli::UsageError;
 
 int parsePart(const std::string& text) {
-  bool digits = !text.empty() && text.size() <= 9;
-  for (char c : text) digits = digits && c >= '0' && c <= '9';
-  if (!digits) throw ExportUsageError{"--part needs a part number (0 = all parts), got '" + text + "'"};
-  return std::stoi(text);
+  return desia::cli::parseDigits(text, "--part needs a part number (0 = all parts), got '" + text + "'");
 }
 
 double parseVoxelSize(const std::string& text) {
@@ -36,43 +32,26 @@ double parseVoxelSize(const std::string& text) {
   } catch (const std::exception&) {
     used = 0;
   }
-  if (text.empty() || used != text.size()) throw ExportUsageError{"--voxel-size needs a number, got '" + text + "'"};
+  if (text.empty() || used != text.size()) throw UsageError{"--voxel-size needs a number, got '" + text + "'"};
   return value;  // the range is checked by the core
 }
 
 int exportFile(const std::vector<std::string>& args) {
   std::string input, output, format;
   desia::ExportOptions options;
-  for (size_t i = 0; i < args.size(); ++i) {
-    const std::string& arg = args[i];
-    if (arg.rfind("-", 0) != 0 || arg == "-") {
-      if (!input.empty()) throw ExportUsageError{"export takes one FILE, got also " + arg};
-      input = arg;
-      continue;
-    }
-    std::string name = arg, value;
-    bool hasValue = false;
-    const size_t equals = arg.find('=');
-    if (arg.rfind("--", 0) == 0 && equals != std::string::npos) {
-      name = arg.substr(0, equals);
-      value = arg.substr(equals + 1);
-      hasValue = true;
-    }
-    if (name != "--format" && name != "--part" && name != "--voxel-size" && name != "--output") {
-      throw ExportUsageError{"unknown option " + arg};
-    }
-    if (!hasValue) {
-      if (i + 1 == args.size()) throw ExportUsageError{name + " needs a value"};
-      value = args[++i];
-    }
+  const desia::cli::Arguments arguments =
+      desia::cli::splitArguments(args, {"--format", "--part", "--voxel-size", "--output"});
+  if (arguments.positional.size() > 1) throw UsageError{"export takes one FILE, got also " + arguments.positional[1]};
+  if (!arguments.positional.empty()) input = arguments.positional[0];
+  for (const auto& [name, value] : arguments.named) {
     if (name == "--format") format = value;
     if (name == "--output") output = value;
     if (name == "--part") options.part = parsePart(value);
     if (name == "--voxel-size") options.voxelSize = parseVoxelSize(value);
   }
-  if (input.empty()) throw ExportUsageError{"export needs a FILE (.puz or JSON voxel assembly)"};
-  if (format.empty()) throw ExportUsageError{"export needs --format stl|stl-ascii|obj|xmpuzzle"};
-  if (output.empty()) throw ExportUsageError{"export needs --output OUT"};
+  if (input.empty()) throw UsageError{"export needs a FILE (.puz or JSON voxel assembly)"};
+  if (format.empty()) throw UsageError{"export needs --format stl|stl-ascii|obj|xmpuzzle"};
+  if (output.empty()) throw UsageError{"export needs --output OUT"};
   const desia::ExportFormat exportFormat = desia::parseExportFormat(format);
 
   options.source = input;
@@ -93,7 +72,7 @@ int exportFile(const std::vector<std::string>& args) {
 int runExportCommand(const std::vector<std::string>& args) {
   try {
     return exportFile(args);
-  } catch (const ExportUsageError& e) {
+  } catch (const UsageError& e) {
     std::cerr << "desia: export: " << e.message << "\n" << kExportUsage;
     return kExitBadInput;
   }

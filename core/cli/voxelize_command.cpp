@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "cli_arguments.h"
 #include "cli_files.h"
 #include "commands.h"
 #include "desia/document.h"
@@ -18,46 +19,27 @@ constexpr int kExitBadInput = 2;
 
 const char* kVoxelizeUsage = "usage: desia voxelize --input MESH.obj|.stl [--resolution R] --output SHAPE.puz|.json\n";
 
-struct VoxelizeUsageError {
-  std::string message;
-};
+using desia::cli::UsageError;
 
 int parseResolution(const std::string& text) {
-  bool digits = !text.empty() && text.size() <= 9;
-  for (char c : text) digits = digits && c >= '0' && c <= '9';
-  if (!digits) throw VoxelizeUsageError{"--resolution needs a positive integer, got '" + text + "'"};
-  return std::stoi(text);
+  return desia::cli::parseDigits(text, "--resolution needs a positive integer, got '" + text + "'");
 }
 
 int voxelize(const std::vector<std::string>& args) {
   std::string input, output;
   desia::VoxelizeOptions options;
-  for (size_t i = 0; i < args.size(); ++i) {
-    const std::string& arg = args[i];
-    std::string name = arg, value;
-    bool hasValue = false;
-    const size_t equals = arg.find('=');
-    if (arg.rfind("--", 0) == 0 && equals != std::string::npos) {
-      name = arg.substr(0, equals);
-      value = arg.substr(equals + 1);
-      hasValue = true;
-    }
-    if (name != "--input" && name != "--output" && name != "--resolution") {
-      throw VoxelizeUsageError{arg.rfind("-", 0) == 0 ? "unknown option " + arg : "unexpected argument " + arg};
-    }
-    if (!hasValue) {
-      if (i + 1 == args.size()) throw VoxelizeUsageError{name + " needs a value"};
-      value = args[++i];
-    }
+  const desia::cli::Arguments arguments = desia::cli::splitArguments(args, {"--input", "--output", "--resolution"});
+  if (!arguments.positional.empty()) throw UsageError{"unexpected argument " + arguments.positional[0]};
+  for (const auto& [name, value] : arguments.named) {
     if (name == "--input") input = value;
     if (name == "--output") output = value;
     if (name == "--resolution") options.resolution = parseResolution(value);
   }
-  if (input.empty()) throw VoxelizeUsageError{"voxelize needs --input MESH.obj|.stl"};
-  if (output.empty()) throw VoxelizeUsageError{"voxelize needs --output SHAPE.puz|.json"};
+  if (input.empty()) throw UsageError{"voxelize needs --input MESH.obj|.stl"};
+  if (output.empty()) throw UsageError{"voxelize needs --output SHAPE.puz|.json"};
   const bool json = desia::cli::hasExtension(output, ".json");
   if (!json && !desia::cli::hasExtension(output, ".puz")) {
-    throw VoxelizeUsageError{"--output must name a .puz or .json file, got '" + output + "'"};
+    throw UsageError{"--output must name a .puz or .json file, got '" + output + "'"};
   }
 
   const desia::TriangleMesh mesh = desia::parseMesh(desia::cli::readInputFile(input), input);
@@ -79,7 +61,7 @@ int voxelize(const std::vector<std::string>& args) {
 int runVoxelizeCommand(const std::vector<std::string>& args) {
   try {
     return voxelize(args);
-  } catch (const VoxelizeUsageError& e) {
+  } catch (const UsageError& e) {
     std::cerr << "desia: voxelize: " << e.message << "\n" << kVoxelizeUsage;
     return kExitBadInput;
   }
