@@ -189,20 +189,26 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
   // -------------------------------------------------------------------------------------------
   // Automatic design
 
-  async function design() {
-    if (busy) return;
+  /** The current shape and the form's options, or null (with the reason on screen). */
+  function readRequest() {
     const shape = getShape();
     if (!shape) {
       setOutcome('error', 'Load a voxel shape first (an example, your own .puz / .json, or a mesh to voxelize).');
-      return;
+      return null;
     }
-    let options;
     try {
-      options = readOptions();
+      return { shape, options: readOptions() };
     } catch (error) {
       setOutcome('error', error.message);
-      return;
+      return null;
     }
+  }
+
+  async function design() {
+    if (busy) return;
+    const request = readRequest();
+    if (!request) return;
+    const { shape, options } = request;
     syncUrl();
     begin('Designing…', { withProgress: true });
     try {
@@ -268,18 +274,9 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
   }
 
   async function startSession() {
-    const shape = getShape();
-    if (!shape) {
-      setOutcome('error', 'Load a voxel shape first (an example, your own .puz / .json, or a mesh to voxelize).');
-      return;
-    }
-    let options;
-    try {
-      options = readOptions();
-    } catch (error) {
-      setOutcome('error', error.message);
-      return;
-    }
+    const request = readRequest();
+    if (!request) return;
+    const { shape, options } = request;
     delete options.timeLimit; // A session makes one step per click: no search to limit.
     syncUrl();
     const generation = core.generation;
