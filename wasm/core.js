@@ -205,6 +205,15 @@ export async function loadDesiaModule(options) {
   return makeCore(module);
 }
 
+/** Runs one call into the module, turning whatever it throws into a DesiaError. */
+function callModule(call) {
+  try {
+    return call();
+  } catch (error) {
+    return rethrow(error);
+  }
+}
+
 function makeCore(module) {
   return {
     /** Interlocking check of .puz or JSON text; same fields as `desia check --json`. */
@@ -213,22 +222,14 @@ function makeCore(module) {
       requireText(text, 'check: text');
       requireString(method, 'check: method');
       requireString(source, 'check: source');
-      try {
-        return module.check(text, method, source);
-      } catch (error) {
-        rethrow(error);
-      }
+      return callModule(() => module.check(text, method, source));
     },
     /** Parses .puz or JSON text into the JSON assembly document (plain object). */
     parseDocument(text, options) {
       const { source = '<input>' } = requireOptions('parseDocument', options, OPTION_NAMES.parseDocument);
       requireText(text, 'parseDocument: text');
       requireString(source, 'parseDocument: source');
-      try {
-        return module.parseDocument(text, source);
-      } catch (error) {
-        rethrow(error);
-      }
+      return callModule(() => module.parseDocument(text, source));
     },
     /**
      * Solid voxelization of a closed OBJ or STL mesh into a one-part voxel shape; returns the JSON
@@ -239,22 +240,14 @@ function makeCore(module) {
       const bytes = meshBytes(mesh, 'voxelize: mesh');
       requireInt32(resolution, 'voxelize: resolution');
       requireString(source, 'voxelize: source');
-      try {
-        return module.voxelize(bytes, resolution, source);
-      } catch (error) {
-        rethrow(error);
-      }
+      return callModule(() => module.voxelize(bytes, resolution, source));
     },
     /** A voxel assembly (.puz text or a JSON document, as text or object) as .puz text. */
     toPuz(assembly, options) {
       const { source = '<input>' } = requireOptions('toPuz', options, OPTION_NAMES.toPuz);
       const text = assemblyText(assembly, 'toPuz: assembly');
       requireString(source, 'toPuz: source');
-      try {
-        return module.toPuz(text, source);
-      } catch (error) {
-        rethrow(error);
-      }
+      return callModule(() => module.toPuz(text, source));
     },
     /**
      * An assembly (text or document object) as a file for other tools: 'stl' (binary), 'stl-ascii',
@@ -274,12 +267,7 @@ function makeCore(module) {
       if (typeof module.exportAssembly !== 'function') {
         throw new DesiaError('exportAssembly: this build of the WebAssembly module has no exporter (rebuild dist/ with scripts/build.sh wasm)', 'unsupported');
       }
-      let bytes;
-      try {
-        bytes = module.exportAssembly(text, format, part, voxelSize, source);
-      } catch (error) {
-        rethrow(error);
-      }
+      const bytes = callModule(() => module.exportAssembly(text, format, part, voxelSize, source));
       // A view into the module's memory would be detached by the next memory growth: own a copy.
       return bytes.buffer === module.HEAPU8?.buffer ? bytes.slice() : bytes;
     },
@@ -296,12 +284,7 @@ function makeCore(module) {
       if (typeof module.partSurfaces !== 'function') {
         throw new DesiaError('partSurfaces: this build of the WebAssembly module has no part surfaces (rebuild dist/ with scripts/build.sh wasm)', 'unsupported');
       }
-      let surfaces;
-      try {
-        surfaces = module.partSurfaces(text, source);
-      } catch (error) {
-        rethrow(error);
-      }
+      const surfaces = callModule(() => module.partSurfaces(text, source));
       // Views into the module's memory would be detached by the next memory growth: own copies.
       const own = (floats) => (floats.buffer === module.HEAPF32?.buffer ? floats.slice() : floats);
       return surfaces.map(({ partId, positions, normals }) => ({ partId, positions: own(positions), normals: own(normals) }));
@@ -322,11 +305,7 @@ function makeCore(module) {
         throw new DesiaError('designVoxel: onProgress must be a function', 'bad-input');
       }
       const json = optionsJson('designVoxel', designOptions);
-      try {
-        return module.designVoxel(shapeText, json, source, onProgress);
-      } catch (error) {
-        rethrow(error);
-      }
+      return callModule(() => module.designVoxel(shapeText, json, source, onProgress));
     },
     /**
      * An interactive design session (the original tool's "Generate Next Part", "Child Index",
