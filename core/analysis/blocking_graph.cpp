@@ -2,6 +2,8 @@
 #include "desia/blocking_graph.h"
 
 #include <algorithm>
+#include <array>
+#include <cstdint>
 #include <cmath>
 #include <cstdio>
 
@@ -9,17 +11,6 @@
 
 namespace desia {
 namespace {
-
-bool sameDirection(const Vec3& a, const Vec3& b) {
-  return std::abs(a[0] - b[0]) < 1e-7 && std::abs(a[1] - b[1]) < 1e-7 && std::abs(a[2] - b[2]) < 1e-7;
-}
-
-void addUnique(std::vector<Vec3>& list, const Vec3& v) {
-  for (const Vec3& existing : list) {
-    if (sameDirection(existing, v)) return;
-  }
-  list.push_back(v);
-}
 
 // Snaps components that are numerically zero or one, so that axis directions get exact values
 // and the same labels natively and in WebAssembly.
@@ -31,15 +22,42 @@ Vec3 cleaned(Vec3 v) {
   return v;
 }
 
+// Unit vectors closer than about 1e-9 per component stand for one direction: far below any
+// angle a geometry means, far above the rounding of the cross products that produce them.
+using DirectionKey = std::array<int64_t, 3>;
+DirectionKey keyOf(const Vec3& unit) {
+  constexpr double kGrid = 1073741824.0;  // 2^30
+  return {std::llround(unit[0] * kGrid), std::llround(unit[1] * kGrid), std::llround(unit[2] * kGrid)};
+}
+
+// One representative per key, the first in input order; sorting keeps this O(L log L) where a
+// pairwise comparison was O(L^2) (L^4 for the O(L^2) crossings of L normals, issue 14).
+std::vector<Vec3> uniqueDirections(const std::vector<Vec3>& directions) {
+  std::vector<std::pair<DirectionKey, size_t>> keyed;
+  keyed.reserve(directions.size());
+  for (size_t i = 0; i < directions.size(); ++i) keyed.push_back({keyOf(directions[i]), i});
+  std::sort(keyed.begin(), keyed.end());
+  std::vector<size_t> kept;
+  for (size_t i = 0; i < keyed.size(); ++i) {
+    if (i == 0 || keyed[i].first != keyed[i - 1].first) kept.push_back(keyed[i].second);
+  }
+  std::sort(kept.begin(), kept.end());
+  std::vector<Vec3> unique;
+  unique.reserve(kept.size());
+  for (size_t i : kept) unique.push_back(directions[i]);
+  return unique;
+}
+
 // One representative per line through the origin spanned by the contact normals.
 std::vector<Vec3> distinctNormalLines(const Assembly& assembly) {
   std::vector<Vec3> lines;
+  lines.reserve(assembly.contacts.size());
   for (const Contact& contact : assembly.contacts) {
     Vec3 n = normalized(contact.normal);
     if (norm(n) == 0) continue;
-    addUnique(lines, cleaned(canonicalSign(n)));
+    lines.push_back(cleaned(canonicalSign(n)));
   }
-  return lines;
+  return uniqueDirections(lines);
 }
 
 // Any unit vector orthogonal to n.
@@ -82,20 +100,22 @@ std::string directionLabel(const Vec3& direction) {
 std::vector<BaseDirection> computeBaseDirections(const Assembly& assembly) {
   const std::vector<Vec3> lines = distinctNormalLines(assembly);
   std::vector<Vec3> directions;
+  directions.reserve(lines.size() * (lines.size() - (lines.empty() ? 0 : 1)) / 2 + 3);
   // Vertices of the arrangement: intersections of the great circles of two distinct normals.
   for (size_t i = 0; i < lines.size(); ++i) {
     for (size_t j = i + 1; j < lines.size(); ++j) {
       Vec3 d = cross(lines[i], lines[j]);
       if (norm(d) < 1e-9) continue;
-      addUnique(directions, cleaned(canonicalSign(normalized(d))));
+      directions.push_back(cleaned(canonicalSign(normalized(d))));
     }
   }
   // Axis-aligned (voxel) assemblies always get the three axes (Section 3.1: "the base directions
   // are the three axes"), even when some axis has no contact. An extra direction never changes a
   // verdict: its DBG is a real one, and it keeps the graphs of voxel puzzles comparable.
   if (hasOnlyAxisAlignedContacts(assembly)) {
-    for (const Vec3& axis : {Vec3{1, 0, 0}, Vec3{0, 1, 0}, Vec3{0, 0, 1}}) addUnique(directions, axis);
+    for (const Vec3& axis : {Vec3{1, 0, 0}, Vec3{0, 1, 0}, Vec3{0, 0, 1}}) directions.push_back(axis);
   }
+  directions = uniqueDirections(directions);
   if (directions.empty()) {
     // No vertex: all normals parallel (a single great circle, every direction on it is free for
     // the same groups) or no contacts at all (every direction is free). Either way the

@@ -46,12 +46,19 @@ InterlockingResult combine(const InterlockingResult& graphs, const InterlockingR
 CheckReport checkAssembly(const AssemblyDocument& document, const CheckOptions& options) {
   CheckReport report;
   report.method = options.method;
-  report.graphs = buildBaseBlockingGraphs(document.assembly);
+  // The base directions are computed once and shared by both tests and the plan.
+  const std::vector<BaseDirection> directions = computeBaseDirections(document.assembly);
+  report.baseDirectionCount = directions.size();
+  if (options.allGraphs || directions.size() <= kReportedGraphLimit) {
+    for (const BaseDirection& direction : directions) report.graphs.push_back(buildBlockingGraph(document.assembly, direction));
+  }
   if (options.method != CheckMethod::Inequalities) {
-    report.graphResult = testInterlockingByGraphs(document.assembly, report.graphs);
+    report.graphResult = report.graphs.empty() && !directions.empty()
+                             ? testInterlockingByGraphs(document.assembly, directions)
+                             : testInterlockingByGraphs(document.assembly, report.graphs);
   }
   if (options.method != CheckMethod::Graphs) {
-    report.inequalityResult = testInterlockingByInequalities(document.assembly);
+    report.inequalityResult = testInterlockingByInequalities(document.assembly, directions);
   }
   if (options.method == CheckMethod::Both) {
     report.result = combine(*report.graphResult, *report.inequalityResult);

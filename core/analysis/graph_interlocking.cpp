@@ -68,8 +68,12 @@ const char* verdictName(Verdict verdict) {
   return "not-interlocking";
 }
 
-InterlockingResult testInterlockingByGraphs(const Assembly& assembly,
-                                            const std::vector<DirectionalBlockingGraph>& graphs) {
+namespace {
+
+// The test over `count` base DBGs, `graphAt(i)` giving the i-th (built on demand by the caller
+// when there are many, so they need not all be held at once).
+template <typename GraphAt>
+InterlockingResult testGraphs(const Assembly& assembly, size_t count, GraphAt&& graphAt) {
   const int n = assembly.partCount();
   if (n < 3) {
     InterlockingResult result;
@@ -78,7 +82,8 @@ InterlockingResult testInterlockingByGraphs(const Assembly& assembly,
   }
   int key = -1;
   std::vector<Vec3> keyDirections;
-  for (const DirectionalBlockingGraph& dbg : graphs) {
+  for (size_t index = 0; index < count; ++index) {
+    const auto& dbg = graphAt(index);
     const StronglyConnectedComponents scc = findStronglyConnectedComponents(dbg.graph);
     if (scc.count() == 1) continue;  // strongly connected: nothing moves along ±d
     const CondensationDegrees degrees = condensationDegrees(dbg.graph, scc);
@@ -120,6 +125,21 @@ InterlockingResult testInterlockingByGraphs(const Assembly& assembly,
   }
   if (key < 0) return deadlockedResult("every base blocking graph is strongly connected: no part or part group can move");
   return interlockingResult(assembly, key, keyDirections);
+}
+
+}  // namespace
+
+InterlockingResult testInterlockingByGraphs(const Assembly& assembly,
+                                            const std::vector<DirectionalBlockingGraph>& graphs) {
+  return testGraphs(assembly, graphs.size(), [&](size_t i) -> const DirectionalBlockingGraph& { return graphs[i]; });
+}
+
+InterlockingResult testInterlockingByGraphs(const Assembly& assembly, const std::vector<BaseDirection>& directions) {
+  DirectionalBlockingGraph current;
+  return testGraphs(assembly, directions.size(), [&](size_t i) -> const DirectionalBlockingGraph& {
+    current = buildBlockingGraph(assembly, directions[i]);
+    return current;
+  });
 }
 
 }  // namespace desia

@@ -1,4 +1,3 @@
-// SPDX-License-Identifier: GPL-3.0-or-later
 // Inequality-based interlocking test (paper Section 3.2, Eq. 2), solved with GLPK.
 //
 // Two departures from the paper's recipe make the test exact for any contact normals:
@@ -8,13 +7,30 @@
 // - Round 2 fixes only a reference part, not the key: fixing both freezes any motion that
 //   separates a group holding the reference from a group holding the key and other parts, and
 //   such an assembly would pass. The key may move; a motion counts when another part moves.
-
-#include <glpk.h>
+//
+// And one makes its verdicts trustworthy on computed normals (issue 14). Normals computed in
+// floating point (a rotation, a cross product) carry 1e-16 errors, and an exact answer on such
+// data can differ from the answer the geometry means: three normals of a planar design turned by
+// a rotation no longer lie exactly in one plane, so the motion normal to that plane disappears.
+// The question every program answers is therefore posed with a tolerance, the same kind of
+// tolerance the blocking graphs use (a contact blocks d when d·n exceeds a tolerance):
+//
+//     is there a motion v, |v_j| <= 1, that penetrates no contact by more than kPenetration
+//     ((v_b - v_a)·n >= -kPenetration) and makes the program's objective reach kMotion?
+//
+// GLPK's floating-point simplex proposes an answer and the answer is accepted only with a
+// certificate checked here against every contact: a motion is checked directly, "no motion" by
+// weak duality (any y >= 0 bounds the objective over all such motions by Σ|c + Aᵀy| + kPenetration
+// Σy). When neither certificate holds (GLPK failed, hit its limits, or was imprecise), the same
+// question is decided by GLPK's exact rational simplex on the relaxed rows. The three routes
+// answer one well-defined question, so the verdict does not depend on which one decided.
 
 #include <algorithm>
-#include <memory>
+#include <cfloat>
+#include <cmath>
 #include <sstream>
 
+#include "analysis/linear_program.h"
 #include "analysis/part_motion.h"
 #include "analysis/vec3.h"
 #include "desia/error.h"
@@ -23,12 +39,12 @@
 namespace desia {
 namespace {
 
-constexpr double kMotionEpsilon = 1e-7;
-
-struct GlpkProblemDeleter {
-  void operator()(glp_prob* problem) const { glp_delete_prob(problem); }
-};
-using GlpkProblem = std::unique_ptr<glp_prob, GlpkProblemDeleter>;
+// How far a motion of unit speed may push into a contact and still count as sliding along it.
+// Far above the residue of computed normals (1e-16) and far below anything a geometry means.
+constexpr double kPenetration = 1e-12;
+// The objective a motion must reach (velocities are bounded by 1). Relaxation alone reaches
+// about kPenetration times the contact count: far less.
+constexpr double kMotion = 1e-6;
 
 // Contacts that involve at least one free part; with both sides fixed a contact says nothing.
 std::vector<int> relevantContacts(const Assembly& assembly, const std::vector<bool>& isFree) {
@@ -67,18 +83,6 @@ enum class Objective {
   GenericFunctional,   // max Σ c_i·v_i over watched parts, for a fixed generic c (see below)
 };
 
-struct LinearProgram {
-  GlpkProblem problem{glp_create_prob()};
-  std::vector<int> ia{0}, ja{0};
-  std::vector<double> ar{0.0};
-  void add(int row, int col, double value) {
-    if (value == 0.0) return;
-    ia.push_back(row);
-    ja.push_back(col);
-    ar.push_back(value);
-  }
-};
-
 // Deterministic "generic" weights in ±[0.5, 1.5]: a non-zero cone of motions projected on the
 // watched velocities is orthogonal to such a vector only with probability zero, so max c·v > 0
 // or max -c·v > 0 exactly when a watched part can move, sliding motions included (where every
@@ -99,101 +103,163 @@ bool involvesUnwatchedFreePart(const Contact& contact, const MotionQuery& query)
   return unwatchedFree(contact.a) || unwatchedFree(contact.b);
 }
 
-// One LP over the contacts that touch a free part: s_c = (v_b - v_a)·n_c >= 0 for every contact,
+// One motion program: a row s_c = (v_b - v_a)·n_c >= 0 per contact that touches a free part,
 // velocities bounded to [-1, 1] (scaling keeps a motion a motion).
 //
 // Eq. 2 maximizes Σ t_c with t_c <= s_c and 0 <= t_c <= 1; its optimum is positive exactly when
 // some s_c can be positive. Maximizing Σ s_c over the same constraints answers the same question
 // without the t columns (3N instead of 3N + C variables), and GLPK gets there in far fewer
 // pivots: on a 1500-part cube that falls apart, 16 s for Eq. 2 as written.
-MotionSearch solveMotionProgram(const Assembly& assembly, const MotionQuery& query, const std::vector<int>& contacts,
-                                const std::vector<int>& velocityColumn, int velocityCount, Objective objective,
-                                double functionalSign) {
-  MotionSearch search;
-  search.velocities.assign(assembly.partCount(), Vec3{0, 0, 0});
-  if (velocityCount == 0) return search;
-  std::vector<double> objectiveCoefficients(velocityCount, 0.0);
+struct MotionProgram {
+  LinearProgramSpec spec;
+  std::vector<int> velocityColumn;  // per part, -1 when fixed
+};
+
+MotionProgram buildMotionProgram(const Assembly& assembly, const MotionQuery& query, Objective objective,
+                                 double functionalSign) {
+  MotionProgram program;
+  int velocityCount = 0;
+  program.velocityColumn = velocityColumns(query.isFree, &velocityCount);
+  std::vector<double> cost(velocityCount, 0.0);
   if (objective == Objective::GenericFunctional) {
     const std::vector<double> weights = genericWeights(velocityCount);
     for (int part = 0; part < assembly.partCount(); ++part) {
       if (!query.isWatched[part]) continue;
       for (int k = 0; k < 3; ++k) {
-        const int column = velocityColumn[part] + k;
-        objectiveCoefficients[column] = functionalSign * weights[column];
+        const int column = program.velocityColumn[part] + k;
+        cost[column] = functionalSign * weights[column];
       }
     }
   }
-  LinearProgram lp;
-  glp_prob* problem = lp.problem.get();
-  glp_set_obj_dir(problem, GLP_MAX);
-  glp_add_cols(problem, velocityCount);
-  for (int j = 1; j <= velocityCount; ++j) glp_set_col_bnds(problem, j, GLP_DB, -1.0, 1.0);
-  const int rows = static_cast<int>(contacts.size());
-  if (rows > 0) glp_add_rows(problem, rows);
-  for (int r = 0; r < rows; ++r) {
-    const Contact& contact = assembly.contacts[contacts[r]];
-    glp_set_row_bnds(problem, r + 1, GLP_LO, 0.0, 0.0);
+  LinearProgramSpec& spec = program.spec;
+  for (int c : relevantContacts(assembly, query.isFree)) {
+    const Contact& contact = assembly.contacts[c];
+    const int row = spec.rowCount();
+    spec.rowLower.push_back(0.0);
     const bool separationCounts = objective == Objective::SeparatingContacts && !involvesUnwatchedFreePart(contact, query);
-    for (int k = 0; k < 3; ++k) {
-      for (const auto& [part, sign] : {std::pair<int, double>{contact.b, 1.0}, std::pair<int, double>{contact.a, -1.0}}) {
-        if (velocityColumn[part] < 0) continue;
-        const int column = velocityColumn[part] + k;
-        lp.add(r + 1, column + 1, sign * contact.normal[k]);
-        if (separationCounts) objectiveCoefficients[column] += sign * contact.normal[k];
+    for (const auto& [part, sign] : {std::pair<int, double>{contact.b, 1.0}, std::pair<int, double>{contact.a, -1.0}}) {
+      if (program.velocityColumn[part] < 0) continue;
+      for (int k = 0; k < 3; ++k) {
+        const int column = program.velocityColumn[part] + k;
+        spec.addEntry(row, column, sign * contact.normal[k]);
+        if (separationCounts) cost[column] += sign * contact.normal[k];
       }
     }
   }
-  for (int j = 0; j < velocityCount; ++j) glp_set_obj_coef(problem, j + 1, objectiveCoefficients[j]);
-  glp_load_matrix(problem, static_cast<int>(lp.ia.size()) - 1, lp.ia.data(), lp.ja.data(), lp.ar.data());
+  for (double c : cost) spec.addColumn(-1.0, 1.0, c);
+  return program;
+}
 
-  glp_smcp parameters;
-  glp_init_smcp(&parameters);
-  parameters.msg_lev = GLP_MSG_OFF;
-  parameters.presolve = GLP_ON;
-  // Dual simplex, falling back to primal if it fails: V = 0 is dual degenerate here, and on
-  // the benchmark assemblies the dual method needs 2-3x fewer pivots (bunny 8 ms instead of 11).
-  parameters.meth = GLP_DUALP;
-  const int status = glp_simplex(problem, &parameters);
-  // V = 0 is always feasible and the variables are bounded, so anything but an
-  // optimum is a solver failure.
-  if (status != 0 || glp_get_status(problem) != GLP_OPT) {
-    throw Error(ErrorCode::Internal, "GLPK failed on the interlocking linear program (status " +
-                                         std::to_string(status) + ")");
+double objectiveAt(const LinearProgramSpec& spec, const std::vector<double>& x) {
+  double value = 0;
+  for (int j = 0; j < spec.columnCount(); ++j) value += spec.objective[j] * x[j];
+  return value;
+}
+
+// The motion certificate: x within the bounds, no row below -kPenetration, objective >= kMotion.
+bool certifiesMotion(const LinearProgramSpec& spec, std::vector<double>* x) {
+  for (int j = 0; j < spec.columnCount(); ++j) (*x)[j] = std::clamp((*x)[j], spec.columnLower[j], spec.columnUpper[j]);
+  std::vector<double> rowValue(spec.rowCount(), 0.0);
+  for (size_t k = 0; k < spec.entryValue.size(); ++k) rowValue[spec.entryRow[k]] += spec.entryValue[k] * (*x)[spec.entryColumn[k]];
+  for (int r = 0; r < spec.rowCount(); ++r) {
+    if (rowValue[r] < -kPenetration) return false;
   }
-  if (glp_get_obj_val(problem) <= kMotionEpsilon) return search;
+  return objectiveAt(spec, *x) >= kMotion;
+}
+
+// Weak duality for maximize c·x, Ax >= -kPenetration, |x_j| <= 1: for any y >= 0 and any such x,
+// c·x = (c + Aᵀy)·x - y·Ax <= Σ_j |c + Aᵀy|_j + kPenetration Σ y. GLPK's row duals supply y
+// (their sign convention does not matter: both signs are tried, each bound is valid). The bound
+// is padded by the rounding error of computing it.
+double dualBound(const LinearProgramSpec& spec, const std::vector<double>& rowDuals, double sign) {
+  std::vector<double> y(spec.rowCount());
+  double ySum = 0;
+  for (int r = 0; r < spec.rowCount(); ++r) {
+    y[r] = std::max(0.0, sign * rowDuals[r]);
+    if (!std::isfinite(y[r])) return HUGE_VAL;
+    ySum += y[r];
+  }
+  std::vector<double> reduced = spec.objective;
+  double magnitude = 0;
+  for (double c : spec.objective) magnitude += std::abs(c);
+  for (size_t k = 0; k < spec.entryValue.size(); ++k) {
+    const double term = spec.entryValue[k] * y[spec.entryRow[k]];
+    reduced[spec.entryColumn[k]] += term;
+    magnitude += std::abs(term);
+  }
+  double bound = kPenetration * ySum;
+  for (int j = 0; j < spec.columnCount(); ++j) {
+    bound += std::abs(reduced[j]) * std::max(std::abs(spec.columnLower[j]), std::abs(spec.columnUpper[j]));
+  }
+  return bound + 64 * DBL_EPSILON * magnitude;
+}
+
+bool certifiesNoMotion(const LinearProgramSpec& spec, const std::vector<double>& rowDuals) {
+  return std::min(dualBound(spec, rowDuals, -1.0), dualBound(spec, rowDuals, 1.0)) < kMotion;
+}
+
+MotionSearch motionFrom(const Assembly& assembly, const MotionProgram& program, const std::vector<double>& x) {
+  MotionSearch search;
+  search.movable = true;
+  search.velocities.assign(assembly.partCount(), Vec3{0, 0, 0});
   for (int i = 0; i < assembly.partCount(); ++i) {
-    if (velocityColumn[i] < 0) continue;
+    if (program.velocityColumn[i] < 0) continue;
     for (int k = 0; k < 3; ++k) {
-      const double v = glp_get_col_prim(problem, velocityColumn[i] + k + 1);
+      const double v = x[program.velocityColumn[i] + k];
       search.velocities[i][k] = std::abs(v) < 1e-9 ? 0.0 : v;
     }
   }
-  // The motion counts only if a watched part really moves.
-  for (int i = 0; i < assembly.partCount(); ++i) {
-    if (query.isWatched[i] && norm(search.velocities[i]) > 1e-6) search.movable = true;
-  }
   return search;
+}
+
+// Decides one motion program (see the file comment): GLPK's dual simplex, then its primal
+// simplex, each accepted only with a checked certificate, then the exact rational simplex.
+MotionSearch decideMotionProgram(const Assembly& assembly, const MotionQuery& query, Objective objective,
+                                 double functionalSign) {
+  MotionProgram program = buildMotionProgram(assembly, query, objective, functionalSign);
+  const MotionSearch none{false, std::vector<Vec3>(assembly.partCount(), Vec3{0, 0, 0})};
+  if (program.spec.columnCount() == 0) return none;
+  std::string failures;
+  for (SimplexMethod method : {SimplexMethod::Dual, SimplexMethod::Primal}) {
+    LinearProgramSolution solution = solveLinearProgram(program.spec, method);
+    if (!solution.optimal) {
+      failures += (failures.empty() ? "" : "; ") + solution.failure;
+      continue;
+    }
+    if (certifiesMotion(program.spec, &solution.columnValues)) return motionFrom(assembly, program, solution.columnValues);
+    if (certifiesNoMotion(program.spec, solution.rowDuals)) return none;
+  }
+  for (double& lower : program.spec.rowLower) lower = -kPenetration;
+  LinearProgramSolution exact = solveLinearProgram(program.spec, SimplexMethod::ExactRational);
+  if (!exact.optimal) {
+    throw Error(ErrorCode::TooLarge,
+                "the inequality test could not decide a linear program of " + std::to_string(program.spec.rowCount()) +
+                    " contacts and " + std::to_string(program.spec.columnCount()) + " velocities within its limits (" +
+                    failures + "; exact simplex: " + exact.failure + "); use --method dbg");
+  }
+  if (exact.objectiveValue < kMotion) return none;
+  return motionFrom(assembly, program, exact.columnValues);
 }
 
 // Is there a motion in which a watched part moves? Eq. 2's question first (its solution separates contacts,
 // the clearest witness), then the generic functional in both signs for sliding motions.
 MotionSearch findWatchedMotion(const Assembly& assembly, const MotionQuery& query) {
-  int velocityCount = 0;
-  const std::vector<int> column = velocityColumns(query.isFree, &velocityCount);
-  const std::vector<int> contacts = relevantContacts(assembly, query.isFree);
-  MotionSearch search =
-      solveMotionProgram(assembly, query, contacts, column, velocityCount, Objective::SeparatingContacts, 1.0);
+  MotionSearch search = decideMotionProgram(assembly, query, Objective::SeparatingContacts, 1.0);
   for (double sign : {1.0, -1.0}) {
     if (search.movable) break;
-    search = solveMotionProgram(assembly, query, contacts, column, velocityCount, Objective::GenericFunctional, sign);
+    search = decideMotionProgram(assembly, query, Objective::GenericFunctional, sign);
   }
   return search;
 }
 
+// The parts that really take part in a motion: speeds within three orders of magnitude of the
+// fastest (the tolerated penetration lets the others creep by 1e-12).
 std::vector<int> movingParts(const MotionSearch& search) {
+  double fastest = 0;
+  for (const Vec3& v : search.velocities) fastest = std::max(fastest, norm(v));
   std::vector<int> parts;
   for (int i = 0; i < static_cast<int>(search.velocities.size()); ++i) {
-    if (norm(search.velocities[i]) > 1e-6) parts.push_back(i);
+    if (norm(search.velocities[i]) > 1e-3 * fastest) parts.push_back(i);
   }
   return parts;
 }
@@ -225,23 +291,30 @@ std::string describeMotion(const Assembly& assembly, const Witness& witness) {
 }
 
 // Base directions (both signs) along which the part alone is free.
-std::vector<Vec3> freeDirectionsOfPart(const Assembly& assembly, int part) {
+std::vector<Vec3> freeDirectionsOfPart(const Assembly& assembly, const std::vector<BaseDirection>& directions, int part) {
+  std::vector<int> touching;
+  for (int c = 0; c < static_cast<int>(assembly.contacts.size()); ++c) {
+    if (assembly.contacts[c].a == part || assembly.contacts[c].b == part) touching.push_back(c);
+  }
   std::vector<Vec3> free;
-  for (const BaseDirection& base : computeBaseDirections(assembly)) {
+  for (const BaseDirection& base : directions) {
     for (const Vec3& d : {base.vector, negated(base.vector)}) {
-      if (isPartFreeAlong(assembly, nullptr, part, d)) free.push_back(d);
+      bool blocked = false;
+      for (int c : touching) {
+        const Contact& contact = assembly.contacts[c];
+        const double along = dot(d, contact.normal);
+        if ((contact.a == part && along > kDirectionTolerance) || (contact.b == part && along < -kDirectionTolerance)) {
+          blocked = true;
+          break;
+        }
+      }
+      if (!blocked) free.push_back(d);
     }
   }
   return free;
 }
 
-}  // namespace
-
-MotionSearch findFreeMotion(const Assembly& assembly, const std::vector<bool>& isFree) {
-  return findWatchedMotion(assembly, {isFree, isFree});
-}
-
-InterlockingResult testInterlockingByInequalities(const Assembly& assembly) {
+InterlockingResult testWithCleanNormals(const Assembly& assembly, const std::vector<BaseDirection>& directions) {
   const int n = assembly.partCount();
   InterlockingResult result;
   if (n < 3) {
@@ -254,7 +327,7 @@ InterlockingResult testInterlockingByInequalities(const Assembly& assembly) {
   for (int i = 0; i < n; ++i) {
     std::vector<bool> isFree(n, false);
     isFree[i] = true;
-    MotionSearch search = findFreeMotion(assembly, isFree);
+    MotionSearch search = findWatchedMotion(assembly, {isFree, isFree});
     if (search.movable) {
       movableAlone.push_back(i);
       motions.push_back(std::move(search));
@@ -282,9 +355,24 @@ InterlockingResult testInterlockingByInequalities(const Assembly& assembly) {
     return result;
   }
   if (key < 0) return deadlockedResult("the linear program admits no motion: no part or part group can move");
-  std::vector<Vec3> keyDirections = freeDirectionsOfPart(assembly, key);
+  std::vector<Vec3> keyDirections = freeDirectionsOfPart(assembly, directions, key);
   if (keyDirections.empty()) keyDirections.push_back(normalized(motions[0].velocities[key]));
   return interlockingResult(assembly, key, std::move(keyDirections));
+}
+
+}  // namespace
+
+MotionSearch findFreeMotion(const Assembly& assembly, const std::vector<bool>& isFree) {
+  return findWatchedMotion(withCleanedNormals(assembly), {isFree, isFree});
+}
+
+InterlockingResult testInterlockingByInequalities(const Assembly& assembly, const std::vector<BaseDirection>& directions) {
+  return testWithCleanNormals(withCleanedNormals(assembly), directions);
+}
+
+InterlockingResult testInterlockingByInequalities(const Assembly& assembly) {
+  const Assembly clean = withCleanedNormals(assembly);
+  return testWithCleanNormals(clean, computeBaseDirections(clean));
 }
 
 }  // namespace desia

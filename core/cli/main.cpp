@@ -19,7 +19,7 @@ constexpr int kExitNegative = 1;
 constexpr int kExitBadInput = 2;
 
 const char* kUsage =
-    "usage: desia check FILE [--method dbg|lp|both] [--json]\n"
+    "usage: desia check FILE [--method dbg|lp|both] [--json] [--graphs]\n"
     "       desia voxelize --input MESH.obj|.stl [--resolution R] --output SHAPE.puz|.json\n"
     "       desia design voxel --input SHAPE.puz|.json --parts N --output OUT.puz|.json\n"
     "             [--seed S] [--candidates M] [--rank compactness|x|y|z|-x|-y|-z] [--mode desia|recursive]\n"
@@ -33,6 +33,7 @@ const char* kUsage =
     "        --method lp    linear program (exact for any contact normals; needs GLPK)\n"
     "        --method both  run both and compare\n"
     "        --json         print one JSON object instead of text\n"
+    "        --graphs       list every base direction and DBG (by default only up to 128)\n"
     "voxelize fills every voxel whose centre lies inside the closed mesh (OBJ or STL) and writes\n"
     "        the one-part shape; R voxels along the longest side (default 32, at most 1024);\n"
     "        exit 0 when written\n"
@@ -50,10 +51,12 @@ struct UsageError {
 
 int runCheck(const std::vector<std::string>& args) {
   std::string file, method = "dbg";
-  bool json = false;
+  bool json = false, allGraphs = false;
   for (size_t i = 0; i < args.size(); ++i) {
     if (args[i] == "--json") {
       json = true;
+    } else if (args[i] == "--graphs") {
+      allGraphs = true;
     } else if (args[i] == "--method") {
       if (i + 1 == args.size()) throw UsageError{"--method needs a value (dbg, lp or both)"};
       method = args[++i];
@@ -70,6 +73,7 @@ int runCheck(const std::vector<std::string>& args) {
   if (file.empty()) throw UsageError{"check needs a FILE"};
   desia::CheckOptions options;
   options.method = desia::parseCheckMethod(method);
+  options.allGraphs = allGraphs;
   const desia::AssemblyDocument document = desia::parseAssemblyText(desia::cli::readInputFile(file), file);
   const desia::CheckReport report = desia::checkAssembly(document, options);
   std::cout << (json ? desia::checkReportToJson(document, report) + "\n" : desia::checkReportToText(document, report));

@@ -105,7 +105,10 @@ std::string checkReportToJson(const AssemblyDocument& document, const CheckRepor
     bases.push_back({{"label", dbg.direction.label}, {"vector", vectorJson(dbg.direction.vector)}});
   }
   root["baseDirections"] = bases;
+  root["baseDirectionCount"] = report.baseDirectionCount;
   root["graphs"] = graphsJson(assembly, report.graphs);
+  // Over kReportedGraphLimit directions the lists stay empty (`desia check --graphs` keeps them).
+  root["graphsOmitted"] = report.graphs.size() < report.baseDirectionCount;
   if (report.method == CheckMethod::Both) {
     root["methods"] = {{"dbg", verdictJson(assembly, *report.graphResult)},
                        {"lp", verdictJson(assembly, *report.inequalityResult)}};
@@ -146,7 +149,11 @@ std::string checkReportToText(const AssemblyDocument& document, const CheckRepor
     out << " move " << (result.witness.direction.empty() ? "in different directions" : "along " + result.witness.direction) << "\n";
   }
   out << "base directions:";
-  for (const DirectionalBlockingGraph& dbg : report.graphs) out << ' ' << dbg.direction.label;
+  if (report.graphs.size() < report.baseDirectionCount) {
+    out << ' ' << report.baseDirectionCount << " (not listed; --graphs lists them)";
+  } else {
+    for (const DirectionalBlockingGraph& dbg : report.graphs) out << ' ' << dbg.direction.label;
+  }
   out << "\n";
   if (report.disassembly) {
     const DisassemblyPlan& plan = *report.disassembly;

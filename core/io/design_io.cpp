@@ -6,22 +6,12 @@
 #include "desia/document.h"
 #include "desia/error.h"
 #include "desia/puz_format.h"
+#include "io/json_input.h"
 
 namespace desia {
 namespace {
 
 using nlohmann::json;
-
-json parseJsonText(const std::string& text, const std::string& source) {
-  try {
-    return json::parse(text);
-  } catch (const json::exception& e) {
-    std::string message = e.what();
-    const size_t bracket = message.find("] ");
-    if (bracket != std::string::npos) message = message.substr(bracket + 2);
-    throwBadInput(source, "malformed JSON: " + message);
-  }
-}
 
 std::vector<std::vector<int64_t>> groupsFromJson(const json& list, const VoxelGrid& shape, const std::string& source) {
   if (!list.is_array()) throwBadInput(source, "groups: expected [[[x, y, z], ...], ...]");

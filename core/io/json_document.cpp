@@ -7,6 +7,7 @@
 #include "desia/document.h"
 #include "desia/error.h"
 #include "desia/puz_format.h"
+#include "io/json_input.h"
 
 namespace desia {
 namespace {
@@ -16,20 +17,6 @@ using nlohmann::json;
 constexpr int kFormatVersion = 1;
 constexpr size_t kMaxParts = 100000;
 constexpr size_t kMaxContacts = 2000000;
-
-// Line and column of a byte offset, for JSON syntax errors.
-std::string locationOfOffset(const std::string& text, const std::string& source, size_t offset) {
-  int line = 1, column = 1;
-  for (size_t i = 0; i < offset && i < text.size(); ++i) {
-    if (text[i] == '\n') {
-      ++line;
-      column = 1;
-    } else {
-      ++column;
-    }
-  }
-  return source + ":" + std::to_string(line) + ":" + std::to_string(column);
-}
 
 [[noreturn]] void fail(const std::string& source, const std::string& path, const std::string& what) {
   throwBadInput(source, (path.empty() ? std::string() : path + ": ") + what);
@@ -123,16 +110,15 @@ std::vector<Contact> parseContacts(const json& root, const Assembly& assembly, c
     if (contact.a == contact.b) fail(source, path, "a part cannot touch itself (a = b = " + std::to_string(assembly.parts[contact.a].id) + ")");
     const json& normal = require(entry, "normal", source, path);
     if (!normal.is_array() || normal.size() != 3) fail(source, path + ".normal", "expected [nx, ny, nz]");
-    double length2 = 0;
+    Vec3 raw{};
     for (int k = 0; k < 3; ++k) {
       if (!normal[k].is_number()) fail(source, path + ".normal", "expected three numbers, found " + normal.dump());
-      contact.normal[k] = normal[k].get<double>();
-      if (!std::isfinite(contact.normal[k])) fail(source, path + ".normal", "is not finite");
-      length2 += contact.normal[k] * contact.normal[k];
+      raw[k] = normal[k].get<double>();
+      if (!std::isfinite(raw[k])) fail(source, path + ".normal", "is not finite");
     }
-    if (length2 < 1e-24) fail(source, path + ".normal", "is the zero vector");
-    const double length = std::sqrt(length2);
-    for (double& c : contact.normal) c /= length;
+    const std::optional<Vec3> unit = cleanedNormal(raw);
+    if (!unit) fail(source, path + ".normal", "is the zero vector");
+    contact.normal = *unit;
     if (entry.contains("area")) {
       if (!entry["area"].is_number() || !(entry["area"].get<double>() > 0)) fail(source, path + ".area", "expected a positive number");
       contact.area = entry["area"].get<double>();
@@ -164,22 +150,7 @@ AssemblyDocument documentFromVoxels(VoxelGrid grid, std::string name) {
 }
 
 AssemblyDocument parseJsonDocument(const std::string& text, const std::string& source) {
-  json root;
-  try {
-    root = json::parse(text);
-  } catch (const json::parse_error& e) {
-    std::string message = e.what();
-    // nlohmann prefixes "[json.exception.parse_error.101] parse error at line 1, column 2: ".
-    const size_t colon = message.find(": ");
-    if (colon != std::string::npos) message = message.substr(colon + 2);
-    throwBadInput(locationOfOffset(text, source, e.byte > 0 ? e.byte - 1 : 0), "malformed JSON: " + message);
-  } catch (const json::exception& e) {
-    // Other reader failures, e.g. "number overflow parsing '1e999'" (out_of_range.406).
-    std::string message = e.what();
-    const size_t bracket = message.find("] ");
-    if (bracket != std::string::npos) message = message.substr(bracket + 2);
-    throwBadInput(source, "malformed JSON: " + message);
-  }
+  const json root = parseJsonText(text, source);
   if (!root.is_object()) fail(source, "", "the JSON document must be an object");
   if (root.contains("format") && root["format"] != "desia-assembly") {
     fail(source, "format", "expected \"desia-assembly\", found " + root["format"].dump());

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "desia/assembly.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace desia {
@@ -10,6 +11,40 @@ int Assembly::indexOfId(int id) const {
     if (parts[i].id == id) return i;
   }
   return -1;
+}
+
+std::optional<Vec3> cleanedNormal(const Vec3& normal) {
+  double largest = 0;
+  for (double c : normal) {
+    if (!std::isfinite(c)) return std::nullopt;
+    largest = std::max(largest, std::abs(c));
+  }
+  if (largest == 0) return std::nullopt;
+  Vec3 unit{};
+  double length2 = 0;
+  for (int k = 0; k < 3; ++k) {
+    double c = normal[k] / largest;  // in [-1, 1]: no overflow below, no underflow of the largest
+    if (std::abs(c) < kNormalNoise) c = 0.0;
+    unit[k] = c;
+    length2 += c * c;
+  }
+  const double length = std::sqrt(length2);  // in [1, sqrt(3)]
+  for (double& c : unit) c /= length;
+  return unit;
+}
+
+Assembly withCleanedNormals(const Assembly& assembly) {
+  Assembly clean;
+  clean.parts = assembly.parts;
+  clean.contacts.reserve(assembly.contacts.size());
+  for (const Contact& contact : assembly.contacts) {
+    const std::optional<Vec3> unit = cleanedNormal(contact.normal);
+    if (!unit) continue;
+    Contact copy = contact;
+    copy.normal = *unit;
+    clean.contacts.push_back(copy);
+  }
+  return clean;
 }
 
 bool hasOnlyAxisAlignedContacts(const Assembly& assembly) {

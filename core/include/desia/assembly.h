@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -36,6 +37,21 @@ struct Assembly {
   // Internal index of the part with the given user id, or -1.
   int indexOfId(int id) const;
 };
+
+// Components smaller than this fraction of a normal's largest component are rounding residue:
+// computed geometry (a rotation by cos/sin, a cross product of edge vectors) leaves 1e-16-sized
+// values where a component should vanish, and they must not change a verdict.
+constexpr double kNormalNoise = 1e-12;
+
+// The unit vector along `normal`, computed without overflow or underflow at any scale (it is
+// divided by its largest component first), with residue components (kNormalNoise) set to zero.
+// Empty for the zero vector or a non-finite component. Every contact normal passes through this
+// once, when it is read or computed from geometry.
+std::optional<Vec3> cleanedNormal(const Vec3& normal);
+
+// The assembly with every contact normal passed through cleanedNormal; contacts whose normal is
+// the zero vector constrain nothing and are left out.
+Assembly withCleanedNormals(const Assembly& assembly);
 
 // True when every contact normal is parallel to a coordinate axis, the case where the DBG test is
 // exact (paper Section 3.2, supplementary proof).

@@ -19,9 +19,14 @@ enum class CheckMethod { Graphs, Inequalities, Both };
 CheckMethod parseCheckMethod(const std::string& name);
 const char* checkMethodName(CheckMethod method);
 
+// Reports keep every base DBG up to this many base directions; beyond it (hundreds of distinct
+// normals give hundreds of thousands) only their count, unless all graphs are asked for.
+constexpr size_t kReportedGraphLimit = 128;
+
 struct CheckOptions {
   CheckMethod method = CheckMethod::Graphs;
   bool planDisassembly = true;
+  bool allGraphs = false;  // keep every base DBG in the report, however many
 };
 
 struct CheckReport {
@@ -29,7 +34,9 @@ struct CheckReport {
   InterlockingResult result;                          // the combined verdict
   std::optional<InterlockingResult> graphResult;      // when the DBG test ran
   std::optional<InterlockingResult> inequalityResult; // when the LP test ran
-  std::vector<DirectionalBlockingGraph> graphs;       // base DBGs of the full assembly
+  size_t baseDirectionCount = 0;                      // number of base directions (and DBGs)
+  std::vector<DirectionalBlockingGraph> graphs;       // base DBGs of the full assembly, or none
+                                                      // when over kReportedGraphLimit
   std::optional<DisassemblyPlan> disassembly;         // absent when not planned
 };
 

@@ -33,11 +33,20 @@ struct InterlockingResult {
 // single part (the key) in all of them. Exact for axis-aligned contacts; only necessary otherwise.
 InterlockingResult testInterlockingByGraphs(const Assembly& assembly,
                                             const std::vector<DirectionalBlockingGraph>& graphs);
+// The same test building each DBG only when it is examined (hundreds of thousands of base
+// directions for hundreds of distinct normals: they are never all held at once).
+InterlockingResult testInterlockingByGraphs(const Assembly& assembly, const std::vector<BaseDirection>& directions);
 
 // Inequality-based test (Eq. 2) with GLPK. Exact for any contact normals: motions that slide along
 // every contact (all t_ij = 0 but v != 0) are found by a second LP on a generic functional, and
 // round 2 fixes only a reference part, so groups moving with the key are caught too.
+// Verdicts are checked: every motion against every contact, every "no motion" by a dual bound,
+// and programs that GLPK cannot settle are decided by its exact rational simplex. A motion may
+// push into a contact by 1e-12 of its speed (computed normals carry rounding residue). Throws
+// Error(TooLarge) when even the exact simplex stops at its limits. `directions` (the base
+// directions, see computeBaseDirections) only name the key's free directions.
 InterlockingResult testInterlockingByInequalities(const Assembly& assembly);
+InterlockingResult testInterlockingByInequalities(const Assembly& assembly, const std::vector<BaseDirection>& directions);
 
 // Lower level pieces of the inequality test, exposed for tests.
 struct MotionSearch {
