@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <cmath>
 #include <cstdio>
+#include <map>
 
 #include "analysis/vec3.h"
 
@@ -30,21 +31,20 @@ DirectionKey keyOf(const Vec3& unit) {
   return {std::llround(unit[0] * kGrid), std::llround(unit[1] * kGrid), std::llround(unit[2] * kGrid)};
 }
 
-// One representative per key, the first in input order; sorting keeps this O(L log L) where a
-// pairwise comparison was O(L^2) (L^4 for the O(L^2) crossings of L normals, issue 14).
+// One representative per key (the first in input order), in descending key order, which is the
+// descending order of the vectors themselves. Sorting keeps this O(L log L) where a pairwise
+// comparison was O(L^2) (O(L^4) for the O(L^2) crossings of L normals, issue 14).
 std::vector<Vec3> uniqueDirections(const std::vector<Vec3>& directions) {
   std::vector<std::pair<DirectionKey, size_t>> keyed;
   keyed.reserve(directions.size());
   for (size_t i = 0; i < directions.size(); ++i) keyed.push_back({keyOf(directions[i]), i});
   std::sort(keyed.begin(), keyed.end());
-  std::vector<size_t> kept;
-  for (size_t i = 0; i < keyed.size(); ++i) {
-    if (i == 0 || keyed[i].first != keyed[i - 1].first) kept.push_back(keyed[i].second);
-  }
-  std::sort(kept.begin(), kept.end());
   std::vector<Vec3> unique;
-  unique.reserve(kept.size());
-  for (size_t i : kept) unique.push_back(directions[i]);
+  for (size_t i = keyed.size(); i-- > 0;) {
+    // Within a run of equal keys the lowest index comes first, i.e. last going backwards.
+    if (i > 0 && keyed[i - 1].first == keyed[i].first) continue;
+    unique.push_back(directions[keyed[i].second]);
+  }
   return unique;
 }
 
@@ -66,16 +66,18 @@ Vec3 anyPerpendicular(const Vec3& n) {
   return normalized(cross(n, axis));
 }
 
-bool lessLexicographic(const Vec3& a, const Vec3& b) {
-  // Axes first in x, y, z order; then the rest by components, for a stable order.
-  auto isAxis = [](const Vec3& v) {
-    int ones = 0;
-    for (double c : v) ones += (c == 1.0 || c == -1.0) ? 1 : 0;
-    return ones == 1;
-  };
-  if (isAxis(a) != isAxis(b)) return isAxis(a);
-  if (isAxis(a)) return std::abs(a[0]) > std::abs(b[0]) || (std::abs(a[0]) == std::abs(b[0]) && std::abs(a[1]) > std::abs(b[1]));
-  return a > b;
+bool isAxis(const Vec3& v) {
+  int ones = 0;
+  for (double c : v) ones += (c == 1.0 || c == -1.0) ? 1 : 0;
+  return ones == 1;
+}
+
+// Axes first in x, y, z order; then the rest in the descending order uniqueDirections left them.
+void sortForReports(std::vector<Vec3>* directions) {
+  auto firstOther = std::stable_partition(directions->begin(), directions->end(), isAxis);
+  std::sort(directions->begin(), firstOther, [](const Vec3& a, const Vec3& b) {
+    return std::abs(a[0]) > std::abs(b[0]) || (std::abs(a[0]) == std::abs(b[0]) && std::abs(a[1]) > std::abs(b[1]));
+  });
 }
 
 }  // namespace
@@ -126,10 +128,10 @@ std::vector<BaseDirection> computeBaseDirections(const Assembly& assembly) {
       directions.push_back(cleaned(canonicalSign(anyPerpendicular(lines[0]))));
     }
   }
-  std::sort(directions.begin(), directions.end(), lessLexicographic);
+  sortForReports(&directions);
   std::vector<BaseDirection> result;
   result.reserve(directions.size());
-  for (const Vec3& d : directions) result.push_back({d, directionLabel(d)});
+  for (const Vec3& d : directions) result.push_back({d});
   return result;
 }
 
@@ -145,11 +147,46 @@ DirectionalBlockingGraph buildBlockingGraph(const Assembly& assembly, const Base
   return dbg;
 }
 
-std::vector<DirectionalBlockingGraph> buildBaseBlockingGraphs(const Assembly& assembly) {
-  std::vector<DirectionalBlockingGraph> graphs;
-  for (const BaseDirection& direction : computeBaseDirections(assembly)) {
-    graphs.push_back(buildBlockingGraph(assembly, direction));
+BlockingGraphBuilder::BlockingGraphBuilder(const Assembly& assembly) : partCount_(assembly.partCount()) {
+  std::map<std::pair<int, int>, size_t> pairIndex;
+  for (const Contact& contact : assembly.contacts) {
+    const bool flip = contact.a > contact.b;
+    const std::pair<int, int> key = flip ? std::make_pair(contact.b, contact.a) : std::make_pair(contact.a, contact.b);
+    auto [it, added] = pairIndex.emplace(key, pairs_.size());
+    if (added) pairs_.push_back({key.first, key.second, {}});
+    std::vector<Vec3>& normals = pairs_[it->second].normals;
+    const Vec3 n = flip ? negated(contact.normal) : contact.normal;
+    if (std::find(normals.begin(), normals.end(), n) == normals.end()) normals.push_back(n);
   }
+}
+
+DirectionalBlockingGraph BlockingGraphBuilder::build(const BaseDirection& direction) const {
+  DirectionalBlockingGraph dbg{direction, DirectedGraph(partCount_)};
+  buildInto(direction, &dbg);
+  return dbg;
+}
+
+void BlockingGraphBuilder::buildInto(const BaseDirection& direction, DirectionalBlockingGraph* graph) const {
+  DirectionalBlockingGraph& dbg = *graph;
+  dbg.direction = direction;
+  dbg.graph.clearEdges();
+  for (const PairContacts& pair : pairs_) {
+    bool forward = false, backward = false;  // a blocked by b along d; b blocked by a along d
+    for (const Vec3& n : pair.normals) {
+      const double along = dot(direction.vector, n);
+      forward = forward || along > kDirectionTolerance;
+      backward = backward || along < -kDirectionTolerance;
+      if (forward && backward) break;
+    }
+    if (forward) dbg.graph.addEdge(pair.a, pair.b);
+    if (backward) dbg.graph.addEdge(pair.b, pair.a);
+  }
+}
+
+std::vector<DirectionalBlockingGraph> buildBaseBlockingGraphs(const Assembly& assembly) {
+  const BlockingGraphBuilder builder(assembly);
+  std::vector<DirectionalBlockingGraph> graphs;
+  for (const BaseDirection& direction : computeBaseDirections(assembly)) graphs.push_back(builder.build(direction));
   return graphs;
 }
 

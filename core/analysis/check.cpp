@@ -50,7 +50,8 @@ CheckReport checkAssembly(const AssemblyDocument& document, const CheckOptions& 
   const std::vector<BaseDirection> directions = computeBaseDirections(document.assembly);
   report.baseDirectionCount = directions.size();
   if (options.allGraphs || directions.size() <= kReportedGraphLimit) {
-    for (const BaseDirection& direction : directions) report.graphs.push_back(buildBlockingGraph(document.assembly, direction));
+    const BlockingGraphBuilder builder(document.assembly);
+    for (const BaseDirection& direction : directions) report.graphs.push_back(builder.build(direction));
   }
   if (options.method != CheckMethod::Inequalities) {
     report.graphResult = report.graphs.empty() && !directions.empty()

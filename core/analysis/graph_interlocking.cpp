@@ -100,7 +100,7 @@ InterlockingResult testGraphs(const Assembly& assembly, size_t count, GraphAt&& 
       }
       if (!best) best = &groups.front();
       return notInterlocking(assembly, scc.components[best->component], directionOf(*best),
-                             "the blocking graph along " + dbg.direction.label + " has " +
+                             "the blocking graph along " + dbg.direction.label() + " has " +
                                  std::to_string(scc.count()) + " strongly connected components");
     }
     // Exactly two components: one of them must be a single part, the same in every DBG.
@@ -113,7 +113,7 @@ InterlockingResult testGraphs(const Assembly& assembly, size_t count, GraphAt&& 
         const auto& members = scc.components[g.component];
         if (!(members.size() == 1 && members[0] == key)) { pick = &g; break; }
       }
-      std::string why = single < 0 ? "no single part separates in the blocking graph along " + dbg.direction.label
+      std::string why = single < 0 ? "no single part separates in the blocking graph along " + dbg.direction.label()
                                    : "two different parts (" + std::to_string(assembly.parts[key].id) + " and " +
                                          std::to_string(assembly.parts[single].id) + ") can move";
       return notInterlocking(assembly, scc.components[pick->component], directionOf(*pick), why);
@@ -135,9 +135,11 @@ InterlockingResult testInterlockingByGraphs(const Assembly& assembly,
 }
 
 InterlockingResult testInterlockingByGraphs(const Assembly& assembly, const std::vector<BaseDirection>& directions) {
+  const BlockingGraphBuilder builder(assembly);
   DirectionalBlockingGraph current;
+  current.graph = DirectedGraph(assembly.partCount());
   return testGraphs(assembly, directions.size(), [&](size_t i) -> const DirectionalBlockingGraph& {
-    current = buildBlockingGraph(assembly, directions[i]);
+    builder.buildInto(directions[i], &current);
     return current;
   });
 }

@@ -62,7 +62,7 @@ json graphsJson(const Assembly& assembly, const std::vector<DirectionalBlockingG
     for (const auto& component : findStronglyConnectedComponents(dbg.graph).components) {
       components.push_back(idsJson(assembly, component));
     }
-    list.push_back({{"direction", dbg.direction.label}, {"vector", vectorJson(dbg.direction.vector)},
+    list.push_back({{"direction", dbg.direction.label()}, {"vector", vectorJson(dbg.direction.vector)},
                     {"edges", edges}, {"components", components}});
   }
   return list;
@@ -102,7 +102,7 @@ std::string checkReportToJson(const AssemblyDocument& document, const CheckRepor
   root["method"] = checkMethodName(report.method);
   json bases = json::array();
   for (const DirectionalBlockingGraph& dbg : report.graphs) {
-    bases.push_back({{"label", dbg.direction.label}, {"vector", vectorJson(dbg.direction.vector)}});
+    bases.push_back({{"label", dbg.direction.label()}, {"vector", vectorJson(dbg.direction.vector)}});
   }
   root["baseDirections"] = bases;
   root["baseDirectionCount"] = report.baseDirectionCount;
@@ -152,7 +152,7 @@ std::string checkReportToText(const AssemblyDocument& document, const CheckRepor
   if (report.graphs.size() < report.baseDirectionCount) {
     out << ' ' << report.baseDirectionCount << " (not listed; --graphs lists them)";
   } else {
-    for (const DirectionalBlockingGraph& dbg : report.graphs) out << ' ' << dbg.direction.label;
+    for (const DirectionalBlockingGraph& dbg : report.graphs) out << ' ' << dbg.direction.label();
   }
   out << "\n";
   if (report.disassembly) {

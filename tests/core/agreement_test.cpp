@@ -17,30 +17,6 @@
 namespace desia {
 namespace {
 
-constexpr std::array<std::array<int, 3>, 6> kNeighbours{{{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}}};
-
-// Moves one random voxel to a face-adjacent different part; returns false if the result is not a
-// valid assembly (a part emptied or split).
-bool tradeOneVoxel(VoxelGrid& grid, std::mt19937& random) {
-  const int64_t i = static_cast<int64_t>(random() % static_cast<uint32_t>(grid.voxelCount()));
-  const int label = grid.labelAt(i);
-  if (label == 0) return false;
-  const Int3 c = grid.coordinates(i);
-  const auto& step = kNeighbours[random() % 6];
-  const int x = c.x + step[0], y = c.y + step[1], z = c.z + step[2];
-  if (!grid.inside(x, y, z)) return false;
-  const int other = grid.label(x, y, z);
-  if (other == 0 || other == label) return false;
-  grid.setLabelAt(i, other);
-  try {
-    validateVoxelParts(grid, "variant");
-  } catch (const Error&) {
-    grid.setLabelAt(i, label);
-    return false;
-  }
-  return true;
-}
-
 TEST(VoxelAgreement, GraphAndInequalityTestsAgreeOnPuzzleVariants) {
   std::mt19937 random(20181204);
   std::map<Verdict, int> seen;
@@ -52,7 +28,7 @@ TEST(VoxelAgreement, GraphAndInequalityTestsAgreeOnPuzzleVariants) {
       VoxelGrid grid = original;
       const int trades = 1 + static_cast<int>(random() % 3);
       int done = 0;
-      for (int attempt = 0; attempt < 200 && done < trades; ++attempt) done += tradeOneVoxel(grid, random) ? 1 : 0;
+      for (int attempt = 0; attempt < 200 && done < trades; ++attempt) done += testing::tradeOneVoxel(grid, random) ? 1 : 0;
       const AssemblyDocument document = documentFromVoxels(grid);
       const InterlockingResult byGraphs = testInterlockingByGraphs(document.assembly, buildBaseBlockingGraphs(document.assembly));
       const InterlockingResult byInequalities = testInterlockingByInequalities(document.assembly);

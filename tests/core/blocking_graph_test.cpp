@@ -14,7 +14,7 @@ using testing::gridFromLayers;
 
 std::vector<std::string> labels(const std::vector<BaseDirection>& directions) {
   std::vector<std::string> result;
-  for (const auto& d : directions) result.push_back(d.label);
+  for (const auto& d : directions) result.push_back(d.label());
   return result;
 }
 
@@ -67,7 +67,7 @@ TEST(BlockingGraph, EdgeMeansBlockedByAlongDirection) {
   const VoxelGrid grid = gridFromLayers({{"1 2 3"}});
   const Assembly assembly = assemblyFromVoxels(grid);
   const auto graphs = buildBaseBlockingGraphs(assembly);
-  ASSERT_EQ(graphs[0].direction.label, "+x");
+  ASSERT_EQ(graphs[0].direction.label(), "+x");
   EXPECT_TRUE(graphs[0].graph.hasEdge(0, 1));
   EXPECT_TRUE(graphs[0].graph.hasEdge(1, 2));
   EXPECT_FALSE(graphs[0].graph.hasEdge(1, 0));

@@ -104,7 +104,7 @@ TEST(GraphDesign, EveryCaseRealizedPutsItsCycleIntoTheBlockingGraph) {
         design::applyCandidate(next, remainder, design::Candidate{builder.sortedPartVoxels(), 0});
         if (!design::isFaceConnected(next, remainder + 1)) continue;
         const Assembly after = assemblyFromVoxels(next);
-        const DirectionalBlockingGraph g = buildBlockingGraph(after, {{double(e.x), double(e.y), double(e.z)}, ""});
+        const DirectionalBlockingGraph g = buildBlockingGraph(after, BaseDirection{{double(e.x), double(e.y), double(e.z)}});
         EXPECT_TRUE(hasDesignCycle(design, g.graph, remainder - 1, remainder, info.reaches))
             << designName(design) << " on axis " << axis << " from seed voxel " << seed;
         ++realized[design];

@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "test_support.h"
 
+#include "desia/error.h"
+
+#include <array>
 #include <cctype>
 #include <fstream>
 #include <sstream>
@@ -8,6 +11,32 @@
 namespace desia::testing {
 
 std::string referencePath(const std::string& relative) { return std::string(DESIA_TEST_DATA_DIR) + "/" + relative; }
+
+std::string projectPath(const std::string& relative) { return std::string(DESIA_PROJECT_DIR) + "/" + relative; }
+
+namespace {
+constexpr std::array<std::array<int, 3>, 6> kNeighbours{{{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}}};
+}  // namespace
+
+bool tradeOneVoxel(VoxelGrid& grid, std::mt19937& random) {
+  const int64_t i = static_cast<int64_t>(random() % static_cast<uint32_t>(grid.voxelCount()));
+  const int label = grid.labelAt(i);
+  if (label == 0) return false;
+  const Int3 c = grid.coordinates(i);
+  const auto& step = kNeighbours[random() % 6];
+  const int x = c.x + step[0], y = c.y + step[1], z = c.z + step[2];
+  if (!grid.inside(x, y, z)) return false;
+  const int other = grid.label(x, y, z);
+  if (other == 0 || other == label) return false;
+  grid.setLabelAt(i, other);
+  try {
+    validateVoxelParts(grid, "variant");
+  } catch (const Error&) {
+    grid.setLabelAt(i, label);
+    return false;
+  }
+  return true;
+}
 
 std::string readFileText(const std::string& path) {
   std::ifstream in(path, std::ios::binary);

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <random>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,8 @@ namespace desia::testing {
 // Path of a file under tests/reference/desia/data (the original authors' data, MIT).
 std::string referencePath(const std::string& relative);
 std::string readFileText(const std::string& path);
+// Path of a file in the repository (examples/, tests/data/).
+std::string projectPath(const std::string& relative);
 AssemblyDocument loadReference(const std::string& relative);
 
 // Builds a grid from layers of rows, e.g. {{"1 1", "2 2"}, {"1 1", "3 3"}} (z layers of y rows).
@@ -27,6 +30,10 @@ std::string testNameFromPath(const std::string& path);
 // Part 1 in an S-shaped channel through part 2 (layer z=1, closed above and below): its only way
 // out is +x 1, +y 1, then +x.
 std::vector<std::vector<std::string>> sChannelLayers();
+
+// Moves one random voxel to a face-adjacent different part; returns false (grid unchanged) if
+// that is impossible or the result is not a valid assembly (a part emptied or split).
+bool tradeOneVoxel(VoxelGrid& grid, std::mt19937& random);
 
 // User-visible ids of internal part indices.
 std::vector<int> idsOf(const Assembly& assembly, const std::vector<int>& parts);

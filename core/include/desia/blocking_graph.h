@@ -13,13 +13,15 @@
 
 namespace desia {
 
-struct BaseDirection {
-  Vec3 vector{0, 0, 0};   // unit length, canonical sign (first non-zero component positive)
-  std::string label;      // "+x", "+y", "+z" for axes, otherwise "(0.707,0.707,0)"
-};
-
 // Label of a direction: "+x" / "-y" for axes, a rounded vector otherwise.
 std::string directionLabel(const Vec3& direction);
+
+struct BaseDirection {
+  Vec3 vector{0, 0, 0};   // unit length, canonical sign (first non-zero component positive)
+  // "+x", "+y", "+z" for axes, otherwise "(0.707,0.707,0)"; made when asked for, since an
+  // assembly can have hundreds of thousands of base directions and few are ever named.
+  std::string label() const { return directionLabel(vector); }
+};
 
 // The vertices of the arrangement of great circles {d : d·n = 0} on the unit sphere, one of each
 // antipodal pair (the 3D analogue of the points of Fig. 3e). For axis-aligned contacts these are
@@ -35,6 +37,26 @@ struct DirectionalBlockingGraph {
 // Infinitesimal blocking: i is blocked by j along d iff some contact normal n from i to j has
 // d·n > 0 (moving i along d would penetrate j).
 DirectionalBlockingGraph buildBlockingGraph(const Assembly& assembly, const BaseDirection& direction);
+
+// The same graphs for many directions of one assembly: contacts are grouped by pair of parts
+// once, and a pair is no longer examined once it blocks both ways (hundreds of contacts between
+// two parts then cost a few dot products per direction, not hundreds).
+class BlockingGraphBuilder {
+ public:
+  explicit BlockingGraphBuilder(const Assembly& assembly);
+  DirectionalBlockingGraph build(const BaseDirection& direction) const;
+  // Rebuilds `graph` in place (its node count must be the assembly's), reusing its memory.
+  void buildInto(const BaseDirection& direction, DirectionalBlockingGraph* graph) const;
+
+ private:
+  struct PairContacts {
+    int a = 0, b = 0;           // a < b
+    std::vector<Vec3> normals;  // oriented from a towards b, distinct
+  };
+  int partCount_ = 0;
+  std::vector<PairContacts> pairs_;
+};
+
 std::vector<DirectionalBlockingGraph> buildBaseBlockingGraphs(const Assembly& assembly);
 
 }  // namespace desia

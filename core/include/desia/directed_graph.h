@@ -14,6 +14,10 @@ class DirectedGraph {
   // Adds from->to once (duplicates are ignored, so edge lists stay sets).
   void addEdge(int from, int to);
   bool hasEdge(int from, int to) const;
+  // Removes every edge, keeping the nodes and the memory (for graphs rebuilt many times).
+  void clearEdges() {
+    for (auto& list : out_) list.clear();
+  }
   const std::vector<int>& successors(int node) const { return out_[node]; }
   int edgeCount() const;
 
