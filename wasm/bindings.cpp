@@ -53,10 +53,11 @@ auto guarded(Operation&& operation) -> decltype(operation()) {
   error.throw_();
 }
 
-val check(const std::string& text, const std::string& method, const std::string& source) {
+val check(const std::string& text, const std::string& method, const std::string& source, bool allGraphs) {
   return guarded([&] {
     desia::CheckOptions options;
     options.method = desia::parseCheckMethod(method);
+    options.allGraphs = allGraphs;
     const desia::AssemblyDocument document = desia::parseAssemblyText(text, source);
     return parseJsonText(desia::checkReportToJson(document, desia::checkAssembly(document, options), -1));
   });

@@ -69,7 +69,7 @@ function listOf(names) {
  * check: it rejects unknown ones itself). The promise-based API adds `signal`.
  */
 export const OPTION_NAMES = Object.freeze({
-  check: ['method', 'source'],
+  check: ['method', 'source', 'graphs'],
   parseDocument: ['source'],
   voxelize: ['resolution', 'source'],
   toPuz: ['source'],
@@ -218,11 +218,12 @@ function makeCore(module) {
   return {
     /** Interlocking check of .puz or JSON text; same fields as `desia check --json`. */
     check(text, options) {
-      const { method = 'dbg', source = '<input>' } = requireOptions('check', options, OPTION_NAMES.check);
+      const { method = 'dbg', source = '<input>', graphs = false } = requireOptions('check', options, OPTION_NAMES.check);
       requireText(text, 'check: text');
       requireString(method, 'check: method');
       requireString(source, 'check: source');
-      return callModule(() => module.check(text, method, source));
+      if (typeof graphs !== 'boolean') throw new DesiaError(`check: graphs must be a boolean, got ${describeValue(graphs)}`, 'bad-input');
+      return callModule(() => module.check(text, method, source, graphs));
     },
     /** Parses .puz or JSON text into the JSON assembly document (plain object). */
     parseDocument(text, options) {

@@ -27,6 +27,11 @@ export interface CheckOptions {
   method?: CheckMethod;
   /** Name used in error messages, e.g. the file name. */
   source?: string;
+  /**
+   * Keep every base direction and DBG in the report (default false: only when there are at most
+   * 128 of them; hundreds of distinct normals give hundreds of thousands).
+   */
+  graphs?: boolean;
 }
 
 /** A part or part group that can move: the evidence of a negative verdict. */
@@ -71,8 +76,14 @@ export interface CheckReport extends Verdict {
   partIds: number[];
   kind: 'voxel' | 'plate' | 'frame' | 'contacts';
   method: CheckMethod;
+  /** Empty when there are more than 128 base directions and `graphs` was not asked for. */
   baseDirections: { label: string; vector: [number, number, number] }[];
+  /** The number of base directions, listed or not. */
+  baseDirectionCount: number;
+  /** Same rule as baseDirections. */
   graphs: BlockingGraph[];
+  /** True when baseDirections and graphs were left out for their number. */
+  graphsOmitted: boolean;
   /** Per-method verdicts when method is 'both'. */
   methods?: { dbg: Verdict; lp: Verdict };
   /** Removal order (part ids) and one path per removed part; null when no disassembly exists. */

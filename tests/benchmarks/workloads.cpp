@@ -2,12 +2,14 @@
 #include "workloads.h"
 
 #include <algorithm>
+#include <cmath>
 #include <array>
 #include <deque>
 #include <random>
 #include <sstream>
 
 #include "desia/blocking_graph.h"
+#include "desia/check.h"
 #include "desia/directed_graph.h"
 #include "desia/interlocking.h"
 #include "desia/puz_format.h"
@@ -145,7 +147,43 @@ int64_t cubeDbgCheck(const WorkloadInputs& inputs) {
   return static_cast<int64_t>(result.witness.parts.size());
 }
 
+// The whole `desia check` of a contacts document with 800 distinct normals (319,600 base
+// directions): verdict and disassembly plan, as the CLI runs it.
+int64_t ringCheck(const WorkloadInputs& inputs, CheckMethod method, const char* name) {
+  AssemblyDocument document;
+  document.kind = AssemblyKind::Contacts;
+  document.assembly = inputs.ring();
+  CheckOptions options;
+  options.method = method;
+  const CheckReport report = checkAssembly(document, options);
+  if (report.result.verdict != Verdict::Deadlocked) {
+    throw WrongVerdict(std::string(name) + ": expected deadlocked, got " + verdictName(report.result.verdict));
+  }
+  return static_cast<int64_t>(report.baseDirectionCount);
+}
+
 }  // namespace
+
+Assembly generateNormalRing(int parts, int contacts, uint64_t seed) {
+  Assembly assembly;
+  for (int id = 1; id <= parts; ++id) assembly.parts.push_back({id, ""});
+  uint64_t state = seed;
+  auto next = [&] {
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    return static_cast<double>(state >> 11) / 9007199254740992.0 * 2 - 1;  // [-1, 1)
+  };
+  for (int c = 0; c < contacts; ++c) {
+    Vec3 n{};
+    double length2 = 0;
+    do {
+      n = {next(), next(), next()};
+      length2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
+    } while (length2 > 1 || length2 < 1e-4);  // uniform directions: inside the unit ball
+    const double length = std::sqrt(length2);
+    assembly.contacts.push_back({c % parts, (c + 1) % parts, {n[0] / length, n[1] / length, n[2] / length}, 1.0});
+  }
+  return assembly;
+}
 
 const std::vector<WorkloadSpec>& workloadSpecs() {
   static const std::vector<WorkloadSpec> specs{
@@ -162,6 +200,10 @@ const std::vector<WorkloadSpec>& workloadSpecs() {
        "assemblyFromVoxels alone: the part of every cube row spent deriving contacts from voxels", false},
       {Workload::CubeLpRoundOne, "cube35-1500 lp round 1 only", kNoPaperFigure,
        "assemblyFromVoxels + one LP per part (the full-work row minus its big round-2 LP)", false},
+      {Workload::RingDbgCheck, "ring10-800 normals dbg (check)", kNoPaperFigure,
+       "checkAssembly --method dbg of 10 parts with 800 distinct normals (319,600 base DBGs) and its plan; target 1000 ms", true},
+      {Workload::RingLpCheck, "ring10-800 normals lp (check)", kNoPaperFigure,
+       "checkAssembly --method lp of the same ring (base directions, LPs, plan); target 1000 ms", true},
   };
   return specs;
 }
@@ -227,7 +269,9 @@ std::string describeStats(const std::string& what, const GridStats& stats) {
 }
 
 WorkloadInputs::WorkloadInputs(const std::string& bunnyPuzText, const std::string& bunnySource)
-    : bunny_(parsePuz(bunnyPuzText, bunnySource)), cube_(generateCubePartition(kCubeSide, kCubeParts, kCubeSeed)) {
+    : bunny_(parsePuz(bunnyPuzText, bunnySource)),
+      cube_(generateCubePartition(kCubeSide, kCubeParts, kCubeSeed)),
+      ring_(generateNormalRing(kRingParts, kRingContacts, kCubeSeed)) {
   // Throws BadInput if a region were empty or split; the generator guarantees neither happens.
   validateVoxelParts(cube_, "generated cube");
 }
@@ -248,6 +292,10 @@ int64_t runWorkload(Workload workload, const WorkloadInputs& inputs) {
       return cubeContacts(inputs);
     case Workload::CubeLpRoundOne:
       return cubeLpRoundOne(inputs);
+    case Workload::RingDbgCheck:
+      return ringCheck(inputs, CheckMethod::Graphs, "ring10-800 normals dbg (check)");
+    case Workload::RingLpCheck:
+      return ringCheck(inputs, CheckMethod::Inequalities, "ring10-800 normals lp (check)");
   }
   throw std::invalid_argument("unknown workload");
 }

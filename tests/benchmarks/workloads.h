@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "desia/assembly.h"
 #include "desia/voxel_grid.h"
 
 namespace desia::bench {
@@ -31,6 +32,9 @@ enum class Workload {
   // Breakdown rows (no paper figure): where the cube's time goes.
   CubeContacts,
   CubeLpRoundOne,
+  // Issue 14: many distinct normals (curved plate structures have hundreds).
+  RingDbgCheck,
+  RingLpCheck,
 };
 
 struct WorkloadSpec {
@@ -69,6 +73,13 @@ struct GridStats {
 GridStats gridStats(const VoxelGrid& grid);
 std::string describeStats(const std::string& what, const GridStats& stats);
 
+// A ring of `parts` parts, each touching the next with contacts of distinct random unit normals
+// (`contacts` in all; a fixed linear congruential sequence, the same on every platform). With
+// hundreds of normals it is deadlocked: some normal of every pair blocks each direction.
+Assembly generateNormalRing(int parts, int contacts, uint64_t seed);
+constexpr int kRingParts = 10;
+constexpr int kRingContacts = 800;
+
 // The prepared inputs. Construction parses the BUNNY (parsePuz also validates it) and generates
 // and validates the CUBE; neither step is timed.
 class WorkloadInputs {
@@ -76,10 +87,12 @@ class WorkloadInputs {
   WorkloadInputs(const std::string& bunnyPuzText, const std::string& bunnySource);
   const VoxelGrid& bunny() const { return bunny_; }
   const VoxelGrid& cube() const { return cube_; }
+  const Assembly& ring() const { return ring_; }
 
  private:
   VoxelGrid bunny_;
   VoxelGrid cube_;
+  Assembly ring_;
 };
 
 // Runs one workload once. Throws WrongVerdict when the result is not the expected one. The
