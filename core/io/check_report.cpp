@@ -157,15 +157,17 @@ std::string checkReportToText(const AssemblyDocument& document, const CheckRepor
   out << "\n";
   if (report.disassembly) {
     const DisassemblyPlan& plan = *report.disassembly;
-    out << (plan.complete ? "disassembly:" : "disassembly: none found; removed before getting stuck:");
+    out << (plan.complete ? "disassembly:"
+                          : plan.searchLimitReached ? "disassembly: not proven (search limit); removed before stopping:"
+                                                    : "disassembly: none found; removed before getting stuck:");
     for (const Removal& removal : plan.removals) {
       out << "\n  part " << assembly.parts[removal.part].id;
       if (!removal.path.empty()) out << ": " << pathText(removal.path);
     }
     if (!plan.complete) {
-      out << "\n  stuck:";
+      out << (plan.searchLimitReached ? "\n  not removed:" : "\n  stuck:");
       for (int part : plan.stuck) out << ' ' << assembly.parts[part].id;
-      if (plan.searchLimitReached) out << "\n  (a path search stopped at its work limit: a longer search might find more)";
+      if (plan.searchLimitReached) out << "\n  (the path search stopped at its work limit: these parts are not proven stuck)";
     }
     out << "\n";
   }

@@ -11,8 +11,10 @@
 
 import { after, before, describe, it } from 'node:test';
 import assert from 'node:assert/strict';
+import { readdirSync, readFileSync } from 'node:fs';
+import path from 'node:path';
 import {
-  assertInterlockingWithKey, checkPrerequisites, openBrowser, screenshot, waitForReady, waitForSettled,
+  REPO_ROOT, assertInterlockingWithKey, checkPrerequisites, openBrowser, screenshot, waitForReady, waitForSettled,
 } from './support.mjs';
 
 const FIRST_EXAMPLE = 'Cube_4x4x4_K9.puz';
@@ -121,6 +123,32 @@ describe('playground in headless Chromium', { timeout: 60_000 }, () => {
     assert.match(failed.error, /^broken\.puz:\d+/, 'the error names the file and line');
     assert.ok(failed.error.replace(/^broken\.puz[:\d]*\s*/, '').length > 10, `the core's message is missing: "${failed.error}"`);
 
+    await page.selectOption('#example-select', FIRST_EXAMPLE);
+    assertInterlockingWithKey(await waitForReady(page, FIRST_EXAMPLE), 1);
+  });
+
+  it('gives verdicts or clear errors for the hostile inputs of issue 14 and stays usable', async () => {
+    const folder = path.join(REPO_ROOT, 'tests/data/contacts');
+    const inputs = readdirSync(folder).sort().map((name) => ({ name, buffer: readFileSync(path.join(folder, name)) }));
+    const deep = `{"kind":"plate","parts":[{"id":1}],"contacts":[],"plates":${'['.repeat(100000)}${']'.repeat(100000)}}`;
+    inputs.push({ name: 'deep.json', buffer: Buffer.from(deep) });
+    await page.selectOption('#method-select', 'lp');
+    try {
+      for (const { name, buffer } of inputs) {
+        await page.setInputFiles('#file-input', { name, mimeType: 'application/json', buffer });
+        const state = await waitForSettled(page, name);
+        if (name === 'deep.json') {
+          assert.equal(state.status, 'error', `${name}: ${state.verdict}`);
+          assert.match(state.error, /^deep\.json:1:\d+: plates\[0\]\[0\].*nested more than 256 levels deep/);
+        } else {
+          assert.equal(state.status, 'ready', `${name}: ${state.error}`);
+          assert.equal(state.verdictCode, 'not-interlocking', `${name}: ${state.verdict}`);
+        }
+      }
+      await screenshot(page, 'playground-hostile-input');
+    } finally {
+      await page.selectOption('#method-select', 'dbg');
+    }
     await page.selectOption('#example-select', FIRST_EXAMPLE);
     assertInterlockingWithKey(await waitForReady(page, FIRST_EXAMPLE), 1);
   });
