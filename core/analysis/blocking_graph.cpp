@@ -136,18 +136,12 @@ std::vector<BaseDirection> computeBaseDirections(const Assembly& assembly) {
 }
 
 DirectionalBlockingGraph buildBlockingGraph(const Assembly& assembly, const BaseDirection& direction) {
-  DirectionalBlockingGraph dbg{direction, DirectedGraph(assembly.partCount())};
-  for (const Contact& contact : assembly.contacts) {
-    double along = dot(direction.vector, contact.normal);
-    // Moving a along d pushes into b when d·n_ab > 0; moving b along d pushes into a when
-    // d·n_ba = -d·n_ab > 0.
-    if (along > kDirectionTolerance) dbg.graph.addEdge(contact.a, contact.b);
-    if (along < -kDirectionTolerance) dbg.graph.addEdge(contact.b, contact.a);
-  }
-  return dbg;
+  return BlockingGraphBuilder(assembly, 1).build(direction);
 }
 
-BlockingGraphBuilder::BlockingGraphBuilder(const Assembly& assembly) : partCount_(assembly.partCount()) {
+BlockingGraphBuilder::BlockingGraphBuilder(const Assembly& assembly, size_t directionCount)
+    : assembly_(assembly), grouped_(directionCount > 16) {
+  if (!grouped_) return;
   std::map<std::pair<int, int>, size_t> pairIndex;
   for (const Contact& contact : assembly.contacts) {
     const bool flip = contact.a > contact.b;
@@ -161,7 +155,7 @@ BlockingGraphBuilder::BlockingGraphBuilder(const Assembly& assembly) : partCount
 }
 
 DirectionalBlockingGraph BlockingGraphBuilder::build(const BaseDirection& direction) const {
-  DirectionalBlockingGraph dbg{direction, DirectedGraph(partCount_)};
+  DirectionalBlockingGraph dbg{direction, DirectedGraph(assembly_.partCount())};
   buildInto(direction, &dbg);
   return dbg;
 }
@@ -170,6 +164,16 @@ void BlockingGraphBuilder::buildInto(const BaseDirection& direction, Directional
   DirectionalBlockingGraph& dbg = *graph;
   dbg.direction = direction;
   dbg.graph.clearEdges();
+  if (!grouped_) {
+    // Moving a along d pushes into b when d·n_ab > 0; moving b along d pushes into a when
+    // d·n_ba = -d·n_ab > 0.
+    for (const Contact& contact : assembly_.contacts) {
+      const double along = dot(direction.vector, contact.normal);
+      if (along > kDirectionTolerance) dbg.graph.addEdge(contact.a, contact.b);
+      if (along < -kDirectionTolerance) dbg.graph.addEdge(contact.b, contact.a);
+    }
+    return;
+  }
   for (const PairContacts& pair : pairs_) {
     bool forward = false, backward = false;  // a blocked by b along d; b blocked by a along d
     for (const Vec3& n : pair.normals) {
@@ -184,9 +188,10 @@ void BlockingGraphBuilder::buildInto(const BaseDirection& direction, Directional
 }
 
 std::vector<DirectionalBlockingGraph> buildBaseBlockingGraphs(const Assembly& assembly) {
-  const BlockingGraphBuilder builder(assembly);
+  const std::vector<BaseDirection> directions = computeBaseDirections(assembly);
+  const BlockingGraphBuilder builder(assembly, directions.size());
   std::vector<DirectionalBlockingGraph> graphs;
-  for (const BaseDirection& direction : computeBaseDirections(assembly)) graphs.push_back(builder.build(direction));
+  for (const BaseDirection& direction : directions) graphs.push_back(builder.build(direction));
   return graphs;
 }
 

@@ -50,7 +50,7 @@ CheckReport checkAssembly(const AssemblyDocument& document, const CheckOptions& 
   const std::vector<BaseDirection> directions = computeBaseDirections(document.assembly);
   report.baseDirectionCount = directions.size();
   if (options.allGraphs || directions.size() <= kReportedGraphLimit) {
-    const BlockingGraphBuilder builder(document.assembly);
+    const BlockingGraphBuilder builder(document.assembly, directions.size());
     for (const BaseDirection& direction : directions) report.graphs.push_back(builder.build(direction));
   }
   if (options.method != CheckMethod::Inequalities) {

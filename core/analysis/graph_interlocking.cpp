@@ -135,7 +135,7 @@ InterlockingResult testInterlockingByGraphs(const Assembly& assembly,
 }
 
 InterlockingResult testInterlockingByGraphs(const Assembly& assembly, const std::vector<BaseDirection>& directions) {
-  const BlockingGraphBuilder builder(assembly);
+  const BlockingGraphBuilder builder(assembly, directions.size());
   DirectionalBlockingGraph current;
   current.graph = DirectedGraph(assembly.partCount());
   return testGraphs(assembly, directions.size(), [&](size_t i) -> const DirectionalBlockingGraph& {

@@ -76,6 +76,7 @@ std::vector<int> velocityColumns(const std::vector<bool>& isFree, int* columnCou
 struct MotionQuery {
   std::vector<bool> isFree;
   std::vector<bool> isWatched;
+  bool exactOnly = false;  // skip the floating-point simplex (tests: the routes must agree)
 };
 
 enum class Objective {
@@ -221,6 +222,7 @@ MotionSearch decideMotionProgram(const Assembly& assembly, const MotionQuery& qu
   if (program.spec.columnCount() == 0) return none;
   std::string failures;
   for (SimplexMethod method : {SimplexMethod::Dual, SimplexMethod::Primal}) {
+    if (query.exactOnly) break;
     LinearProgramSolution solution = solveLinearProgram(program.spec, method);
     if (!solution.optimal) {
       failures += (failures.empty() ? "" : "; ") + solution.failure;
@@ -314,7 +316,8 @@ std::vector<Vec3> freeDirectionsOfPart(const Assembly& assembly, const std::vect
   return free;
 }
 
-InterlockingResult testWithCleanNormals(const Assembly& assembly, const std::vector<BaseDirection>& directions) {
+InterlockingResult testWithCleanNormals(const Assembly& assembly, const std::vector<BaseDirection>& directions,
+                                        const InequalityOptions& options) {
   const int n = assembly.partCount();
   InterlockingResult result;
   if (n < 3) {
@@ -327,7 +330,7 @@ InterlockingResult testWithCleanNormals(const Assembly& assembly, const std::vec
   for (int i = 0; i < n; ++i) {
     std::vector<bool> isFree(n, false);
     isFree[i] = true;
-    MotionSearch search = findWatchedMotion(assembly, {isFree, isFree});
+    MotionSearch search = findWatchedMotion(assembly, {isFree, isFree, options.exactOnly});
     if (search.movable) {
       movableAlone.push_back(i);
       motions.push_back(std::move(search));
@@ -344,7 +347,7 @@ InterlockingResult testWithCleanNormals(const Assembly& assembly, const std::vec
   // Round 2: fix a reference part other than the key; the key may move, but no other part may.
   const int key = movableAlone.empty() ? -1 : movableAlone[0];
   const int reference = key == 0 ? 1 : 0;
-  MotionQuery query{std::vector<bool>(n, true), std::vector<bool>(n, true)};
+  MotionQuery query{std::vector<bool>(n, true), std::vector<bool>(n, true), options.exactOnly};
   query.isFree[reference] = query.isWatched[reference] = false;
   if (key >= 0) query.isWatched[key] = false;
   const MotionSearch search = findWatchedMotion(assembly, query);
@@ -363,16 +366,20 @@ InterlockingResult testWithCleanNormals(const Assembly& assembly, const std::vec
 }  // namespace
 
 MotionSearch findFreeMotion(const Assembly& assembly, const std::vector<bool>& isFree) {
+  if (hasCleanNormals(assembly)) return findWatchedMotion(assembly, {isFree, isFree});
   return findWatchedMotion(withCleanedNormals(assembly), {isFree, isFree});
 }
 
-InterlockingResult testInterlockingByInequalities(const Assembly& assembly, const std::vector<BaseDirection>& directions) {
-  return testWithCleanNormals(withCleanedNormals(assembly), directions);
+InterlockingResult testInterlockingByInequalities(const Assembly& assembly, const std::vector<BaseDirection>& directions,
+                                                  const InequalityOptions& options) {
+  if (hasCleanNormals(assembly)) return testWithCleanNormals(assembly, directions, options);
+  return testWithCleanNormals(withCleanedNormals(assembly), directions, options);
 }
 
 InterlockingResult testInterlockingByInequalities(const Assembly& assembly) {
+  if (hasCleanNormals(assembly)) return testWithCleanNormals(assembly, computeBaseDirections(assembly), {});
   const Assembly clean = withCleanedNormals(assembly);
-  return testWithCleanNormals(clean, computeBaseDirections(clean));
+  return testWithCleanNormals(clean, computeBaseDirections(clean), {});
 }
 
 }  // namespace desia

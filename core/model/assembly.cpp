@@ -33,6 +33,14 @@ std::optional<Vec3> cleanedNormal(const Vec3& normal) {
   return unit;
 }
 
+bool hasCleanNormals(const Assembly& assembly) {
+  for (const Contact& contact : assembly.contacts) {
+    const std::optional<Vec3> unit = cleanedNormal(contact.normal);
+    if (!unit || *unit != contact.normal) return false;
+  }
+  return true;
+}
+
 Assembly withCleanedNormals(const Assembly& assembly) {
   Assembly clean;
   clean.parts = assembly.parts;

@@ -210,6 +210,29 @@ TEST(VerdictRobustness, EveryContactDocumentKeepsItsVerdictWhenTurnedOrScaled) {
   EXPECT_GE(checked, 37 * 25);
 }
 
+// The file comment of inequality_interlocking.cpp claims that the certified floating-point route
+// and the exact rational simplex answer one question; here every program goes the exact way.
+TEST(VerdictRobustness, ExactSimplexAloneGivesTheSameVerdictsAsTheCertifiedRoute) {
+  int compared = 0;
+  for (const Case& item : contactCases()) {
+    const Assembly& assembly = item.document.assembly;
+    if (assembly.partCount() > 10) continue;  // the rational simplex is slow; small cases suffice
+    const std::vector<BaseDirection> directions = computeBaseDirections(assembly);
+    const InterlockingResult certified = testInterlockingByInequalities(assembly, directions);
+    const InterlockingResult exact = testInterlockingByInequalities(assembly, directions, {/*exactOnly=*/true});
+    EXPECT_EQ(signature(assembly, exact), signature(assembly, certified)) << item.name << "\nexact: " << exact.reason
+                                                                          << "\ncertified: " << certified.reason;
+    ExpectWitnessIsMotion(assembly, exact, item.name + " (exact)");
+    for (const Matrix& rotation : randomRotations(2)) {
+      const AssemblyDocument turned = transformed(item.document, {"turned", [&](const Vec3& n, size_t) { return apply(rotation, n); }});
+      const InterlockingResult turnedExact = testInterlockingByInequalities(turned.assembly, computeBaseDirections(turned.assembly), {true});
+      EXPECT_EQ(signature(turned.assembly, turnedExact), signature(assembly, certified)) << item.name << " turned (exact)";
+    }
+    ++compared;
+  }
+  EXPECT_GE(compared, 15);
+}
+
 // An independent answer to round 1 of the LP test: a part alone is free iff some direction d has
 // d·m <= 0 for all its oriented normals m; such a d, if any, lies where two contact planes meet,
 // along a reversed normal, or (normals all parallel) in the plane orthogonal to them.

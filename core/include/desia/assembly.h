@@ -49,6 +49,9 @@ constexpr double kNormalNoise = 1e-12;
 // once, when it is read or computed from geometry.
 std::optional<Vec3> cleanedNormal(const Vec3& normal);
 
+// True when every contact normal is already what cleanedNormal makes of it (no copy needed).
+bool hasCleanNormals(const Assembly& assembly);
+
 // The assembly with every contact normal passed through cleanedNormal; contacts whose normal is
 // the zero vector constrain nothing and are left out.
 Assembly withCleanedNormals(const Assembly& assembly);

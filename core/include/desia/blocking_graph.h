@@ -38,12 +38,14 @@ struct DirectionalBlockingGraph {
 // d·n > 0 (moving i along d would penetrate j).
 DirectionalBlockingGraph buildBlockingGraph(const Assembly& assembly, const BaseDirection& direction);
 
-// The same graphs for many directions of one assembly: contacts are grouped by pair of parts
-// once, and a pair is no longer examined once it blocks both ways (hundreds of contacts between
-// two parts then cost a few dot products per direction, not hundreds).
+// The same graphs for many directions of one assembly. Across many directions, contacts are
+// grouped by pair of parts once, and a pair is no longer examined once it blocks both ways
+// (hundreds of contacts between two parts then cost a few dot products per direction); across a
+// few (voxel assemblies: three) the grouping would cost more than it saves, and is skipped.
 class BlockingGraphBuilder {
  public:
-  explicit BlockingGraphBuilder(const Assembly& assembly);
+  // Keeps a reference to `assembly`, which must outlive the builder.
+  BlockingGraphBuilder(const Assembly& assembly, size_t directionCount);
   DirectionalBlockingGraph build(const BaseDirection& direction) const;
   // Rebuilds `graph` in place (its node count must be the assembly's), reusing its memory.
   void buildInto(const BaseDirection& direction, DirectionalBlockingGraph* graph) const;
@@ -53,7 +55,8 @@ class BlockingGraphBuilder {
     int a = 0, b = 0;           // a < b
     std::vector<Vec3> normals;  // oriented from a towards b, distinct
   };
-  int partCount_ = 0;
+  const Assembly& assembly_;
+  bool grouped_ = false;
   std::vector<PairContacts> pairs_;
 };
 

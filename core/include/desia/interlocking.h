@@ -45,8 +45,14 @@ InterlockingResult testInterlockingByGraphs(const Assembly& assembly, const std:
 // push into a contact by 1e-12 of its speed (computed normals carry rounding residue). Throws
 // Error(TooLarge) when even the exact simplex stops at its limits. `directions` (the base
 // directions, see computeBaseDirections) only name the key's free directions.
+struct InequalityOptions {
+  // Decide every program by the exact rational simplex alone (slow; tests use it to show that the
+  // certified floating-point route answers the same question).
+  bool exactOnly = false;
+};
 InterlockingResult testInterlockingByInequalities(const Assembly& assembly);
-InterlockingResult testInterlockingByInequalities(const Assembly& assembly, const std::vector<BaseDirection>& directions);
+InterlockingResult testInterlockingByInequalities(const Assembly& assembly, const std::vector<BaseDirection>& directions,
+                                                  const InequalityOptions& options = {});
 
 // Lower level pieces of the inequality test, exposed for tests.
 struct MotionSearch {
