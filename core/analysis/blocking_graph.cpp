@@ -32,19 +32,37 @@ DirectionKey keyOf(const Vec3& unit) {
 }
 
 // One representative per key (the first in input order), in descending key order, which is the
-// descending order of the vectors themselves. Sorting keeps this O(L log L) where a pairwise
-// comparison was O(L^2) (O(L^4) for the O(L^2) crossings of L normals, issue 14).
+// descending order of the vectors themselves. Few distinct directions (voxel assemblies: three
+// lines among thousands of contacts) are found by a scan of those seen so far; past a few dozen,
+// sorting keeps this O(L log L) where the scan would be O(L^2) (O(L^4) for the O(L^2) crossings
+// of L normals, issue 14).
 std::vector<Vec3> uniqueDirections(const std::vector<Vec3>& directions) {
-  std::vector<std::pair<DirectionKey, size_t>> keyed;
-  keyed.reserve(directions.size());
-  for (size_t i = 0; i < directions.size(); ++i) keyed.push_back({keyOf(directions[i]), i});
-  std::sort(keyed.begin(), keyed.end());
-  std::vector<Vec3> unique;
-  for (size_t i = keyed.size(); i-- > 0;) {
-    // Within a run of equal keys the lowest index comes first, i.e. last going backwards.
-    if (i > 0 && keyed[i - 1].first == keyed[i].first) continue;
-    unique.push_back(directions[keyed[i].second]);
+  constexpr size_t kScanLimit = 32;
+  std::vector<std::pair<DirectionKey, size_t>> seen;
+  bool scanned = true;
+  for (size_t i = 0; i < directions.size() && scanned; ++i) {
+    const DirectionKey key = keyOf(directions[i]);
+    bool known = false;
+    for (const auto& entry : seen) known = known || entry.first == key;
+    if (known) continue;
+    if (seen.size() == kScanLimit) {
+      scanned = false;
+    } else {
+      seen.push_back({key, i});
+    }
   }
+  if (!scanned) {
+    seen.clear();
+    seen.reserve(directions.size());
+    for (size_t i = 0; i < directions.size(); ++i) seen.push_back({keyOf(directions[i]), i});
+    std::sort(seen.begin(), seen.end());
+    // Within a run of equal keys the lowest index comes first: keep that one.
+    seen.erase(std::unique(seen.begin(), seen.end(), [](const auto& a, const auto& b) { return a.first == b.first; }), seen.end());
+  }
+  std::sort(seen.begin(), seen.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+  std::vector<Vec3> unique;
+  unique.reserve(seen.size());
+  for (const auto& entry : seen) unique.push_back(directions[entry.second]);
   return unique;
 }
 

@@ -112,24 +112,25 @@ bool involvesUnwatchedFreePart(const Contact& contact, const MotionQuery& query)
 // without the t columns (3N instead of 3N + C variables), and GLPK gets there in far fewer
 // pivots: on a 1500-part cube that falls apart, 16 s for Eq. 2 as written.
 struct MotionProgram {
-  LinearProgramSpec spec;
+  LinearProgramSpec spec;           // rows and columns; the objective is set per question
   std::vector<int> velocityColumn;  // per part, -1 when fixed
+  std::vector<double> separation;   // Eq. 2's objective: Σ s_c over contacts between watched or fixed parts
+  std::vector<double> functional;   // the generic weights on the watched velocities (0 elsewhere)
 };
 
-MotionProgram buildMotionProgram(const Assembly& assembly, const MotionQuery& query, Objective objective,
-                                 double functionalSign) {
+// The rows are the same for every question asked of one query, so they are built once.
+MotionProgram buildMotionProgram(const Assembly& assembly, const MotionQuery& query) {
   MotionProgram program;
   int velocityCount = 0;
   program.velocityColumn = velocityColumns(query.isFree, &velocityCount);
-  std::vector<double> cost(velocityCount, 0.0);
-  if (objective == Objective::GenericFunctional) {
-    const std::vector<double> weights = genericWeights(velocityCount);
-    for (int part = 0; part < assembly.partCount(); ++part) {
-      if (!query.isWatched[part]) continue;
-      for (int k = 0; k < 3; ++k) {
-        const int column = program.velocityColumn[part] + k;
-        cost[column] = functionalSign * weights[column];
-      }
+  program.separation.assign(velocityCount, 0.0);
+  program.functional.assign(velocityCount, 0.0);
+  const std::vector<double> weights = genericWeights(velocityCount);
+  for (int part = 0; part < assembly.partCount(); ++part) {
+    if (!query.isWatched[part]) continue;
+    for (int k = 0; k < 3; ++k) {
+      const int column = program.velocityColumn[part] + k;
+      program.functional[column] = weights[column];
     }
   }
   LinearProgramSpec& spec = program.spec;
@@ -137,18 +138,25 @@ MotionProgram buildMotionProgram(const Assembly& assembly, const MotionQuery& qu
     const Contact& contact = assembly.contacts[c];
     const int row = spec.rowCount();
     spec.rowLower.push_back(0.0);
-    const bool separationCounts = objective == Objective::SeparatingContacts && !involvesUnwatchedFreePart(contact, query);
+    const bool separationCounts = !involvesUnwatchedFreePart(contact, query);
     for (const auto& [part, sign] : {std::pair<int, double>{contact.b, 1.0}, std::pair<int, double>{contact.a, -1.0}}) {
       if (program.velocityColumn[part] < 0) continue;
       for (int k = 0; k < 3; ++k) {
         const int column = program.velocityColumn[part] + k;
         spec.addEntry(row, column, sign * contact.normal[k]);
-        if (separationCounts) cost[column] += sign * contact.normal[k];
+        if (separationCounts) program.separation[column] += sign * contact.normal[k];
       }
     }
   }
-  for (double c : cost) spec.addColumn(-1.0, 1.0, c);
+  for (int j = 0; j < velocityCount; ++j) spec.addColumn(-1.0, 1.0, 0.0);
   return program;
+}
+
+void setObjective(MotionProgram* program, Objective objective, double functionalSign) {
+  std::vector<double>& cost = program->spec.objective;
+  for (size_t j = 0; j < cost.size(); ++j) {
+    cost[j] = objective == Objective::SeparatingContacts ? program->separation[j] : functionalSign * program->functional[j];
+  }
 }
 
 double objectiveAt(const LinearProgramSpec& spec, const std::vector<double>& x) {
@@ -215,9 +223,7 @@ MotionSearch motionFrom(const Assembly& assembly, const MotionProgram& program, 
 
 // Decides one motion program (see the file comment): GLPK's dual simplex, then its primal
 // simplex, each accepted only with a checked certificate, then the exact rational simplex.
-MotionSearch decideMotionProgram(const Assembly& assembly, const MotionQuery& query, Objective objective,
-                                 double functionalSign) {
-  MotionProgram program = buildMotionProgram(assembly, query, objective, functionalSign);
+MotionSearch decideMotionProgram(const Assembly& assembly, const MotionQuery& query, MotionProgram program) {
   const MotionSearch none{false, std::vector<Vec3>(assembly.partCount(), Vec3{0, 0, 0})};
   if (program.spec.columnCount() == 0) return none;
   std::string failures;
@@ -246,10 +252,13 @@ MotionSearch decideMotionProgram(const Assembly& assembly, const MotionQuery& qu
 // Is there a motion in which a watched part moves? Eq. 2's question first (its solution separates contacts,
 // the clearest witness), then the generic functional in both signs for sliding motions.
 MotionSearch findWatchedMotion(const Assembly& assembly, const MotionQuery& query) {
-  MotionSearch search = decideMotionProgram(assembly, query, Objective::SeparatingContacts, 1.0);
+  MotionProgram program = buildMotionProgram(assembly, query);
+  setObjective(&program, Objective::SeparatingContacts, 1.0);
+  MotionSearch search = decideMotionProgram(assembly, query, program);
   for (double sign : {1.0, -1.0}) {
     if (search.movable) break;
-    search = decideMotionProgram(assembly, query, Objective::GenericFunctional, sign);
+    setObjective(&program, Objective::GenericFunctional, sign);
+    search = decideMotionProgram(assembly, query, program);
   }
   return search;
 }
@@ -366,8 +375,7 @@ InterlockingResult testWithCleanNormals(const Assembly& assembly, const std::vec
 }  // namespace
 
 MotionSearch findFreeMotion(const Assembly& assembly, const std::vector<bool>& isFree) {
-  if (hasCleanNormals(assembly)) return findWatchedMotion(assembly, {isFree, isFree});
-  return findWatchedMotion(withCleanedNormals(assembly), {isFree, isFree});
+  return findWatchedMotion(assembly, {isFree, isFree});
 }
 
 InterlockingResult testInterlockingByInequalities(const Assembly& assembly, const std::vector<BaseDirection>& directions,

@@ -60,6 +60,7 @@ struct MotionSearch {
   std::vector<Vec3> velocities;  // per part (zero for fixed parts)
 };
 // Is there a non-zero motion of the parts flagged free (the others fixed) that violates no contact?
+// Expects clean normals (cleanedNormal; every reader makes them so), unlike the whole test above.
 MotionSearch findFreeMotion(const Assembly& assembly, const std::vector<bool>& isFree);
 
 }  // namespace desia
