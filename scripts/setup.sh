@@ -13,6 +13,7 @@ debian_packages=(
   libgtest-dev libbenchmark-dev
   libeigen3-dev nlohmann-json3-dev libglpk-dev zlib1g-dev
   emscripten chromium
+  clang libclang-rt-14-dev
 )
 # Node.js: keep whatever node/npm the machine has (a newer nodejs package ships npm itself and
 # conflicts with Debian's npm package); install Debian's only when the commands are missing.

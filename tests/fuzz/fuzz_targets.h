@@ -1,0 +1,188 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The bodies of the fuzz harnesses, shared by the libFuzzer binaries (tests/fuzz/*_fuzz.cpp) and the
+// GoogleTest replay of the regression corpus (tests/core/fuzz_regression_test.cpp), so a crash file
+// is replayed through exactly the code that found it.
+//
+// Contract of every target: desia::Error is a normal outcome (the input was refused with a message);
+// anything else — a crash, a sanitizer report, any other exception, a broken invariant (reported as
+// std::logic_error) or a timeout — is a finding.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "desia/check.h"
+#include "desia/design_io.h"
+#include "desia/document.h"
+#include "desia/error.h"
+#include "desia/mesh.h"
+#include "desia/voxel_design.h"
+#include "desia/voxelize.h"
+
+namespace desia::fuzz {
+
+struct Target {
+  const char* name;  // also the folder name under tests/fuzz/corpus/ and tests/fuzz/regressions/
+  void (*run)(const uint8_t* data, size_t size);
+};
+
+namespace detail {
+
+inline std::string textOf(const uint8_t* data, size_t size) {
+  return std::string(reinterpret_cast<const char*>(data), size);
+}
+
+// Runs `body`, swallowing the refusals the readers are allowed to give.
+template <typename Body>
+void refusalsAllowed(Body&& body) {
+  try {
+    body();
+  } catch (const desia::Error&) {
+  }
+}
+
+[[noreturn]] inline void broken(const std::string& what) { throw std::logic_error("fuzz invariant broken: " + what); }
+
+}  // namespace detail
+
+// .puz and JSON assembly documents through the reader the CLI and the module use. A document that
+// was read must serialize and read back (the JSON writer must never produce what the reader refuses).
+inline void assemblyTextTarget(const uint8_t* data, size_t size) {
+  detail::refusalsAllowed([&] {
+    const AssemblyDocument document = parseAssemblyText(detail::textOf(data, size), "fuzz");
+    const std::string json = documentToJson(document, -1);
+    try {
+      const AssemblyDocument again = parseAssemblyText(json, "fuzz-roundtrip");
+      if (again.assembly.partCount() != document.assembly.partCount())
+        detail::broken("part count changed in a round trip");
+    } catch (const desia::Error& e) {
+      detail::broken(std::string("a written document was refused: ") + e.what());
+    }
+  });
+}
+
+// OBJ / STL: each reader on its own, the dispatcher under both extensions, then the closed-mesh
+// check and a coarse voxelization of whatever the readers accepted.
+inline void meshTarget(const uint8_t* data, size_t size) {
+  const std::string bytes = detail::textOf(data, size);
+  const auto voxelizeCoarse = [](const TriangleMesh& mesh) {
+    checkClosedMesh(mesh, "fuzz");
+    VoxelizeOptions options;
+    options.resolution = 8;  // enough to walk every code path; a fuzz run must stay fast
+    voxelizeSolid(mesh, options, "fuzz");
+  };
+  detail::refusalsAllowed([&] { voxelizeCoarse(parseObj(bytes, "fuzz.obj")); });
+  detail::refusalsAllowed([&] { voxelizeCoarse(parseStl(bytes, "fuzz.stl")); });
+  detail::refusalsAllowed([&] { parseMesh(bytes, "fuzz.obj"); });
+  detail::refusalsAllowed([&] { parseMesh(bytes, "fuzz.stl"); });
+}
+
+// The design options and appearance-group readers (package options, --groups files) against a fixed
+// 4x4x4 shape with a hole, so "outside the shape" paths are reachable.
+inline void designOptionsTarget(const uint8_t* data, size_t size) {
+  VoxelGrid shape(4, 4, 4);
+  for (int64_t i = 0; i < shape.voxelCount(); ++i) shape.setLabelAt(i, 1);
+  shape.setLabel(1, 1, 1, 0);
+  const std::string text = detail::textOf(data, size);
+  detail::refusalsAllowed([&] { parseDesignOptionsJson(text, shape); });
+  detail::refusalsAllowed([&] { parseVoxelGroupsJson(text, shape, "fuzz.json"); });
+  detail::refusalsAllowed([&] { parseAxisDirection(text); });
+}
+
+// Limits that keep one checkAssembly run in the milliseconds (GLPK's LPs grow with the parts).
+struct CheckLimits {
+  static constexpr size_t kMaxBytes = 8192;
+  static constexpr int kMaxParts = 16;
+  static constexpr int64_t kMaxVoxels = 512;
+  static constexpr size_t kMaxContacts = 128;
+};
+
+// checkAssembly with every method on small documents, and both report writers.
+inline void checkTarget(const uint8_t* data, size_t size) {
+  if (size > CheckLimits::kMaxBytes) return;
+  detail::refusalsAllowed([&] {
+    const AssemblyDocument document = parseAssemblyText(detail::textOf(data, size), "fuzz");
+    if (document.assembly.partCount() > CheckLimits::kMaxParts ||
+        document.voxels.voxelCount() > CheckLimits::kMaxVoxels ||
+        document.assembly.contacts.size() > CheckLimits::kMaxContacts) {
+      return;
+    }
+    for (const CheckMethod method : {CheckMethod::Graphs, CheckMethod::Inequalities, CheckMethod::Both}) {
+      CheckOptions options;
+      options.method = method;
+      const CheckReport report = checkAssembly(document, options);
+      checkReportToJson(document, report, -1);
+      checkReportToText(document, report);
+    }
+  });
+}
+
+// Limits for the designer: tiny shapes, few parts, a node budget instead of a clock (reproducible).
+struct DesignLimits {
+  static constexpr size_t kHeaderBytes = 4;
+  static constexpr int64_t kMaxShapeVoxels = 64;
+  static constexpr int64_t kMaxGridVoxels = 512;
+  static constexpr int64_t kNodeLimit = 40;
+};
+
+// designVoxelPuzzle on a tiny shape. Input: a 4-byte header choosing the options, then a .puz or
+// JSON voxel document whose non-empty voxels are the shape (the CLI's rule).
+//   byte 0: parts = 3 + b % 4            byte 1: seed
+//   byte 2: candidates = 1 + b % 8, bit 3 recursive mode, bits 4-5 minPartSize, bit 6 a group of
+//           the first two shape voxels
+//   byte 3: ranking = b % 7, key direction = (b / 7) % 6
+// A success must re-check as interlocking with key 1 (the designer's promise).
+inline void designTarget(const uint8_t* data, size_t size) {
+  if (size < DesignLimits::kHeaderBytes) return;
+  const uint8_t* header = data;
+  detail::refusalsAllowed([&] {
+    const AssemblyDocument document =
+        parseAssemblyText(detail::textOf(data + DesignLimits::kHeaderBytes, size - DesignLimits::kHeaderBytes), "fuzz");
+    if (document.kind != AssemblyKind::Voxel || document.voxels.voxelCount() > DesignLimits::kMaxGridVoxels) return;
+    std::vector<int64_t> shapeVoxels;
+    for (int64_t i = 0; i < document.voxels.voxelCount(); ++i) {
+      if (document.voxels.labelAt(i) != 0) shapeVoxels.push_back(i);
+    }
+    if (static_cast<int64_t>(shapeVoxels.size()) > DesignLimits::kMaxShapeVoxels) return;
+
+    static const char* const kRankings[] = {"compactness", "x", "y", "z", "-x", "-y", "-z"};
+    static const char* const kDirections[] = {"+x", "-x", "+y", "-y", "+z", "-z"};
+    VoxelDesignOptions options;
+    options.parts = 3 + header[0] % 4;
+    options.seed = header[1];
+    options.candidates = 1 + header[2] % 8;
+    options.mode = (header[2] & 0x08) ? DesignMode::Recursive : DesignMode::Desia;
+    options.minPartSize = (header[2] >> 4) & 0x03;
+    if ((header[2] & 0x40) && shapeVoxels.size() >= 2) options.groups = {{shapeVoxels[0], shapeVoxels[1]}};
+    options.ranking = parseCandidateRanking(kRankings[header[3] % 7]);
+    options.keyDirection = parseAxisDirection(kDirections[(header[3] / 7) % 6]);
+    options.nodeLimit = DesignLimits::kNodeLimit;
+
+    const VoxelDesignResult result = designVoxelPuzzle(document.voxels, options);
+    designResultToJson(result);
+    if (result.status != DesignStatus::Success) return;
+    const AssemblyDocument designed = documentFromVoxels(result.puzzle);
+    if (designed.assembly.partCount() != options.parts) detail::broken("a design has the wrong part count");
+    const CheckReport check = checkAssembly(designed);
+    if (check.result.verdict != Verdict::Interlocking || check.result.key != 0) {
+      detail::broken("a designed puzzle does not interlock with part 1 as its key");
+    }
+  });
+}
+
+inline const std::vector<Target>& targets() {
+  static const std::vector<Target> kTargets = {
+      {"assembly_text", assemblyTextTarget},
+      {"mesh", meshTarget},
+      {"design_options", designOptionsTarget},
+      {"check", checkTarget},
+      {"design", designTarget},
+  };
+  return kTargets;
+}
+
+}  // namespace desia::fuzz
