@@ -11,7 +11,7 @@ sudo_if_needed() { if [ "$(id -u)" = 0 ]; then "$@"; else sudo "$@"; fi; }
 debian_packages=(
   build-essential cmake pkg-config
   libgtest-dev libbenchmark-dev
-  libeigen3-dev nlohmann-json3-dev libglpk-dev zlib1g-dev
+  libeigen3-dev nlohmann-json3-dev libglpk-dev libpolyclipping-dev zlib1g-dev
   emscripten chromium
   clang libclang-rt-14-dev
 )
@@ -32,24 +32,47 @@ else
   log "Debian packages present"
 fi
 
+# Debian's source packages, by deriving a deb-src entry from the existing one (no host named).
+enable_source_packages() {
+  local src_list=/etc/apt/sources.list.d/debian-src.sources
+  [ -f "$src_list" ] || [ -f /etc/apt/sources.list.d/debian-src.list ] && return 0
+  if [ -f /etc/apt/sources.list.d/debian.sources ]; then
+    sed 's/^Types: deb$/Types: deb-src/' /etc/apt/sources.list.d/debian.sources | sudo_if_needed tee "$src_list" >/dev/null
+  else
+    grep -h '^deb ' /etc/apt/sources.list | sed 's/^deb /deb-src /' | sudo_if_needed tee /etc/apt/sources.list.d/debian-src.list >/dev/null
+  fi
+  sudo_if_needed apt-get update -qq
+}
+
 # GLPK C sources for the WebAssembly build (the host libglpk cannot be linked into wasm).
 glpk_dir="$root/third_party/glpk-5.0"
 if [ ! -f "$glpk_dir/src/glpk.h" ]; then
   log "fetching GLPK 5.0 sources from Debian's source packages"
-  src_list=/etc/apt/sources.list.d/debian-src.sources
-  if [ ! -f "$src_list" ]; then
-    if [ -f /etc/apt/sources.list.d/debian.sources ]; then
-      sed 's/^Types: deb$/Types: deb-src/' /etc/apt/sources.list.d/debian.sources | sudo_if_needed tee "$src_list" >/dev/null
-    else
-      grep -h '^deb ' /etc/apt/sources.list | sed 's/^deb /deb-src /' | sudo_if_needed tee /etc/apt/sources.list.d/debian-src.list >/dev/null
-    fi
-    sudo_if_needed apt-get update -qq
-  fi
+  enable_source_packages
   mkdir -p "$root/third_party"
   (cd "$root/third_party" && apt-get source --download-only glpk >/dev/null 2>&1 || apt-get source --download-only glpk)
   (cd "$root/third_party" && tar xzf glpk_5.0.orig.tar.gz)
 else
   log "GLPK sources present"
+fi
+
+# Clipper C++ sources for the WebAssembly build, from Debian's source package (libpolyclipping);
+# natively the core links Debian's libpolyclipping-dev of the same version (6.4.2).
+clipper_dir="$root/third_party/polyclipping-6.4.2"
+if [ ! -f "$clipper_dir/cpp/clipper.cpp" ]; then
+  log "fetching Clipper 6.4.2 sources from Debian's source packages"
+  enable_source_packages
+  mkdir -p "$root/third_party"
+  (cd "$root/third_party" && apt-get source --download-only libpolyclipping >/dev/null 2>&1 || apt-get source --download-only libpolyclipping)
+  unpack="$(mktemp -d "$root/third_party/polyclipping.XXXXXX")"
+  tar xjf "$root/third_party"/libpolyclipping_6.4.2.orig.tar.bz2 -C "$unpack"
+  # The tarball's top folder has an arbitrary name: take the one that holds cpp/clipper.cpp.
+  found="$(dirname "$(dirname "$(find "$unpack" -path '*/cpp/clipper.cpp' | head -n 1)")")"
+  rm -rf "$clipper_dir"
+  mv "$found" "$clipper_dir"
+  rm -rf "$unpack"
+else
+  log "Clipper sources present"
 fi
 
 # npm packages (three, playwright-core); package-lock.json pins them.

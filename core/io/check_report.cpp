@@ -109,6 +109,9 @@ std::string checkReportToJson(const AssemblyDocument& document, const CheckRepor
   root["graphs"] = graphsJson(assembly, report.graphs);
   // Over kReportedGraphLimit directions the lists stay empty (`desia check --graphs` keeps them).
   root["graphsOmitted"] = report.graphs.size() < report.baseDirectionCount;
+  if (document.kind == AssemblyKind::Plate && !document.plates.empty()) {
+    root["cutPoints"] = idsJson(assembly, document.plateCutPoints);
+  }
   if (report.method == CheckMethod::Both) {
     root["methods"] = {{"dbg", verdictJson(assembly, *report.graphResult)},
                        {"lp", verdictJson(assembly, *report.inequalityResult)}};
@@ -147,6 +150,12 @@ std::string checkReportToText(const AssemblyDocument& document, const CheckRepor
     out << "witness: part" << (result.witness.parts.size() > 1 ? "s" : "");
     for (int part : result.witness.parts) out << ' ' << assembly.parts[part].id;
     out << " move " << (result.witness.direction.empty() ? "in different directions" : "along " + result.witness.direction) << "\n";
+  }
+  if (!document.plateCutPoints.empty()) {
+    out << "cut points of the parts-graph: plate" << (document.plateCutPoints.size() > 1 ? "s" : "");
+    for (int part : document.plateCutPoints) out << ' ' << assembly.parts[part].id;
+    out << " (no joints can make this structure interlocking: add a part that bypasses "
+        << (document.plateCutPoints.size() > 1 ? "them" : "it") << ", paper Section 5.2)\n";
   }
   out << "base directions:";
   if (report.graphs.size() < report.baseDirectionCount) {

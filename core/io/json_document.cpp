@@ -8,6 +8,7 @@
 #include "desia/error.h"
 #include "desia/puz_format.h"
 #include "io/json_input.h"
+#include "io/plate_format.h"
 
 namespace desia {
 namespace {
@@ -169,8 +170,26 @@ AssemblyDocument parseJsonDocument(const std::string& text, const std::string& s
     document = documentFromVoxels(parseVoxelSection(root, source), name);
     return document;
   }
-  document.assembly.parts = parseParts(root, source);
-  document.assembly.contacts = parseContacts(root, document.assembly, source);
+  if (document.kind == AssemblyKind::Plate && root.contains("plates") && !root.contains("contacts")) {
+    // A plate design: parts and contacts come from the geometry (paper Section 5.2).
+    PlateOptions& options = document.plateOptions;
+    if (root.contains("contactTolerance")) {
+      const json& tolerance = root["contactTolerance"];
+      if (!tolerance.is_number() || !(tolerance.get<double>() > 0) || tolerance.get<double>() > 10) {
+        fail(source, "contactTolerance", "expected a positive number of millimetres up to 10, found " + tolerance.dump());
+      }
+      options.contactTolerance = tolerance.get<double>();
+    }
+    document.plates = parsePlates(root["plates"], source);
+    validatePlates(document.plates, options, source);
+    const std::vector<PlateContact> contacts = computePlateContacts(document.plates, options);
+    requireConnectedPlates(document.plates, contacts, source);
+    document.assembly = assemblyFromPlates(document.plates, contacts);
+    document.plateCutPoints = plateCutPoints(static_cast<int>(document.plates.size()), contacts);
+  } else {
+    document.assembly.parts = parseParts(root, source);
+    document.assembly.contacts = parseContacts(root, document.assembly, source);
+  }
   json geometry = json::object();
   for (const char* section : {"plates", "frame"}) {
     if (root.contains(section)) geometry[section] = root[section];
@@ -204,6 +223,12 @@ std::string documentToJson(const AssemblyDocument& document, int indent) {
     const std::vector<int64_t> counts = grid.labelCounts();
     for (const Part& part : document.assembly.parts) parts.push_back({{"id", part.id}, {"voxelCount", counts[part.id]}});
     root["parts"] = parts;
+  } else if (document.kind == AssemblyKind::Plate && !document.plates.empty()) {
+    // A plate design is its geometry: parts and contacts are derived again when it is read.
+    if (document.plateOptions.contactTolerance != PlateOptions{}.contactTolerance) {
+      root["contactTolerance"] = document.plateOptions.contactTolerance;
+    }
+    root["plates"] = platesToJson(document.plates);
   } else {
     for (const Part& part : document.assembly.parts) {
       json entry = {{"id", part.id}};

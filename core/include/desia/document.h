@@ -4,8 +4,10 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "desia/assembly.h"
+#include "desia/plate.h"
 #include "desia/voxel_grid.h"
 
 namespace desia {
@@ -19,6 +21,9 @@ struct AssemblyDocument {
   VoxelGrid voxels;          // kind == Voxel
   Assembly assembly;         // parts and contacts (derived from the grid for voxel documents)
   std::string geometryJson;  // plate / frame geometry sections, kept verbatim for round trips
+  std::vector<Plate> plates;          // kind == Plate, read from geometry (then contacts are computed)
+  std::vector<int> plateCutPoints;    // plates (internal indices) that are cut points of the parts-graph
+  PlateOptions plateOptions;          // the contact tolerance the plates were read with
 };
 
 // Reads .puz or JSON text (detected from the content). `source` names the input in messages.

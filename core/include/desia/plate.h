@@ -1,0 +1,60 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Plate structures (paper Section 5.2): flat boards of constant thickness, each given by its two
+// parallel faces. Their contacts (which plates touch, where, with which normal) are computed from
+// the geometry: a face of one plate lying on a face of another with opposite outward normals and
+// an overlap of positive area. That covers a plate's edge face against another plate's face (butt,
+// T and L joints) and two plates meeting edge to edge along a shared, possibly mitred, face.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "desia/assembly.h"
+
+namespace desia {
+
+// One closed loop of a face: vertices in order, no closing repeat.
+using Loop = std::vector<Vec3>;
+
+struct Plate {
+  int id = 0;
+  std::string name;
+  // The two faces: loop k of `bottom` matches loop k of `top` vertex for vertex; loop 0 is the
+  // outline, the others are holes. The plate is the solid between them.
+  std::vector<Loop> bottom;
+  std::vector<Loop> top;
+};
+
+struct PlateOptions {
+  // Two faces closer than this (mm) lie on one another; also the planarity tolerance of a face.
+  double contactTolerance = 0.05;
+};
+
+// A planar contact between two plates (internal indices into the plate list).
+struct PlateContact {
+  int a = 0, b = 0;
+  Vec3 normal{0, 0, 0};       // unit, pointing from plate a into plate b (the outward normal of a's face)
+  double area = 0;            // mm^2 of the overlap
+  Vec3 edgeDirection{0, 0, 0};  // the shared edge line's direction: where the plates' mid-planes meet
+  std::vector<Vec3> region;   // the overlap polygon (largest piece), in 3D
+};
+
+// Checks every plate (planar faces, positive thickness, parallel matching faces, loops that do not
+// cross themselves) and throws BadInput naming the plate and the problem.
+void validatePlates(const std::vector<Plate>& plates, const PlateOptions& options, const std::string& source);
+
+// All contacts between the plates, in a fixed order (by plate pair, then faces).
+std::vector<PlateContact> computePlateContacts(const std::vector<Plate>& plates, const PlateOptions& options);
+
+// Throws BadInput when some plate touches nothing or the plates fall into separate groups.
+void requireConnectedPlates(const std::vector<Plate>& plates, const std::vector<PlateContact>& contacts,
+                            const std::string& source);
+
+// The parts and contacts of the structure (part ids = plate ids), as the interlocking tests read them.
+Assembly assemblyFromPlates(const std::vector<Plate>& plates, const std::vector<PlateContact>& contacts);
+
+// The plates whose removal disconnects the parts-graph (its cut points). A structure with a cut
+// point cannot be interlocking whatever the joints (paper Section 5.2, Fig. 18).
+std::vector<int> plateCutPoints(int plateCount, const std::vector<PlateContact>& contacts);
+
+}  // namespace desia

@@ -1,0 +1,374 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Plate geometry (paper Section 5.2): validation, faces of the plate solids, and the contacts
+// between plates found where faces lie on one another. The overlap of two coplanar faces is a 2D
+// polygon intersection, done by Clipper (Angus Johnson's library, Debian's libpolyclipping) on
+// integer coordinates, exact and the same natively and in WebAssembly.
+#include <polyclipping/clipper.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "analysis/vec3.h"
+#include "desia/cut_points.h"
+#include "desia/error.h"
+#include "desia/plate.h"
+
+namespace desia {
+namespace {
+
+// Clipper works on integers: 1e-4 mm steps, far below any tolerance, far from its range limit.
+constexpr double kClipperScale = 1e4;
+
+Vec3 minus(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+Vec3 plus(const Vec3& a, const Vec3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
+
+// Newell's normal of a loop (length = twice its area): robust for non-convex loops.
+Vec3 newellNormal(const Loop& loop) {
+  Vec3 n{0, 0, 0};
+  for (size_t i = 0; i < loop.size(); ++i) {
+    const Vec3& p = loop[i];
+    const Vec3& q = loop[(i + 1) % loop.size()];
+    n[0] += (p[1] - q[1]) * (p[2] + q[2]);
+    n[1] += (p[2] - q[2]) * (p[0] + q[0]);
+    n[2] += (p[0] - q[0]) * (p[1] + q[1]);
+  }
+  return n;
+}
+
+Vec3 centroidOf(const Loop& loop) {
+  Vec3 c{0, 0, 0};
+  for (const Vec3& p : loop) c = plus(c, p);
+  return scaled(c, 1.0 / static_cast<double>(loop.size()));
+}
+
+std::string plateName(const Plate& plate) {
+  return "plate " + std::to_string(plate.id) + (plate.name.empty() ? "" : " (" + plate.name + ")");
+}
+
+std::string millimetres(double value) {
+  std::ostringstream out;
+  out.precision(3);
+  out << value << " mm";
+  return out.str();
+}
+
+// A plane through `origin` with unit normal `normal`, and a 2D frame in it.
+struct PlaneFrame {
+  Vec3 origin, normal, u, v;
+  explicit PlaneFrame(const Vec3& origin_, const Vec3& normal_) : origin(origin_), normal(normalized(normal_)) {
+    const Vec3 axis = std::abs(normal[0]) < 0.6 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
+    u = normalized(cross(normal, axis));
+    v = cross(normal, u);
+  }
+  ClipperLib::IntPoint toClipper(const Vec3& p) const {
+    const Vec3 d = minus(p, origin);
+    return {static_cast<ClipperLib::cInt>(std::llround(dot(d, u) * kClipperScale)),
+            static_cast<ClipperLib::cInt>(std::llround(dot(d, v) * kClipperScale))};
+  }
+  Vec3 fromClipper(const ClipperLib::IntPoint& p) const {
+    return plus(origin, plus(scaled(u, static_cast<double>(p.X) / kClipperScale), scaled(v, static_cast<double>(p.Y) / kClipperScale)));
+  }
+};
+
+// One planar face of a plate solid: its loops (outline and holes, or one side quad) and its
+// outward unit normal.
+struct SolidFace {
+  std::vector<Loop> loops;
+  Vec3 normal;
+};
+
+// The unit vector from the bottom face towards the top face.
+Vec3 thicknessAxis(const Plate& plate) {
+  Vec3 n = normalized(newellNormal(plate.bottom[0]));
+  if (dot(n, minus(centroidOf(plate.top[0]), centroidOf(plate.bottom[0]))) < 0) n = negated(n);
+  return n;
+}
+
+// Even-odd test of a point of the bottom face's plane against all its loops (outline and holes).
+bool insideBottomFace(const Plate& plate, const PlaneFrame& frame, const Vec3& point) {
+  const double px = dot(minus(point, frame.origin), frame.u), py = dot(minus(point, frame.origin), frame.v);
+  bool inside = false;
+  for (const Loop& loop : plate.bottom) {
+    for (size_t i = 0, j = loop.size() - 1; i < loop.size(); j = i++) {
+      const double xi = dot(minus(loop[i], frame.origin), frame.u), yi = dot(minus(loop[i], frame.origin), frame.v);
+      const double xj = dot(minus(loop[j], frame.origin), frame.u), yj = dot(minus(loop[j], frame.origin), frame.v);
+      if ((yi > py) != (yj > py) && px < (xj - xi) * (py - yi) / (yj - yi) + xi) inside = !inside;
+    }
+  }
+  return inside;
+}
+
+std::vector<SolidFace> solidFaces(const Plate& plate) {
+  const Vec3 axis = thicknessAxis(plate);
+  std::vector<SolidFace> faces{{plate.bottom, negated(axis)}, {plate.top, axis}};
+  const PlaneFrame bottomFrame(centroidOf(plate.bottom[0]), axis);
+  // A side face's normal points out of the solid: a step from the middle of its bottom edge along
+  // the normal (projected into the bottom plane) must leave the bottom face. Loop orientation and
+  // holes need no separate rules this way.
+  constexpr double kStep = 1e-3;  // mm
+  for (size_t l = 0; l < plate.bottom.size(); ++l) {
+    const Loop& bottom = plate.bottom[l];
+    const Loop& top = plate.top[l];
+    for (size_t k = 0; k < bottom.size(); ++k) {
+      const size_t next = (k + 1) % bottom.size();
+      const Loop quad{bottom[k], bottom[next], top[next], top[k]};
+      Vec3 n = normalized(newellNormal(quad));
+      const Vec3 inPlane = normalized(minus(n, scaled(axis, dot(n, axis))));
+      const Vec3 middle = scaled(plus(bottom[k], bottom[next]), 0.5);
+      if (insideBottomFace(plate, bottomFrame, plus(middle, scaled(inPlane, kStep)))) n = negated(n);
+      faces.push_back({{quad}, n});
+    }
+  }
+  return faces;
+}
+
+ClipperLib::Paths clipperPaths(const std::vector<Loop>& loops, const PlaneFrame& frame) {
+  ClipperLib::Paths paths;
+  for (const Loop& loop : loops) {
+    ClipperLib::Path path;
+    for (const Vec3& p : loop) path.push_back(frame.toClipper(p));
+    paths.push_back(path);
+  }
+  return paths;
+}
+
+double maxDistanceToPlane(const std::vector<Loop>& loops, const PlaneFrame& frame) {
+  double worst = 0;
+  for (const Loop& loop : loops) {
+    for (const Vec3& p : loop) worst = std::max(worst, std::abs(dot(minus(p, frame.origin), frame.normal)));
+  }
+  return worst;
+}
+
+struct Box {
+  Vec3 lo{HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi{-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+  void add(const Vec3& p) {
+    for (int k = 0; k < 3; ++k) {
+      lo[k] = std::min(lo[k], p[k]);
+      hi[k] = std::max(hi[k], p[k]);
+    }
+  }
+  bool touches(const Box& o, double tolerance) const {
+    for (int k = 0; k < 3; ++k) {
+      if (lo[k] > o.hi[k] + tolerance || o.lo[k] > hi[k] + tolerance) return false;
+    }
+    return true;
+  }
+};
+
+Box boxOf(const Plate& plate) {
+  Box box;
+  for (const auto* face : {&plate.bottom, &plate.top}) {
+    for (const Loop& loop : *face) {
+      for (const Vec3& p : loop) box.add(p);
+    }
+  }
+  return box;
+}
+
+// --- validation --------------------------------------------------------------------------------
+
+void requirePlanar(const Plate& plate, const std::vector<Loop>& loops, const char* which, double tolerance,
+                   const std::string& source) {
+  const Vec3 n = newellNormal(loops[0]);
+  if (norm(n) < 1e-12) throwBadInput(source, plateName(plate) + ": its " + which + " face has no area");
+  const PlaneFrame frame(centroidOf(loops[0]), n);
+  for (size_t l = 0; l < loops.size(); ++l) {
+    for (size_t i = 0; i < loops[l].size(); ++i) {
+      const double off = std::abs(dot(minus(loops[l][i], frame.origin), frame.normal));
+      if (off > tolerance) {
+        throwBadInput(source, plateName(plate) + ": its " + which + " face is not planar: vertex " + std::to_string(i + 1) +
+                                  (l ? " of hole " + std::to_string(l) : std::string()) + " is " + millimetres(off) +
+                                  " off the face's plane (tolerance " + millimetres(tolerance) + ")");
+      }
+    }
+  }
+}
+
+// Proper crossings or touchings of two non-adjacent edges of a loop, in the loop's plane.
+void requireSimpleLoop(const Plate& plate, const Loop& loop, size_t loopIndex, const std::string& source) {
+  const PlaneFrame frame(centroidOf(loop), newellNormal(loop));
+  std::vector<std::array<double, 2>> p;
+  for (const Vec3& q : loop) p.push_back({dot(minus(q, frame.origin), frame.u), dot(minus(q, frame.origin), frame.v)});
+  auto orient = [&](size_t a, size_t b, size_t c) {
+    const double value = (p[b][0] - p[a][0]) * (p[c][1] - p[a][1]) - (p[b][1] - p[a][1]) * (p[c][0] - p[a][0]);
+    return value > 0 ? 1 : (value < 0 ? -1 : 0);
+  };
+  const size_t n = p.size();
+  for (size_t i = 0; i < n; ++i) {
+    for (size_t j = i + 1; j < n; ++j) {
+      const size_t i2 = (i + 1) % n, j2 = (j + 1) % n;
+      if (i2 == j || j2 == i) continue;  // adjacent edges share a vertex
+      const int o1 = orient(i, i2, j), o2 = orient(i, i2, j2), o3 = orient(j, j2, i), o4 = orient(j, j2, i2);
+      if (o1 * o2 <= 0 && o3 * o4 <= 0 && !(o1 == 0 && o2 == 0)) {
+        throwBadInput(source, plateName(plate) + ": its " + (loopIndex ? "hole " + std::to_string(loopIndex) : std::string("outline")) +
+                                  " crosses itself: edge " + std::to_string(i + 1) + "-" + std::to_string(i2 + 1) + " meets edge " +
+                                  std::to_string(j + 1) + "-" + std::to_string(j2 + 1));
+      }
+    }
+  }
+}
+
+void validatePlate(const Plate& plate, double tolerance, const std::string& source) {
+  if (plate.bottom.empty() || plate.bottom.size() != plate.top.size()) {
+    throwBadInput(source, plateName(plate) + ": its two faces have different numbers of loops");
+  }
+  for (size_t l = 0; l < plate.bottom.size(); ++l) {
+    if (plate.bottom[l].size() < 3) throwBadInput(source, plateName(plate) + ": a face loop needs at least 3 vertices");
+    if (plate.bottom[l].size() != plate.top[l].size()) {
+      throwBadInput(source, plateName(plate) + ": its faces do not match: " + std::to_string(plate.bottom[l].size()) + " and " +
+                                std::to_string(plate.top[l].size()) + " vertices");
+    }
+  }
+  requirePlanar(plate, plate.bottom, "first", tolerance, source);
+  requirePlanar(plate, plate.top, "second", tolerance, source);
+  for (size_t l = 0; l < plate.bottom.size(); ++l) requireSimpleLoop(plate, plate.bottom[l], l, source);
+  // Parallel faces a positive distance apart: every vertex of the second face at the same height
+  // above the first face's plane.
+  const PlaneFrame bottom(centroidOf(plate.bottom[0]), newellNormal(plate.bottom[0]));
+  double lo = HUGE_VAL, hi = -HUGE_VAL;
+  for (const Loop& loop : plate.top) {
+    for (const Vec3& p : loop) {
+      const double h = dot(minus(p, bottom.origin), bottom.normal);
+      lo = std::min(lo, h);
+      hi = std::max(hi, h);
+    }
+  }
+  if (hi - lo > tolerance) {
+    throwBadInput(source, plateName(plate) + ": its faces are not parallel: the second face is " + millimetres(lo) + " to " +
+                              millimetres(hi) + " from the first");
+  }
+  if (std::abs(lo) <= tolerance) throwBadInput(source, plateName(plate) + ": its thickness is zero");
+  // Every side face (one per edge) must be planar: the faces match vertex for vertex.
+  const Vec3 axis = thicknessAxis(plate);
+  for (size_t l = 0; l < plate.bottom.size(); ++l) {
+    const Loop& b = plate.bottom[l];
+    const Loop& t = plate.top[l];
+    for (size_t k = 0; k < b.size(); ++k) {
+      const size_t next = (k + 1) % b.size();
+      const Loop quad{b[k], b[next], t[next], t[k]};
+      const double off = maxDistanceToPlane({quad}, PlaneFrame(centroidOf(quad), newellNormal(quad)));
+      if (off > tolerance || dot(minus(t[k], b[k]), axis) <= 0) {
+        throwBadInput(source, plateName(plate) + ": its faces do not match: the side between vertices " + std::to_string(k + 1) +
+                                  " and " + std::to_string(next + 1) + " is twisted by " + millimetres(off));
+      }
+    }
+  }
+}
+
+}  // namespace
+
+void validatePlates(const std::vector<Plate>& plates, const PlateOptions& options, const std::string& source) {
+  if (!(options.contactTolerance > 0) || !std::isfinite(options.contactTolerance)) {
+    throwBadInput(source, "the contact tolerance must be a positive number of millimetres");
+  }
+  for (const Plate& plate : plates) validatePlate(plate, options.contactTolerance, source);
+}
+
+std::vector<PlateContact> computePlateContacts(const std::vector<Plate>& plates, const PlateOptions& options) {
+  const double tolerance = options.contactTolerance;
+  std::vector<std::vector<SolidFace>> faces;
+  std::vector<Box> boxes;
+  std::vector<Vec3> axes;
+  for (const Plate& plate : plates) {
+    faces.push_back(solidFaces(plate));
+    boxes.push_back(boxOf(plate));
+    axes.push_back(thicknessAxis(plate));
+  }
+  std::vector<PlateContact> contacts;
+  for (size_t p = 0; p < plates.size(); ++p) {
+    for (size_t q = p + 1; q < plates.size(); ++q) {
+      if (!boxes[p].touches(boxes[q], tolerance)) continue;
+      for (const SolidFace& f : faces[p]) {
+        const PlaneFrame frame(f.loops[0][0], f.normal);
+        for (const SolidFace& g : faces[q]) {
+          if (dot(f.normal, g.normal) > -0.999) continue;               // not facing each other
+          if (maxDistanceToPlane(g.loops, frame) > tolerance) continue;  // not in one plane
+          ClipperLib::Clipper clipper;
+          clipper.AddPaths(clipperPaths(f.loops, frame), ClipperLib::ptSubject, true);
+          clipper.AddPaths(clipperPaths(g.loops, frame), ClipperLib::ptClip, true);
+          ClipperLib::Paths overlap;
+          clipper.Execute(ClipperLib::ctIntersection, overlap, ClipperLib::pftEvenOdd, ClipperLib::pftEvenOdd);
+          double area = 0;
+          const ClipperLib::Path* largest = nullptr;
+          for (const ClipperLib::Path& path : overlap) {
+            const double a = ClipperLib::Area(path) / (kClipperScale * kClipperScale);
+            area += a;
+            if (!largest || std::abs(a) > std::abs(ClipperLib::Area(*largest)) / (kClipperScale * kClipperScale)) largest = &path;
+          }
+          if (area <= tolerance * tolerance) continue;
+          PlateContact contact;
+          contact.a = static_cast<int>(p);
+          contact.b = static_cast<int>(q);
+          contact.normal = *cleanedNormal(f.normal);
+          contact.area = area;
+          for (const ClipperLib::IntPoint& point : *largest) contact.region.push_back(frame.fromClipper(point));
+          Vec3 edge = cross(axes[p], axes[q]);
+          if (norm(edge) < 1e-6) {
+            // Parallel plates meet edge to edge: the shared edge runs along the contact's longest side.
+            for (size_t i = 0; i < contact.region.size(); ++i) {
+              const Vec3 side = minus(contact.region[(i + 1) % contact.region.size()], contact.region[i]);
+              if (norm(side) > norm(edge)) edge = side;
+            }
+          }
+          contact.edgeDirection = canonicalSign(normalized(edge));
+          contacts.push_back(contact);
+        }
+      }
+    }
+  }
+  return contacts;
+}
+
+void requireConnectedPlates(const std::vector<Plate>& plates, const std::vector<PlateContact>& contacts,
+                            const std::string& source) {
+  const int n = static_cast<int>(plates.size());
+  if (n < 2) return;
+  std::vector<int> group(n);
+  for (int i = 0; i < n; ++i) group[i] = i;
+  auto find = [&](int x) {
+    while (group[x] != x) x = group[x] = group[group[x]];
+    return x;
+  };
+  std::vector<bool> touches(n, false);
+  for (const PlateContact& c : contacts) {
+    touches[c.a] = touches[c.b] = true;
+    group[find(c.a)] = find(c.b);
+  }
+  for (int i = 0; i < n; ++i) {
+    if (!touches[i]) throwBadInput(source, plateName(plates[i]) + " touches no other plate (no face of it lies on another plate's face)");
+  }
+  std::vector<int> firstOfGroup;
+  for (int i = 0; i < n; ++i) {
+    if (find(i) == i) firstOfGroup.push_back(i);
+  }
+  if (firstOfGroup.size() > 1) {
+    std::string groups;
+    for (size_t g = 0; g < firstOfGroup.size() && g < 4; ++g) {
+      std::string members;
+      int count = 0;
+      for (int i = 0; i < n && count < 6; ++i) {
+        if (find(i) == firstOfGroup[g]) members += (count++ ? ", " : "") + std::to_string(plates[i].id);
+      }
+      groups += (g ? "; " : "") + std::string("plates ") + members;
+    }
+    throwBadInput(source, "the design falls apart into " + std::to_string(firstOfGroup.size()) +
+                              " groups that do not touch: " + groups);
+  }
+}
+
+Assembly assemblyFromPlates(const std::vector<Plate>& plates, const std::vector<PlateContact>& contacts) {
+  Assembly assembly;
+  for (const Plate& plate : plates) assembly.parts.push_back({plate.id, plate.name});
+  for (const PlateContact& c : contacts) assembly.contacts.push_back({c.a, c.b, c.normal, c.area});
+  return assembly;
+}
+
+std::vector<int> plateCutPoints(int plateCount, const std::vector<PlateContact>& contacts) {
+  std::vector<std::pair<int, int>> edges;
+  for (const PlateContact& c : contacts) edges.push_back({c.a, c.b});
+  return findCutPoints(plateCount, edges);
+}
+
+}  // namespace desia

@@ -1,0 +1,104 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""Writes the plate examples of examples/plate/ (input designs, in millimetres, modelled after the
+paper's Fig. 13, 17, 18 and 1). Run from anywhere: python3 examples/plate/make_examples.py"""
+import json, math, os
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+
+def box(id_, name, lo, hi):
+    """An axis-aligned board: the face at the smallest extent's low side, extruded along it."""
+    size = [hi[k] - lo[k] for k in range(3)]
+    axis = min(range(3), key=lambda k: size[k])
+    u, v = [k for k in range(3) if k != axis]
+    # Counter-clockwise about +axis, so the right-hand normal points into the board.
+    corners = []
+    for a, b in [(lo[u], lo[v]), (hi[u], lo[v]), (hi[u], hi[v]), (lo[u], hi[v])]:
+        p = [0.0, 0.0, 0.0]
+        p[axis], p[u], p[v] = lo[axis], a, b
+        corners.append(p)
+    if (u, v, axis) not in [(0, 1, 2), (1, 2, 0), (2, 0, 1)]:
+        corners.reverse()
+    return {"id": id_, "name": name, "outline": corners, "thickness": size[axis]}
+
+
+def document(name, plates, **extra):
+    doc = {"format": "desia-assembly", "version": 1, "kind": "plate", "name": name}
+    doc.update(extra)
+    doc["plates"] = plates
+    return doc
+
+
+def table():
+    # Fig. 17: a top, two side panels as legs, front and back aprons, a shelf. 18 mm boards.
+    t = 18
+    return document("TABLE (after Fig. 17): top, two side panels, two aprons and a shelf; orthogonal butt joints", [
+        box(1, "top", [0, 700, 0], [1000, 700 + t, 600]),
+        box(2, "left side", [0, 0, 0], [t, 700, 600]),
+        box(3, "right side", [1000 - t, 0, 0], [1000, 700, 600]),
+        box(4, "front apron", [t, 550, 0], [1000 - t, 700, t]),
+        box(5, "back apron", [t, 550, 600 - t], [1000 - t, 700, 600]),
+        box(6, "shelf", [t, 150, t], [1000 - t, 150 + t, 600 - t]),
+    ])
+
+
+def chair(with_bar):
+    # Fig. 18: a seat on two legs with a back; the back panel touches only the seat, so the seat
+    # is a cut point. The repaired chair adds a bar joining the back to the legs.
+    t = 18
+    plates = [
+        box(1, "left leg", [0, 0, 0], [t, 450 - t, 450]),
+        box(2, "right leg", [450 - t, 0, 0], [450, 450 - t, 450]),
+        box(3, "front rail", [t, 300, 0], [450 - t, 450 - 2 * t, t]),
+        box(4, "back rail", [t, 300, 450 - t], [450 - t, 450 - 2 * t, 450]),
+        box(5, "seat", [0, 450 - t, 0], [450, 450, 450]),
+        box(6, "back", [0, 450, 450 - t], [450, 900, 450]),
+        box(7, "low stretcher", [t, 100, 200], [450 - t, 100 + t, 250]),
+        box(8, "middle stretcher", [t, 200, 200], [450 - t, 200 + t, 250]),
+    ]
+    name = "CHAIR (after Fig. 18): the back rests on the seat alone, so the seat is a cut point"
+    if with_bar:
+        # Two side bars from the legs up to the back bypass the seat (the paper adds one part).
+        plates.append(box(9, "left back bar", [-t, 300, 450 - 3 * t], [0, 900, 450]))
+        plates.append(box(10, "right back bar", [450, 300, 450 - 3 * t], [450 + t, 900, 450]))
+        name = "CHAIR repaired (after Fig. 18): side bars join the back to the legs, no cut point"
+    return document(name, plates)
+
+
+def mitred_box(side=300.0, t=12.0):
+    # A closed cube of six plates meeting at 45-degree mitres: every contact is edge to edge, with a
+    # normal at 45 degrees to the plates (non-orthogonal contacts, judged by the LP test).
+    plates = []
+    for index, (axis, sign) in enumerate([(0, -1), (0, 1), (1, -1), (1, 1), (2, -1), (2, 1)]):
+        u, v = [k for k in range(3) if k != axis]
+        outer_level = 0.0 if sign < 0 else side
+        inner_level = outer_level - sign * t
+        def corner(level, lo, hi, a, b):
+            p = [0.0, 0.0, 0.0]
+            p[axis] = level
+            p[u] = lo if a == 0 else hi
+            p[v] = lo if b == 0 else hi
+            return p
+        order = [(0, 0), (1, 0), (1, 1), (0, 1)]
+        outer = [corner(outer_level, 0.0, side, a, b) for a, b in order]
+        inner = [corner(inner_level, t, side - t, a, b) for a, b in order]
+        plates.append({"id": index + 1, "name": "xyz"[axis] + ("-" if sign < 0 else "+") + " face", "faces": [outer, inner]})
+    return document("MITRED BOX: a closed cube of six 12 mm plates with 45-degree mitres", plates)
+
+
+def main():
+    examples = {
+        "table.json": table(),
+        "chair_cut_point.json": chair(False),
+        "chair_repaired.json": chair(True),
+        "mitred_box.json": mitred_box(),
+    }
+    for name, doc in examples.items():
+        with open(os.path.join(HERE, name), "w") as out:
+            json.dump(doc, out, indent=1)
+            out.write("\n")
+
+
+if __name__ == "__main__":
+    main()
