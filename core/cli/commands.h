@@ -13,6 +13,7 @@ int runVoxelizeCommand(const std::vector<std::string>& args);
 //   [--min-part-size K] [--groups FILE] [--time-limit S] [--node-limit N] [--key-direction D]
 //   --output OUT.puz|OUT.json
 int runDesignCommand(const std::vector<std::string>& args);
+int runPlateDesignCommand(const std::vector<std::string>& args);  // args[0] == "plate"
 
 // desia export FILE --format stl|stl-ascii|obj|xmpuzzle [--part N] [--voxel-size S] --output OUT
 int runExportCommand(const std::vector<std::string>& args);

@@ -54,7 +54,7 @@ double secondsArgument(const std::string& flag, const std::string& text) {
 }
 
 DesignArguments parseArguments(const std::vector<std::string>& args) {
-  if (args.empty() || args[0] != "voxel") usage("design expects a kind: 'desia design voxel ...' (plates and frames come later)");
+  if (args.empty() || args[0] != "voxel") usage("design expects a kind: 'desia design voxel ...' or 'desia design plate ...' (frames come later)");
   DesignArguments parsed;
   bool partsGiven = false;
   for (size_t i = 1; i < args.size(); ++i) {
@@ -91,6 +91,7 @@ DesignArguments parseArguments(const std::vector<std::string>& args) {
 }  // namespace
 
 int runDesignCommand(const std::vector<std::string>& args) {
+  if (!args.empty() && args[0] == "plate") return runPlateDesignCommand(args);
   DesignArguments parsed = parseArguments(args);
   const desia::AssemblyDocument document = desia::parseAssemblyText(desia::cli::readInputFile(parsed.input), parsed.input);
   if (document.kind != desia::AssemblyKind::Voxel) {

@@ -6,6 +6,7 @@
 
 #include "analysis/vec3.h"
 #include "desia/error.h"
+#include "desia/plate_design_io.h"
 
 namespace desia {
 namespace {
@@ -145,6 +146,52 @@ json platesToJson(const std::vector<Plate>& plates) {
     list.push_back(entry);
   }
   return list;
+}
+
+std::string plateDesignToJson(const AssemblyDocument& input, const PlateDesignResult& result, int indent) {
+  const std::vector<Plate>& plates = input.plates;
+  std::vector<int> newId(plates.size(), 0);
+  for (size_t k = 0; k < result.order.size(); ++k) newId[result.order[k]] = static_cast<int>(k) + 1;
+  auto vectorJson = [](const Vec3& v) { return json::array({v[0], v[1], v[2]}); };
+  json root;
+  root["format"] = "desia-assembly";
+  root["version"] = 1;
+  root["kind"] = "plate";
+  root["name"] = (input.name.empty() ? std::string("plate structure") : input.name) + " - joint plan";
+  json parts = json::array(), platesJson = json::array();
+  std::vector<Plate> ordered;
+  for (int index : result.order) {
+    Plate plate = plates[index];
+    plate.id = newId[index];
+    ordered.push_back(plate);
+    json part = {{"id", plate.id}, {"inputId", plates[index].id}};
+    if (!plate.name.empty()) part["name"] = plate.name;
+    parts.push_back(part);
+  }
+  platesJson = platesToJson(ordered);
+  for (size_t k = 0; k < ordered.size(); ++k) platesJson[k]["inputId"] = parts[k]["inputId"];
+  root["parts"] = parts;
+  json contacts = json::array();
+  for (const Contact& c : result.jointAssembly.contacts) {
+    contacts.push_back({{"a", c.a + 1}, {"b", c.b + 1}, {"normal", vectorJson(c.normal)}, {"area", c.area}});
+  }
+  root["contacts"] = contacts;
+  json joints = json::array();
+  for (const PlateJoint& joint : result.joints) {
+    joints.push_back({{"mover", newId[joint.mover]}, {"other", newId[joint.other]}, {"type", jointTypeName(joint.type)},
+                      {"direction", vectorJson(joint.direction)}});
+  }
+  root["joints"] = joints;
+  json removal = json::array();
+  for (size_t k = 0; k < result.order.size(); ++k) {
+    json step = {{"part", static_cast<int>(k) + 1}};
+    step["direction"] = k < result.directions.size() ? vectorJson(result.directions[k]) : json(nullptr);
+    removal.push_back(step);
+  }
+  root["removal"] = removal;
+  root["plates"] = platesJson;
+  root["jointGeometry"] = "planned";  // the joints' cuts are not in the plates' outlines yet
+  return root.dump(indent);
 }
 
 }  // namespace desia

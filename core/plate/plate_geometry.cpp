@@ -78,12 +78,17 @@ struct SolidFace {
   Vec3 normal;
 };
 
-// The unit vector from the bottom face towards the top face.
-Vec3 thicknessAxis(const Plate& plate) {
+}  // namespace
+
+Vec3 plateThicknessAxis(const Plate& plate) {
   Vec3 n = normalized(newellNormal(plate.bottom[0]));
   if (dot(n, minus(centroidOf(plate.top[0]), centroidOf(plate.bottom[0]))) < 0) n = negated(n);
   return n;
 }
+
+namespace {
+
+Vec3 thicknessAxis(const Plate& plate) { return plateThicknessAxis(plate); }
 
 // Even-odd test of a point of the bottom face's plane against all its loops (outline and holes).
 bool insideBottomFace(const Plate& plate, const PlaneFrame& frame, const Vec3& point) {

@@ -87,8 +87,27 @@ def mitred_box(side=300.0, t=12.0):
     return document("MITRED BOX: a closed cube of six 12 mm plates with 45-degree mitres", plates)
 
 
+def shelf(rows, columns, name, cell=300.0, t=18.0, depth=300.0):
+    """A bookcase of `rows` x `columns` cells: two full-height sides, shelves between them, and
+    uprights between each pair of shelves at the inner column boundaries (every cell is a cycle)."""
+    width = columns * (cell + t) + t
+    height = rows * (cell + t) + t
+    plates = [box(1, "left side", [0, 0, 0], [t, height, depth]), box(2, "right side", [width - t, 0, 0], [width, height, depth])]
+    for r in range(rows + 1):
+        y = r * (cell + t)
+        plates.append(box(len(plates) + 1, f"shelf {r + 1}", [t, y, 0], [width - t, y + t, depth]))
+    for r in range(rows):
+        y0 = r * (cell + t) + t
+        for c in range(1, columns):
+            x = c * (cell + t)
+            plates.append(box(len(plates) + 1, f"upright {r + 1}.{c}", [x, y0, 0], [x + t, y0 + cell, depth]))
+    return document(name, plates)
+
+
 def main():
     examples = {
+        "bookshelf.json": shelf(3, 3, "BOOKSHELF (after Fig. 1): 3 x 3 cells, two sides, 4 shelves and 6 uprights (12 plates)"),
+        "bookcase_123.json": shelf(10, 12, "BOOKCASE of 10 x 12 cells: two sides, 11 shelves and 110 uprights (123 plates)"),
         "table.json": table(),
         "chair_cut_point.json": chair(False),
         "chair_repaired.json": chair(True),

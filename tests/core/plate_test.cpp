@@ -12,6 +12,8 @@
 #include "desia/check.h"
 #include "desia/cut_points.h"
 #include "desia/error.h"
+#include "desia/plate_design.h"
+#include "desia/plate_design_io.h"
 #include "test_support.h"
 
 namespace desia {
@@ -207,6 +209,115 @@ TEST(PlateRobustness, VerdictsAndContactsSurviveTurningTheWholeDesign) {
       EXPECT_EQ(report.inequalityResult->key, base.inequalityResult->key) << context;
     }
   }
+}
+
+}  // namespace
+}  // namespace desia
+
+namespace desia {
+namespace {
+
+PlateDesignResult planExample(const std::string& name, uint64_t seed = 1) {
+  const AssemblyDocument document = loadExample(name);
+  PlateDesignOptions options;
+  options.seed = seed;
+  return designPlateJoints(document.plates, computePlateContacts(document.plates, document.plateOptions), options);
+}
+
+// The plan as the user gets it, read back and checked by both tests on its own.
+void ExpectPlanReverifies(const std::string& name, const PlateDesignResult& result) {
+  const AssemblyDocument input = loadExample(name);
+  const AssemblyDocument written = parseJsonDocument(plateDesignToJson(input, result), name + " plan");
+  ASSERT_EQ(written.assembly.partCount(), static_cast<int>(input.plates.size()));
+  for (CheckMethod method : {CheckMethod::Graphs, CheckMethod::Inequalities}) {
+    CheckOptions options;
+    options.method = method;
+    const CheckReport report = checkAssembly(written, options);
+    EXPECT_EQ(report.result.verdict, Verdict::Interlocking) << name << ": " << report.result.reason;
+    EXPECT_EQ(written.assembly.parts[report.result.key].id, 1) << name;
+    ASSERT_TRUE(report.disassembly && report.disassembly->complete) << name;
+  }
+}
+
+TEST(PlateJointPlan, ExamplesGetVerifiedPlans) {
+  for (const char* name : {"table.json", "chair_repaired.json", "bookshelf.json", "mitred_box.json"}) {
+    const AssemblyDocument document = loadExample(name);
+    const PlateDesignResult result = planExample(name);
+    ASSERT_EQ(result.status, PlateDesignStatus::Success) << name << ": " << result.message;
+    ASSERT_EQ(result.order.size(), document.plates.size()) << name;
+    EXPECT_EQ(std::set<int>(result.order.begin(), result.order.end()).size(), document.plates.size()) << name;
+    EXPECT_EQ(result.directions.size(), document.plates.size() - 1) << name;
+    // One joint per pair of touching plates.
+    EXPECT_EQ(result.joints.size(), touchingPairs(document.assembly).size()) << name;
+    // Every joint was planned when its mover was taken: the mover leaves before the other plate,
+    // along the direction planned for it.
+    std::vector<int> position(document.plates.size());
+    for (size_t k = 0; k < result.order.size(); ++k) position[result.order[k]] = static_cast<int>(k);
+    for (const PlateJoint& joint : result.joints) {
+      EXPECT_LT(position[joint.mover], position[joint.other]) << name;
+      EXPECT_EQ(joint.direction, result.directions[position[joint.mover]]) << name;
+    }
+    ExpectPlanReverifies(name, result);
+  }
+}
+
+TEST(PlateJointPlan, OrthogonalPlansUseSlotsAndTenonsWhereTheEdgesSay) {
+  const PlateDesignResult result = planExample("table.json");
+  ASSERT_EQ(result.status, PlateDesignStatus::Success);
+  int halved = 0, tenons = 0;
+  for (const PlateJoint& joint : result.joints) {
+    halved += joint.type == JointType::Halved ? 1 : 0;
+    tenons += joint.type == JointType::MortiseTenon ? 1 : 0;
+  }
+  EXPECT_EQ(halved + tenons, static_cast<int>(result.joints.size())) << "axis-aligned edges and directions: no empty joint";
+  EXPECT_GT(halved, 0);
+  EXPECT_GT(tenons, 0);
+}
+
+TEST(PlateJointPlan, ACutPointIsRefusedWithThePlateNamed) {
+  const PlateDesignResult result = planExample("chair_cut_point.json");
+  EXPECT_EQ(result.status, PlateDesignStatus::CutPoint);
+  EXPECT_EQ(result.message.rfind("plate 5 is a cut point of the parts-graph", 0), 0u) << result.message;
+}
+
+TEST(PlateJointPlan, SameSeedSamePlanAndTurnedDesignsPlanToo) {
+  const PlateDesignResult first = planExample("bookshelf.json", 7);
+  const PlateDesignResult again = planExample("bookshelf.json", 7);
+  ASSERT_EQ(first.status, PlateDesignStatus::Success);
+  EXPECT_EQ(first.order, again.order);
+  ASSERT_EQ(first.directions.size(), again.directions.size());
+  for (size_t k = 0; k < first.directions.size(); ++k) EXPECT_EQ(first.directions[k], again.directions[k]);
+  // Turned by a rotation computed in floating point, the design still plans and verifies.
+  AssemblyDocument turned = loadExample("mitred_box.json");
+  const std::array<Vec3, 3> r = rotation(0.3, 1.1, -0.7);
+  for (Plate& plate : turned.plates) {
+    for (auto* face : {&plate.bottom, &plate.top}) {
+      for (Loop& loop : *face) {
+        for (Vec3& p : loop) p = {dot(r[0], p), dot(r[1], p), dot(r[2], p)};
+      }
+    }
+  }
+  const PlateDesignResult result = designPlateJoints(turned.plates, computePlateContacts(turned.plates, turned.plateOptions));
+  ASSERT_EQ(result.status, PlateDesignStatus::Success) << result.message;
+  EXPECT_EQ(result.joints.size(), 12u);
+}
+
+TEST(PlateJointPlan, CancellationAndLimitsStopTheSearch) {
+  const AssemblyDocument document = loadExample("bookcase_123.json");
+  const std::vector<PlateContact> contacts = computePlateContacts(document.plates, document.plateOptions);
+  PlateDesignOptions options;
+  int calls = 0;
+  options.onProgress = [&](const PlateDesignProgress& p) {
+    EXPECT_EQ(p.targetParts, 123);
+    return ++calls < 3;
+  };
+  EXPECT_EQ(designPlateJoints(document.plates, contacts, options).status, PlateDesignStatus::Cancelled);
+  EXPECT_EQ(calls, 3);
+  PlateDesignOptions limited;
+  limited.nodeLimit = 10;
+  const PlateDesignResult result = designPlateJoints(document.plates, contacts, limited);
+  EXPECT_EQ(result.status, PlateDesignStatus::LimitReached);
+  EXPECT_NE(result.message.find("of 123 plates"), std::string::npos) << result.message;
 }
 
 }  // namespace

@@ -25,6 +25,9 @@ struct Plate {
   std::vector<Loop> top;
 };
 
+// The unit vector across the plate, from its first face towards its second.
+Vec3 plateThicknessAxis(const Plate& plate);
+
 struct PlateOptions {
   // Two faces closer than this (mm) lie on one another; also the planarity tolerance of a face.
   double contactTolerance = 0.05;

@@ -1,0 +1,91 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// desia design plate: a thin shell over designPlateJoints (core/include/desia/plate_design.h).
+#include <unistd.h>
+
+#include <csignal>
+#include <cstdio>
+#include <iostream>
+
+#include "cli_arguments.h"
+#include "cli_files.h"
+#include "commands.h"
+#include "desia/check.h"
+#include "desia/document.h"
+#include "desia/error.h"
+#include "desia/plate_design.h"
+#include "desia/plate_design_io.h"
+
+namespace {
+
+volatile std::sig_atomic_t interrupted = 0;
+extern "C" void onPlateDesignInterrupt(int) { interrupted = 1; }
+
+[[noreturn]] void usage(const std::string& message) { throw desia::Error(desia::ErrorCode::BadInput, message); }
+
+long long integerValue(const std::string& flag, const std::string& text, long long lo, long long hi) {
+  size_t used = 0;
+  long long value = 0;
+  try {
+    value = std::stoll(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != text.size() || text.empty() || value < lo || value > hi) {
+    usage(flag + " expects an integer from " + std::to_string(lo) + " to " + std::to_string(hi) + ", got '" + text + "'");
+  }
+  return value;
+}
+
+}  // namespace
+
+int runPlateDesignCommand(const std::vector<std::string>& args) {
+  std::string input, output;
+  desia::PlateDesignOptions options;
+  bool quiet = false;
+  for (size_t i = 1; i < args.size(); ++i) {
+    const std::string& flag = args[i];
+    if (flag == "--quiet") {
+      quiet = true;
+      continue;
+    }
+    if (i + 1 == args.size()) usage(flag + " needs a value");
+    const std::string& value = args[++i];
+    if (flag == "--input") input = value;
+    else if (flag == "--output") output = value;
+    else if (flag == "--seed") options.seed = static_cast<uint64_t>(integerValue(flag, value, 0, 1LL << 62));
+    else if (flag == "--candidates") options.candidates = static_cast<int>(integerValue(flag, value, 1, 10000));
+    else if (flag == "--node-limit") options.nodeLimit = integerValue(flag, value, 1, 1LL << 50);
+    else if (flag == "--time-limit") options.timeLimitSeconds = static_cast<double>(integerValue(flag, value, 1, 10000000));
+    else usage("unknown option " + flag + " for design plate");
+  }
+  if (input.empty()) usage("design plate needs --input DESIGN.json");
+  if (output.empty() || !desia::cli::hasExtension(output, ".json")) usage("design plate needs --output RESULT.json");
+  const desia::AssemblyDocument document = desia::parseAssemblyText(desia::cli::readInputFile(input), input);
+  if (document.kind != desia::AssemblyKind::Plate || document.plates.empty()) {
+    usage(input + ": design plate needs a plate design (kind \"plate\" with \"plates\" and no \"contacts\")");
+  }
+  std::vector<desia::PlateContact> contacts = desia::computePlateContacts(document.plates, document.plateOptions);
+  const bool live = !quiet && isatty(STDERR_FILENO);
+  options.onProgress = [&](const desia::PlateDesignProgress& p) {
+    if (live) std::fprintf(stderr, "\r%lld nodes, depth %d/%d, %.1f s   ", static_cast<long long>(p.nodes), p.depth + 1, p.targetParts, p.seconds);
+    return interrupted == 0;
+  };
+  std::signal(SIGINT, onPlateDesignInterrupt);
+  const desia::PlateDesignResult result = desia::designPlateJoints(document.plates, contacts, options);
+  std::signal(SIGINT, SIG_DFL);
+  if (live) std::fprintf(stderr, "\r%70s\r", "");
+  if (result.status != desia::PlateDesignStatus::Success) {
+    std::cerr << "desia: " << input << ": " << result.message << "\n";
+    return 1;
+  }
+  const std::string text = desia::plateDesignToJson(document, result) + "\n";
+  desia::cli::writeOutputFile(output, text);
+  // What the user gets is checked again as written, with both tests.
+  const desia::AssemblyDocument written = desia::parseAssemblyText(text, output);
+  desia::CheckOptions check;
+  check.method = desia::CheckMethod::Both;
+  const desia::CheckReport report = desia::checkAssembly(written, check);
+  std::cout << result.message << " in " << result.progress.seconds << " s\n"
+            << "verified: " << desia::checkReportToText(written, report) << "written: " << output << "\n";
+  return report.result.verdict == desia::Verdict::Interlocking ? 0 : 3;
+}

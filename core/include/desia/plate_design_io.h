@@ -1,0 +1,18 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The result document of a plate joint plan, shared by the CLI and (later) the WebAssembly module.
+#pragma once
+
+#include <string>
+
+#include "desia/document.h"
+#include "desia/plate_design.h"
+
+namespace desia {
+
+// A JSON assembly document (kind "plate") for a successful plan: plates renumbered in removal
+// order (part 1 = the key; each keeps its `inputId`), the joint contacts as `contacts` (so that
+// `desia check` re-verifies the plan on its own), `joints` (plates, type, direction) and
+// `removal` (each plate's direction, in order).
+std::string plateDesignToJson(const AssemblyDocument& input, const PlateDesignResult& result, int indent = 2);
+
+}  // namespace desia

@@ -1,0 +1,386 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Joint planning for plate structures (paper Section 5.2), on the construction tree of Algorithm 1.
+//
+// A node of the tree is A_i = [P_1, ..., P_i, R_i]: the plates taken so far, each with its removal
+// direction d_k, and R_i, the plates not taken yet, which act as one part. Taking P_i plans a joint
+// between P_i and each plate of R_i it touches (R'_i): every joint lets P_i leave that plate along
+// d_i only. Candidates for P_i are the plates of R_{i-1} that are not cut points of R_{i-1}'s
+// parts-graph (R_i must stay connected); candidates for d_i are the edge vectors P_i shares with
+// its neighbours and its thickness axis, both signs, that do not push P_i into a plate it touches. A child is kept when
+// A_i is interlocking with P_1 as its key (for i >= 2; for A_1, when P_1 is free along d_1
+// alone), and children are ranked by their number of empty joints, fewest first.
+//
+// The contacts of a joint. A joint allowing `mover` to leave `other` along d only is modelled by
+// the faces every such joint has (a tenon's or a slot's cheeks and ends): normals -d (the
+// shoulder), and ±u, ±v, two directions orthogonal to d (u along the mover's thickness axis
+// where possible). An empty joint keeps the plates' own contact faces. The interlocking tests run
+// on these contacts; the final plan passes both the DBG and the LP test.
+#include "desia/plate_design.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "analysis/part_motion.h"
+#include "analysis/vec3.h"
+#include "desia/cut_points.h"
+#include "desia/error.h"
+#include "desia/interlocking.h"
+
+namespace desia {
+namespace {
+
+Vec3 minus(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+
+// Two unit vectors within about half a degree count as parallel (edge vectors of one design).
+bool parallel(const Vec3& a, const Vec3& b) { return norm(cross(a, b)) < 1e-2; }
+
+double angleDegrees(const Vec3& a, const Vec3& b) {
+  return std::acos(std::clamp(dot(normalized(a), normalized(b)), -1.0, 1.0)) * 180.0 / M_PI;
+}
+
+// What the geometry says about the plates: who touches whom, along which edge, with which faces.
+struct PlateGraph {
+  int plateCount = 0;
+  std::vector<std::vector<int>> neighbours;     // sorted plate indices
+  std::vector<std::vector<Vec3>> edgeTo;        // edgeTo[p][k]: edge direction shared with neighbours[p][k]
+  std::vector<std::vector<int>> contactsOf;     // contact indices per plate
+  std::vector<PlateContact> contacts;
+  std::vector<Vec3> thicknessAxis;
+
+  int slot(int p, int q) const {
+    const auto& list = neighbours[p];
+    return static_cast<int>(std::lower_bound(list.begin(), list.end(), q) - list.begin());
+  }
+  const Vec3& edge(int p, int q) const { return edgeTo[p][slot(p, q)]; }
+};
+
+PlateGraph buildPlateGraph(const std::vector<Plate>& plates, const std::vector<PlateContact>& contacts) {
+  PlateGraph graph;
+  graph.plateCount = static_cast<int>(plates.size());
+  graph.contacts = contacts;
+  graph.neighbours.resize(plates.size());
+  graph.contactsOf.resize(plates.size());
+  for (size_t c = 0; c < contacts.size(); ++c) {
+    graph.contactsOf[contacts[c].a].push_back(static_cast<int>(c));
+    graph.contactsOf[contacts[c].b].push_back(static_cast<int>(c));
+    graph.neighbours[contacts[c].a].push_back(contacts[c].b);
+    graph.neighbours[contacts[c].b].push_back(contacts[c].a);
+  }
+  graph.edgeTo.resize(plates.size());
+  for (int p = 0; p < graph.plateCount; ++p) {
+    auto& list = graph.neighbours[p];
+    std::sort(list.begin(), list.end());
+    list.erase(std::unique(list.begin(), list.end()), list.end());
+    for (int q : list) {
+      // The edge of the pair's largest contact.
+      const PlateContact* best = nullptr;
+      for (int c : graph.contactsOf[p]) {
+        const PlateContact& contact = contacts[c];
+        if ((contact.a == q || contact.b == q) && (!best || contact.area > best->area)) best = &contact;
+      }
+      graph.edgeTo[p].push_back(best->edgeDirection);
+    }
+  }
+  for (const Plate& plate : plates) graph.thicknessAxis.push_back(plateThicknessAxis(plate));
+  return graph;
+}
+
+// Can `plate` leave each plate in `others` along d without pushing into it (its contact faces)?
+bool leavesWithoutPushing(const PlateGraph& graph, int plate, const std::vector<bool>& inOthers, const Vec3& d) {
+  for (int c : graph.contactsOf[plate]) {
+    const PlateContact& contact = graph.contacts[c];
+    const int other = contact.a == plate ? contact.b : contact.a;
+    if (!inOthers[other]) continue;
+    const double push = dot(d, contact.a == plate ? contact.normal : negated(contact.normal));
+    if (push > 1e-9) return false;
+  }
+  return true;
+}
+
+JointType jointTypeFor(const Vec3& edge, const Vec3& d) {
+  if (parallel(edge, d)) return JointType::Halved;
+  const double angle = angleDegrees(edge, d);
+  return angle >= 45 && angle <= 135 ? JointType::MortiseTenon : JointType::Empty;
+}
+
+// One planned step: plate P_i leaves along d_i; its joints with the plates of R'_i.
+struct Step {
+  int plate = -1;
+  Vec3 direction{0, 0, 0};
+  std::vector<PlateJoint> joints;
+  int emptyJoints = 0;
+};
+
+// The assembly of A_i: parts 0..i-1 are the steps' plates, part i (when any plate is left) is R_i.
+// Joints add their model contacts; empty joints the plates' own contact faces.
+Assembly modelAssembly(const PlateGraph& graph, const std::vector<Step>& steps, const std::vector<Plate>& plates) {
+  std::vector<int> node(graph.plateCount, static_cast<int>(steps.size()));  // R_i by default
+  Assembly assembly;
+  for (size_t k = 0; k < steps.size(); ++k) {
+    node[steps[k].plate] = static_cast<int>(k);
+    assembly.parts.push_back({plates[steps[k].plate].id, plates[steps[k].plate].name});
+  }
+  if (static_cast<int>(steps.size()) < graph.plateCount) assembly.parts.push_back({0, "rest"});
+  for (const Step& step : steps) {
+    for (const PlateJoint& joint : step.joints) {
+      const int a = node[joint.mover], b = node[joint.other];
+      if (joint.type == JointType::Empty) {
+        for (int c : graph.contactsOf[joint.mover]) {
+          const PlateContact& contact = graph.contacts[c];
+          if (contact.a == joint.mover && contact.b == joint.other) assembly.contacts.push_back({a, b, contact.normal, contact.area});
+          if (contact.b == joint.mover && contact.a == joint.other) assembly.contacts.push_back({a, b, negated(contact.normal), contact.area});
+        }
+        continue;
+      }
+      const Vec3& d = joint.direction;
+      Vec3 u = minus(graph.thicknessAxis[joint.mover], scaled(d, dot(graph.thicknessAxis[joint.mover], d)));
+      if (norm(u) < 1e-6) u = cross(d, std::abs(d[0]) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0});
+      u = normalized(u);
+      const Vec3 v = cross(d, u);
+      for (const Vec3& n : {negated(d), u, negated(u), v, negated(v)}) assembly.contacts.push_back({a, b, *cleanedNormal(n), 1.0});
+    }
+  }
+  return assembly;
+}
+
+class PlateJointPlanner {
+ public:
+  PlateJointPlanner(const std::vector<Plate>& plates, const std::vector<PlateContact>& contacts, const PlateDesignOptions& options)
+      : plates_(plates), graph_(buildPlateGraph(plates, contacts)), options_(options), random_(options.seed * 0x9E3779B97F4A7C15ull + 1) {}
+
+  PlateDesignResult run();
+
+ private:
+  std::vector<Step> childrenOf(const std::vector<Step>& steps);
+  bool acceptable(const std::vector<Step>& steps) const;
+  Step makeStep(const std::vector<Step>& steps, int plate, const Vec3& d) const;
+  std::vector<Vec3> candidateDirections(int plate) const;
+  uint64_t nextRandom() {
+    random_ = random_ * 6364136223846793005ull + 1442695040888963407ull;
+    return random_ >> 11;
+  }
+  double seconds() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
+
+  const std::vector<Plate>& plates_;
+  PlateGraph graph_;
+  PlateDesignOptions options_;
+  uint64_t random_;
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+};
+
+// The edge vectors the plate shares with its neighbours (paper Section 5.2), both signs, and, beyond
+// the paper, its own thickness axis: a plate closed in on every edge (a box of mitred plates) can
+// only leave across its faces, with a tenon on every edge.
+std::vector<Vec3> PlateJointPlanner::candidateDirections(int plate) const {
+  std::vector<Vec3> directions;
+  std::vector<Vec3> lines = graph_.edgeTo[plate];
+  lines.push_back(graph_.thicknessAxis[plate]);
+  for (const Vec3& edge : lines) {
+    for (const Vec3& d : {edge, negated(edge)}) {
+      bool known = false;
+      for (const Vec3& existing : directions) known = known || (parallel(existing, d) && dot(existing, d) > 0);
+      if (!known) directions.push_back(d);
+    }
+  }
+  return directions;
+}
+
+Step PlateJointPlanner::makeStep(const std::vector<Step>& steps, int plate, const Vec3& d) const {
+  std::vector<bool> taken(graph_.plateCount, false);
+  for (const Step& s : steps) taken[s.plate] = true;
+  Step step;
+  step.plate = plate;
+  step.direction = d;
+  for (int other : graph_.neighbours[plate]) {
+    if (taken[other]) continue;
+    const JointType type = jointTypeFor(graph_.edge(plate, other), d);
+    step.joints.push_back({plate, other, d, type});
+    step.emptyJoints += type == JointType::Empty ? 1 : 0;
+  }
+  return step;
+}
+
+// A_1: the key is free along d_1 and along no other base direction of its joints. A_i (i >= 2):
+// interlocking with P_1 as the only movable part (DBG test on the joint contacts).
+bool PlateJointPlanner::acceptable(const std::vector<Step>& steps) const {
+  const Assembly model = modelAssembly(graph_, steps, plates_);
+  if (steps.size() == 1) {
+    for (const BaseDirection& base : computeBaseDirections(model)) {
+      for (const Vec3& d : {base.vector, negated(base.vector)}) {
+        const bool free = isPartFreeAlong(model, nullptr, 0, d);
+        const bool planned = parallel(d, steps[0].direction) && dot(d, steps[0].direction) > 0;
+        if (free != planned) return false;
+      }
+    }
+    return true;
+  }
+  const InterlockingResult result = testInterlockingByGraphs(model, computeBaseDirections(model));
+  return result.verdict == Verdict::Interlocking && result.key == 0;
+}
+
+// The ranked children of a node: every plate of R that is not a cut point of R's parts-graph,
+// with every direction it may leave in, kept if A_i passes; fewest empty joints first, ties in a
+// seeded random order; at most `candidates` of them.
+std::vector<Step> PlateJointPlanner::childrenOf(const std::vector<Step>& steps) {
+  std::vector<bool> taken(graph_.plateCount, false);
+  for (const Step& s : steps) taken[s.plate] = true;
+  std::vector<int> rest, index(graph_.plateCount, -1);
+  for (int p = 0; p < graph_.plateCount; ++p) {
+    if (!taken[p]) {
+      index[p] = static_cast<int>(rest.size());
+      rest.push_back(p);
+    }
+  }
+  std::vector<std::pair<int, int>> restEdges;
+  for (int p : rest) {
+    for (int q : graph_.neighbours[p]) {
+      if (!taken[q] && p < q) restEdges.push_back({index[p], index[q]});
+    }
+  }
+  std::vector<bool> isCut(graph_.plateCount, false);
+  for (int i : findCutPoints(static_cast<int>(rest.size()), restEdges)) isCut[rest[i]] = true;
+
+  std::vector<std::pair<uint64_t, Step>> ranked;
+  for (int plate : rest) {
+    if (isCut[plate]) continue;
+    std::vector<bool> others = std::vector<bool>(graph_.plateCount, false);
+    for (int q : rest) others[q] = q != plate;
+    for (const Vec3& d : candidateDirections(plate)) {
+      if (!leavesWithoutPushing(graph_, plate, others, d)) continue;
+      std::vector<Step> next = steps;
+      next.push_back(makeStep(steps, plate, d));
+      if (!acceptable(next)) continue;
+      ranked.push_back({nextRandom(), next.back()});
+    }
+  }
+  // The key first of all: the plate with the most edges parallel to its direction (paper
+  // Section 5.2: halved joints there, so the key slides out along them).
+  auto parallelEdges = [&](const Step& step) {
+    int count = 0;
+    for (const Vec3& edge : graph_.edgeTo[step.plate]) count += parallel(edge, step.direction) ? 1 : 0;
+    return steps.empty() ? count : 0;
+  };
+  std::sort(ranked.begin(), ranked.end(), [&](const auto& x, const auto& y) {
+    if (parallelEdges(x.second) != parallelEdges(y.second)) return parallelEdges(x.second) > parallelEdges(y.second);
+    return x.second.emptyJoints != y.second.emptyJoints ? x.second.emptyJoints < y.second.emptyJoints : x.first < y.first;
+  });
+  std::vector<Step> children;
+  for (size_t k = 0; k < ranked.size() && static_cast<int>(k) < options_.candidates; ++k) children.push_back(ranked[k].second);
+  return children;
+}
+
+PlateDesignResult PlateJointPlanner::run() {
+  PlateDesignResult result;
+  PlateDesignProgress& progress = result.progress;
+  progress.targetParts = graph_.plateCount;
+  const std::vector<int> cuts = findCutPoints(graph_.plateCount, [&] {
+    std::vector<std::pair<int, int>> edges;
+    for (const PlateContact& c : graph_.contacts) edges.push_back({c.a, c.b});
+    return edges;
+  }());
+  if (!cuts.empty()) {
+    result.status = PlateDesignStatus::CutPoint;
+    result.message = "plate " + std::to_string(plates_[cuts[0]].id) +
+                     " is a cut point of the parts-graph: taking it away splits the other plates, and no joints can make such "
+                     "a structure interlocking (paper Section 5.2, Fig. 18); add a plate or bar that joins the two sides";
+    return result;
+  }
+  if (graph_.plateCount < 3) {
+    result.message = "an interlocking structure needs at least three plates; this one has " + std::to_string(graph_.plateCount);
+    return result;
+  }
+  // Depth-first search over the construction tree, kept on an explicit stack of ranked children.
+  std::vector<std::vector<Step>> pending{childrenOf({})};
+  std::vector<Step> path;
+  while (!pending.empty()) {
+    ++progress.nodes;
+    progress.depth = static_cast<int>(path.size());
+    progress.seconds = seconds();
+    if (options_.onProgress && progress.nodes % 8 == 0 && !options_.onProgress(progress)) {
+      result.status = PlateDesignStatus::Cancelled;
+      result.message = "cancelled after " + std::to_string(progress.nodes) + " nodes";
+      return result;
+    }
+    if ((options_.timeLimitSeconds > 0 && progress.seconds > options_.timeLimitSeconds) || progress.nodes > options_.nodeLimit) {
+      result.status = PlateDesignStatus::LimitReached;
+      result.message = "no plan within the limits (" + std::to_string(progress.nodes) + " nodes; deepest " +
+                       std::to_string(progress.bestDepth) + " of " + std::to_string(graph_.plateCount) + " plates)";
+      return result;
+    }
+    if (pending.back().empty()) {  // no child left here: back to the parent's next sibling
+      pending.pop_back();
+      if (!path.empty()) path.pop_back();
+      continue;
+    }
+    path.push_back(pending.back().front());
+    pending.back().erase(pending.back().begin());
+    progress.bestDepth = std::max(progress.bestDepth, static_cast<int>(path.size()) + 1);
+    if (static_cast<int>(path.size()) + 1 == graph_.plateCount) break;  // R is the last plate
+    pending.push_back(childrenOf(path));
+  }
+  if (static_cast<int>(path.size()) + 1 != graph_.plateCount) {
+    result.status = PlateDesignStatus::NotFound;
+    result.message = "no interlocking joint plan exists within the search (" + std::to_string(progress.nodes) +
+                     " nodes; deepest " + std::to_string(progress.bestDepth) + " of " + std::to_string(graph_.plateCount) + " plates)";
+    return result;
+  }
+  // The last plate: R_(n-1) itself.
+  std::vector<bool> taken(graph_.plateCount, false);
+  for (const Step& s : path) taken[s.plate] = true;
+  const int last = static_cast<int>(std::find(taken.begin(), taken.end(), false) - taken.begin());
+  for (const Step& step : path) {
+    result.order.push_back(step.plate);
+    result.directions.push_back(step.direction);
+    result.joints.insert(result.joints.end(), step.joints.begin(), step.joints.end());
+  }
+  result.order.push_back(last);
+  result.jointAssembly = modelAssembly(graph_, path, plates_);
+  result.jointAssembly.parts.back() = {plates_[last].id, plates_[last].name};
+  result.status = PlateDesignStatus::Success;
+  result.message = "planned " + std::to_string(result.joints.size()) + " joints in " + std::to_string(progress.nodes) + " nodes";
+  return result;
+}
+
+// Re-checks a plan with both tests and its removal order; throws Internal if it fails (the search
+// accepts only what passes, so a failure here is a bug, never a result).
+void verifyPlan(const PlateDesignResult& result) {
+  const Assembly& model = result.jointAssembly;
+  const std::vector<BaseDirection> directions = computeBaseDirections(model);
+  const InterlockingResult byGraphs = testInterlockingByGraphs(model, directions);
+  const InterlockingResult byInequalities = testInterlockingByInequalities(model, directions);
+  if (byGraphs.verdict != Verdict::Interlocking || byGraphs.key != 0 || byInequalities.verdict != Verdict::Interlocking ||
+      byInequalities.key != 0) {
+    throw Error(ErrorCode::Internal, "the joint plan did not verify (dbg: " + byGraphs.reason + "; lp: " + byInequalities.reason + ")");
+  }
+  // Removal in order: part k leaves the parts after it along its direction.
+  std::vector<bool> present(model.partCount(), true);
+  for (size_t k = 0; k + 1 < result.order.size(); ++k) {
+    if (!isPartFreeAlong(model, &present, static_cast<int>(k), result.directions[k])) {
+      throw Error(ErrorCode::Internal, "the joint plan's plate " + std::to_string(model.parts[k].id) + " cannot leave along its direction");
+    }
+    present[k] = false;
+  }
+}
+
+}  // namespace
+
+const char* jointTypeName(JointType type) {
+  switch (type) {
+    case JointType::Halved: return "halved";
+    case JointType::MortiseTenon: return "mortise-tenon";
+    case JointType::Empty: return "empty";
+  }
+  return "empty";
+}
+
+PlateDesignResult designPlateJoints(const std::vector<Plate>& plates, const std::vector<PlateContact>& contacts,
+                                    const PlateDesignOptions& options) {
+  if (options.candidates < 1) throwBadInput("", "candidates must be at least 1");
+  PlateJointPlanner planner(plates, contacts, options);
+  PlateDesignResult result = planner.run();
+  if (result.status == PlateDesignStatus::Success) verifyPlan(result);
+  return result;
+}
+
+}  // namespace desia
