@@ -93,3 +93,34 @@ test('usage errors: exit 2 with the usage text', () => {
   assert.equal(unknownMethod.status, 2);
   assert.match(unknownMethod.stderr, /unknown method 'simplex'/);
 });
+
+test('design plate: a verified joint plan (exit 0) that check re-verifies; a cut point is exit 1; bad input exit 2', () => {
+  const examples = path.join(referenceDir, '../../../../examples/plate');
+  const plan = path.join(tmp, 'table-plan.json');
+  const designed = runCli(['design', 'plate', '--input', path.join(examples, 'table.json'), '--output', plan, '--seed', '3']);
+  assert.equal(designed.status, 0, designed.stderr);
+  assert.match(designed.stdout, /^verdict: interlocking \(method both\)$/m);
+  const document = JSON.parse(fs.readFileSync(plan, 'utf8'));
+  assert.equal(document.kind, 'plate');
+  assert.equal(document.parts.length, 6);
+  assert.equal(document.joints.length, 10);
+  assert.deepEqual(document.removal.map((step) => step.part), [1, 2, 3, 4, 5, 6]);
+  for (const method of ['dbg', 'lp']) {
+    const checked = runCli(['check', plan, '--method', method, '--json']);
+    assert.equal(checked.status, 0, checked.stdout);
+    assert.equal(JSON.parse(checked.stdout).key, 1);
+  }
+  const again = path.join(tmp, 'table-plan-again.json');
+  assert.equal(runCli(['design', 'plate', '--input', path.join(examples, 'table.json'), '--output', again, '--seed', '3']).status, 0);
+  assert.equal(fs.readFileSync(again, 'utf8'), fs.readFileSync(plan, 'utf8'), 'same seed, same bytes');
+
+  const chair = runCli(['design', 'plate', '--input', path.join(examples, 'chair_cut_point.json'), '--output', path.join(tmp, 'chair.json')]);
+  assert.equal(chair.status, 1);
+  assert.match(chair.stderr, /chair_cut_point\.json: plate 5 is a cut point of the parts-graph/);
+  assert.equal(fs.existsSync(path.join(tmp, 'chair.json')), false);
+
+  const flat = writeTemp('flat.json', '{"kind":"plate","plates":[{"id":1,"outline":[[0,0,0],[1,0,0],[0,1,0]],"thickness":0}]}');
+  const bad = runCli(['design', 'plate', '--input', flat, '--output', path.join(tmp, 'flat-plan.json')]);
+  assert.equal(bad.status, 2);
+  assert.match(bad.stderr, /flat\.json: plates\[0\] \(plate 1\)\.thickness: must be positive, found 0/);
+});
