@@ -186,12 +186,22 @@ AssemblyDocument parseJsonDocument(const std::string& text, const std::string& s
     requireConnectedPlates(document.plates, contacts, source);
     document.assembly = assemblyFromPlates(document.plates, contacts);
     document.plateCutPoints = plateCutPoints(static_cast<int>(document.plates.size()), contacts);
+    document.contactsFromGeometry = true;
   } else {
     document.assembly.parts = parseParts(root, source);
     document.assembly.contacts = parseContacts(root, document.assembly, source);
+    if (document.kind == AssemblyKind::Plate && root.contains("plates")) {
+      // A plan or result: its contacts are given (the joints'); the plates are read for drawing
+      // and exports, and must be the parts.
+      document.plates = parsePlates(root["plates"], source);
+      validatePlates(document.plates, document.plateOptions, source);
+      for (const Plate& plate : document.plates) {
+        if (document.assembly.indexOfId(plate.id) < 0) fail(source, "plates", "plate " + std::to_string(plate.id) + " is not in 'parts'");
+      }
+    }
   }
   json geometry = json::object();
-  for (const char* section : {"plates", "frame"}) {
+  for (const char* section : {"plates", "frame", "joints", "removal", "jointGeometry"}) {
     if (root.contains(section)) geometry[section] = root[section];
   }
   if (!geometry.empty()) document.geometryJson = geometry.dump();
@@ -223,7 +233,7 @@ std::string documentToJson(const AssemblyDocument& document, int indent) {
     const std::vector<int64_t> counts = grid.labelCounts();
     for (const Part& part : document.assembly.parts) parts.push_back({{"id", part.id}, {"voxelCount", counts[part.id]}});
     root["parts"] = parts;
-  } else if (document.kind == AssemblyKind::Plate && !document.plates.empty()) {
+  } else if (document.kind == AssemblyKind::Plate && document.contactsFromGeometry) {
     // A plate design is its geometry: parts and contacts are derived again when it is read.
     if (document.plateOptions.contactTolerance != PlateOptions{}.contactTolerance) {
       root["contactTolerance"] = document.plateOptions.contactTolerance;
@@ -248,6 +258,8 @@ std::string documentToJson(const AssemblyDocument& document, int indent) {
       const json geometry = json::parse(document.geometryJson);  // must outlive the loop below
       for (const auto& [key, value] : geometry.items()) root[key] = value;
     }
+    // A plan: its plates (read and checked) with its given contacts.
+    if (!document.plates.empty()) root["plates"] = platesToJson(document.plates);
   }
   return root.dump(indent);
 }

@@ -167,7 +167,40 @@ PartSurface drawableSurface(int partId, const TriangleMesh& mesh) {
 
 }  // namespace
 
+namespace {
+
+// A mesh of any orientation as drawable triangles with flat normals.
+PartSurface flatSurface(int partId, const TriangleMesh& mesh) {
+  PartSurface surface;
+  surface.partId = partId;
+  for (const std::array<int, 3>& triangle : mesh.triangles) {
+    const std::array<double, 3>& a = mesh.vertices[triangle[0]];
+    const std::array<double, 3>& b = mesh.vertices[triangle[1]];
+    const std::array<double, 3>& c = mesh.vertices[triangle[2]];
+    double n[3] = {(b[1] - a[1]) * (c[2] - a[2]) - (b[2] - a[2]) * (c[1] - a[1]),
+                   (b[2] - a[2]) * (c[0] - a[0]) - (b[0] - a[0]) * (c[2] - a[2]),
+                   (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])};
+    const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    for (double& x : n) x = length > 0 ? x / length : 0;
+    for (const std::array<double, 3>* vertex : {&a, &b, &c}) {
+      for (int k = 0; k < 3; ++k) {
+        surface.positions.push_back(static_cast<float>((*vertex)[k]));
+        surface.normals.push_back(static_cast<float>(n[k]));
+      }
+    }
+  }
+  return surface;
+}
+
+}  // namespace
+
 std::vector<PartSurface> partSurfaces(const AssemblyDocument& document, const std::string& source) {
+  // Each kind of assembly brings its own surfaces: plates their meshes (in mm), voxels theirs.
+  if (document.kind == AssemblyKind::Plate && !document.plates.empty()) {
+    std::vector<PartSurface> surfaces;
+    for (const Plate& plate : document.plates) surfaces.push_back(flatSurface(plate.id, plateMesh(plate)));
+    return surfaces;
+  }
   requireExportableVoxels(document, source);
   const VoxelGrid& grid = document.voxels;
   const std::vector<std::vector<int64_t>> voxels = voxelsByPart(grid);

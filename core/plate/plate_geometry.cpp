@@ -104,25 +104,41 @@ bool insideBottomFace(const Plate& plate, const PlaneFrame& frame, const Vec3& p
   return inside;
 }
 
+}  // namespace
+
+// A side face's normal points out of the solid: a step from the middle of its bottom edge along
+// the normal (projected into the bottom plane) must leave the bottom face. Loop orientation and
+// holes need no separate rules this way.
+std::vector<Vec3> plateSideNormals(const Plate& plate, size_t loopIndex) {
+  const Vec3 axis = plateThicknessAxis(plate);
+  const PlaneFrame bottomFrame(centroidOf(plate.bottom[0]), axis);
+  constexpr double kStep = 1e-3;  // mm
+  const Loop& bottom = plate.bottom[loopIndex];
+  const Loop& top = plate.top[loopIndex];
+  std::vector<Vec3> normals;
+  for (size_t k = 0; k < bottom.size(); ++k) {
+    const size_t next = (k + 1) % bottom.size();
+    Vec3 n = normalized(newellNormal(Loop{bottom[k], bottom[next], top[next], top[k]}));
+    const Vec3 inPlane = normalized(minus(n, scaled(axis, dot(n, axis))));
+    const Vec3 middle = scaled(plus(bottom[k], bottom[next]), 0.5);
+    if (insideBottomFace(plate, bottomFrame, plus(middle, scaled(inPlane, kStep)))) n = negated(n);
+    normals.push_back(n);
+  }
+  return normals;
+}
+
+namespace {
+
 std::vector<SolidFace> solidFaces(const Plate& plate) {
   const Vec3 axis = thicknessAxis(plate);
   std::vector<SolidFace> faces{{plate.bottom, negated(axis)}, {plate.top, axis}};
-  const PlaneFrame bottomFrame(centroidOf(plate.bottom[0]), axis);
-  // A side face's normal points out of the solid: a step from the middle of its bottom edge along
-  // the normal (projected into the bottom plane) must leave the bottom face. Loop orientation and
-  // holes need no separate rules this way.
-  constexpr double kStep = 1e-3;  // mm
   for (size_t l = 0; l < plate.bottom.size(); ++l) {
     const Loop& bottom = plate.bottom[l];
     const Loop& top = plate.top[l];
+    const std::vector<Vec3> normals = plateSideNormals(plate, l);
     for (size_t k = 0; k < bottom.size(); ++k) {
       const size_t next = (k + 1) % bottom.size();
-      const Loop quad{bottom[k], bottom[next], top[next], top[k]};
-      Vec3 n = normalized(newellNormal(quad));
-      const Vec3 inPlane = normalized(minus(n, scaled(axis, dot(n, axis))));
-      const Vec3 middle = scaled(plus(bottom[k], bottom[next]), 0.5);
-      if (insideBottomFace(plate, bottomFrame, plus(middle, scaled(inPlane, kStep)))) n = negated(n);
-      faces.push_back({{quad}, n});
+      faces.push_back({{Loop{bottom[k], bottom[next], top[next], top[k]}}, normals[k]});
     }
   }
   return faces;

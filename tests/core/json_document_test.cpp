@@ -22,14 +22,14 @@ TEST(JsonDocument, VoxelDocumentRoundTripsThroughJson) {
 
 TEST(JsonDocument, ContactDocumentKeepsIdsNormalsAndGeometry) {
   const std::string text = R"({
-    "format": "desia-assembly", "version": 1, "kind": "plate", "name": "three plates",
+    "format": "desia-assembly", "version": 1, "kind": "frame", "name": "three beams",
     "parts": [{"id": 10, "name": "base"}, {"id": 20}, {"id": 30}],
     "contacts": [{"a": 10, "b": 20, "normal": [0, 0, 2]}, {"a": 20, "b": 30, "normal": [1, 0, 0], "area": 0.5}],
-    "plates": [{"part": 10, "thickness": 0.02}]
+    "frame": {"joints": [[0, 0, 0], [1, 0, 0]], "beams": [[0, 1]]}
   })";
-  const AssemblyDocument document = parseJsonDocument(text, "plates.json");
-  EXPECT_EQ(document.kind, AssemblyKind::Plate);
-  EXPECT_EQ(document.name, "three plates");
+  const AssemblyDocument document = parseJsonDocument(text, "frame.json");
+  EXPECT_EQ(document.kind, AssemblyKind::Frame);
+  EXPECT_EQ(document.name, "three beams");
   ASSERT_EQ(document.assembly.partCount(), 3);
   EXPECT_EQ(document.assembly.parts[0].name, "base");
   ASSERT_EQ(document.assembly.contacts.size(), 2u);

@@ -6,12 +6,14 @@
 
 #include <array>
 #include <cmath>
+#include <map>
 #include <set>
 
 #include "analysis/vec3.h"
 #include "desia/check.h"
 #include "desia/cut_points.h"
 #include "desia/error.h"
+#include "desia/export.h"
 #include "desia/plate_design.h"
 #include "desia/plate_design_io.h"
 #include "test_support.h"
@@ -318,6 +320,80 @@ TEST(PlateJointPlan, CancellationAndLimitsStopTheSearch) {
   const PlateDesignResult result = designPlateJoints(document.plates, contacts, limited);
   EXPECT_EQ(result.status, PlateDesignStatus::LimitReached);
   EXPECT_NE(result.message.find("of 123 plates"), std::string::npos) << result.message;
+}
+
+}  // namespace
+}  // namespace desia
+
+namespace desia {
+namespace {
+
+// Signed volume of a closed mesh (positive when its triangles face outward).
+double signedVolume(const TriangleMesh& mesh) {
+  double volume = 0;
+  for (const auto& t : mesh.triangles) {
+    const Vec3& a = mesh.vertices[t[0]];
+    const Vec3& b = mesh.vertices[t[1]];
+    const Vec3& c = mesh.vertices[t[2]];
+    volume += dot(a, cross(b, c)) / 6.0;
+  }
+  return volume;
+}
+
+// Every directed edge (by position) is matched by the opposite one: the surface is closed.
+bool isClosed(const TriangleMesh& mesh) {
+  std::map<std::pair<Vec3, Vec3>, int> edges;
+  for (const auto& t : mesh.triangles) {
+    for (int k = 0; k < 3; ++k) ++edges[{mesh.vertices[t[k]], mesh.vertices[t[(k + 1) % 3]]}];
+  }
+  for (const auto& [edge, count] : edges) {
+    const auto opposite = edges.find({edge.second, edge.first});
+    if (opposite == edges.end() || opposite->second != count) return false;
+  }
+  return true;
+}
+
+TEST(PlateMesh, EveryPlateIsAClosedOutwardSolidOfItsVolume) {
+  const AssemblyDocument table = loadExample("table.json");
+  const TriangleMesh top = plateMesh(table.plates[0]);
+  EXPECT_TRUE(isClosed(top));
+  EXPECT_NEAR(signedVolume(top), 1000.0 * 600.0 * 18.0, 1e-3);
+  // A mitred plate: 300 x 300 outside, 276 x 276 inside, 12 thick (a frustum).
+  const AssemblyDocument box = loadExample("mitred_box.json");
+  for (const Plate& plate : box.plates) {
+    const TriangleMesh mesh = plateMesh(plate);
+    EXPECT_TRUE(isClosed(mesh)) << plate.id;
+    EXPECT_NEAR(signedVolume(mesh), 12.0 / 3.0 * (300.0 * 300.0 + 276.0 * 276.0 + 300.0 * 276.0), 1e-3) << plate.id;
+  }
+  // Non-convex with a hole: an L of 3 unit squares (side 100) minus a 10 x 10 hole, 5 thick.
+  const AssemblyDocument holed = parseAssemblyText(
+      R"({"kind":"plate","plates":[{"id":1,"outline":[[0,0,0],[200,0,0],[200,100,0],[100,100,0],[100,200,0],[0,200,0]],)"
+      R"("thickness":5,"holes":[[[40,40,0],[40,50,0],[50,50,0],[50,40,0]]]},)"
+      R"({"id":2,"outline":[[0,0,5],[200,0,5],[200,100,5],[0,100,5]],"thickness":5},)"
+      R"({"id":3,"outline":[[0,0,-5],[200,0,-5],[200,100,-5],[0,100,-5]],"thickness":5}]})",
+      "holed.json");
+  const TriangleMesh l = plateMesh(holed.plates[0]);
+  EXPECT_TRUE(isClosed(l));
+  EXPECT_NEAR(signedVolume(l), (3 * 100.0 * 100.0 - 100.0) * 5.0, 1e-3);
+  // The display surfaces are these meshes, one per plate.
+  const std::vector<PartSurface> surfaces = partSurfaces(table);
+  ASSERT_EQ(surfaces.size(), 6u);
+  EXPECT_EQ(surfaces[0].partId, 1);
+  EXPECT_EQ(surfaces[0].positions.size(), top.triangles.size() * 9);
+}
+
+TEST(PlateJointPlan, APlanDocumentKeepsItsContactsPlatesAndJointsWhenRewritten) {
+  const AssemblyDocument input = loadExample("table.json");
+  const PlateDesignResult result = planExample("table.json");
+  ASSERT_EQ(result.status, PlateDesignStatus::Success);
+  const AssemblyDocument plan = parseJsonDocument(plateDesignToJson(input, result), "plan.json");
+  EXPECT_FALSE(plan.contactsFromGeometry);
+  EXPECT_EQ(plan.plates.size(), 6u);
+  const AssemblyDocument again = parseJsonDocument(documentToJson(plan), "again.json");
+  EXPECT_EQ(again.assembly.contacts.size(), plan.assembly.contacts.size());
+  EXPECT_EQ(again.plates.size(), 6u);
+  EXPECT_NE(documentToJson(again).find("\"joints\""), std::string::npos);
+  EXPECT_EQ(checkAssembly(again).result.verdict, Verdict::Interlocking);
 }
 
 }  // namespace

@@ -24,6 +24,7 @@ struct AssemblyDocument {
   std::vector<Plate> plates;          // kind == Plate, read from geometry (then contacts are computed)
   std::vector<int> plateCutPoints;    // plates (internal indices) that are cut points of the parts-graph
   PlateOptions plateOptions;          // the contact tolerance the plates were read with
+  bool contactsFromGeometry = false;  // the contacts were computed from `plates` (a design, not a plan)
 };
 
 // Reads .puz or JSON text (detected from the content). `source` names the input in messages.

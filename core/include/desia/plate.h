@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "desia/assembly.h"
+#include "desia/mesh.h"
 
 namespace desia {
 
@@ -27,6 +28,12 @@ struct Plate {
 
 // The unit vector across the plate, from its first face towards its second.
 Vec3 plateThicknessAxis(const Plate& plate);
+
+// The outward unit normals of the side faces along loop `loopIndex` (side k joins vertices k, k+1).
+std::vector<Vec3> plateSideNormals(const Plate& plate, size_t loopIndex);
+
+// The plate as a closed triangle mesh (outward, counter-clockwise seen from outside), in mm.
+TriangleMesh plateMesh(const Plate& plate);
 
 struct PlateOptions {
   // Two faces closer than this (mm) lie on one another; also the planarity tolerance of a face.

@@ -1,0 +1,190 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// A plate as a closed triangle mesh: its two faces (outline with holes) triangulated by ear
+// clipping after joining each hole to the outline by a bridge, and one quad (two triangles) per
+// side. Clipper offers booleans and offsets but no triangulation, and Debian packages no C++
+// triangulation library small enough for the WebAssembly build, hence these few lines.
+#include "desia/plate.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "analysis/vec3.h"
+#include "desia/error.h"
+
+namespace desia {
+namespace {
+
+using Point2 = std::array<double, 2>;
+
+double cross2(const Point2& o, const Point2& a, const Point2& b) {
+  return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
+}
+
+double signedArea(const std::vector<Point2>& points, const std::vector<int>& loop) {
+  double area = 0;
+  for (size_t i = 0; i < loop.size(); ++i) {
+    const Point2& p = points[loop[i]];
+    const Point2& q = points[loop[(i + 1) % loop.size()]];
+    area += p[0] * q[1] - q[0] * p[1];
+  }
+  return area / 2;
+}
+
+bool segmentsCross(const Point2& a, const Point2& b, const Point2& c, const Point2& d) {
+  const double d1 = cross2(c, d, a), d2 = cross2(c, d, b), d3 = cross2(a, b, c), d4 = cross2(a, b, d);
+  return ((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0));
+}
+
+// Joins each hole (clockwise) to the outline (counter-clockwise) by a two-way bridge from the
+// hole's rightmost vertex to the nearest outline vertex it can see, giving one simple-in-effect
+// polygon that ear clipping can cut.
+std::vector<int> bridgeHoles(const std::vector<Point2>& points, std::vector<int> outer, std::vector<std::vector<int>> holes) {
+  std::sort(holes.begin(), holes.end(), [&](const std::vector<int>& a, const std::vector<int>& b) {
+    auto rightmost = [&](const std::vector<int>& h) {
+      double x = -HUGE_VAL;
+      for (int i : h) x = std::max(x, points[i][0]);
+      return x;
+    };
+    return rightmost(a) > rightmost(b);
+  });
+  for (size_t h = 0; h < holes.size(); ++h) {
+    const std::vector<int>& hole = holes[h];
+    size_t m = 0;
+    for (size_t i = 1; i < hole.size(); ++i) {
+      if (points[hole[i]][0] > points[hole[m]][0]) m = i;
+    }
+    const Point2& from = points[hole[m]];
+    size_t best = 0;
+    double bestDistance = HUGE_VAL;
+    for (size_t o = 0; o < outer.size(); ++o) {
+      const Point2& to = points[outer[o]];
+      const double distance = std::hypot(to[0] - from[0], to[1] - from[1]);
+      if (distance >= bestDistance) continue;
+      bool visible = true;
+      auto blocks = [&](const std::vector<int>& loop) {
+        for (size_t e = 0; e < loop.size() && visible; ++e) {
+          if (segmentsCross(from, to, points[loop[e]], points[loop[(e + 1) % loop.size()]])) visible = false;
+        }
+      };
+      blocks(outer);
+      for (size_t other = h; other < holes.size(); ++other) blocks(holes[other]);
+      if (visible) {
+        best = o;
+        bestDistance = distance;
+      }
+    }
+    std::vector<int> merged(outer.begin(), outer.begin() + static_cast<long>(best) + 1);
+    for (size_t k = 0; k <= hole.size(); ++k) merged.push_back(hole[(m + k) % hole.size()]);
+    merged.insert(merged.end(), outer.begin() + static_cast<long>(best), outer.end());
+    outer = merged;
+  }
+  return outer;
+}
+
+bool insideTriangle(const Point2& p, const Point2& a, const Point2& b, const Point2& c) {
+  return cross2(a, b, p) >= 0 && cross2(b, c, p) >= 0 && cross2(c, a, p) >= 0;
+}
+
+// Ear clipping of a counter-clockwise polygon (bridges allowed: repeated points are skipped in the
+// containment test). Appends triangles as index triples.
+void clipEars(const std::vector<Point2>& points, std::vector<int> polygon, std::vector<std::array<int, 3>>* triangles) {
+  while (polygon.size() > 3) {
+    const size_t n = polygon.size();
+    size_t ear = n;
+    for (size_t i = 0; i < n && ear == n; ++i) {
+      const int a = polygon[(i + n - 1) % n], b = polygon[i], c = polygon[(i + 1) % n];
+      if (cross2(points[a], points[b], points[c]) <= 0) continue;  // reflex or flat
+      bool empty = true;
+      for (size_t j = 0; j < n && empty; ++j) {
+        const int p = polygon[j];
+        if (points[p] == points[a] || points[p] == points[b] || points[p] == points[c]) continue;
+        if (insideTriangle(points[p], points[a], points[b], points[c])) empty = false;
+      }
+      if (empty) ear = i;
+    }
+    if (ear == n) {
+      // Only flat or degenerate corners left (rounding): drop the flattest one without a triangle.
+      size_t flattest = 0;
+      double smallest = HUGE_VAL;
+      for (size_t i = 0; i < n; ++i) {
+        const double area = std::abs(cross2(points[polygon[(i + n - 1) % n]], points[polygon[i]], points[polygon[(i + 1) % n]]));
+        if (area < smallest) {
+          smallest = area;
+          flattest = i;
+        }
+      }
+      polygon.erase(polygon.begin() + static_cast<long>(flattest));
+      continue;
+    }
+    triangles->push_back({polygon[(ear + n - 1) % n], polygon[ear], polygon[(ear + 1) % n]});
+    polygon.erase(polygon.begin() + static_cast<long>(ear));
+  }
+  if (polygon.size() == 3 && cross2(points[polygon[0]], points[polygon[1]], points[polygon[2]]) > 0) {
+    triangles->push_back({polygon[0], polygon[1], polygon[2]});
+  }
+}
+
+// Triangles of a planar face (loops[0] the outline, the rest holes) wound counter-clockwise about
+// `outward`; vertices are appended to `mesh`.
+void addFace(const std::vector<Loop>& loops, const Vec3& outward, TriangleMesh* mesh) {
+  const Vec3 axis = std::abs(outward[0]) < 0.6 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
+  const Vec3 u = normalized(cross(outward, axis));
+  const Vec3 v = cross(outward, u);
+  const int base = static_cast<int>(mesh->vertices.size());
+  std::vector<Point2> points;
+  std::vector<std::vector<int>> indexLoops;
+  for (const Loop& loop : loops) {
+    std::vector<int> indices;
+    for (const Vec3& p : loop) {
+      indices.push_back(static_cast<int>(points.size()));
+      points.push_back({dot(p, u), dot(p, v)});
+      mesh->vertices.push_back(p);
+    }
+    indexLoops.push_back(indices);
+  }
+  // The outline counter-clockwise, holes clockwise, in the (u, v) frame seen from outside.
+  if (signedArea(points, indexLoops[0]) < 0) std::reverse(indexLoops[0].begin(), indexLoops[0].end());
+  for (size_t h = 1; h < indexLoops.size(); ++h) {
+    if (signedArea(points, indexLoops[h]) > 0) std::reverse(indexLoops[h].begin(), indexLoops[h].end());
+  }
+  const std::vector<int> polygon =
+      bridgeHoles(points, indexLoops[0], std::vector<std::vector<int>>(indexLoops.begin() + 1, indexLoops.end()));
+  std::vector<std::array<int, 3>> triangles;
+  clipEars(points, polygon, &triangles);
+  for (const auto& t : triangles) mesh->triangles.push_back({base + t[0], base + t[1], base + t[2]});
+}
+
+Vec3 minus(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+
+}  // namespace
+
+TriangleMesh plateMesh(const Plate& plate) {
+  const Vec3 axis = plateThicknessAxis(plate);
+  TriangleMesh mesh;
+  addFace(plate.bottom, negated(axis), &mesh);
+  addFace(plate.top, axis, &mesh);
+  // Sides: the quad between bottom edge k and top edge k, wound so that its normal is the side's
+  // outward normal.
+  for (size_t l = 0; l < plate.bottom.size(); ++l) {
+    const Loop& b = plate.bottom[l];
+    const Loop& t = plate.top[l];
+    const std::vector<Vec3> outward = plateSideNormals(plate, l);
+    for (size_t k = 0; k < b.size(); ++k) {
+      const size_t next = (k + 1) % b.size();
+      const int base = static_cast<int>(mesh.vertices.size());
+      for (const Vec3& p : {b[k], b[next], t[next], t[k]}) mesh.vertices.push_back(p);
+      const Vec3 n = cross(minus(b[next], b[k]), minus(t[k], b[k]));
+      if (dot(n, outward[k]) > 0) {
+        mesh.triangles.push_back({base, base + 1, base + 2});
+        mesh.triangles.push_back({base, base + 2, base + 3});
+      } else {
+        mesh.triangles.push_back({base, base + 2, base + 1});
+        mesh.triangles.push_back({base, base + 3, base + 2});
+      }
+    }
+  }
+  return mesh;
+}
+
+}  // namespace desia
