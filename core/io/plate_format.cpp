@@ -104,7 +104,16 @@ Plate plateAt(const json& entry, const std::string& source, const std::string& p
   if (norm(n) == 0) fail(source, who + ".outline", "has no area");
   for (const Loop& loop : plate.bottom) {
     Loop top;
-    for (const Vec3& p : loop) top.push_back({p[0] + t * n[0], p[1] + t * n[1], p[2] + t * n[2]});
+    for (const Vec3& p : loop) {
+      top.push_back({p[0] + t * n[0], p[1] + t * n[1], p[2] + t * n[2]});
+      // The second face is written out as given coordinates (documents always take the faces form),
+      // so it must obey the coordinate limit too, or a written document would not read back.
+      for (const double c : top.back()) {
+        if (!(std::abs(c) <= 1e9)) {
+          fail(source, who + ".thickness", "puts the second face beyond 1e9 millimetres, found " + thickness->dump());
+        }
+      }
+    }
     plate.top.push_back(top);
   }
   return plate;
