@@ -11,6 +11,8 @@
 #include <vector>
 
 #include "desia/check.h"
+#include "desia/plate_design.h"
+#include "desia/plate_design_io.h"
 #include "desia/design_io.h"
 #include "desia/document.h"
 #include "desia/error.h"
@@ -130,6 +132,24 @@ val designVoxel(const std::string& shapeText, const std::string& optionsJson, co
   });
 }
 
+// Plans the joints of a plate design (paper Section 5.2); options and progress as for designVoxel.
+val designPlate(const std::string& text, const std::string& optionsJson, const std::string& source, val onProgress) {
+  return guarded([&] {
+    const desia::AssemblyDocument document = desia::parseAssemblyText(text, source);
+    if (document.kind != desia::AssemblyKind::Plate || !document.contactsFromGeometry) {
+      throw desia::Error(desia::ErrorCode::BadInput, source + ": designPlate needs a plate design (kind \"plate\" with \"plates\" and no \"contacts\")");
+    }
+    desia::PlateDesignOptions options = desia::parsePlateDesignOptionsJson(optionsJson);
+    if (onProgress.typeOf().as<std::string>() == "function") {
+      options.onProgress = [&onProgress](const desia::PlateDesignProgress& progress) {
+        return !(onProgress(parseJsonText(desia::plateDesignProgressToJson(progress))).isFalse());
+      };
+    }
+    const std::vector<desia::PlateContact> contacts = desia::computePlateContacts(document.plates, document.plateOptions);
+    return parseJsonText(desia::plateDesignResultToJson(document, desia::designPlateJoints(document.plates, contacts, options)));
+  });
+}
+
 // The interactive design session (a long-lived handle: JS must call delete(), which the facade's
 // dispose() does). Every method returns plain data.
 class DesignSession {
@@ -221,6 +241,7 @@ EMSCRIPTEN_BINDINGS(desia) {
   emscripten::function("toPuz", &toPuz);
   emscripten::function("voxelize", &voxelize);
   emscripten::function("designVoxel", &designVoxel);
+  emscripten::function("designPlate", &designPlate);
   emscripten::function("exportAssembly", &exportAssembly);
   emscripten::function("partSurfaces", &partSurfaces);
   emscripten::function("version", &version);

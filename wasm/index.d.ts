@@ -175,10 +175,11 @@ export interface DesignProgress {
 }
 
 export interface DesignResult {
-  status: 'success' | 'not-found' | 'limit-reached' | 'cancelled';
+  /** 'cut-point' (designPlate only): the parts-graph has a cut point, named in `message`. */
+  status: 'success' | 'not-found' | 'limit-reached' | 'cancelled' | 'cut-point';
   message: string;
   progress: DesignProgress;
-  /** The verified puzzle as .puz text (part 1 = key), or null. */
+  /** The verified puzzle as .puz text (part 1 = key), or null (always null for plates). */
   puz: string | null;
   /** The verified puzzle as a JSON assembly document, or null. */
   document: AssemblyDocument | null;
@@ -276,6 +277,20 @@ export interface PartSurface {
  * Options of the plate and frame designers. Their cores have not landed yet: every call rejects
  * with code 'unsupported' for now. The options will be the designers' own, as for designVoxel.
  */
+/** Options of designPlate. */
+export interface PlateDesignOptions {
+  /** Default 1: the same seed gives the same plan, natively and in WebAssembly. */
+  seed?: number;
+  /** Children kept per node of the construction tree (the paper's m), default 30. */
+  candidates?: number;
+  nodeLimit?: number;
+  /** Seconds, default 60. */
+  timeLimit?: number;
+  onProgress?: (progress: DesignProgress) => boolean | void;
+  /** Name used in error messages. */
+  source?: string;
+}
+
 export interface StructureDesignOptions {
   onProgress?: (progress: DesignProgress) => boolean | void;
   /** Name used in error messages. */
@@ -324,8 +339,13 @@ export interface DesiaCore {
   designVoxel(shapeText: string, options: DesignVoxelOptions): DesignResult;
   /** An interactive design session; call dispose() when done. */
   designSession(shapeText: string, options: Omit<DesignVoxelOptions, 'onProgress'>): DesignSession;
-  /** Designs a plate structure. Not yet: throws a DesiaError with code 'unsupported'. */
-  designPlate(input: string | AssemblyDocument, options?: StructureDesignOptions): DesignResult;
+  /**
+   * Plans the joints of a plate design (paper Section 5.2: key, removal order and directions, a
+   * joint per contact); options `seed`, `candidates`, `nodeLimit`, `timeLimit` (seconds). The
+   * result's `document` is the plan (kind 'plate', part 1 = the key), verified by both tests; the
+   * joints' cuts are not in the plates' outlines yet (`jointGeometry: 'planned'`).
+   */
+  designPlate(input: string | AssemblyDocument, options?: PlateDesignOptions): DesignResult;
   /** Designs a frame structure. Not yet: throws a DesiaError with code 'unsupported'. */
   designFrame(input: string | AssemblyDocument, options?: StructureDesignOptions): DesignResult;
   /** The core's version, e.g. '0.1.0'. */
@@ -390,8 +410,8 @@ export interface Desia {
   designVoxel(shapeText: string, options: DesignVoxelOptions & CallOptions): Promise<DesignResult>;
   /** An interactive design session living in the worker; dispose() it when done. */
   designSession(shapeText: string, options: Omit<DesignVoxelOptions, 'onProgress'> & CallOptions): Promise<AsyncDesignSession>;
-  /** Designs a plate structure. Not yet: rejects with a DesiaError with code 'unsupported'. */
-  designPlate(input: string | AssemblyDocument, options?: StructureDesignOptions & CallOptions): Promise<DesignResult>;
+  /** {@link DesiaCore.designPlate} in the worker. */
+  designPlate(input: string | AssemblyDocument, options?: PlateDesignOptions & CallOptions): Promise<DesignResult>;
   /** Designs a frame structure. Not yet: rejects with a DesiaError with code 'unsupported'. */
   designFrame(input: string | AssemblyDocument, options?: StructureDesignOptions & CallOptions): Promise<DesignResult>;
   /** The core's version, e.g. '0.1.0' (known since createDesia resolved). */

@@ -297,7 +297,8 @@ PlateDesignResult PlateJointPlanner::run() {
     ++progress.nodes;
     progress.depth = static_cast<int>(path.size());
     progress.seconds = seconds();
-    if (options_.onProgress && progress.nodes % 8 == 0 && !options_.onProgress(progress)) {
+    // Nodes are few and each costs far more than a report (a full graph test per child).
+    if (options_.onProgress && !options_.onProgress(progress)) {
       result.status = PlateDesignStatus::Cancelled;
       result.message = "cancelled after " + std::to_string(progress.nodes) + " nodes";
       return result;

@@ -313,8 +313,10 @@ TEST(PlateJointPlan, CancellationAndLimitsStopTheSearch) {
     EXPECT_EQ(p.targetParts, 123);
     return ++calls < 3;
   };
-  EXPECT_EQ(designPlateJoints(document.plates, contacts, options).status, PlateDesignStatus::Cancelled);
+  const PlateDesignResult cancelled = designPlateJoints(document.plates, contacts, options);
+  EXPECT_EQ(cancelled.status, PlateDesignStatus::Cancelled);
   EXPECT_EQ(calls, 3);
+  EXPECT_EQ(cancelled.progress.nodes, 3);
   PlateDesignOptions limited;
   limited.nodeLimit = 10;
   const PlateDesignResult result = designPlateJoints(document.plates, contacts, limited);

@@ -218,17 +218,37 @@ test('bad design input and options reject with a DesiaError with the core messag
   assert.equal((await desia.check(k9)).key, 1);
 });
 
-test('designPlate and designFrame reject as unsupported until their cores land', async () => {
-  for (const [name, kind] of [['designPlate', 'plate'], ['designFrame', 'frame']]) {
-    const expected = (error) => {
-      assert.ok(error instanceof DesiaError, String(error));
-      assert.equal(error.code, 'unsupported');
-      assert.match(error.message, new RegExp(`^${name}: the ${kind} designer core has not landed yet`));
-      return true;
-    };
-    await assert.rejects(desia[name]('{}', { parts: 4 }), expected);
-    assert.throws(() => core[name]('{}', { parts: 4 }), expected);
-  }
+test('designFrame rejects as unsupported until its core lands', async () => {
+  const expected = (error) => {
+    assert.ok(error instanceof DesiaError, String(error));
+    assert.equal(error.code, 'unsupported');
+    assert.match(error.message, /^designFrame: the frame designer core has not landed yet/);
+    return true;
+  };
+  await assert.rejects(desia.designFrame('{}', { parts: 4 }), expected);
+  assert.throws(() => core.designFrame('{}', { parts: 4 }), expected);
+});
+
+test('designPlate plans the CLI\'s joints in the worker, with progress; bad options and cut points are named', async () => {
+  const examples = path.join(root, 'examples/plate');
+  const table = fs.readFileSync(path.join(examples, 'table.json'), 'utf8');
+  const cli = runCli(['design', 'plate', '--input', path.join(examples, 'table.json'), '--output', path.join(os.tmpdir(), `desia-plan-${process.pid}.json`), '--seed', '3']);
+  assert.equal(cli.status, 0, cli.stderr);
+  const expected = JSON.parse(fs.readFileSync(path.join(os.tmpdir(), `desia-plan-${process.pid}.json`), 'utf8'));
+  let progressCalls = 0;
+  const result = await desia.designPlate(table, { seed: 3, onProgress: () => { progressCalls += 1; } });
+  assert.equal(result.status, 'success');
+  assert.equal(result.verification.verdict, 'interlocking');
+  assert.equal(result.verification.key, 1);
+  assert.deepEqual(result.document, expected, 'same seed, same plan as the CLI');
+  assert.equal(result.puz, null);
+  assert.ok(progressCalls >= 1);
+  const chair = await desia.designPlate(fs.readFileSync(path.join(examples, 'chair_cut_point.json'), 'utf8'));
+  assert.equal(chair.status, 'cut-point');
+  assert.match(chair.message, /^plate 5 is a cut point of the parts-graph/);
+  await assert.rejects(desia.designPlate(table, { parts: 4 }), (error) => error.code === 'bad-input'
+    && /unknown design option 'parts' for designPlate/.test(error.message));
+  await assert.rejects(desia.designPlate(k9), (error) => error.code === 'bad-input' && /designPlate needs a plate design/.test(error.message));
 });
 
 test('a design session in the worker steps like the synchronous one', async () => {

@@ -44,7 +44,7 @@ struct PlateDesignOptions {
   int candidates = 30;            // children kept per node (the paper's m)
   double timeLimitSeconds = 60;
   int64_t nodeLimit = 1'000'000;
-  // Called every few nodes; return false to cancel.
+  // Called at every node of the search; return false to cancel.
   std::function<bool(const PlateDesignProgress&)> onProgress;
 };
 

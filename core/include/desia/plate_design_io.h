@@ -15,4 +15,12 @@ namespace desia {
 // `removal` (each plate's direction, in order).
 std::string plateDesignToJson(const AssemblyDocument& input, const PlateDesignResult& result, int indent = 2);
 
+// Options as the package passes them ({seed, candidates, nodeLimit, timeLimit}); unknown names
+// and values out of range are BadInput.
+PlateDesignOptions parsePlateDesignOptionsJson(const std::string& text);
+std::string plateDesignProgressToJson(const PlateDesignProgress& progress);
+// {status, message, progress, puz: null, document: the plan or null, verification: its check with
+// both tests or null}, the shape of the voxel designer's result.
+std::string plateDesignResultToJson(const AssemblyDocument& input, const PlateDesignResult& result);
+
 }  // namespace desia

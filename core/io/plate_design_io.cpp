@@ -1,0 +1,78 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The plate joint planner's options and result as JSON, for the WebAssembly module.
+#include <nlohmann/json.hpp>
+
+#include "desia/check.h"
+#include "desia/error.h"
+#include "desia/plate_design_io.h"
+#include "io/json_input.h"
+
+namespace desia {
+namespace {
+
+using nlohmann::json;
+
+const char* statusName(PlateDesignStatus status) {
+  switch (status) {
+    case PlateDesignStatus::Success: return "success";
+    case PlateDesignStatus::NotFound: return "not-found";
+    case PlateDesignStatus::LimitReached: return "limit-reached";
+    case PlateDesignStatus::Cancelled: return "cancelled";
+    case PlateDesignStatus::CutPoint: return "cut-point";
+  }
+  return "not-found";
+}
+
+int64_t integerOption(const json& value, const std::string& name, int64_t lo, int64_t hi) {
+  if (!value.is_number_integer() || value.get<int64_t>() < lo || value.get<int64_t>() > hi) {
+    throwBadInput("", "design option '" + name + "' must be an integer from " + std::to_string(lo) + " to " + std::to_string(hi) +
+                          ", got " + value.dump());
+  }
+  return value.get<int64_t>();
+}
+
+}  // namespace
+
+PlateDesignOptions parsePlateDesignOptionsJson(const std::string& text) {
+  const json root = parseJsonText(text, "design options");
+  if (!root.is_object()) throwBadInput("", "design options must be an object");
+  PlateDesignOptions options;
+  for (const auto& [name, value] : root.items()) {
+    if (name == "seed") options.seed = static_cast<uint64_t>(integerOption(value, name, 0, int64_t(1) << 62));
+    else if (name == "candidates") options.candidates = static_cast<int>(integerOption(value, name, 1, 10000));
+    else if (name == "nodeLimit") options.nodeLimit = integerOption(value, name, 1, int64_t(1) << 50);
+    else if (name == "timeLimit") options.timeLimitSeconds = static_cast<double>(integerOption(value, name, 1, 10000000));
+    else throwBadInput("", "unknown design option '" + name + "' for designPlate (expected seed, candidates, nodeLimit or timeLimit)");
+  }
+  return options;
+}
+
+std::string plateDesignProgressToJson(const PlateDesignProgress& progress) {
+  return json{{"nodesVisited", progress.nodes}, {"depth", progress.depth}, {"bestDepth", progress.bestDepth},
+              {"targetParts", progress.targetParts}, {"elapsedSeconds", progress.seconds}}
+      .dump();
+}
+
+std::string plateDesignResultToJson(const AssemblyDocument& input, const PlateDesignResult& result) {
+  json root;
+  root["status"] = statusName(result.status);
+  root["message"] = result.message;
+  // Timing differs between runs; keep results reproducible.
+  root["progress"] = {{"nodesVisited", result.progress.nodes}, {"bestDepth", result.progress.bestDepth},
+                      {"targetParts", result.progress.targetParts}};
+  root["puz"] = nullptr;
+  if (result.status == PlateDesignStatus::Success) {
+    const std::string planText = plateDesignToJson(input, result, -1);
+    const AssemblyDocument plan = parseJsonDocument(planText, "plan");
+    CheckOptions options;
+    options.method = CheckMethod::Both;
+    root["document"] = json::parse(planText);
+    root["verification"] = json::parse(checkReportToJson(plan, checkAssembly(plan, options), -1));
+  } else {
+    root["document"] = nullptr;
+    root["verification"] = nullptr;
+  }
+  return root.dump();
+}
+
+}  // namespace desia
