@@ -58,7 +58,7 @@ int exportFile(const std::vector<std::string>& args) {
   const desia::AssemblyDocument document = desia::parseAssemblyText(desia::cli::readInputFile(input), input);
   const std::vector<uint8_t> bytes = desia::exportAssembly(document, exportFormat, options);
   desia::cli::writeOutputFile(output, std::string(bytes.begin(), bytes.end()));
-  const int parts = document.voxels.maxLabel();
+  const int parts = document.kind == desia::AssemblyKind::Voxel ? document.voxels.maxLabel() : document.assembly.partCount();
   std::cout << input << ": "
             << (options.part == 0 ? (parts == 1 ? std::string("1 part") : "all " + std::to_string(parts) + " parts")
                                   : "part " + std::to_string(options.part) + " of " + std::to_string(parts))

@@ -224,8 +224,34 @@ std::vector<PartSurface> partSurfaces(const AssemblyDocument& document, const st
   return surfaces;
 }
 
+namespace {
+
+// Plates (in mm) as closed meshes, one per plate, `part` 0 for all. The kind picks its meshes here.
+std::vector<uint8_t> exportPlates(const AssemblyDocument& document, ExportFormat format, const ExportOptions& options) {
+  if (format == ExportFormat::XmPuzzle) {
+    throwBadInput(options.source, "BurrTools .xmpuzzle holds voxel puzzles; export plates as stl, stl-ascii or obj");
+  }
+  std::vector<NamedMesh> meshes;
+  for (const Plate& plate : document.plates) {
+    if (options.part == 0 || options.part == plate.id) meshes.push_back({plate.id, plateMesh(plate)});
+  }
+  if (meshes.empty()) throwBadInput(options.source, "part " + std::to_string(options.part) + " is not a plate of this structure (0 = all plates)");
+  const std::string title = "plate export, " + (options.part == 0 ? std::to_string(meshes.size()) + " plates" : "plate " + std::to_string(options.part)) + ", mm";
+  std::string bytes;
+  switch (format) {
+    case ExportFormat::StlBinary: bytes = binaryStl(meshes, title); break;
+    case ExportFormat::StlAscii: bytes = asciiStl(meshes, options.part == 0 ? "structure" : "plate" + std::to_string(options.part)); break;
+    case ExportFormat::Obj: bytes = wavefrontObj(meshes, title); break;
+    case ExportFormat::XmPuzzle: break;
+  }
+  return bytesOf(bytes);
+}
+
+}  // namespace
+
 std::vector<uint8_t> exportAssembly(const AssemblyDocument& document, ExportFormat format,
                                     const ExportOptions& options) {
+  if (document.kind == AssemblyKind::Plate && !document.plates.empty()) return exportPlates(document, format, options);
   requireExportableVoxels(document, options.source);
   const int parts = document.voxels.maxLabel();
   if (options.part < 0 || options.part > parts) {

@@ -126,12 +126,11 @@ void clipEars(const std::vector<Point2>& points, std::vector<int> polygon, std::
 }
 
 // Triangles of a planar face (loops[0] the outline, the rest holes) wound counter-clockwise about
-// `outward`; vertices are appended to `mesh`.
-void addFace(const std::vector<Loop>& loops, const Vec3& outward, TriangleMesh* mesh) {
+// `outward`; the loops' vertices are mesh vertices first, first + 1, ... in loop order.
+void addFace(const std::vector<Loop>& loops, const Vec3& outward, int first, TriangleMesh* mesh) {
   const Vec3 axis = std::abs(outward[0]) < 0.6 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
   const Vec3 u = normalized(cross(outward, axis));
   const Vec3 v = cross(outward, u);
-  const int base = static_cast<int>(mesh->vertices.size());
   std::vector<Point2> points;
   std::vector<std::vector<int>> indexLoops;
   for (const Loop& loop : loops) {
@@ -139,7 +138,6 @@ void addFace(const std::vector<Loop>& loops, const Vec3& outward, TriangleMesh* 
     for (const Vec3& p : loop) {
       indices.push_back(static_cast<int>(points.size()));
       points.push_back({dot(p, u), dot(p, v)});
-      mesh->vertices.push_back(p);
     }
     indexLoops.push_back(indices);
   }
@@ -152,7 +150,7 @@ void addFace(const std::vector<Loop>& loops, const Vec3& outward, TriangleMesh* 
       bridgeHoles(points, indexLoops[0], std::vector<std::vector<int>>(indexLoops.begin() + 1, indexLoops.end()));
   std::vector<std::array<int, 3>> triangles;
   clipEars(points, polygon, &triangles);
-  for (const auto& t : triangles) mesh->triangles.push_back({base + t[0], base + t[1], base + t[2]});
+  for (const auto& t : triangles) mesh->triangles.push_back({first + t[0], first + t[1], first + t[2]});
 }
 
 Vec3 minus(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
@@ -162,8 +160,17 @@ Vec3 minus(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2
 TriangleMesh plateMesh(const Plate& plate) {
   const Vec3 axis = plateThicknessAxis(plate);
   TriangleMesh mesh;
-  addFace(plate.bottom, negated(axis), &mesh);
-  addFace(plate.top, axis, &mesh);
+  // Shared vertices: every bottom loop, then every top loop, so the faces and sides meet on
+  // common vertices and each edge is used by exactly two triangles.
+  std::vector<int> bottomStart, topStart;
+  for (const auto* face : {&plate.bottom, &plate.top}) {
+    for (const Loop& loop : *face) {
+      (face == &plate.bottom ? bottomStart : topStart).push_back(static_cast<int>(mesh.vertices.size()));
+      mesh.vertices.insert(mesh.vertices.end(), loop.begin(), loop.end());
+    }
+  }
+  addFace(plate.bottom, negated(axis), bottomStart[0], &mesh);
+  addFace(plate.top, axis, topStart[0], &mesh);
   // Sides: the quad between bottom edge k and top edge k, wound so that its normal is the side's
   // outward normal.
   for (size_t l = 0; l < plate.bottom.size(); ++l) {
@@ -172,15 +179,15 @@ TriangleMesh plateMesh(const Plate& plate) {
     const std::vector<Vec3> outward = plateSideNormals(plate, l);
     for (size_t k = 0; k < b.size(); ++k) {
       const size_t next = (k + 1) % b.size();
-      const int base = static_cast<int>(mesh.vertices.size());
-      for (const Vec3& p : {b[k], b[next], t[next], t[k]}) mesh.vertices.push_back(p);
+      const int b0 = bottomStart[l] + static_cast<int>(k), b1 = bottomStart[l] + static_cast<int>(next);
+      const int t0 = topStart[l] + static_cast<int>(k), t1 = topStart[l] + static_cast<int>(next);
       const Vec3 n = cross(minus(b[next], b[k]), minus(t[k], b[k]));
       if (dot(n, outward[k]) > 0) {
-        mesh.triangles.push_back({base, base + 1, base + 2});
-        mesh.triangles.push_back({base, base + 2, base + 3});
+        mesh.triangles.push_back({b0, b1, t1});
+        mesh.triangles.push_back({b0, t1, t0});
       } else {
-        mesh.triangles.push_back({base, base + 2, base + 1});
-        mesh.triangles.push_back({base, base + 3, base + 2});
+        mesh.triangles.push_back({b0, t1, b1});
+        mesh.triangles.push_back({b0, t0, t1});
       }
     }
   }

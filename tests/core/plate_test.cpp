@@ -400,3 +400,30 @@ TEST(PlateJointPlan, APlanDocumentKeepsItsContactsPlatesAndJointsWhenRewritten) 
 
 }  // namespace
 }  // namespace desia
+
+namespace desia {
+namespace {
+
+TEST(PlateExport, StlAndObjHoldEveryPlateAsAClosedMeshAndXmpuzzleIsRefused) {
+  const AssemblyDocument box = loadExample("mitred_box.json");
+  for (ExportFormat format : {ExportFormat::StlBinary, ExportFormat::StlAscii, ExportFormat::Obj}) {
+    ExportOptions options;
+    options.source = "box";
+    const std::vector<uint8_t> bytes = exportAssembly(box, format, options);
+    const TriangleMesh mesh = parseMesh(std::string(bytes.begin(), bytes.end()), format == ExportFormat::Obj ? "box.obj" : "box.stl");
+    EXPECT_NO_THROW(checkClosedMesh(mesh, "box")) << exportFormatName(format);
+    size_t triangles = 0;
+    for (const Plate& plate : box.plates) triangles += plateMesh(plate).triangles.size();
+    EXPECT_EQ(mesh.triangles.size(), triangles) << exportFormatName(format);
+  }
+  ExportOptions one;
+  one.part = 3;
+  const std::vector<uint8_t> single = exportAssembly(box, ExportFormat::StlBinary, one);
+  EXPECT_EQ(parseMesh(std::string(single.begin(), single.end()), "p3.stl").triangles.size(), plateMesh(box.plates[2]).triangles.size());
+  one.part = 9;
+  EXPECT_THROW(exportAssembly(box, ExportFormat::StlBinary, one), Error);
+  EXPECT_THROW(exportAssembly(box, ExportFormat::XmPuzzle, {}), Error);
+}
+
+}  // namespace
+}  // namespace desia
