@@ -22,6 +22,15 @@ if [ "${1:-}" = "design" ]; then
   exit 0
 fi
 
+if [ "${1:-}" = "plate" ]; then
+  # The plate joint planner against Table 1 (issue 8), natively and in WebAssembly. Seconds.
+  shift
+  bash scripts/build.sh native
+  bash scripts/build.sh wasm
+  node tests/benchmarks/plate_bench.mjs "$@"
+  exit 0
+fi
+
 if [ "${1:-}" = "package" ]; then
   # The npm package as a caller feels it (issue 4): worker start-up, calls through the worker,
   # abort latency, voxelize and export. About 10 seconds after the build.

@@ -1,0 +1,57 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The plate joint planner against the paper's Table 1 (plate structures), natively (the CLI, whose
+// own timing covers the planning and its verification) and in WebAssembly (node, the package's
+// synchronous core, timed around designPlate). Medians of --runs runs (default 5).
+//
+//   node tests/benchmarks/plate_bench.mjs [--runs N]
+import { spawnSync } from 'node:child_process';
+import fs from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
+import { fileURLToPath } from 'node:url';
+
+import { loadDesiaModule } from '../../wasm/index.js';
+
+const root = fileURLToPath(new URL('../../', import.meta.url));
+const cli = path.join(root, 'build/native/core/cli/desia');
+const runsArgument = process.argv.indexOf('--runs');
+const runs = runsArgument > 0 ? Number(process.argv[runsArgument + 1]) : 5;
+
+// [example file, label, the paper's time (Table 1) or null]
+const CASES = [
+  ['table.json', 'TABLE, 6 plates (Fig. 17)', '0.02 s'],
+  ['chair_repaired.json', 'CHAIR repaired, 10 plates (Fig. 18)', '0.22 s (8 plates)'],
+  ['bookshelf.json', 'BOOKSHELF, 12 plates (Fig. 1)', '0.30 s'],
+  ['mitred_box.json', 'MITRED BOX, 6 plates, 45-degree contacts', null],
+  ['bookcase_123.json', 'BOOKCASE, 123 plates', '— (largest: 33)'],
+];
+
+const median = (values) => [...values].sort((a, b) => a - b)[Math.floor(values.length / 2)];
+const format = (seconds) => (seconds < 0.1 ? `${(seconds * 1000).toFixed(1)} ms` : `${seconds.toFixed(2)} s`);
+
+const core = await loadDesiaModule();
+const scratch = fs.mkdtempSync(path.join(os.tmpdir(), 'desia-plate-bench-'));
+console.log('| design | paper | native | WebAssembly (node) | joints | nodes |');
+console.log('| --- | ---: | ---: | ---: | ---: | ---: |');
+for (const [file, label, paper] of CASES) {
+  const input = path.join(root, 'examples/plate', file);
+  const text = fs.readFileSync(input, 'utf8');
+  const native = [];
+  const wasm = [];
+  let joints = 0;
+  let nodes = 0;
+  for (let run = 0; run < runs; run += 1) {
+    const result = spawnSync(cli, ['design', 'plate', '--input', input, '--output', path.join(scratch, 'plan.json'), '--quiet'], { encoding: 'utf8' });
+    if (result.status !== 0) throw new Error(`${file}: desia design plate failed: ${result.stderr}`);
+    native.push(Number(/ in ([0-9.e-]+) s$/m.exec(result.stdout)[1]));
+    const start = performance.now();
+    const design = core.designPlate(text);
+    wasm.push((performance.now() - start) / 1000);
+    if (design.status !== 'success' || design.verification.verdict !== 'interlocking') throw new Error(`${file}: ${design.message}`);
+    joints = design.document.joints.length;
+    nodes = design.progress.nodesVisited;
+  }
+  console.log(`| ${label} | ${paper ?? '—'} | ${format(median(native))} | ${format(median(wasm))} | ${joints} | ${nodes} |`);
+}
+fs.rmSync(scratch, { recursive: true, force: true });
+console.log(`\nMedians of ${runs} runs; native: the CLI's own timing of planning and verification; WebAssembly: designPlate in node (planning, verification, the plan document and its check report).`);
