@@ -144,6 +144,25 @@ Assembly modelAssembly(const PlateGraph& graph, const std::vector<Step>& steps, 
   return assembly;
 }
 
+// Why a complete plan fails, or "" when it passes: both interlocking tests with the key (part 0)
+// as the only movable part (the DBG test is only necessary on non-orthogonal joints, so the LP
+// test has the last word), and every plate free to leave the ones after it along its direction.
+std::string planFailure(const Assembly& model, const std::vector<Vec3>& directions) {
+  const std::vector<BaseDirection> bases = computeBaseDirections(model);
+  const InterlockingResult byGraphs = testInterlockingByGraphs(model, bases);
+  if (byGraphs.verdict != Verdict::Interlocking || byGraphs.key != 0) return "dbg: " + byGraphs.reason;
+  const InterlockingResult byInequalities = testInterlockingByInequalities(model, bases);
+  if (byInequalities.verdict != Verdict::Interlocking || byInequalities.key != 0) return "lp: " + byInequalities.reason;
+  std::vector<bool> present(model.partCount(), true);
+  for (size_t k = 0; k < directions.size(); ++k) {
+    if (!isPartFreeAlong(model, &present, static_cast<int>(k), directions[k])) {
+      return "plate " + std::to_string(model.parts[k].id) + " cannot leave along its direction";
+    }
+    present[k] = false;
+  }
+  return "";
+}
+
 class PlateJointPlanner {
  public:
   PlateJointPlanner(const std::vector<Plate>& plates, const std::vector<PlateContact>& contacts, const PlateDesignOptions& options)
@@ -317,7 +336,14 @@ PlateDesignResult PlateJointPlanner::run() {
     path.push_back(pending.back().front());
     pending.back().erase(pending.back().begin());
     progress.bestDepth = std::max(progress.bestDepth, static_cast<int>(path.size()) + 1);
-    if (static_cast<int>(path.size()) + 1 == graph_.plateCount) break;  // R is the last plate
+    if (static_cast<int>(path.size()) + 1 == graph_.plateCount) {
+      // R is the last plate: a complete plan, accepted only if it verifies; else search on.
+      std::vector<Vec3> directions;
+      for (const Step& step : path) directions.push_back(step.direction);
+      if (planFailure(modelAssembly(graph_, path, plates_), directions).empty()) break;
+      path.pop_back();
+      continue;
+    }
     pending.push_back(childrenOf(path));
   }
   if (static_cast<int>(path.size()) + 1 != graph_.plateCount) {
@@ -343,27 +369,6 @@ PlateDesignResult PlateJointPlanner::run() {
   return result;
 }
 
-// Re-checks a plan with both tests and its removal order; throws Internal if it fails (the search
-// accepts only what passes, so a failure here is a bug, never a result).
-void verifyPlan(const PlateDesignResult& result) {
-  const Assembly& model = result.jointAssembly;
-  const std::vector<BaseDirection> directions = computeBaseDirections(model);
-  const InterlockingResult byGraphs = testInterlockingByGraphs(model, directions);
-  const InterlockingResult byInequalities = testInterlockingByInequalities(model, directions);
-  if (byGraphs.verdict != Verdict::Interlocking || byGraphs.key != 0 || byInequalities.verdict != Verdict::Interlocking ||
-      byInequalities.key != 0) {
-    throw Error(ErrorCode::Internal, "the joint plan did not verify (dbg: " + byGraphs.reason + "; lp: " + byInequalities.reason + ")");
-  }
-  // Removal in order: part k leaves the parts after it along its direction.
-  std::vector<bool> present(model.partCount(), true);
-  for (size_t k = 0; k + 1 < result.order.size(); ++k) {
-    if (!isPartFreeAlong(model, &present, static_cast<int>(k), result.directions[k])) {
-      throw Error(ErrorCode::Internal, "the joint plan's plate " + std::to_string(model.parts[k].id) + " cannot leave along its direction");
-    }
-    present[k] = false;
-  }
-}
-
 }  // namespace
 
 const char* jointTypeName(JointType type) {
@@ -380,7 +385,11 @@ PlateDesignResult designPlateJoints(const std::vector<Plate>& plates, const std:
   if (options.candidates < 1) throwBadInput("", "candidates must be at least 1");
   PlateJointPlanner planner(plates, contacts, options);
   PlateDesignResult result = planner.run();
-  if (result.status == PlateDesignStatus::Success) verifyPlan(result);
+  if (result.status == PlateDesignStatus::Success) {
+    // The search accepts only what passes; checking again guards the result, never a guess.
+    const std::string failure = planFailure(result.jointAssembly, result.directions);
+    if (!failure.empty()) throw Error(ErrorCode::Internal, "the joint plan did not verify: " + failure);
+  }
   return result;
 }
 
