@@ -12,6 +12,7 @@
 #include "desia/check.h"
 #include "desia/document.h"
 #include "desia/error.h"
+#include "desia/mesh.h"
 #include "desia/plate_design.h"
 #include "desia/plate_design_io.h"
 
@@ -58,9 +59,14 @@ int runPlateDesignCommand(const std::vector<std::string>& args) {
     else if (flag == "--time-limit") options.timeLimitSeconds = static_cast<double>(integerValue(flag, value, 1, 10000000));
     else usage("unknown option " + flag + " for design plate");
   }
-  if (input.empty()) usage("design plate needs --input DESIGN.json");
+  if (input.empty()) usage("design plate needs --input DESIGN.json|.obj|.stl");
   if (output.empty() || !desia::cli::hasExtension(output, ".json")) usage("design plate needs --output RESULT.json");
-  const desia::AssemblyDocument document = desia::parseAssemblyText(desia::cli::readInputFile(input), input);
+  // A design from a modelling tool (one OBJ object per plate, or an STL of separate slabs), or JSON.
+  const bool mesh = desia::cli::hasExtension(input, ".obj") || desia::cli::hasExtension(input, ".stl");
+  const std::string bytes = desia::cli::readInputFile(input);
+  const desia::AssemblyDocument document =
+      mesh ? desia::documentFromPlates(desia::platesFromMesh(desia::parseMesh(bytes, input), {}, input), {}, input)
+           : desia::parseAssemblyText(bytes, input);
   if (document.kind != desia::AssemblyKind::Plate || document.plates.empty()) {
     usage(input + ": design plate needs a plate design (kind \"plate\" with \"plates\" and no \"contacts\")");
   }

@@ -150,6 +150,22 @@ AssemblyDocument documentFromVoxels(VoxelGrid grid, std::string name) {
   return document;
 }
 
+AssemblyDocument documentFromPlates(std::vector<Plate> plates, const PlateOptions& options, const std::string& source,
+                                    std::string name) {
+  AssemblyDocument document;
+  document.kind = AssemblyKind::Plate;
+  document.name = std::move(name);
+  document.plateOptions = options;
+  validatePlates(plates, options, source);
+  const std::vector<PlateContact> contacts = computePlateContacts(plates, options);
+  requireConnectedPlates(plates, contacts, source);
+  document.assembly = assemblyFromPlates(plates, contacts);
+  document.plateCutPoints = plateCutPoints(static_cast<int>(plates.size()), contacts);
+  document.contactsFromGeometry = true;
+  document.plates = std::move(plates);
+  return document;
+}
+
 AssemblyDocument parseJsonDocument(const std::string& text, const std::string& source) {
   const json root = parseJsonText(text, source);
   if (!root.is_object()) fail(source, "", "the JSON document must be an object");
@@ -172,7 +188,7 @@ AssemblyDocument parseJsonDocument(const std::string& text, const std::string& s
   }
   if (document.kind == AssemblyKind::Plate && root.contains("plates") && !root.contains("contacts")) {
     // A plate design: parts and contacts come from the geometry (paper Section 5.2).
-    PlateOptions& options = document.plateOptions;
+    PlateOptions options;
     if (root.contains("contactTolerance")) {
       const json& tolerance = root["contactTolerance"];
       if (!tolerance.is_number() || !(tolerance.get<double>() > 0) || tolerance.get<double>() > 10) {
@@ -180,13 +196,7 @@ AssemblyDocument parseJsonDocument(const std::string& text, const std::string& s
       }
       options.contactTolerance = tolerance.get<double>();
     }
-    document.plates = parsePlates(root["plates"], source);
-    validatePlates(document.plates, options, source);
-    const std::vector<PlateContact> contacts = computePlateContacts(document.plates, options);
-    requireConnectedPlates(document.plates, contacts, source);
-    document.assembly = assemblyFromPlates(document.plates, contacts);
-    document.plateCutPoints = plateCutPoints(static_cast<int>(document.plates.size()), contacts);
-    document.contactsFromGeometry = true;
+    document = documentFromPlates(parsePlates(root["plates"], source), options, source, document.name);
   } else {
     document.assembly.parts = parseParts(root, source);
     document.assembly.contacts = parseContacts(root, document.assembly, source);

@@ -409,8 +409,18 @@ TriangleMesh parseObj(const std::string& text, const std::string& source) {
         face.push_back(objVertexIndex(tokens[k], definedSoFar, totalVertices, source, line));
       }
       for (size_t k = 1; k + 1 < face.size(); ++k) addTriangle(mesh, face[0], face[k], face[k + 1], source, line);
+      if (!mesh.groupNames.empty()) mesh.triangleGroup.resize(mesh.triangles.size(), static_cast<int>(mesh.groupNames.size()) - 1);
+    } else if (tokens[0] == "o" || tokens[0] == "g") {
+      // A new object or group: plate designs from modelling tools use one per plate.
+      std::string name;
+      for (size_t k = 1; k < tokens.size(); ++k) name += (k > 1 ? " " : "") + std::string(tokens[k]);
+      if (mesh.groupNames.empty() && !mesh.triangles.empty()) {
+        mesh.groupNames.push_back("");  // faces before the first record form a group of their own
+        mesh.triangleGroup.assign(mesh.triangles.size(), 0);
+      }
+      mesh.groupNames.push_back(name);
     }
-    // Every other record (vn, vt, vp, o, g, s, usemtl, mtllib, l, p, ...) does not shape the solid.
+    // Every other record (vn, vt, vp, s, usemtl, mtllib, l, p, ...) does not shape the solid.
   });
   return mesh;
 }

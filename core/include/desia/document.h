@@ -31,6 +31,10 @@ struct AssemblyDocument {
 AssemblyDocument parseAssemblyText(const std::string& text, const std::string& source = "<input>");
 AssemblyDocument parseJsonDocument(const std::string& text, const std::string& source = "<input>");
 AssemblyDocument documentFromVoxels(VoxelGrid grid, std::string name = "");
+// A plate design: the plates validated, their contacts computed (they must all be connected), and
+// the parts-graph's cut points found. Throws BadInput naming `source` and the plate.
+AssemblyDocument documentFromPlates(std::vector<Plate> plates, const PlateOptions& options, const std::string& source,
+                                    std::string name = "");
 
 // Serializes a document (without results). `indent` < 0 gives one line.
 std::string documentToJson(const AssemblyDocument& document, int indent = 2);

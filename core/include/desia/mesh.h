@@ -13,6 +13,10 @@ namespace desia {
 struct TriangleMesh {
   std::vector<std::array<double, 3>> vertices;
   std::vector<std::array<int, 3>> triangles;
+  // OBJ only: the object or group (`o` / `g` record) each triangle belongs to, an index into
+  // groupNames; empty when the file has no such records (and for STL).
+  std::vector<int> triangleGroup;
+  std::vector<std::string> groupNames;
 };
 
 // Limits checked while reading, before the big allocations (the CLI also caps the file size).

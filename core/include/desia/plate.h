@@ -60,6 +60,12 @@ std::vector<PlateContact> computePlateContacts(const std::vector<Plate>& plates,
 void requireConnectedPlates(const std::vector<Plate>& plates, const std::vector<PlateContact>& contacts,
                             const std::string& source);
 
+// Plates from a modelling tool's mesh: every OBJ object or group (`o` / `g`), or every connected
+// piece of a mesh without them (STL), is a closed slab whose two largest parallel faces facing
+// away from each other are the plate's faces; ids 1, 2, ... in file order, names from the groups.
+// Throws BadInput naming the plate when a piece is not such a slab.
+std::vector<Plate> platesFromMesh(const TriangleMesh& mesh, const PlateOptions& options, const std::string& source);
+
 // The parts and contacts of the structure (part ids = plate ids), as the interlocking tests read them.
 Assembly assemblyFromPlates(const std::vector<Plate>& plates, const std::vector<PlateContact>& contacts);
 
