@@ -51,6 +51,40 @@ function voxelExtents([nx, ny, nz], labels) {
   return { centroids, min, max };
 }
 
+/**
+ * The bounds of the core's part surfaces and, per part id, the sum and count of its vertices
+ * (for documents measured in their own units, such as plates in mm): the same shape of result
+ * as voxelExtents, used only to frame the camera, size the grid and explode the parts.
+ */
+function surfaceExtents(surfaces) {
+  const min = [Infinity, Infinity, Infinity];
+  const max = [-Infinity, -Infinity, -Infinity];
+  const centroids = new Map();
+  for (const { partId, positions } of surfaces) {
+    if (!(positions?.length >= 3)) continue;
+    const sums = { voxelSum: [0, 0, 0], voxelCount: 0 };
+    for (let i = 0; i + 2 < positions.length; i += 3) {
+      for (let axis = 0; axis < 3; axis += 1) {
+        const value = positions[i + axis];
+        if (value < min[axis]) min[axis] = value;
+        if (value > max[axis]) max[axis] = value;
+        sums.voxelSum[axis] += value;
+      }
+      sums.voxelCount += 1;
+    }
+    centroids.set(partId, sums);
+  }
+  return { centroids, min, max };
+}
+
+/** 1, 2 or 5 times a power of ten, close to `value` (grid spacing in the document's units). */
+function niceStep(value) {
+  if (!(value > 0) || !Number.isFinite(value)) return 1;
+  const power = 10 ** Math.floor(Math.log10(value));
+  const mantissa = value / power;
+  return (mantissa < 1.5 ? 1 : mantissa < 3.5 ? 2 : mantissa < 7.5 ? 5 : 10) * power;
+}
+
 /** A core part surface (non-indexed triangles with flat normals) as a three.js geometry. */
 function surfaceGeometry({ positions, normals }) {
   const geometry = new THREE.BufferGeometry();
@@ -61,15 +95,22 @@ function surfaceGeometry({ positions, normals }) {
   return geometry;
 }
 
-/** '+y' -> (0, 1, 0); uses the report's base directions first, then the axis notation. */
-function directionVector(label, baseDirections = []) {
+/**
+ * '+y' -> (0, 1, 0); a move's own `vector` (a plate plan's removal direction) first, then the
+ * report's base directions, then the axis notation.
+ */
+function directionVector(label, baseDirections = [], vector = null) {
+  if (Array.isArray(vector) && vector.length === 3 && vector.every(Number.isFinite)) {
+    const own = new THREE.Vector3(...vector);
+    if (own.lengthSq() > 0) return own.normalize();
+  }
   const known = baseDirections.find((direction) => direction.label === label);
   if (known) return new THREE.Vector3(...known.vector);
   const match = /^([+-])([xyz])$/.exec(String(label).trim());
   if (!match) return new THREE.Vector3();
-  const vector = new THREE.Vector3();
-  vector[match[2]] = match[1] === '+' ? 1 : -1;
-  return vector;
+  const axis = new THREE.Vector3();
+  axis[match[2]] = match[1] === '+' ? 1 : -1;
+  return axis;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -104,11 +145,22 @@ export function partColorCss(partId, keyId = null) {
 
 const EDGE_COLOR = 0x101215;
 const KEY_EDGE_COLOR = 0xfff3c4;
+/** A plate that is a cut point of its design's parts-graph. */
+const CUT_POINT_COLOR = new THREE.Color(0xff5a3c);
+const CUT_POINT_EDGE_COLOR = 0xffd2c8;
 const MOVING_EDGE_COLOR = 0xffffff;
 /** At explode factor 1 every part sits this many times farther from the centre than assembled. */
 const EXPLODE_SCALE = 1.2;
 /** How far a part keeps going after its last move before it disappears, in voxels. */
 const RUN_OUT_VOXELS = 2;
+/**
+ * Documents in their own units (plates in mm) have symbolic removal steps ("along -z"): one step
+ * moves a part this fraction of the assembly's largest extent, and the run-out is a fraction too.
+ */
+const STEP_EXTENT_FRACTION = 0.5;
+const RUN_OUT_EXTENT_FRACTION = 0.25;
+/** Grid cells per largest extent for documents in their own units (a voxel grid has 1-unit cells). */
+const GRID_CELLS_PER_EXTENT = 10;
 
 export class AssemblyView {
   #container;
@@ -127,6 +179,12 @@ export class AssemblyView {
   #step = 0;
   #exploded = 0;
   #keyId = null;
+  /** Lengths in scene units: one removal step, the run-out after the last one, a grid cell. */
+  #scale = { step: 1, runOut: RUN_OUT_VOXELS, cell: 1 };
+  /** Part names for the hover label (plates have names), and what a part is called. */
+  #partNames = new Map();
+  #partNoun = 'part';
+  #cutPoints = new Set();
   #frameRequest = 0;
   #raycaster = new THREE.Raycaster();
   #hoverLabel = null;
@@ -221,22 +279,33 @@ export class AssemblyView {
   show(document_, surfaces) {
     this.clear();
     if (!this.available) return;
-    if (document_?.kind !== 'voxel' || !document_.voxel) {
+    const voxel = document_?.kind === 'voxel' && document_.voxel;
+    // Plates (and any other kind the core gives surfaces for) are drawn in their own units.
+    if (!voxel && !(Array.isArray(surfaces) && surfaces.length > 0)) {
       this.#showNotice(`No 3D view for "${document_?.kind ?? 'unknown'}" documents yet.`);
       return;
     }
-    const { size, labels } = document_.voxel;
-    const { centroids, min, max } = voxelExtents(size, labels);
+    const { centroids, min, max } = voxel ? voxelExtents(document_.voxel.size, document_.voxel.labels) : surfaceExtents(surfaces);
     if (centroids.size === 0) {
-      this.#showNotice('The assembly has no voxels.');
+      this.#showNotice(voxel ? 'The assembly has no voxels.' : 'The assembly has no part surfaces.');
       return;
     }
     if (!Array.isArray(surfaces)) {
       this.#showNotice('No part surfaces were given for this assembly.');
       return;
     }
-    // Integer offsets keep voxel boundaries on the grid lines.
-    const offset = new THREE.Vector3(-Math.floor((min[0] + max[0]) / 2), -min[1], -Math.floor((min[2] + max[2]) / 2));
+    const extent = Math.max(max[0] - min[0], max[1] - min[1], max[2] - min[2]);
+    this.#scale = voxel
+      ? { step: 1, runOut: RUN_OUT_VOXELS, cell: 1 }
+      : { step: extent * STEP_EXTENT_FRACTION, runOut: extent * RUN_OUT_EXTENT_FRACTION, cell: niceStep(extent / GRID_CELLS_PER_EXTENT) };
+    this.#partNoun = document_?.kind === 'plate' ? 'plate' : 'part';
+    for (const plate of Array.isArray(document_?.plates) ? document_.plates : []) {
+      if (Number.isInteger(plate?.id) && typeof plate.name === 'string' && plate.name) this.#partNames.set(plate.id, plate.name);
+    }
+    // Whole-cell offsets keep voxel boundaries (and round plate coordinates) on the grid lines.
+    const cell = this.#scale.cell;
+    const snap = (value) => Math.floor(value / cell) * cell;
+    const offset = new THREE.Vector3(-snap((min[0] + max[0]) / 2), -min[1], -snap((min[2] + max[2]) / 2));
     this.#content.position.copy(offset);
     this.#floorY = min[1] + offset.y;
     this.#addParts(surfaces, centroids, min, max);
@@ -282,12 +351,13 @@ export class AssemblyView {
   }
 
   #addGrid(min, max, offset) {
-    const extent = Math.max(max[0] - min[0], max[2] - min[2]) * (1 + EXPLODE_SCALE);
-    // An even size keeps grid lines on integer coordinates, i.e. on voxel boundaries.
-    const size = 2 * Math.ceil((extent + 4) / 2);
-    const grid = new THREE.GridHelper(size, size, 0x59606e, 0x353a44);
+    const { cell } = this.#scale;
+    const extent = (Math.max(max[0] - min[0], max[2] - min[2]) * (1 + EXPLODE_SCALE)) / cell;
+    // An even number of cells keeps grid lines on whole cells, i.e. on voxel boundaries.
+    const divisions = 2 * Math.ceil((extent + 4) / 2);
+    const grid = new THREE.GridHelper(divisions * cell, divisions, 0x59606e, 0x353a44);
     grid.name = 'grid';
-    grid.position.set(0, min[1] + offset.y - 0.001, 0);
+    grid.position.set(0, min[1] + offset.y - 0.001 * cell, 0);
     this.#scene.add(grid);
   }
 
@@ -321,25 +391,34 @@ export class AssemblyView {
     this.#controls.maxDistance = distance * 10;
   }
 
-  /** Highlights the key (or the witness group on failure) and prepares the removal animation. */
+  /**
+   * Highlights the key (or, on failure, the cut points of a plate design, else the witness
+   * group) and prepares the removal animation.
+   */
   applyReport(report) {
     if (!this.available) return;
     this.#keyId = report?.key ?? null;
-    const witnessParts = new Set(report?.witness?.parts ?? []);
+    // A plate design without joints is not interlocking by nature: greying out all but its
+    // witness would hide the design. Its cut points (no joints can help) are marked instead.
+    const plate = report?.kind === 'plate';
+    const witnessParts = new Set(plate ? [] : (report?.witness?.parts ?? []));
+    this.#cutPoints = new Set(plate ? (report?.cutPoints ?? []) : []);
     for (const [partId, mesh] of this.#meshes) {
       const isKey = partId === this.#keyId;
+      const isCut = this.#cutPoints.has(partId);
       const dimmed = witnessParts.size > 0 && !witnessParts.has(partId);
       const material = mesh.material;
       const edges = mesh.children[0].material;
-      material.color.copy(isKey ? KEY_COLOR : partColor(partId));
-      material.emissive.copy(isKey ? KEY_COLOR : new THREE.Color(0)).multiplyScalar(isKey ? 0.35 : 0);
-      mesh.userData.edgeColor = isKey ? KEY_EDGE_COLOR : EDGE_COLOR;
+      const color = isKey ? KEY_COLOR : (isCut ? CUT_POINT_COLOR : null);
+      material.color.copy(color ?? partColor(partId));
+      material.emissive.copy(color ?? new THREE.Color(0)).multiplyScalar(color ? 0.35 : 0);
+      mesh.userData.edgeColor = isKey ? KEY_EDGE_COLOR : (isCut ? CUT_POINT_EDGE_COLOR : EDGE_COLOR);
       edges.color.set(mesh.userData.edgeColor);
-      mesh.userData.baseEdgeOpacity = dimmed ? 0.12 : (isKey ? 1 : 0.55);
+      mesh.userData.baseEdgeOpacity = dimmed ? 0.12 : (color ? 1 : 0.55);
       mesh.userData.baseOpacity = dimmed ? 0.18 : 1;
       material.needsUpdate = true;
     }
-    this.#motions = removalMotions(report ?? {});
+    this.#motions = removalMotions(report ?? {}, this.#scale);
     this.setDisassemblyStep(0);
     // Parts leaving along their paths should stay in the picture: frame their way out too.
     if (this.#motions.size > 0 && this.#meshes.size > 0) this.#fitCamera(this.#framingBox());
@@ -482,6 +561,9 @@ export class AssemblyView {
     this.#motions = new Map();
     this.#explodeOffsets.clear();
     this.#keyId = null;
+    this.#cutPoints = new Set();
+    this.#partNames.clear();
+    this.#partNoun = 'part';
     this.#step = 0;
     this.#framed = null;
     this.#lift.position.set(0, 0, 0);
@@ -545,17 +627,20 @@ export class AssemblyView {
     this.#hoverLabel.hidden = !hit;
     if (hit) {
       const partId = hit.object.userData.partId;
-      this.#hoverLabel.textContent = partId === this.#keyId ? `part ${partId} (key)` : `part ${partId}`;
+      const name = this.#partNames.get(partId);
+      const role = partId === this.#keyId ? ' (key)' : (this.#cutPoints.has(partId) ? ' (cut point)' : '');
+      this.#hoverLabel.textContent = `${this.#partNoun} ${partId}${role}${name ? `: ${name}` : ''}`;
     }
   }
 }
 
 /**
  * The removal motion of each part, from the report's disassembly: the waypoints of its path
- * (each move translates it by `steps` voxels along `dir`) plus a short run-out along its last
- * move. Returns Map(partId -> { index in the order, waypoints }).
+ * (each move translates it by `steps` times `scale.step` along `dir`, or along its own `vector`)
+ * plus a run-out of `scale.runOut` along its last move. Returns Map(partId -> { index in the
+ * order, waypoints }).
  */
-function removalMotions(report) {
+function removalMotions(report, scale = { step: 1, runOut: RUN_OUT_VOXELS }) {
   const motions = new Map();
   const disassembly = report.disassembly;
   if (!disassembly?.order?.length) return motions;
@@ -563,16 +648,17 @@ function removalMotions(report) {
     const path = disassembly.paths?.[index] ?? [];
     const waypoints = [new THREE.Vector3()];
     for (const move of path) {
-      const step = directionVector(move.dir, report.baseDirections).multiplyScalar(Number(move.steps) || 0);
+      const step = directionVector(move.dir, report.baseDirections, move.vector).multiplyScalar((Number(move.steps) || 0) * scale.step);
       waypoints.push(waypoints[waypoints.length - 1].clone().add(step));
     }
     const pathEnd = waypoints[waypoints.length - 1].clone();
     const pathLength = polylineLength(waypoints);
     let fadeFrom = 1;
     if (path.length > 0) {
-      const last = directionVector(path[path.length - 1].dir, report.baseDirections);
-      waypoints.push(pathEnd.clone().addScaledVector(last, RUN_OUT_VOXELS));
-      fadeFrom = pathLength / (pathLength + RUN_OUT_VOXELS);
+      const lastMove = path[path.length - 1];
+      const last = directionVector(lastMove.dir, report.baseDirections, lastMove.vector);
+      waypoints.push(pathEnd.clone().addScaledVector(last, scale.runOut));
+      fadeFrom = pathLength / (pathLength + scale.runOut);
     }
     motions.set(partId, { index, waypoints, pathEnd, fadeFrom });
   });
@@ -712,8 +798,11 @@ export class DisassemblyPlayer {
   }
 }
 
-function formatMoves(path) {
-  return (path ?? []).map((move) => `${move.dir}×${move.steps}`).join(', then ');
+/** '+z×1, then -x×2'; a plate plan's moves (with their own vector) have no step count: 'along -z'. */
+export function formatMoves(path) {
+  const moves = path ?? [];
+  if (moves.length > 0 && moves.every((move) => Array.isArray(move.vector))) return `along ${moves.map((move) => move.dir).join(', then ')}`;
+  return moves.map((move) => `${move.dir}×${move.steps}`).join(', then ');
 }
 
 /**

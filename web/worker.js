@@ -16,11 +16,14 @@
 //          op 'export'            text = the assembly, options = exportAssembly's { format,
 //                                 part, voxelSize, source }; result = bytes (transferred)
 //          op 'design'            text = the voxel shape, options = designVoxel's options (no onProgress)
+//          op 'design-plate'      text = the plate design, options = designPlate's { seed,
+//                                 candidates, timeLimit, source }; result = the DesignResult
+//                                 (document = the joint plan, or null) with `surfaces`
 //          op 'session-open'      text = the voxel shape, options = designSession's options
 //          op 'session-next' | 'session-back' | 'session-close'
 //          op 'session-choose' | 'session-preview'   options = { n } (child index)
 //   out: { type: 'ready', version }
-//        { type: 'progress', id, value }         design only: { nodesVisited, depth, bestDepth,
+//        { type: 'progress', id, value }         designs only: { nodesVisited, depth, bestDepth,
 //                                                targetParts, elapsedSeconds }, at most ~10 per
 //                                                second, always including the last one
 //        { type: 'result', id, value, elapsedMs }   elapsedMs: time spent in the core
@@ -35,7 +38,8 @@
 // Session results are snapshots { partsPlaced, targetParts, complete, childCount, document,
 // surfaces, report, moved? } (report = the core's check of the current assembly); a preview is
 // { index, document, surfaces, report }; a design result carries `surfaces` too. `surfaces` is
-// the core's partSurfaces of `document` (Float32Arrays, transferred) or null (no voxel document). One session per worker: opening one disposes the previous one.
+// the core's partSurfaces of `document` (Float32Arrays, transferred; voxel parts or plates) or
+// null (no document, or one known only by its contacts). One session per worker: opening one disposes the previous one.
 
 import { loadDesiaModule } from '../wasm/core.js';
 // The package host's helpers: progress throttling, label packing and error classification are
@@ -61,7 +65,8 @@ const OPERATIONS = {
     const document = core.parseDocument(text, options ?? {});
     return withSurfaces(core, { document }, options?.source);
   },
-  design: designOperation,
+  design: (core, text, options, context) => designOperation(core, 'designVoxel', text, options, context),
+  'design-plate': (core, text, options, context) => designOperation(core, 'designPlate', text, options, context),
   voxelize: (core, text, options, { bytes }) => {
     if (!(bytes instanceof Uint8Array)) throw Object.assign(new Error('voxelize: no mesh bytes were sent'), { code: 'bad-input' });
     const document = core.voxelize(bytes, options ?? {});
@@ -102,12 +107,12 @@ const OPERATIONS = {
   },
 };
 
-/** Runs designVoxel, posting throttled progress for request `id`. */
-function designOperation(core, text, options, { id }) {
+/** Runs designVoxel or designPlate, posting throttled progress for request `id`. */
+function designOperation(core, designer, text, options, { id }) {
   // Returning nothing from onProgress lets the search go on; the page stops it by terminating
   // the worker.
   const progress = createProgressThrottle((value) => self.postMessage({ type: 'progress', id, value }));
-  const result = core.designVoxel(text, { ...(options ?? {}), onProgress: progress.report });
+  const result = core[designer](text, { ...(options ?? {}), onProgress: progress.report });
   progress.flush();
   return withSurfaces(core, result, options?.source);
 }
@@ -138,14 +143,20 @@ function sessionSnapshot(core, extra = {}) {
   return withSurfaces(core, snapshot, 'design session');
 }
 
+/** Documents whose parts have surfaces to draw: voxel parts and plates (contact graphs have none). */
+function hasSurfaces(document) {
+  if (document?.kind === 'voxel') return true;
+  return document?.kind === 'plate' && Array.isArray(document.plates) && document.plates.length > 0;
+}
+
 /**
  * `value` (holding a `document`) with `surfaces`: the core's part surfaces of that document for
- * the 3D view (null when it is not a voxel document), as `[value, transferList]`: the labels and
+ * the 3D view (null when it is neither a voxel nor a plate document), as `[value, transferList]`: the labels and
  * the surfaces' float arrays are moved to the page, not copied.
  */
 function withSurfaces(core, value, source = '<input>') {
   const { document } = value;
-  const surfaces = document?.kind === 'voxel' ? core.partSurfaces(document, { source: String(source ?? '<input>') }) : null;
+  const surfaces = hasSurfaces(document) ? core.partSurfaces(document, { source: String(source ?? '<input>') }) : null;
   const [packed, transfer] = packForTransfer({ ...value, surfaces });
   return [packed, [...transfer, ...surfaceBuffers(surfaces)]];
 }
