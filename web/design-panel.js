@@ -2,12 +2,14 @@
 //
 // The Design panel: designs an N-part interlocking voxel puzzle from the assembly on screen
 // (all its voxels are the shape), automatically (designVoxel, with live progress) or step by
-// step (a design session). Everything runs in the worker; the panel only collects parameters,
+// step (a design session); for a plate design it plans the joints (designPlate: seed,
+// candidates, time limit; N, ranking, mode and step by step do not apply). Everything runs in the worker; the panel only collects parameters,
 // shows progress and hands finished assemblies to the page. Cancel terminates the worker (a
 // busy WebAssembly worker cannot read a message), so the page keeps what it showed before.
 //
 // For tests: body[data-design] = '' | running | success | not-found | limit-reached |
-// cancelled | error (the last outcome), #design-message (the core's message),
+// cancelled | cut-point | error (the last outcome), #design-panel[data-kind] = voxel | plate (what
+// Design will do), #design-message (the core's message),
 // #design-progress-box[data-updates] (progress messages seen in the current run),
 // #session-state[data-parts, data-children, data-complete] (the open session's node).
 
@@ -26,7 +28,16 @@ const FIELDS = {
 const NUMBER_FIELDS = ['parts', 'seed', 'candidates', 'timeLimit'];
 const FIELD_NAMES = { parts: 'Parts N', seed: 'Seed', candidates: 'Candidates m', timeLimit: 'Time limit' };
 
+/** The fields designPlate takes; the others are voxel-only and disabled for plates. */
+const PLATE_FIELDS = ['seed', 'candidates', 'timeLimit'];
+
 const ui = {
+  panel: byId('design-panel'),
+  voxelHint: byId('design-hint'),
+  plateHint: byId('design-plate-hint'),
+  plateNote: byId('design-plate-note'),
+  sessionPlateNote: byId('session-plate-note'),
+  voxelOnlyFields: [byId('design-parts-field'), byId('design-rank-field'), byId('design-mode-field')],
   form: byId('design-form'),
   designButton: byId('design-button'),
   cancelButton: byId('design-cancel'),
@@ -60,7 +71,7 @@ export function defaultParts(voxels) {
 
 /** 'Cube_4x4x4_origin.puz' -> 'Cube_4x4x4'; names of earlier designs lose their suffix too. */
 function baseName(name) {
-  return name.replace(/\.[^.]*$/, '').replace(/_N\d+_seed\d+$/, '').replace(/_step\d+of\d+(_child\d+)?$/, '').replace(/_origin$/, '');
+  return name.replace(/\.[^.]*$/, '').replace(/_N\d+_seed\d+$/, '').replace(/_plan_seed\d+$/, '').replace(/_step\d+of\d+(_child\d+)?$/, '').replace(/_origin$/, '');
 }
 
 function seconds(ms) {
@@ -78,8 +89,10 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
   let partsTouched = false;
   /** The open step-by-step session: { generation, base, snapshot }, or null. */
   let session = null;
-  /** The latest run (design or session step): { started, latest, updates, clock, withProgress }. */
+  /** The latest run (design or session step): { started, latest, updates, clock, withProgress, noun }. */
   let run = null;
+  /** The kind of assembly on screen: 'plate' designs joints, anything else voxels. */
+  let kind = 'voxel';
 
   // -------------------------------------------------------------------------------------------
   // Parameters
@@ -108,11 +121,12 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
    */
   function readOptions() {
     const options = {};
-    for (const key of NUMBER_FIELDS) {
+    for (const key of kind === 'plate' ? PLATE_FIELDS : NUMBER_FIELDS) {
       const field = FIELDS[key];
       if (field.validity.badInput) throw new Error(`${FIELD_NAMES[key]}: not a number`);
       if (field.value.trim() !== '') options[key] = Number(field.value);
     }
+    if (kind === 'plate') return options;
     options.rank = FIELDS.rank.value;
     options.mode = FIELDS.mode.value;
     return options;
@@ -128,12 +142,12 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
     ui.message.hidden = !message;
   }
 
-  function begin(label, { withProgress }) {
+  function begin(label, { withProgress, noun = 'parts placed' }) {
     busy = true;
     setBusy(true, label);
     document.body.dataset.design = 'running';
     ui.message.hidden = true;
-    run = { started: performance.now(), latest: null, updates: 0, clock: 0, withProgress };
+    run = { started: performance.now(), latest: null, updates: 0, clock: 0, withProgress, noun };
     if (withProgress) {
       ui.progressBox.hidden = false;
       ui.progressBox.dataset.updates = '0';
@@ -166,7 +180,7 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
     renderProgress();
   }
 
-  /** Parts placed of N (the deepest node so far), nodes, current depth, wall-clock time. */
+  /** Parts placed (plates joined) of N (the deepest node so far), nodes, current depth, wall-clock time. */
   function renderProgress() {
     const elapsed = seconds(performance.now() - run.started);
     const latest = run.latest;
@@ -176,7 +190,7 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
     }
     ui.progress.max = latest.targetParts;
     ui.progress.value = latest.bestDepth;
-    ui.progressText.textContent = `${latest.bestDepth} of ${latest.targetParts} parts placed · `
+    ui.progressText.textContent = `${latest.bestDepth} of ${latest.targetParts} ${run.noun} · `
       + `${latest.nodesVisited} nodes visited · depth ${latest.depth} · ${elapsed}`;
   }
 
@@ -193,7 +207,7 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
   function readRequest() {
     const shape = getShape();
     if (!shape) {
-      setOutcome('error', 'Load a voxel shape first (an example, your own .puz / .json, or a mesh to voxelize).');
+      setOutcome('error', 'Load a voxel shape or a plate design first (an example, your own .puz / .json, or a mesh to voxelize).');
       return null;
     }
     try {
@@ -206,6 +220,7 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
 
   async function design() {
     if (busy) return;
+    if (kind === 'plate') return designPlate();
     const request = readRequest();
     if (!request) return;
     const { shape, options } = request;
@@ -234,10 +249,47 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
     }
   }
 
-  function cancelledMessage(latest, elapsed) {
+  /**
+   * Plans the joints of the plate design on screen (designPlate in the worker). A plan is shown
+   * with its plates (plate 1 the key), its verification, joints and planned removal; a cut point
+   * or a failed search shows the core's message.
+   */
+  async function designPlate() {
+    const request = readRequest();
+    if (!request) return;
+    const { shape, options } = request;
+    syncUrl();
+    begin('Planning joints…', { withProgress: true, noun: 'plates joined' });
+    try {
+      const { value: result, elapsedMs } = await core.run('design-plate', shape.text, { ...options, source: shape.name }, { onProgress });
+      // The result's progress is the final count (a finished plan has every plate joined).
+      if (result.progress) run.latest = { depth: 0, ...run.latest, ...result.progress };
+      // A cut point is found before any search: there is no progress to show.
+      if (result.status === 'cut-point') run.latest = null;
+      end();
+      if (result.status === 'success' && result.document) {
+        showAssembly({
+          name: `${baseName(shape.name)}_plan_seed${options.seed ?? 1}.json`,
+          text: `${JSON.stringify(result.document, null, 2)}\n`,
+          document: result.document,
+          surfaces: result.surfaces,
+          report: result.verification,
+          elapsedMs,
+          timingLabel: 'Design time',
+        });
+      }
+      setOutcome(result.status, result.message);
+    } catch (error) {
+      const elapsed = end();
+      if (error.cancelled) setOutcome('cancelled', cancelledMessage(run.latest, elapsed, 'plates'));
+      else setOutcome('error', error.message);
+    }
+  }
+
+  function cancelledMessage(latest, elapsed, noun = 'parts') {
     if (!latest) return `Cancelled after ${seconds(elapsed)}, before the first node.`;
     return `Cancelled after ${seconds(elapsed)}: the deepest node had ${latest.bestDepth} of `
-      + `${latest.targetParts} parts (${latest.nodesVisited} nodes visited).`;
+      + `${latest.targetParts} ${noun} (${latest.nodesVisited} nodes visited).`;
   }
 
   // -------------------------------------------------------------------------------------------
@@ -274,6 +326,7 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
   }
 
   async function startSession() {
+    if (kind === 'plate') return;
     const request = readRequest();
     if (!request) return;
     const { shape, options } = request;
@@ -346,9 +399,20 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
   function refreshControls() {
     const alive = sessionAlive();
     const childCount = alive ? session.snapshot.childCount : 0;
+    const plate = kind === 'plate';
+    ui.panel.dataset.kind = kind;
+    ui.panel.setAttribute('aria-label', plate ? 'Plan the joints of a plate design' : 'Design a voxel puzzle');
+    ui.voxelHint.hidden = plate;
+    ui.plateHint.hidden = !plate;
+    ui.plateNote.hidden = !plate;
+    ui.sessionPlateNote.hidden = !plate;
+    for (const field of ui.voxelOnlyFields) {
+      field.hidden = plate;
+      field.querySelector('input, select').disabled = plate;
+    }
     ui.designButton.disabled = busy;
     ui.cancelButton.disabled = !busy;
-    ui.sessionStart.disabled = busy;
+    ui.sessionStart.disabled = busy || plate;
     ui.sessionStart.textContent = alive ? 'Restart' : 'Start';
     ui.sessionNext.disabled = busy || !alive || childCount === 0;
     ui.sessionBack.disabled = busy || !alive || session.snapshot.partsPlaced <= 1;
@@ -387,6 +451,16 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
   return {
     get busy() {
       return busy;
+    },
+    /**
+     * The assembly on screen is of `kind` ('voxel', 'plate', ...): plates get the joint planner
+     * (and no N, ranking, mode or step by step). A voxel session stays open across plate views.
+     */
+    setKind(next) {
+      const plate = next === 'plate';
+      if (plate === (kind === 'plate')) return;
+      kind = plate ? 'plate' : 'voxel';
+      refreshControls();
     },
     /** A new shape is on screen: N follows its size until the user sets N. */
     shapeLoaded(voxelCount) {

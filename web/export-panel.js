@@ -15,9 +15,10 @@ import { byId, element } from './dom.js';
 const FORMATS = {
   puz: { op: 'to-puz', extension: 'puz', type: 'text/plain', perPart: false, voxelOnly: true },
   json: { op: 'document-json', extension: 'json', type: 'application/json', perPart: false, voxelOnly: false },
-  stl: { op: 'export', extension: 'stl', type: 'model/stl', perPart: true, voxelOnly: false },
-  'stl-ascii': { op: 'export', extension: 'stl', type: 'model/stl', perPart: true, voxelOnly: false },
-  obj: { op: 'export', extension: 'obj', type: 'model/obj', perPart: true, voxelOnly: false },
+  // The core's mesh export writes voxel parts (plates and contact graphs are refused).
+  stl: { op: 'export', extension: 'stl', type: 'model/stl', perPart: true, voxelOnly: true },
+  'stl-ascii': { op: 'export', extension: 'stl', type: 'model/stl', perPart: true, voxelOnly: true },
+  obj: { op: 'export', extension: 'obj', type: 'model/obj', perPart: true, voxelOnly: true },
   xmpuzzle: { op: 'export', extension: 'xmpuzzle', type: 'application/octet-stream', perPart: false, voxelOnly: true },
 };
 /** Object URLs of downloads are freed after this; the browser has read the blob by then. */
@@ -71,9 +72,11 @@ export function createExportPanel({ core }) {
     const voxel = assembly?.kind === 'voxel';
     for (const option of ui.format.options) {
       const known = FORMATS[option.value];
-      // .puz and .xmpuzzle hold voxel grids only; SVG waits for plates (disabled in the HTML).
+      // .puz, .xmpuzzle, STL and OBJ hold voxel parts only; SVG waits for plates (disabled in the HTML).
       if (known) option.disabled = known.voxelOnly && assembly !== null && !voxel;
     }
+    // A plate design or plan is saved as its JSON document.
+    if (assembly && !voxel && ui.format.selectedOptions[0]?.disabled) ui.format.value = 'json';
     ui.part.disabled = !assembly || !format?.perPart;
     ui.button.disabled = !assembly || busy || exporting || !format || ui.format.selectedOptions[0]?.disabled;
   }

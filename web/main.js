@@ -13,7 +13,7 @@
 
 import { byId, element } from './dom.js';
 import { AssemblyView, createPlaybackControls } from './view.js';
-import { highlightRemovalStep, renderReport, resetReport } from './report.js';
+import { highlightRemovalStep, renderPlan, renderReport, resetReport, withPlannedRemoval } from './report.js';
 import { CoreWorker, MAX_FAILED_STARTS } from './worker-client.js';
 import { createDesignPanel } from './design-panel.js';
 import { readUrlState, writeUrlState } from './url-state.js';
@@ -25,8 +25,9 @@ import { keepForOffline, registerServiceWorker } from './offline.js';
 // Configuration
 
 /**
- * Bundled voxel files (copies of the original authors' results and input shapes), served from
- * this origin. Shapes are one-part assemblies to design from.
+ * Bundled voxel files (copies of the original authors' results and input shapes) and plate
+ * designs (examples/plate/, in mm), served from this origin. Shapes are one-part assemblies to
+ * design from; plate designs have no joints yet (Design plans them).
  */
 const EXAMPLES = [
   { file: 'Cube_4x4x4_K9.puz', label: 'Cube 4×4×4, 9 parts' },
@@ -40,8 +41,20 @@ const EXAMPLES = [
   { file: 'Cube_hollow_4x4x4_origin.puz', label: 'Hollow cube 4×4×4', shape: true },
   { file: 'bunny_origin.puz', label: 'Bunny', shape: true },
   { file: 'dog_origin.puz', label: 'Dog', shape: true },
+  { file: 'table.json', label: 'Table, 6 plates', plate: true },
+  { file: 'chair_cut_point.json', label: 'Chair with a cut point, 8 plates', plate: true },
+  { file: 'chair_repaired.json', label: 'Chair repaired, 10 plates', plate: true },
+  { file: 'mitred_box.json', label: 'Mitred box, 6 plates', plate: true },
+  { file: 'bookshelf.json', label: 'Bookshelf, 12 plates', plate: true },
+  { file: 'bookcase_123.json', label: 'Bookcase, 123 plates', plate: true },
 ];
 const EXAMPLES_URL = new URL('../examples/voxel/', import.meta.url);
+const PLATE_EXAMPLES_URL = new URL('../examples/plate/', import.meta.url);
+
+function exampleUrl(file) {
+  const example = EXAMPLES.find((candidate) => candidate.file === file);
+  return new URL(file, example?.plate ? PLATE_EXAMPLES_URL : EXAMPLES_URL);
+}
 const USER_FILE_OPTION = '__user-file__';
 
 /** Larger inputs are refused before reading: a voxel file this big is surely a mistake. */
@@ -123,9 +136,11 @@ let current = null;
 let loadGeneration = 0; // Only the newest load may touch the page.
 let lastUserFile = null; // The user's last file, so its select entry can load it again.
 
+/** `assembly` = { name, text } (null: nothing on screen); it keeps the report's kind. */
 function setCurrent(assembly, report = null) {
   exportPanel.setAssembly(assembly, report);
-  current = assembly;
+  current = assembly ? { ...assembly, kind: report?.kind ?? null } : null;
+  if (current) designPanel.setKind(current.kind);
   ui.downloadButton.disabled = !current;
   ui.downloadButton.textContent = isJsonName(current?.name) ? 'Download .json' : 'Download .puz';
 }
@@ -152,12 +167,16 @@ function showAssembly({ name, text, document: document_, surfaces, report, elaps
   hideError();
   view.show(document_, surfaces);
   setCurrent({ name, text }, report);
-  renderReport(report, elapsedMs, timingLabel);
-  view.applyReport(report);
-  setUpDisassemblySlider(view.available ? report.disassembly : null);
+  // A plate plan is played along its own planned removal directions.
+  const shown = withPlannedRemoval(report, document_);
+  renderReport(shown, elapsedMs, timingLabel);
+  renderPlan(document_);
+  view.applyReport(shown);
+  setUpDisassemblySlider(view.available ? shown.disassembly : null);
   setStatus('ready');
-  // Designs are verified with the graph test; another chosen test runs on the result as well.
-  if (report.method && report.method !== ui.methodSelect.value) loadAssembly(name, async () => text);
+  // Voxel designs are verified with the graph test; another chosen test runs on the result as
+  // well (plate plans are verified with both tests already).
+  if (report.method && report.method !== 'both' && report.method !== ui.methodSelect.value) loadAssembly(name, async () => text);
 }
 
 /**
@@ -183,9 +202,12 @@ async function loadAssembly(name, readText, { origin = name } = {}) {
     const { value: report, elapsedMs } = await core.run('check', text, { method: ui.methodSelect.value, source: name });
     if (!isCurrent()) return;
     setCurrent({ name, text }, report);
-    renderReport(report, elapsedMs);
-    view.applyReport(report);
-    setUpDisassemblySlider(view.available ? report.disassembly : null);
+    // A plate plan opened from a file plays its own removal, as it did when it was designed.
+    const shown = withPlannedRemoval(report, document_);
+    renderReport(shown, elapsedMs);
+    renderPlan(document_);
+    view.applyReport(shown);
+    setUpDisassemblySlider(view.available ? shown.disassembly : null);
     if (document_.kind === 'voxel') designPanel.shapeLoaded(voxelCount(document_));
     setStatus('ready');
   } catch (error) {
@@ -203,7 +225,7 @@ async function loadAssembly(name, readText, { origin = name } = {}) {
 }
 
 async function fetchExampleText(file) {
-  const url = new URL(file, EXAMPLES_URL);
+  const url = exampleUrl(file);
   const response = await fetch(url);
   if (!response.ok) throw new Error(`cannot fetch example ${url.pathname} (HTTP ${response.status})`);
   return response.text();
@@ -336,14 +358,17 @@ function fillExampleSelect() {
   userOption.hidden = true;
   const puzzles = document.createElement('optgroup');
   puzzles.label = 'Puzzles';
-  puzzles.append(...EXAMPLES.filter((example) => !example.shape).map(exampleOption));
+  puzzles.append(...EXAMPLES.filter((example) => !example.shape && !example.plate).map(exampleOption));
   const shapes = document.createElement('optgroup');
   shapes.label = 'Shapes to design from';
   shapes.append(...EXAMPLES.filter((example) => example.shape).map(exampleOption));
   const meshes = document.createElement('optgroup');
   meshes.label = 'Meshes to voxelize';
   meshes.append(...meshInput.examples.map(exampleOption));
-  ui.exampleSelect.replaceChildren(userOption, puzzles, shapes, meshes);
+  const plates = document.createElement('optgroup');
+  plates.label = 'Plate structures';
+  plates.append(...EXAMPLES.filter((example) => example.plate).map(exampleOption));
+  ui.exampleSelect.replaceChildren(userOption, puzzles, shapes, meshes, plates);
 }
 
 function initialExample() {
@@ -411,7 +436,7 @@ function main() {
   registerServiceWorker();
   // Once the first assembly is on screen, keep the playground's files for offline use.
   loadExample(file).finally(() => keepForOffline([
-    ...EXAMPLES.map((example) => new URL(example.file, EXAMPLES_URL).href),
+    ...EXAMPLES.map((example) => exampleUrl(example.file).href),
     ...meshInput.exampleUrls,
   ]));
 }

@@ -4,6 +4,9 @@
 // by dbg-panel.js, and as a table). It formats the core's check report (the same fields as
 // `desia check --json`) and nothing else.
 //
+// Plate designs add their cut points (#cut-points[data-plates]) and, for a joint plan, its joints
+// (#joints li[data-mover, data-other, data-type, data-direction], #joints-details[data-count]).
+//
 // For tests: #verdict[data-verdict, data-key], #paths li[aria-current] (the removal shown by the
 // disassembly animation), #dbg-panel (see dbg-panel.js).
 
@@ -31,6 +34,10 @@ const ui = {
   paths: byId('paths'),
   graphs: byId('graphs'),
   dbgPanel: byId('dbg-panel'),
+  cutPoints: byId('cut-points'),
+  jointsDetails: byId('joints-details'),
+  jointsSummary: byId('joints-summary'),
+  joints: byId('joints'),
 };
 
 const METHOD_NAMES = { dbg: 'graphs (DBG)', lp: 'linear program (LP)', both: 'graphs and linear program' };
@@ -67,7 +74,49 @@ function formatMethods(methods) {
 
 function formatMoves(path) {
   if (!path?.length) return 'stays (last part)';
+  // A plate plan's removal is a direction, not a number of steps (see planDisassembly).
+  if (path.every((move) => Array.isArray(move.vector))) return `along ${path.map((move) => move.dir).join(', then ')}`;
   return path.map((move) => `${move.dir}×${move.steps}`).join(', then ');
+}
+
+/**
+ * A direction vector as the report writes it: '-z' for an axis (up to rounding, such as
+ * -0.9999999999999999), else '(0.707, 0, -0.707)'.
+ */
+export function formatDirection(vector) {
+  if (!Array.isArray(vector) || vector.length !== 3) return 'none';
+  const length = Math.hypot(...vector);
+  if (!(length > 0)) return 'none';
+  const unit = vector.map((value) => value / length);
+  const axis = unit.findIndex((value) => Math.abs(Math.abs(value) - 1) < 1e-9);
+  if (axis >= 0) return `${unit[axis] > 0 ? '+' : '-'}${'xyz'[axis]}`;
+  const rounded = (value) => {
+    const text = value.toFixed(3).replace(/\.?0+$/, '');
+    return text === '-0' ? '0' : text;
+  };
+  return `(${unit.map(rounded).join(', ')})`;
+}
+
+/**
+ * A plate plan's removal (document.removal: [{ part, direction }], the key first) as the
+ * disassembly the view plays and the report lists: each plate moves along its planned
+ * direction, in order; the last one stays. Null for documents without a removal.
+ */
+export function planDisassembly(document_) {
+  const removal = document_?.kind === 'plate' && Array.isArray(document_.removal) ? document_.removal : null;
+  if (!removal?.length) return null;
+  return {
+    order: removal.map((step) => step.part),
+    paths: removal.map((step) => (Array.isArray(step.direction)
+      ? [{ dir: formatDirection(step.direction), vector: step.direction, steps: 1 }]
+      : [])),
+  };
+}
+
+/** The report to show for `document_`: a plate plan's own removal replaces the check's disassembly. */
+export function withPlannedRemoval(report, document_) {
+  const disassembly = planDisassembly(document_);
+  return disassembly ? { ...report, disassembly, disassemblyFailure: null } : report;
 }
 
 function formatComponents(components) {
@@ -104,6 +153,43 @@ export function renderReport(report, elapsedMs, timingLabel = 'Check time') {
   renderPaths(report.disassembly);
   renderGraphs(report.graphs);
   renderBlockingGraphs(ui.dbgPanel, report);
+  renderCutPoints(report.cutPoints);
+}
+
+/** A plate whose removal splits the parts-graph: no joints can make the design interlocking. */
+function renderCutPoints(cutPoints) {
+  const plates = Array.isArray(cutPoints) ? cutPoints : [];
+  ui.cutPoints.hidden = plates.length === 0;
+  ui.cutPoints.dataset.plates = plates.join(',');
+  ui.cutPoints.textContent = plates.length === 0 ? ''
+    : `${plates.length === 1 ? 'Cut point: plate' : 'Cut points: plates'} ${plates.join(', ')} — no joints can make this `
+      + `interlocking; add a part that bypasses ${plates.length === 1 ? 'it' : 'them'}.`;
+}
+
+const JOINT_TYPES = { halved: 'halved', 'mortise-tenon': 'mortise and tenon', empty: 'no joint (empty)' };
+
+/**
+ * The joints of a plate plan (document.joints: [{ mover, other, type, direction }]): which two
+ * plates, the joint's type and the direction the mover slides out along. Hidden for documents
+ * without joints.
+ */
+export function renderPlan(document_) {
+  const joints = document_?.kind === 'plate' && Array.isArray(document_.joints) ? document_.joints : [];
+  const names = new Map();
+  for (const plate of Array.isArray(document_?.plates) ? document_.plates : []) {
+    if (typeof plate?.name === 'string' && plate.name) names.set(plate.id, plate.name);
+  }
+  const plate = (id) => (names.has(id) ? `${id} (${names.get(id)})` : String(id));
+  ui.jointsDetails.hidden = joints.length === 0;
+  ui.jointsDetails.dataset.count = String(joints.length);
+  ui.jointsSummary.textContent = `Joints (${joints.length})`;
+  ui.joints.replaceChildren(...joints.map((joint) => {
+    const direction = formatDirection(joint.direction);
+    const item = element('li', `plates ${plate(joint.mover)} – ${plate(joint.other)}: ${JOINT_TYPES[joint.type] ?? joint.type}, `
+      + `${joint.mover} slides along ${direction}`);
+    Object.assign(item.dataset, { mover: String(joint.mover), other: String(joint.other), type: String(joint.type), direction });
+    return item;
+  }));
 }
 
 /** Plates and contact graphs can have many base directions: say how many before listing them. */
@@ -162,5 +248,7 @@ export function resetReport(message) {
   ui.paths.replaceChildren();
   ui.graphs.replaceChildren();
   clearBlockingGraphs(ui.dbgPanel);
+  renderCutPoints([]);
+  renderPlan(null);
 }
 
