@@ -20,6 +20,7 @@
 #include "desia/document.h"
 #include "desia/error.h"
 #include "desia/mesh.h"
+#include "desia/plate.h"
 #include "desia/voxel_design.h"
 #include "desia/voxelize.h"
 
@@ -79,6 +80,12 @@ inline void meshTarget(const uint8_t* data, size_t size) {
   detail::refusalsAllowed([&] { voxelizeCoarse(parseStl(bytes, "fuzz.stl")); });
   detail::refusalsAllowed([&] { parseMesh(bytes, "fuzz.obj"); });
   detail::refusalsAllowed([&] { parseMesh(bytes, "fuzz.stl"); });
+  // Plate designs from modelling tools: each object (or slab) a plate, then the whole structure.
+  detail::refusalsAllowed([&] {
+    const TriangleMesh mesh = parseObj(bytes, "fuzz.obj");
+    if (mesh.triangles.size() > 2000) return;
+    documentFromPlates(platesFromMesh(mesh, {}, "fuzz.obj"), {}, "fuzz.obj");
+  });
 }
 
 // The design options and appearance-group readers (package options, --groups files) against a fixed
