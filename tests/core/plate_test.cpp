@@ -184,8 +184,15 @@ std::array<Vec3, 3> rotation(double ax, double ay, double az) {
 
 TEST(PlateRobustness, VerdictsAndContactsSurviveTurningTheWholeDesign) {
   const double q = M_PI / 2;
-  const std::vector<std::array<double, 3>> angles{{q, 0, 0}, {0, q, q}, {2 * q, 0, 3 * q}, {q, 2 * q, q},
-                                                  {0.3, 1.1, -0.7}, {2.0, -0.4, 0.9}, {-1.3, 0.2, 2.6}};
+  // All 24 right-angle rotations (compositions of quarter turns about x, y and z, with their
+  // cos/sin residues; duplicates of the same rotation are harmless) and three arbitrary ones.
+  std::vector<std::array<double, 3>> angles;
+  for (int x = 0; x < 4; ++x) {
+    for (int y = 0; y < 4; ++y) angles.push_back({x * q, y * q, 0});
+  }
+  for (int x = 0; x < 4; ++x) angles.push_back({x * q, 0, q});
+  for (int x = 0; x < 4; ++x) angles.push_back({x * q, 0, 3 * q});
+  angles.insert(angles.end(), {{0.3, 1.1, -0.7}, {2.0, -0.4, 0.9}, {-1.3, 0.2, 2.6}});
   for (const char* name : {"table.json", "chair_cut_point.json", "chair_repaired.json", "mitred_box.json"}) {
     const AssemblyDocument original = loadExample(name);
     CheckOptions options;
