@@ -125,6 +125,7 @@ const playback = createPlaybackControls(view, {
 // A small read-only handle for tests and debugging in the console.
 window.__desiaView = {
   partPositions: () => view.partPositions(),
+  framing: () => view.framing(),
   get step() { return view.disassemblyStep; },
   get steps() { return playback.player.length; },
   get playing() { return playback.player.playing; },

@@ -536,6 +536,18 @@ export class AssemblyView {
     this.requestRender();
   }
 
+  /**
+   * How the view is framed (for tests and debugging), in scene units (the document's: voxels,
+   * or mm for plates): the camera's distance to its target, the grid cell, one removal step.
+   */
+  framing() {
+    return {
+      distance: this.available ? this.#camera.position.distanceTo(this.#controls.target) : 0,
+      gridCell: this.#scale.cell,
+      removalStep: this.#scale.step,
+    };
+  }
+
   /** Positions of the visible parts (for tests and debugging): { partId: [x, y, z] } in scene units. */
   partPositions() {
     const positions = {};

@@ -1,0 +1,303 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Plate structures in the playground, in headless Chromium: the TABLE example is drawn (one mesh
+// per plate, framed in mm) and checked; Design plans its joints in the worker (interlocking, key
+// 1, ten joints listed, the disassembly moves each plate along its planned direction); the plan
+// downloads as JSON that the native CLI verifies; the CHAIR with a cut point shows the core's
+// cut-point message; the voxel-only controls are hidden or disabled for plates; a long plan (the
+// 123-plate BOOKCASE) shows progress and is cancelled.
+//
+//   node --test tests/browser/plates.test.mjs
+//
+// Needs what playground.test.mjs needs, plus the native CLI (build/native/core/cli/desia; bash
+// scripts/build.sh native). Screenshots go to test-artifacts/plates-*.png.
+
+import { after, before, describe, it } from 'node:test';
+import assert from 'node:assert/strict';
+import { spawnSync } from 'node:child_process';
+import { existsSync } from 'node:fs';
+import { readFile, writeFile } from 'node:fs/promises';
+import path from 'node:path';
+import {
+  ARTIFACTS_DIR, REPO_ROOT, assertInterlockingWithKey, checkPrerequisites, openBrowser, pageState, screenshot,
+  waitForReady,
+} from './support.mjs';
+
+const TABLE = 'table.json';
+const CHAIR = 'chair_cut_point.json';
+const BOOKCASE = 'bookcase_123.json';
+/** The name the page gives the TABLE's plan with seed 1. */
+const TABLE_PLAN = 'table_plan_seed1.json';
+const CLI = path.join(REPO_ROOT, 'build/native/core/cli/desia');
+const DESIGN_TIMEOUT_MS = 30_000;
+
+async function designState(page) {
+  return page.evaluate(() => ({
+    outcome: document.body.dataset.design ?? '',
+    message: document.querySelector('#design-message').hidden ? '' : document.querySelector('#design-message').textContent,
+    updates: Number(document.querySelector('#design-progress-box').dataset.updates ?? 0),
+    progressText: document.querySelector('#design-progress-text').textContent,
+    kind: document.querySelector('#design-panel').dataset.kind,
+  }));
+}
+
+/** The joint list of the plan on screen: [{ mover, other, type, direction, text }]. */
+async function joints(page) {
+  return page.$$eval('#joints li', (items) => items.map((item) => ({ ...item.dataset, text: item.textContent })));
+}
+
+/** Clicks Design and waits for its outcome. */
+async function design(page, fields = {}) {
+  for (const [name, value] of Object.entries(fields)) await page.fill(`#design-form [name="${name}"]`, String(value));
+  await page.click('#design-button');
+  await page.waitForFunction(() => document.body.dataset.design !== 'running', null, { timeout: DESIGN_TIMEOUT_MS });
+  return designState(page);
+}
+
+/** The scene's bounding box of the visible parts' positions is not enough: read the camera framing too. */
+async function viewState(page) {
+  return page.evaluate(() => ({
+    meshes: document.querySelector('#viewport').dataset.parts,
+    step: document.querySelector('#viewport').dataset.step,
+    positions: window.__desiaView.partPositions(),
+    steps: window.__desiaView.steps,
+    label: document.querySelector('#disassembly-step').textContent,
+    moves: document.querySelector('#disassembly-moves').textContent,
+  }));
+}
+
+describe('plate structures in the playground (headless Chromium)', { timeout: 120_000 }, () => {
+  let browser;
+  let server;
+  let page;
+  const pageErrors = [];
+
+  before(async () => {
+    checkPrerequisites();
+    for (const file of [TABLE, CHAIR, BOOKCASE]) {
+      if (!existsSync(path.join(REPO_ROOT, 'examples/plate', file))) throw new Error(`examples/plate/${file} is missing`);
+    }
+    if (!existsSync(CLI)) throw new Error(`the native CLI is missing: run bash scripts/build.sh native (${CLI} not found)`);
+    browser = await openBrowser({ acceptDownloads: true, viewport: { width: 1400, height: 900 } });
+    ({ server, page } = browser);
+    page.on('pageerror', (error) => pageErrors.push(error.message));
+  });
+
+  after(async () => {
+    await browser?.close();
+  });
+
+  it('lists the plate examples and draws the TABLE with its check', async () => {
+    await page.goto(server.url);
+    const groups = await page.$$eval('#example-select optgroup', (list) => list.map((group) => ({
+      label: group.label, files: [...group.querySelectorAll('option')].map((option) => option.value),
+    })));
+    const plates = groups.find((group) => group.label === 'Plate structures');
+    assert.ok(plates, `no "Plate structures" group: ${JSON.stringify(groups.map((group) => group.label))}`);
+    assert.deepEqual(plates.files, [TABLE, CHAIR, 'chair_repaired.json', 'mitred_box.json', 'bookshelf.json', BOOKCASE]);
+
+    await page.selectOption('#example-select', TABLE);
+    const state = await waitForReady(page, TABLE);
+    assert.equal(state.verdictCode, 'not-interlocking', 'a design without joints is not interlocking');
+    assert.equal(state.verdict, 'Not interlocking');
+    assert.equal(state.parts, '6');
+    assert.equal(await page.isHidden('#cut-points'), true, 'the TABLE has no cut point');
+    assert.equal(await page.isHidden('#joints-details'), true, 'a design input has no joints yet');
+    if (state.webgl === 'on') {
+      assert.equal(state.meshes, '6', 'one mesh per plate');
+      // The plates are in mm: the camera frames the table (about 1000 x 718 x 600) and its
+      // removal paths, not one voxel; the grid has 100 mm cells; a removal step is half its size.
+      const framing = await page.evaluate(() => window.__desiaView.framing());
+      assert.ok(framing.distance > 1500 && framing.distance < 8000, `camera distance ${framing.distance}`);
+      assert.equal(framing.gridCell, 100);
+      assert.equal(framing.removalStep, 500);
+    }
+    assert.match(await page.url(), /example=table\.json/, 'the example is in the URL');
+
+    // The Design panel plans joints for plates: N, ranking and mode are hidden and disabled, with a note.
+    assert.equal((await designState(page)).kind, 'plate');
+    for (const selector of ['#design-parts', '#design-rank', '#design-mode']) {
+      assert.equal(await page.isDisabled(selector), true, `${selector} is disabled for plates`);
+      assert.equal(await page.isHidden(selector), true, `${selector} is hidden for plates`);
+    }
+    assert.match(await page.textContent('#design-plate-note'), /N\s+does not apply/);
+    assert.equal(await page.isVisible('#design-plate-note'), true);
+    // Step by step is for voxel puzzles only.
+    await page.click('#session-details summary');
+    assert.equal(await page.isDisabled('#session-start'), true);
+    assert.match(await page.textContent('#session-plate-note'), /voxel puzzles\s+only/);
+    await page.click('#session-details summary');
+    // STL, OBJ, .puz and .xmpuzzle are voxel formats: the export offers the JSON document.
+    assert.equal(await page.inputValue('#export-format'), 'json');
+    assert.equal(await page.locator('#export-format option[value="stl"]').isDisabled(), true);
+    await screenshot(page, 'plates-table-1400');
+  });
+
+  it('plans the TABLE\'s joints: interlocking with key 1, ten joints, removal along the plan', async () => {
+    const outcome = await design(page, { seed: 1, candidates: 30, timeLimit: 60 });
+    assert.equal(outcome.outcome, 'success', `design failed: ${outcome.message}`);
+    assert.equal(outcome.message, 'planned 10 joints in 5 nodes');
+    assert.ok(outcome.updates >= 1, 'the last progress message arrived');
+    assert.match(outcome.progressText, /^6 of 6 plates joined · \d+ nodes visited · depth \d+ · \d+\.\d s$/);
+
+    const state = await waitForReady(page, TABLE_PLAN);
+    assertInterlockingWithKey(state, 1);
+    assert.equal(state.parts, '6');
+    assert.equal(state.keyDirections, '-z');
+    assert.equal(await page.textContent('#method'), 'graphs and linear program', 'the plan is verified by both tests');
+
+    const list = await joints(page);
+    assert.equal(list.length, 10);
+    assert.equal(await page.textContent('#joints-summary'), 'Joints (10)');
+    assert.deepEqual(list[0], {
+      mover: '1', other: '2', type: 'halved', direction: '-z',
+      text: 'plates 1 (right side) – 2 (top): halved, 1 slides along -z',
+    });
+    assert.ok(list.every((joint) => ['halved', 'mortise-tenon', 'empty'].includes(joint.type)), JSON.stringify(list));
+    // -0.9999999999999999 along x is written as the axis.
+    assert.equal(list[9].direction, '-x');
+    assert.deepEqual(await page.$$eval('#paths li', (items) => items.map((item) => item.textContent)), [
+      'part 1: along -z', 'part 2: along +x', 'part 3: along +x', 'part 4: along -y', 'part 5: along -x', 'part 6: stays (last part)',
+    ]);
+
+    if (state.webgl === 'on') {
+      assert.equal(state.meshes, '6');
+      const assembled = await viewState(page);
+      assert.equal(assembled.steps, 5, 'five plates leave, the last stays');
+      // Halfway through the first removal, the key (plate 1) has moved along -z only, by a
+      // visible distance in mm (a fraction of the table's size, not one unit).
+      await page.evaluate(() => {
+        const range = document.querySelector('#disassembly-range');
+        range.value = '0.5';
+        range.dispatchEvent(new Event('input'));
+      });
+      const moving = await viewState(page);
+      const [x0, y0, z0] = assembled.positions[1];
+      const [x1, y1, z1] = moving.positions[1];
+      assert.equal(x1, x0);
+      assert.equal(y1, y0);
+      assert.ok(z0 - z1 > 100, `plate 1 moved ${z0 - z1} along -z`);
+      assert.deepEqual(moving.positions[2], assembled.positions[2], 'the others wait');
+      assert.equal(moving.label, 'removing part 1 (1 of 5)');
+      assert.equal(moving.moves, 'along -z');
+      await screenshot(page, 'plates-table-plan-removing-1400');
+      // At step 3.5 plate 4 leaves along -y (downwards).
+      await page.evaluate(() => {
+        const range = document.querySelector('#disassembly-range');
+        range.value = '3.5';
+        range.dispatchEvent(new Event('input'));
+      });
+      const later = await viewState(page);
+      assert.equal(later.positions[1], undefined, 'plate 1 is gone');
+      assert.ok(later.positions[4][1] < assembled.positions[4][1] - 100, 'plate 4 moves down');
+      assert.equal(later.moves, 'along -y');
+      await page.evaluate(() => {
+        const range = document.querySelector('#disassembly-range');
+        range.value = '0';
+        range.dispatchEvent(new Event('input'));
+      });
+    }
+    await screenshot(page, 'plates-table-plan-1400');
+  });
+
+  it('downloads the plan as JSON that the native CLI verifies', async () => {
+    assert.equal(await page.textContent('#download-button'), 'Download .json');
+    const [download] = await Promise.all([page.waitForEvent('download'), page.click('#download-button')]);
+    assert.equal(download.suggestedFilename(), TABLE_PLAN);
+    const text = await readFile(await download.path(), 'utf8');
+    const plan = JSON.parse(text);
+    assert.equal(plan.kind, 'plate');
+    assert.equal(plan.joints.length, 10);
+    assert.equal(plan.removal[0].part, 1);
+    const file = path.join(ARTIFACTS_DIR, TABLE_PLAN);
+    await writeFile(file, text);
+    const cli = spawnSync(CLI, ['check', file, '--method', 'lp'], { encoding: 'utf8' });
+    assert.equal(cli.status, 0, `desia check exit ${cli.status}: ${cli.stdout}${cli.stderr}`);
+    assert.match(cli.stdout, /verdict: interlocking/);
+
+    // Opened again as the user's own file, the plan shows the same verdict and joints.
+    await page.setInputFiles('#file-input', { name: TABLE_PLAN, mimeType: 'application/json', buffer: Buffer.from(text) });
+    const state = await waitForReady(page, TABLE_PLAN);
+    assertInterlockingWithKey(state, 1);
+    assert.equal((await joints(page)).length, 10);
+    if (state.webgl === 'on') assert.equal(state.meshes, '6');
+  });
+
+  it('shows the CHAIR\'s cut point in the check and after Design', async () => {
+    await page.selectOption('#example-select', CHAIR);
+    const state = await waitForReady(page, CHAIR);
+    assert.equal(state.verdictCode, 'not-interlocking');
+    if (state.webgl === 'on') assert.equal(state.meshes, '8');
+    assert.equal(await page.isVisible('#cut-points'), true);
+    assert.equal(await page.textContent('#cut-points'),
+      'Cut point: plate 5 — no joints can make this interlocking; add a part that bypasses it.');
+    assert.equal(await page.isHidden('#joints-details'), true, 'the previous plan\'s joints are gone');
+
+    const outcome = await design(page, { seed: 1 });
+    assert.equal(outcome.outcome, 'cut-point');
+    assert.match(outcome.message, /^plate 5 is a cut point of the parts-graph: .*no joints can make such a structure interlocking/);
+    const after_ = await pageState(page);
+    assert.equal(after_.status, 'ready', 'a cut point is an answer, not a crash');
+    assert.equal(after_.source, CHAIR, 'the chair stays on screen');
+    assert.equal(after_.error, '');
+    await screenshot(page, 'plates-chair-cut-point-1400');
+  });
+
+  it('shows the core\'s message for a bad option', async () => {
+    const outcome = await design(page, { timeLimit: 0.5 });
+    assert.equal(outcome.outcome, 'error');
+    assert.match(outcome.message, /timeLimit' must be an integer/);
+    assert.equal((await pageState(page)).status, 'ready', 'the page stays usable');
+    await page.fill('#design-form [name="timeLimit"]', '60');
+  });
+
+  it('shows progress for the 123-plate BOOKCASE and cancels it', async () => {
+    await page.selectOption('#example-select', BOOKCASE);
+    const state = await waitForReady(page, BOOKCASE);
+    assert.equal(state.parts, '123');
+    if (state.webgl === 'on') assert.equal(state.meshes, '123');
+    await screenshot(page, 'plates-bookcase-1400');
+    await page.click('#design-button');
+    await page.waitForFunction(() => Number(document.querySelector('#design-progress-box').dataset.updates) >= 2);
+    const running = await designState(page);
+    assert.equal(running.outcome, 'running');
+    assert.match(running.progressText, /^\d+ of 123 plates joined · \d+ nodes visited/);
+    await page.click('#design-cancel');
+    await page.waitForFunction(() => document.body.dataset.design === 'cancelled' && document.body.dataset.core === 'ready');
+    assert.match((await designState(page)).message, /^Cancelled after \d+\.\d s: the deepest node had \d+ of 123 plates/);
+    assert.equal((await pageState(page)).source, BOOKCASE);
+  });
+
+  it('switches back to voxels: N, ranking, mode and step by step return', async () => {
+    await page.selectOption('#example-select', 'Cube_4x4x4_origin.puz');
+    const state = await waitForReady(page, 'Cube_4x4x4_origin.puz');
+    assert.equal((await designState(page)).kind, 'voxel');
+    if (state.webgl === 'on') {
+      const framing = await page.evaluate(() => window.__desiaView.framing());
+      assert.equal(framing.gridCell, 1, 'voxel grid lines on voxel boundaries');
+      assert.equal(framing.removalStep, 1, 'voxel paths move one voxel per step');
+      assert.ok(framing.distance > 4 && framing.distance < 60, `camera distance ${framing.distance}`);
+    }
+    for (const selector of ['#design-parts', '#design-rank', '#design-mode', '#session-start']) {
+      assert.equal(await page.isDisabled(selector), false, `${selector} is enabled for voxels`);
+    }
+    assert.equal(await page.isHidden('#design-plate-note'), true);
+  });
+
+  it('fits a phone screen (390 x 844)', async () => {
+    await page.setViewportSize({ width: 390, height: 844 });
+    await page.selectOption('#example-select', TABLE);
+    await waitForReady(page, TABLE);
+    const outcome = await design(page, { seed: 1 });
+    assert.equal(outcome.outcome, 'success', outcome.message);
+    const state = await waitForReady(page, TABLE_PLAN);
+    assertInterlockingWithKey(state, 1);
+    await screenshot(page, 'plates-table-plan-390');
+    await page.screenshot({ path: path.join(ARTIFACTS_DIR, 'plates-table-plan-390-full.png'), fullPage: true });
+    await page.setViewportSize({ width: 1400, height: 900 });
+  });
+
+  it('throws no page errors', () => {
+    assert.deepEqual(pageErrors, []);
+  });
+});
