@@ -12,6 +12,10 @@
 
 import { byId, element } from './dom.js';
 import { clearBlockingGraphs, renderBlockingGraphs } from './dbg-panel.js';
+import { formatDirection } from './view.js';
+
+// A plate plan's removal as a disassembly (view.js, shared with the drop-in viewer).
+export { planDisassembly, withPlannedRemoval } from './view.js';
 
 const VERDICT_TITLES = {
   interlocking: 'Interlocking',
@@ -77,46 +81,6 @@ function formatMoves(path) {
   // A plate plan's removal is a direction, not a number of steps (see planDisassembly).
   if (path.every((move) => Array.isArray(move.vector))) return `along ${path.map((move) => move.dir).join(', then ')}`;
   return path.map((move) => `${move.dir}×${move.steps}`).join(', then ');
-}
-
-/**
- * A direction vector as the report writes it: '-z' for an axis (up to rounding, such as
- * -0.9999999999999999), else '(0.707, 0, -0.707)'.
- */
-export function formatDirection(vector) {
-  if (!Array.isArray(vector) || vector.length !== 3) return 'none';
-  const length = Math.hypot(...vector);
-  if (!(length > 0)) return 'none';
-  const unit = vector.map((value) => value / length);
-  const axis = unit.findIndex((value) => Math.abs(Math.abs(value) - 1) < 1e-9);
-  if (axis >= 0) return `${unit[axis] > 0 ? '+' : '-'}${'xyz'[axis]}`;
-  const rounded = (value) => {
-    const text = value.toFixed(3).replace(/\.?0+$/, '');
-    return text === '-0' ? '0' : text;
-  };
-  return `(${unit.map(rounded).join(', ')})`;
-}
-
-/**
- * A plate plan's removal (document.removal: [{ part, direction }], the key first) as the
- * disassembly the view plays and the report lists: each plate moves along its planned
- * direction, in order; the last one stays. Null for documents without a removal.
- */
-export function planDisassembly(document_) {
-  const removal = document_?.kind === 'plate' && Array.isArray(document_.removal) ? document_.removal : null;
-  if (!removal?.length) return null;
-  return {
-    order: removal.map((step) => step.part),
-    paths: removal.map((step) => (Array.isArray(step.direction)
-      ? [{ dir: formatDirection(step.direction), vector: step.direction, steps: 1 }]
-      : [])),
-  };
-}
-
-/** The report to show for `document_`: a plate plan's own removal replaces the check's disassembly. */
-export function withPlannedRemoval(report, document_) {
-  const disassembly = planDisassembly(document_);
-  return disassembly ? { ...report, disassembly, disassemblyFailure: null } : report;
 }
 
 function formatComponents(components) {

@@ -8,7 +8,8 @@
 //
 // Exports: AssemblyView (the 3D view inside a container element), DisassemblyPlayer (the
 // play/pause clock of the disassembly), createPlaybackControls (wires a slider, a play button, a
-// speed select and an explode slider to a view), describeDisassemblyStep, partColorCss.
+// speed select and an explode slider to a view), describeDisassemblyStep, partColorCss, and for
+// plate plans formatDirection, planDisassembly and withPlannedRemoval.
 //
 // For tests the container gets data-parts (meshes drawn), data-step (the disassembly step shown)
 // and data-exploded (the explode factor); AssemblyView.partPositions() reads the parts back.
@@ -692,6 +693,49 @@ function pointAlong(waypoints, fraction) {
     remaining -= length;
   }
   return waypoints[waypoints.length - 1].clone();
+}
+
+// ---------------------------------------------------------------------------------------------
+// Plate plans: their removal directions as the disassembly to play.
+
+/**
+ * A direction vector as the report writes it: '-z' for an axis (up to rounding, such as
+ * -0.9999999999999999), else '(0.707, 0, -0.707)'.
+ */
+export function formatDirection(vector) {
+  if (!Array.isArray(vector) || vector.length !== 3) return 'none';
+  const length = Math.hypot(...vector);
+  if (!(length > 0)) return 'none';
+  const unit = vector.map((value) => value / length);
+  const axis = unit.findIndex((value) => Math.abs(Math.abs(value) - 1) < 1e-9);
+  if (axis >= 0) return `${unit[axis] > 0 ? '+' : '-'}${'xyz'[axis]}`;
+  const rounded = (value) => {
+    const text = value.toFixed(3).replace(/\.?0+$/, '');
+    return text === '-0' ? '0' : text;
+  };
+  return `(${unit.map(rounded).join(', ')})`;
+}
+
+/**
+ * A plate plan's removal (document.removal: [{ part, direction }], the key first) as the
+ * disassembly the view plays and the report lists: each plate moves along its planned
+ * direction, in order; the last one stays. Null for documents without a removal.
+ */
+export function planDisassembly(document_) {
+  const removal = document_?.kind === 'plate' && Array.isArray(document_.removal) ? document_.removal : null;
+  if (!removal?.length) return null;
+  return {
+    order: removal.map((step) => step.part),
+    paths: removal.map((step) => (Array.isArray(step.direction)
+      ? [{ dir: formatDirection(step.direction), vector: step.direction, steps: 1 }]
+      : [])),
+  };
+}
+
+/** The report to show for `document_`: a plate plan's own removal replaces the check's disassembly. */
+export function withPlannedRemoval(report, document_) {
+  const disassembly = planDisassembly(document_);
+  return disassembly ? { ...report, disassembly, disassemblyFailure: null } : report;
 }
 
 // ---------------------------------------------------------------------------------------------

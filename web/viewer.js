@@ -25,7 +25,7 @@
 // read or checked; the message is shown inside the viewer too. data-state on the element:
 // loading | ready | error.
 
-import { AssemblyView, createPlaybackControls } from './view.js';
+import { AssemblyView, createPlaybackControls, withPlannedRemoval } from './view.js';
 import { renderBlockingGraphs } from './dbg-panel.js';
 import { createDesia } from '../wasm/index.js';
 
@@ -314,11 +314,12 @@ export function mountViewer(host, options = {}) {
   }
 
   /**
-   * The part surfaces of `document_` from the viewer's core (null for documents without voxels:
-   * the view says it cannot draw them).
+   * The part surfaces of `document_` from the viewer's core (null for documents without voxels
+   * or plates: the view says it cannot draw them).
    */
   async function surfacesOf(document_, name) {
-    if (document_?.kind !== 'voxel') return null;
+    const drawn = document_?.kind === 'voxel' || (document_?.kind === 'plate' && document_.plates?.length > 0);
+    if (!drawn) return null;
     const desia = desiaSource ?? await pageDesia();
     return desia.partSurfaces(document_, { source: name || 'assembly' });
   }
@@ -353,8 +354,10 @@ export function mountViewer(host, options = {}) {
     current = { document: document_, report, name };
     message.hidden = true;
     view.show(document_, surfaces);
-    view.applyReport(report ?? {});
-    playback.setDisassembly(report?.disassembly ?? null);
+    // A plate plan plays its own removal directions.
+    const planned = report ? withPlannedRemoval(report, document_) : null;
+    view.applyReport(planned ?? {});
+    playback.setDisassembly(planned?.disassembly ?? null);
     renderBadge(report);
     if (report) renderBlockingGraphs(graphsPanel, report);
     else graphsPanel.replaceChildren();
@@ -380,8 +383,8 @@ export function mountViewer(host, options = {}) {
         : { name: request.name ?? 'assembly', text: request.text };
       if (typeof text !== 'string') throw new Error('mountViewer: give src, or text with a name');
       const desia = desiaSource ?? await pageDesia();
-      // `source` makes the core's messages name the file (and the line) they are about. Only
-      // voxel assemblies have surfaces: their error counts once the document says it is one.
+      // `source` makes the core's messages name the file (and the line) they are about. Voxel
+      // assemblies and plates have surfaces: a voxel document's error counts once the document says it is one.
       const [document_, report, surfaces] = await Promise.all([
         desia.parseDocument(text, { source: name }),
         desia.check(text, { source: name }),
