@@ -3,6 +3,8 @@
 
 #include <algorithm>
 
+#include "desia/error.h"
+
 namespace desia::cli {
 
 Arguments splitArguments(const std::vector<std::string>& args, const std::vector<std::string>& valueOptions) {
@@ -38,6 +40,21 @@ int parseDigits(const std::string& text, const std::string& message) {
   for (char c : text) digits = digits && c >= '0' && c <= '9';
   if (!digits) throw UsageError{message};
   return std::stoi(text);
+}
+
+long long integerOption(const std::string& flag, const std::string& text, long long lo, long long hi) {
+  size_t used = 0;
+  long long value = 0;
+  try {
+    value = std::stoll(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != text.size() || text.empty()) throw Error(ErrorCode::BadInput, flag + " expects an integer, got '" + text + "'");
+  if (value < lo || value > hi) {
+    throw Error(ErrorCode::BadInput, flag + " " + text + " is out of range (" + std::to_string(lo) + " to " + std::to_string(hi) + ")");
+  }
+  return value;
 }
 
 }  // namespace desia::cli

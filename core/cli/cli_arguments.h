@@ -29,4 +29,7 @@ Arguments splitArguments(const std::vector<std::string>& args, const std::vector
 // Digits only, at most 9 of them (so the value fits an int); throws UsageError(`message`) else.
 int parseDigits(const std::string& text, const std::string& message);
 
+// An integer option value within [lo, hi]; throws BadInput naming the flag and the value else.
+long long integerOption(const std::string& flag, const std::string& text, long long lo, long long hi);
+
 }  // namespace desia::cli

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <iostream>
 
+#include "cli_arguments.h"
 #include "cli_files.h"
 #include "commands.h"
 #include "desia/design_io.h"
@@ -27,19 +28,6 @@ struct DesignArguments {
 };
 
 [[noreturn]] void usage(const std::string& message) { throw desia::Error(desia::ErrorCode::BadInput, message); }
-
-long long integerArgument(const std::string& flag, const std::string& text, long long lo, long long hi) {
-  size_t used = 0;
-  long long value = 0;
-  try {
-    value = std::stoll(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used != text.size() || text.empty()) usage(flag + " expects an integer, got '" + text + "'");
-  if (value < lo || value > hi) usage(flag + " " + text + " is out of range (" + std::to_string(lo) + " to " + std::to_string(hi) + ")");
-  return value;
-}
 
 double secondsArgument(const std::string& flag, const std::string& text) {
   size_t used = 0;
@@ -68,14 +56,14 @@ DesignArguments parseArguments(const std::vector<std::string>& args) {
     if (flag == "--input") parsed.input = value;
     else if (flag == "--output") parsed.output = value;
     else if (flag == "--groups") parsed.groupsFile = value;
-    else if (flag == "--parts") { parsed.options.parts = static_cast<int>(integerArgument(flag, value, 1, 1000000)); partsGiven = true; }
-    else if (flag == "--seed") parsed.options.seed = static_cast<uint64_t>(integerArgument(flag, value, 0, (1LL << 62)));
-    else if (flag == "--candidates") parsed.options.candidates = static_cast<int>(integerArgument(flag, value, 1, 10000));
+    else if (flag == "--parts") { parsed.options.parts = static_cast<int>(desia::cli::integerOption(flag, value, 1, 1000000)); partsGiven = true; }
+    else if (flag == "--seed") parsed.options.seed = static_cast<uint64_t>(desia::cli::integerOption(flag, value, 0, (1LL << 62)));
+    else if (flag == "--candidates") parsed.options.candidates = static_cast<int>(desia::cli::integerOption(flag, value, 1, 10000));
     else if (flag == "--rank") parsed.options.ranking = desia::parseCandidateRanking(value);
     else if (flag == "--mode") parsed.options.mode = desia::parseDesignMode(value);
-    else if (flag == "--min-part-size") parsed.options.minPartSize = static_cast<int>(integerArgument(flag, value, 1, 1000000));
+    else if (flag == "--min-part-size") parsed.options.minPartSize = static_cast<int>(desia::cli::integerOption(flag, value, 1, 1000000));
     else if (flag == "--time-limit") parsed.options.timeLimitSeconds = secondsArgument(flag, value);
-    else if (flag == "--node-limit") parsed.options.nodeLimit = integerArgument(flag, value, 1, 1LL << 50);
+    else if (flag == "--node-limit") parsed.options.nodeLimit = desia::cli::integerOption(flag, value, 1, 1LL << 50);
     else if (flag == "--key-direction") parsed.options.keyDirection = desia::parseAxisDirection(value, "--key-direction");
     else usage("unknown option " + flag);
   }

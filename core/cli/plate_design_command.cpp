@@ -23,20 +23,6 @@ extern "C" void onPlateDesignInterrupt(int) { interrupted = 1; }
 
 [[noreturn]] void usage(const std::string& message) { throw desia::Error(desia::ErrorCode::BadInput, message); }
 
-long long integerValue(const std::string& flag, const std::string& text, long long lo, long long hi) {
-  size_t used = 0;
-  long long value = 0;
-  try {
-    value = std::stoll(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used != text.size() || text.empty() || value < lo || value > hi) {
-    usage(flag + " expects an integer from " + std::to_string(lo) + " to " + std::to_string(hi) + ", got '" + text + "'");
-  }
-  return value;
-}
-
 }  // namespace
 
 int runPlateDesignCommand(const std::vector<std::string>& args) {
@@ -53,10 +39,10 @@ int runPlateDesignCommand(const std::vector<std::string>& args) {
     const std::string& value = args[++i];
     if (flag == "--input") input = value;
     else if (flag == "--output") output = value;
-    else if (flag == "--seed") options.seed = static_cast<uint64_t>(integerValue(flag, value, 0, 1LL << 62));
-    else if (flag == "--candidates") options.candidates = static_cast<int>(integerValue(flag, value, 1, 10000));
-    else if (flag == "--node-limit") options.nodeLimit = integerValue(flag, value, 1, 1LL << 50);
-    else if (flag == "--time-limit") options.timeLimitSeconds = static_cast<double>(integerValue(flag, value, 1, 10000000));
+    else if (flag == "--seed") options.seed = static_cast<uint64_t>(desia::cli::integerOption(flag, value, 0, 1LL << 62));
+    else if (flag == "--candidates") options.candidates = static_cast<int>(desia::cli::integerOption(flag, value, 1, 10000));
+    else if (flag == "--node-limit") options.nodeLimit = desia::cli::integerOption(flag, value, 1, 1LL << 50);
+    else if (flag == "--time-limit") options.timeLimitSeconds = static_cast<double>(desia::cli::integerOption(flag, value, 1, 10000000));
     else usage("unknown option " + flag + " for design plate");
   }
   if (input.empty()) usage("design plate needs --input DESIGN.json|.obj|.stl");

@@ -41,18 +41,8 @@ Loop loopAt(const json& value, const std::string& source, const std::string& pat
   return loop;
 }
 
-// The right-hand unit normal of a loop (Newell), or zero for a degenerate one.
-Vec3 rightHandNormal(const Loop& loop) {
-  Vec3 n{0, 0, 0};
-  for (size_t i = 0; i < loop.size(); ++i) {
-    const Vec3& p = loop[i];
-    const Vec3& q = loop[(i + 1) % loop.size()];
-    n[0] += (p[1] - q[1]) * (p[2] + q[2]);
-    n[1] += (p[2] - q[2]) * (p[0] + q[0]);
-    n[2] += (p[0] - q[0]) * (p[1] + q[1]);
-  }
-  return normalized(n);
-}
+// The right-hand unit normal of a loop, or zero for a degenerate one.
+Vec3 rightHandNormal(const Loop& loop) { return normalized(loopNormal(loop)); }
 
 Plate plateAt(const json& entry, const std::string& source, const std::string& path) {
   if (!entry.is_object()) fail(source, path, "expected an object with 'id' and 'outline' and 'thickness', or 'id' and 'faces'");

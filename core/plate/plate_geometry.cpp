@@ -23,19 +23,6 @@ constexpr double kClipperScale = 1e4;
 Vec3 minus(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
 Vec3 plus(const Vec3& a, const Vec3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
 
-// Newell's normal of a loop (length = twice its area): robust for non-convex loops.
-Vec3 newellNormal(const Loop& loop) {
-  Vec3 n{0, 0, 0};
-  for (size_t i = 0; i < loop.size(); ++i) {
-    const Vec3& p = loop[i];
-    const Vec3& q = loop[(i + 1) % loop.size()];
-    n[0] += (p[1] - q[1]) * (p[2] + q[2]);
-    n[1] += (p[2] - q[2]) * (p[0] + q[0]);
-    n[2] += (p[0] - q[0]) * (p[1] + q[1]);
-  }
-  return n;
-}
-
 Vec3 centroidOf(const Loop& loop) {
   Vec3 c{0, 0, 0};
   for (const Vec3& p : loop) c = plus(c, p);
@@ -80,8 +67,20 @@ struct SolidFace {
 
 }  // namespace
 
+Vec3 loopNormal(const Loop& loop) {
+  Vec3 n{0, 0, 0};
+  for (size_t i = 0; i < loop.size(); ++i) {
+    const Vec3& p = loop[i];
+    const Vec3& q = loop[(i + 1) % loop.size()];
+    n[0] += (p[1] - q[1]) * (p[2] + q[2]);
+    n[1] += (p[2] - q[2]) * (p[0] + q[0]);
+    n[2] += (p[0] - q[0]) * (p[1] + q[1]);
+  }
+  return n;
+}
+
 Vec3 plateThicknessAxis(const Plate& plate) {
-  Vec3 n = normalized(newellNormal(plate.bottom[0]));
+  Vec3 n = normalized(loopNormal(plate.bottom[0]));
   if (dot(n, minus(centroidOf(plate.top[0]), centroidOf(plate.bottom[0]))) < 0) n = negated(n);
   return n;
 }
@@ -118,7 +117,7 @@ std::vector<Vec3> plateSideNormals(const Plate& plate, size_t loopIndex) {
   std::vector<Vec3> normals;
   for (size_t k = 0; k < bottom.size(); ++k) {
     const size_t next = (k + 1) % bottom.size();
-    Vec3 n = normalized(newellNormal(Loop{bottom[k], bottom[next], top[next], top[k]}));
+    Vec3 n = normalized(loopNormal(Loop{bottom[k], bottom[next], top[next], top[k]}));
     const Vec3 inPlane = normalized(minus(n, scaled(axis, dot(n, axis))));
     const Vec3 middle = scaled(plus(bottom[k], bottom[next]), 0.5);
     if (insideBottomFace(plate, bottomFrame, plus(middle, scaled(inPlane, kStep)))) n = negated(n);
@@ -192,7 +191,7 @@ Box boxOf(const Plate& plate) {
 
 void requirePlanar(const Plate& plate, const std::vector<Loop>& loops, const char* which, double tolerance,
                    const std::string& source) {
-  const Vec3 n = newellNormal(loops[0]);
+  const Vec3 n = loopNormal(loops[0]);
   if (norm(n) < 1e-12) throwBadInput(source, plateName(plate) + ": its " + which + " face has no area");
   const PlaneFrame frame(centroidOf(loops[0]), n);
   for (size_t l = 0; l < loops.size(); ++l) {
@@ -209,7 +208,7 @@ void requirePlanar(const Plate& plate, const std::vector<Loop>& loops, const cha
 
 // Proper crossings or touchings of two non-adjacent edges of a loop, in the loop's plane.
 void requireSimpleLoop(const Plate& plate, const Loop& loop, size_t loopIndex, const std::string& source) {
-  const PlaneFrame frame(centroidOf(loop), newellNormal(loop));
+  const PlaneFrame frame(centroidOf(loop), loopNormal(loop));
   std::vector<std::array<double, 2>> p;
   for (const Vec3& q : loop) p.push_back({dot(minus(q, frame.origin), frame.u), dot(minus(q, frame.origin), frame.v)});
   auto orient = [&](size_t a, size_t b, size_t c) {
@@ -247,7 +246,7 @@ void validatePlate(const Plate& plate, double tolerance, const std::string& sour
   for (size_t l = 0; l < plate.bottom.size(); ++l) requireSimpleLoop(plate, plate.bottom[l], l, source);
   // Parallel faces a positive distance apart: every vertex of the second face at the same height
   // above the first face's plane.
-  const PlaneFrame bottom(centroidOf(plate.bottom[0]), newellNormal(plate.bottom[0]));
+  const PlaneFrame bottom(centroidOf(plate.bottom[0]), loopNormal(plate.bottom[0]));
   double lo = HUGE_VAL, hi = -HUGE_VAL;
   for (const Loop& loop : plate.top) {
     for (const Vec3& p : loop) {
@@ -269,7 +268,7 @@ void validatePlate(const Plate& plate, double tolerance, const std::string& sour
     for (size_t k = 0; k < b.size(); ++k) {
       const size_t next = (k + 1) % b.size();
       const Loop quad{b[k], b[next], t[next], t[k]};
-      const double off = maxDistanceToPlane({quad}, PlaneFrame(centroidOf(quad), newellNormal(quad)));
+      const double off = maxDistanceToPlane({quad}, PlaneFrame(centroidOf(quad), loopNormal(quad)));
       if (off > tolerance || dot(minus(t[k], b[k]), axis) <= 0) {
         throwBadInput(source, plateName(plate) + ": its faces do not match: the side between vertices " + std::to_string(k + 1) +
                                   " and " + std::to_string(next + 1) + " is twisted by " + millimetres(off));

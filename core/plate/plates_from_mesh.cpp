@@ -113,13 +113,7 @@ std::vector<Loop> boundaryLoops(const TriangleMesh& mesh, const PlanarFace& face
     }
     if (corners.size() >= 3) loops.push_back(corners);
   }
-  auto area = [](const Loop& loop) {
-    Vec3 n{0, 0, 0};
-    for (size_t i = 0; i < loop.size(); ++i) n = {n[0] + loop[i][1] * loop[(i + 1) % loop.size()][2] - loop[i][2] * loop[(i + 1) % loop.size()][1],
-                                                  n[1] + loop[i][2] * loop[(i + 1) % loop.size()][0] - loop[i][0] * loop[(i + 1) % loop.size()][2],
-                                                  n[2] + loop[i][0] * loop[(i + 1) % loop.size()][1] - loop[i][1] * loop[(i + 1) % loop.size()][0]};
-    return norm(n);
-  };
+  auto area = [](const Loop& loop) { return norm(loopNormal(loop)); };
   std::stable_sort(loops.begin(), loops.end(), [&](const Loop& a, const Loop& b) { return area(a) > area(b); });
   return loops;
 }

@@ -26,6 +26,10 @@ struct Plate {
   std::vector<Loop> top;
 };
 
+// Newell's normal of a loop: right-handed about the vertex order, its length twice the loop's
+// area (robust for non-convex loops).
+Vec3 loopNormal(const Loop& loop);
+
 // The unit vector across the plate, from its first face towards its second.
 Vec3 plateThicknessAxis(const Plate& plate);
 
