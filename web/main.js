@@ -44,6 +44,7 @@ const EXAMPLES = [
   { file: 'table.json', label: 'Table, 6 plates', plate: true },
   { file: 'chair_cut_point.json', label: 'Chair with a cut point, 8 plates', plate: true },
   { file: 'chair_repaired.json', label: 'Chair repaired, 10 plates', plate: true },
+  { file: 'cabinet.json', label: 'Cabinet under a gable roof, 7 plates', plate: true },
   { file: 'mitred_box.json', label: 'Mitred box, 6 plates', plate: true },
   { file: 'bookshelf.json', label: 'Bookshelf, 12 plates', plate: true },
   { file: 'bookcase_123.json', label: 'Bookcase, 123 plates', plate: true },

@@ -104,8 +104,49 @@ def shelf(rows, columns, name, cell=300.0, t=18.0, depth=300.0):
     return document(name, plates)
 
 
+def cabinet(width=600.0, depth=400.0, wall=600.0, ridge=115.0, t=18.0):
+    # After Fig. 13: a cabinet under a gable roof. Two pentagonal sides, a bottom, a back and a
+    # shelf between them, and two roof boards resting on the sides' sloped edges and meeting at the
+    # ridge in a vertical mitre: the roof's contacts are not orthogonal (judged by the LP test).
+    half = depth / 2
+    def side(id_, name, x0):
+        # The outline in the plane x = x0 (counter-clockwise about +x, so it extrudes towards +x).
+        outline = [[x0, 0, 0], [x0, wall, 0], [x0, wall + ridge, half], [x0, wall, depth], [x0, 0, depth]]
+        return {"id": id_, "name": name, "outline": outline, "thickness": t}
+    slope = math.hypot(half, ridge)
+    up = [0.0, half / slope, -ridge / slope]  # the front roof board's outward normal in (x, y, z)
+    def roof(id_, name, front):
+        sign = 1 if front else -1
+        eave_z = 0.0 if front else depth
+        n = [0.0, up[1], sign * up[2]]
+        bottom = [[-t, wall, eave_z], [width + t, wall, eave_z], [width + t, wall + ridge, half], [-t, wall + ridge, half]]
+        # The top face: the eave edge moved out along the normal; the ridge edge where the top
+        # plane meets the vertical mitre plane z = half.
+        eave_top = [[p[k] + t * n[k] for k in range(3)] for p in bottom[:2]]
+        # On the top plane, from the eave going up the slope to z = half.
+        along = [0.0, ridge / slope, sign * half / slope]
+        run = (half - eave_top[0][2]) / along[2]
+        ridge_top = [[p[k] + run * along[k] for k in range(3)] for p in reversed(eave_top)]
+        top = eave_top + ridge_top
+        if not front:
+            bottom = [bottom[1], bottom[0], bottom[3], bottom[2]]
+            top = [top[1], top[0], top[3], top[2]]
+        return {"id": id_, "name": name, "faces": [bottom, top]}
+    plates = [
+        side(1, "left side", -t),
+        side(2, "right side", width),
+        box(3, "bottom", [0, 0, 0], [width, t, depth]),
+        box(4, "back", [0, t, depth - t], [width, wall, depth]),
+        box(5, "shelf", [0, 300, 0], [width, 300 + t, depth - t]),
+        roof(6, "front roof", True),
+        roof(7, "back roof", False),
+    ]
+    return document("CABINET (after Fig. 13): a cabinet under a gable roof; the roof boards meet at a mitred ridge", plates)
+
+
 def main():
     examples = {
+        "cabinet.json": cabinet(),
         "bookshelf.json": shelf(3, 3, "BOOKSHELF (after Fig. 1): 3 x 3 cells, two sides, 4 shelves and 6 uprights (12 plates)"),
         "bookcase_123.json": shelf(10, 12, "BOOKCASE of 10 x 12 cells: two sides, 11 shelves and 110 uprights (123 plates)"),
         "table.json": table(),

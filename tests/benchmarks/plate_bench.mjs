@@ -20,6 +20,7 @@ const runs = runsArgument > 0 ? Number(process.argv[runsArgument + 1]) : 5;
 // [example file, label, the paper's time (Table 1) or null]
 const CASES = [
   ['table.json', 'TABLE, 6 plates (Fig. 17)', '0.02 s'],
+  ['cabinet.json', 'CABINET, 7 plates, gable roof (Fig. 13)', '0.09 s'],
   ['chair_repaired.json', 'CHAIR repaired, 10 plates (Fig. 18)', '0.22 s (8 plates)'],
   ['bookshelf.json', 'BOOKSHELF, 12 plates (Fig. 1)', '0.30 s'],
   ['mitred_box.json', 'MITRED BOX, 6 plates, 45-degree contacts', null],

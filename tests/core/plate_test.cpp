@@ -193,7 +193,7 @@ TEST(PlateRobustness, VerdictsAndContactsSurviveTurningTheWholeDesign) {
   for (int x = 0; x < 4; ++x) angles.push_back({x * q, 0, q});
   for (int x = 0; x < 4; ++x) angles.push_back({x * q, 0, 3 * q});
   angles.insert(angles.end(), {{0.3, 1.1, -0.7}, {2.0, -0.4, 0.9}, {-1.3, 0.2, 2.6}});
-  for (const char* name : {"table.json", "chair_cut_point.json", "chair_repaired.json", "mitred_box.json"}) {
+  for (const char* name : {"table.json", "chair_cut_point.json", "chair_repaired.json", "mitred_box.json", "cabinet.json"}) {
     const AssemblyDocument original = loadExample(name);
     CheckOptions options;
     options.method = CheckMethod::Both;
@@ -249,7 +249,7 @@ void ExpectPlanReverifies(const std::string& name, const PlateDesignResult& resu
 }
 
 TEST(PlateJointPlan, ExamplesGetVerifiedPlans) {
-  for (const char* name : {"table.json", "chair_repaired.json", "bookshelf.json", "mitred_box.json"}) {
+  for (const char* name : {"table.json", "chair_repaired.json", "bookshelf.json", "mitred_box.json", "cabinet.json"}) {
     const AssemblyDocument document = loadExample(name);
     const PlateDesignResult result = planExample(name);
     ASSERT_EQ(result.status, PlateDesignStatus::Success) << name << ": " << result.message;

@@ -162,7 +162,8 @@ std::vector<Case> contactCases() {
   }
   // Joint plans of the plate examples (their contacts are the joints'), as `desia design plate`
   // writes them: the 45-degree mitres of the box among them.
-  for (const char* file : {"examples/plate/table.json", "examples/plate/mitred_box.json", "examples/plate/bookshelf.json"}) {
+  for (const char* file : {"examples/plate/table.json", "examples/plate/mitred_box.json", "examples/plate/bookshelf.json",
+                           "examples/plate/cabinet.json"}) {
     const AssemblyDocument design = parseAssemblyText(testing::readFileText(testing::projectPath(file)), file);
     const PlateDesignResult plan = designPlateJoints(design.plates, computePlateContacts(design.plates, design.plateOptions));
     AssemblyDocument document = parseJsonDocument(plateDesignToJson(design, plan), std::string(file) + " plan");
