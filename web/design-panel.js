@@ -218,21 +218,35 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
     }
   }
 
+  /**
+   * Runs one automatic design in the worker: the voxel designer, or for a plate design the joint
+   * planner (designPlate), whose plan is shown with its plates (plate 1 the key), verification,
+   * joints and planned removal. A cut point or a failed search shows the core's message.
+   */
   async function design() {
     if (busy) return;
-    if (kind === 'plate') return designPlate();
     const request = readRequest();
     if (!request) return;
     const { shape, options } = request;
+    const plate = kind === 'plate';
     syncUrl();
-    begin('Designing…', { withProgress: true });
+    begin(plate ? 'Planning joints…' : 'Designing…', { withProgress: true, ...(plate ? { noun: 'plates joined' } : {}) });
     try {
-      const { value: result, elapsedMs } = await core.run('design', shape.text, { ...options, source: shape.name }, { onProgress });
+      const operation = plate ? 'design-plate' : 'design';
+      const { value: result, elapsedMs } = await core.run(operation, shape.text, { ...options, source: shape.name }, { onProgress });
+      if (plate) {
+        // The result's progress is the final count (a finished plan has every plate joined); a cut
+        // point is found before any search, so there is no progress to show.
+        if (result.progress) run.latest = { depth: 0, ...run.latest, ...result.progress };
+        if (result.status === 'cut-point') run.latest = null;
+      }
       end();
-      if (result.status === 'success') {
+      if (result.status === 'success' && result.document) {
         showAssembly({
-          name: `${baseName(shape.name)}_N${result.progress.targetParts}_seed${options.seed ?? 1}.puz`,
-          text: result.puz,
+          name: plate
+            ? `${baseName(shape.name)}_plan_seed${options.seed ?? 1}.json`
+            : `${baseName(shape.name)}_N${result.progress.targetParts}_seed${options.seed ?? 1}.puz`,
+          text: plate ? `${JSON.stringify(result.document, null, 2)}\n` : result.puz,
           document: result.document,
           surfaces: result.surfaces,
           report: result.verification,
@@ -244,44 +258,7 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
       setOutcome(result.status, result.message);
     } catch (error) {
       const elapsed = end();
-      if (error.cancelled) setOutcome('cancelled', cancelledMessage(run.latest, elapsed));
-      else setOutcome('error', error.message);
-    }
-  }
-
-  /**
-   * Plans the joints of the plate design on screen (designPlate in the worker). A plan is shown
-   * with its plates (plate 1 the key), its verification, joints and planned removal; a cut point
-   * or a failed search shows the core's message.
-   */
-  async function designPlate() {
-    const request = readRequest();
-    if (!request) return;
-    const { shape, options } = request;
-    syncUrl();
-    begin('Planning joints…', { withProgress: true, noun: 'plates joined' });
-    try {
-      const { value: result, elapsedMs } = await core.run('design-plate', shape.text, { ...options, source: shape.name }, { onProgress });
-      // The result's progress is the final count (a finished plan has every plate joined).
-      if (result.progress) run.latest = { depth: 0, ...run.latest, ...result.progress };
-      // A cut point is found before any search: there is no progress to show.
-      if (result.status === 'cut-point') run.latest = null;
-      end();
-      if (result.status === 'success' && result.document) {
-        showAssembly({
-          name: `${baseName(shape.name)}_plan_seed${options.seed ?? 1}.json`,
-          text: `${JSON.stringify(result.document, null, 2)}\n`,
-          document: result.document,
-          surfaces: result.surfaces,
-          report: result.verification,
-          elapsedMs,
-          timingLabel: 'Design time',
-        });
-      }
-      setOutcome(result.status, result.message);
-    } catch (error) {
-      const elapsed = end();
-      if (error.cancelled) setOutcome('cancelled', cancelledMessage(run.latest, elapsed, 'plates'));
+      if (error.cancelled) setOutcome('cancelled', cancelledMessage(run.latest, elapsed, plate ? 'plates' : 'parts'));
       else setOutcome('error', error.message);
     }
   }
