@@ -14,6 +14,8 @@ int runVoxelizeCommand(const std::vector<std::string>& args);
 //   --output OUT.puz|OUT.json
 int runDesignCommand(const std::vector<std::string>& args);
 int runPlateDesignCommand(const std::vector<std::string>& args);  // args[0] == "plate"
+// desia design frame --input FRAME.obj|.json|.fpuz [--seed S] [--time-limit S] [--node-limit N] [--joint-size MM] --output RESULT.json
+int runFrameDesignCommand(const std::vector<std::string>& args);  // args[0] == "frame"
 
 // desia export FILE --format stl|stl-ascii|obj|xmpuzzle [--part N] [--voxel-size S] --output OUT
 int runExportCommand(const std::vector<std::string>& args);

@@ -42,7 +42,7 @@ double secondsArgument(const std::string& flag, const std::string& text) {
 }
 
 DesignArguments parseArguments(const std::vector<std::string>& args) {
-  if (args.empty() || args[0] != "voxel") usage("design expects a kind: 'desia design voxel ...' or 'desia design plate ...' (frames come later)");
+  if (args.empty() || args[0] != "voxel") usage("design expects a kind: 'desia design voxel ...', 'desia design plate ...' or 'desia design frame ...'");
   DesignArguments parsed;
   bool partsGiven = false;
   for (size_t i = 1; i < args.size(); ++i) {
@@ -80,6 +80,7 @@ DesignArguments parseArguments(const std::vector<std::string>& args) {
 
 int runDesignCommand(const std::vector<std::string>& args) {
   if (!args.empty() && args[0] == "plate") return runPlateDesignCommand(args);
+  if (!args.empty() && args[0] == "frame") return runFrameDesignCommand(args);
   DesignArguments parsed = parseArguments(args);
   const desia::AssemblyDocument document = desia::parseAssemblyText(desia::cli::readInputFile(parsed.input), parsed.input);
   if (document.kind != desia::AssemblyKind::Voxel) {

@@ -9,7 +9,9 @@
 #include "cli_files.h"
 #include "commands.h"
 #include "desia/document.h"
+#include "desia/error.h"
 #include "desia/export.h"
+#include "desia/frame_format.h"
 
 namespace {
 
@@ -52,10 +54,19 @@ int exportFile(const std::vector<std::string>& args) {
   if (input.empty()) throw UsageError{"export needs a FILE (.puz or JSON voxel assembly)"};
   if (format.empty()) throw UsageError{"export needs --format stl|stl-ascii|obj|xmpuzzle"};
   if (output.empty()) throw UsageError{"export needs --output OUT"};
-  const desia::ExportFormat exportFormat = desia::parseExportFormat(format);
+  const bool frameOnlyFormat = format == "fpuz" || format == "csv";
+  const desia::ExportFormat exportFormat = frameOnlyFormat ? desia::ExportFormat::StlBinary : desia::parseExportFormat(format);
 
   options.source = input;
   const desia::AssemblyDocument document = desia::parseAssemblyText(desia::cli::readInputFile(input), input);
+  if (document.kind == desia::AssemblyKind::Frame && document.contactsFromGeometry) {
+    // Frames (paper Section 5.3): part meshes, .fpuz or the cut list (core/io/frame_export.cpp).
+    const std::vector<uint8_t> bytes = desia::exportFrame(desia::frameFromAssemblyDocument(document, input), format, options.part, input);
+    desia::cli::writeOutputFile(output, std::string(bytes.begin(), bytes.end()));
+    std::cout << input << ": frame of " << document.assembly.partCount() << " beams as " << format << ", " << bytes.size() << " bytes; wrote " << output << "\n";
+    return 0;
+  }
+  if (frameOnlyFormat) throw desia::Error(desia::ErrorCode::BadInput, input + ": ." + format + " exports are for frame structures");
   const std::vector<uint8_t> bytes = desia::exportAssembly(document, exportFormat, options);
   desia::cli::writeOutputFile(output, std::string(bytes.begin(), bytes.end()));
   const int parts = document.kind == desia::AssemblyKind::Voxel ? document.voxels.maxLabel() : document.assembly.partCount();

@@ -7,6 +7,7 @@
 #include "desia/document.h"
 #include "desia/error.h"
 #include "desia/puz_format.h"
+#include "io/frame_json.h"
 #include "io/json_input.h"
 #include "io/plate_format.h"
 
@@ -186,6 +187,10 @@ AssemblyDocument parseJsonDocument(const std::string& text, const std::string& s
     document = documentFromVoxels(parseVoxelSection(root, source), name);
     return document;
   }
+  if (document.kind == AssemblyKind::Frame && root.contains("beams") && !root.contains("contacts")) {
+    // A frame (paper Section 5.3): parts are its beams, contacts come from its joint voxels.
+    return frameAssemblyDocumentFromJson(root, source, document.name);
+  }
   if (document.kind == AssemblyKind::Plate && root.contains("plates") && !root.contains("contacts")) {
     // A plate design: parts and contacts come from the geometry (paper Section 5.2).
     PlateOptions options;
@@ -219,6 +224,7 @@ AssemblyDocument parseJsonDocument(const std::string& text, const std::string& s
 }
 
 AssemblyDocument parseAssemblyText(const std::string& text, const std::string& source) {
+  if (isFpuzSource(source)) return frameAssemblyDocumentFromFpuz(text, source);
   if (looksLikePuz(text)) return documentFromVoxels(parsePuz(text, source));
   for (char c : text) {
     if (c == ' ' || c == '\n' || c == '\r' || c == '\t') continue;
@@ -243,6 +249,10 @@ std::string documentToJson(const AssemblyDocument& document, int indent) {
     const std::vector<int64_t> counts = grid.labelCounts();
     for (const Part& part : document.assembly.parts) parts.push_back({{"id", part.id}, {"voxelCount", counts[part.id]}});
     root["parts"] = parts;
+  } else if (document.kind == AssemblyKind::Frame && document.contactsFromGeometry) {
+    // A frame is its geometry (and joint voxels): parts and contacts are derived again when read.
+    const json geometry = json::parse(document.geometryJson);
+    for (const auto& [key, value] : geometry.items()) root[key] = value;
   } else if (document.kind == AssemblyKind::Plate && document.contactsFromGeometry) {
     // A plate design is its geometry: parts and contacts are derived again when it is read.
     if (document.plateOptions.contactTolerance != PlateOptions{}.contactTolerance) {

@@ -1,0 +1,697 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Voxel joints for interlocking frame structures (paper Section 5.3) on the construction tree of
+// Algorithm 1 (Section 4.1).
+//
+// A node of the tree is A_i = [P_1, ..., P_i, R_i]: the beams taken so far, each with the axis it
+// leaves along and the voxels it owns in the joint cubes at its two ends, and R_i, the beams not
+// taken yet together with every voxel nobody owns yet, acting as one part. Every beam owns from
+// the start the centre voxel of the cube face it enters.
+//
+// Taking beam P_i (a child of the node) is the paper's graph design and geometry realization
+// within the two joint cubes of P_i (Sections 4.3 and 5.3):
+// - P_i is a beam of R_{i-1} that shares a joint with a beam taken before (otherwise nothing but
+//   R_i could block it, and both would need edges both ways in every DBG: K = 2 everywhere, never
+//   removable), and that is not a cut point of the parts-graph of R_{i-1} (R_i stays connected).
+// - A direction d_i: one of the six axis directions.
+// - At each of its joints, a set of free voxels for P_i grown from its face voxel: connected to
+//   it, closed along d_i (every free voxel ahead of one of P_i's voxels joins P_i; a voxel of a
+//   beam still in R ahead forbids d_i), and leaving every piece of R's voxels in that cube attached
+//   to a beam of R. At a joint where P_i is the last beam of R, it takes every free voxel.
+//   Growing the set by the voxels next to parts taken before is what builds the paper's cycles
+//   through P_out and P_in (cases K = 1 and K = 0): P_i then pushes against an earlier part.
+// - The child is kept when P_i, its body and voxels swept along d_i, misses every body and voxel of
+//   R_i (disassemblability, Section 4.1 (iii)), and A_i is interlocking with P_1 as its key: in each
+//   axis DBG, the parts other than the key are strongly connected (Section 3.2). For the key
+//   (A_1 = [P_1, R_1], Section 4.2) it is kept when P_1 is free along d_1 and blocked along the
+//   five other axis directions.
+// Children are ranked: beams with the fewest neighbours in R first (the original code's order),
+// then the highest, then a seeded random order; the voxel sets of a beam smallest first. The
+// search is depth first with backtracking over an explicit stack, and every complete design is
+// verified (frameDesignFailure) before it is reported.
+#include "desia/frame_design.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+#include "analysis/vec3.h"
+#include "desia/cut_points.h"
+#include "desia/error.h"
+#include "desia/interlocking.h"
+
+namespace desia {
+namespace {
+
+using Mask = uint32_t;  // a set of the 27 voxels of a joint cube
+
+constexpr int kFree = -1;
+constexpr int kOptionsPerJoint = 14;
+constexpr int kPairsPerDirection = 48;
+
+int voxelIndex(int x, int y, int z) { return x + 3 * y + 9 * z; }
+
+// The voxel next to `voxel` along signed axis direction `direction` (face numbering), or -1.
+int stepVoxel(int voxel, int direction) {
+  int c[3] = {voxel % 3, voxel / 3 % 3, voxel / 9};
+  c[direction / 2] += direction % 2 == 0 ? 1 : -1;
+  if (c[direction / 2] < 0 || c[direction / 2] > 2) return -1;
+  return voxelIndex(c[0], c[1], c[2]);
+}
+
+int popCount(Mask mask) {
+  int count = 0;
+  for (; mask; mask &= mask - 1) ++count;
+  return count;
+}
+
+// Voxels of `within` face-connected to `seeds`.
+Mask reachable(Mask seeds, Mask within) {
+  Mask reached = seeds & within, frontier = reached;
+  while (frontier) {
+    Mask next = 0;
+    for (Mask m = frontier; m; m &= m - 1) {
+      const int v = __builtin_ctz(m);
+      for (int d = 0; d < 6; ++d) {
+        const int w = stepVoxel(v, d);
+        if (w >= 0 && (within >> w & 1) && !(reached >> w & 1)) next |= Mask(1) << w;
+      }
+    }
+    reached |= next;
+    frontier = next;
+  }
+  return reached;
+}
+
+Mask neighbours(Mask set) {
+  Mask result = 0;
+  for (Mask m = set; m; m &= m - 1) {
+    const int v = __builtin_ctz(m);
+    for (int d = 0; d < 6; ++d) {
+      const int w = stepVoxel(v, d);
+      if (w >= 0) result |= Mask(1) << w;
+    }
+  }
+  return result & ~set;
+}
+
+struct Aabb {
+  Vec3 lo{0, 0, 0}, hi{0, 0, 0};
+};
+
+Aabb boundsOf(const OrientedBox& box) {
+  Aabb bounds;
+  for (int k = 0; k < 3; ++k) {
+    double r = 0;
+    for (int i = 0; i < 3; ++i) r += box.halfExtents[i] * std::abs(box.axes[i][k]);
+    bounds.lo[k] = box.centre[k] - r;
+    bounds.hi[k] = box.centre[k] + r;
+  }
+  return bounds;
+}
+
+void include(Aabb& bounds, const Aabb& more) {
+  for (int k = 0; k < 3; ++k) {
+    bounds.lo[k] = std::min(bounds.lo[k], more.lo[k]);
+    bounds.hi[k] = std::max(bounds.hi[k], more.hi[k]);
+  }
+}
+
+bool overlap(const Aabb& a, const Aabb& b) {
+  for (int k = 0; k < 3; ++k) {
+    if (a.hi[k] <= b.lo[k] || b.hi[k] <= a.lo[k]) return false;
+  }
+  return true;
+}
+
+Aabb swept(Aabb bounds, int direction) {
+  const int axis = direction / 2;
+  if (direction % 2 == 0) bounds.hi[axis] = std::numeric_limits<double>::infinity();
+  else bounds.lo[axis] = -std::numeric_limits<double>::infinity();
+  return bounds;
+}
+
+// One step of the design: a beam leaves along `direction` with the voxels `taken` (free voxels it
+// takes at its joints[0] and joints[1]; its face voxels it owns from the start).
+struct Step {
+  int beam = -1;
+  int direction = 0;
+  std::array<Mask, 2> taken{0, 0};
+};
+
+// Something in the way of a moving beam: a box, and for a free voxel its joint and voxel.
+struct Obstacle {
+  OrientedBox box;
+  Aabb bounds;
+  int joint = -1, voxel = -1;  // a free voxel (it may still join the moving beam), else -1
+};
+
+class FrameDesigner {
+ public:
+  FrameDesigner(const FrameLayout& layout, const FrameDesignOptions& options)
+      : layout_(layout), frame_(layout.frame), options_(options), random_(options.seed * 0x9E3779B97F4A7C15ull + 7) {
+    const int beams = static_cast<int>(frame_.beams.size());
+    for (int b = 0; b < beams; ++b) {
+      bodies_.push_back(beamBodyBoxes(layout_, b));
+      Aabb bounds = boundsOf(bodies_.back()[0]);
+      for (const OrientedBox& box : bodies_.back()) include(bounds, boundsOf(box));
+      bodyBounds_.push_back(bounds);
+    }
+    labels_.assign(frame_.joints.size(), JointLabels{});
+    for (JointLabels& joint : labels_) joint.fill(kFree);
+    for (int b = 0; b < beams; ++b) {
+      for (int end = 0; end < 2; ++end) labels_[frame_.beams[b].joints[end]][faceCentreVoxel(layout_.endFace[b][end])] = b;
+    }
+    stepOf_.assign(beams, -1);
+  }
+
+  FrameDesignResult run();
+
+ private:
+  std::vector<Step> childrenOfCurrent();
+  void childrenOfBeam(int beam, int direction, int wanted, std::vector<Step>& children);
+  std::vector<Mask> jointOptions(int beam, int end, int direction);
+  std::vector<Obstacle> corridorObstacles(int beam, int direction) const;
+  bool sweepClear(int beam, int direction, const std::array<Mask, 2>& taken, const std::vector<Obstacle>& obstacles) const;
+  bool acceptable(const Step& step);
+  bool keyMovesAlongOnly(const Step& step) const;
+  bool restStronglyConnected(int candidate);
+  void apply(const Step& step);
+  void undo(const Step& step);
+  uint64_t nextRandom() {
+    random_ = random_ * 6364136223846793005ull + 1442695040888963407ull;
+    return random_ >> 11;
+  }
+  double seconds() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
+  int endOf(int beam, int joint) const { return frame_.beams[beam].joints[0] == joint ? 0 : 1; }
+  bool inRest(int beam) const { return stepOf_[beam] < 0; }
+
+  const FrameLayout& layout_;
+  const Frame& frame_;
+  FrameDesignOptions options_;
+  uint64_t random_;
+  std::vector<std::vector<OrientedBox>> bodies_;
+  std::vector<Aabb> bodyBounds_;
+  std::vector<JointLabels> labels_;
+  std::vector<int> stepOf_;  // per beam: its step in path_, or -1 while in R
+  std::vector<Step> path_;
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+  // Scratch for the graph test.
+  std::vector<std::pair<int, int>> edges_;
+  std::vector<int> offsets_, targets_, reverseOffsets_, reverseTargets_, partOfBeam_;
+};
+
+void FrameDesigner::apply(const Step& step) {
+  stepOf_[step.beam] = static_cast<int>(path_.size());
+  path_.push_back(step);
+  for (int end = 0; end < 2; ++end) {
+    JointLabels& joint = labels_[frame_.beams[step.beam].joints[end]];
+    for (Mask m = step.taken[end]; m; m &= m - 1) joint[__builtin_ctz(m)] = step.beam;
+  }
+}
+
+void FrameDesigner::undo(const Step& step) {
+  for (int end = 0; end < 2; ++end) {
+    JointLabels& joint = labels_[frame_.beams[step.beam].joints[end]];
+    for (Mask m = step.taken[end]; m; m &= m - 1) joint[__builtin_ctz(m)] = kFree;
+  }
+  stepOf_[step.beam] = -1;
+  path_.pop_back();
+}
+
+// The voxel sets beam `beam` may take at its end `end` when it leaves along `direction`, smallest
+// first; empty when no set works (a voxel of a beam of R lies ahead of its face voxel).
+std::vector<Mask> FrameDesigner::jointOptions(int beam, int end, int direction) {
+  const int joint = frame_.beams[beam].joints[end];
+  const JointLabels& labels = labels_[joint];
+  const int face = faceCentreVoxel(layout_.endFace[beam][end]);
+  Mask free = 0, restFaces = 0, gone = 0;
+  for (int v = 0; v < kJointVoxelCount; ++v) {
+    if (labels[v] == kFree) free |= Mask(1) << v;
+    else if (labels[v] != beam && inRest(labels[v])) restFaces |= Mask(1) << v;
+    else if (labels[v] != beam) gone |= Mask(1) << v;  // owned by a beam taken before
+  }
+  if (!restFaces) return {free};  // the last beam of R here takes every free voxel
+  // Closure along the direction: everything free ahead joins; a voxel of R ahead forbids it.
+  auto close = [&](Mask set, Mask* closed) {
+    Mask result = set;
+    for (Mask m = set | (Mask(1) << face); m; m &= m - 1) {
+      for (int w = stepVoxel(__builtin_ctz(m), direction); w >= 0; w = stepVoxel(w, direction)) {
+        if (restFaces >> w & 1) return false;
+        if (free >> w & 1) result |= Mask(1) << w;
+      }
+    }
+    *closed = result;
+    return true;
+  };
+  // P_i connected to its face voxel; each piece of R's voxels here attached to a beam of R.
+  auto valid = [&](Mask set) {
+    const Mask mine = set | (Mask(1) << face);
+    if (reachable(Mask(1) << face, mine) != mine) return false;
+    const Mask rest = (free & ~set) | restFaces;
+    return reachable(restFaces, rest) == rest;
+  };
+  std::vector<Mask> options;
+  auto add = [&](Mask set) {
+    if (std::find(options.begin(), options.end(), set) == options.end() && valid(set)) options.push_back(set);
+  };
+  Mask base = 0;
+  if (!close(0, &base)) return {};
+  add(base);
+  // One more voxel next to P_i's voxels, each in turn; voxels touching a part taken before first
+  // (they make the edges to earlier parts that close the DBG cycles).
+  const Mask around = neighbours(base | (Mask(1) << face)) & free;
+  std::vector<std::pair<uint64_t, Mask>> grown;
+  for (Mask m = around; m; m &= m - 1) {
+    const int v = __builtin_ctz(m);
+    Mask set = 0;
+    if (!close(base | (Mask(1) << v), &set)) continue;
+    const bool touchesEarlier = (neighbours(Mask(1) << v) & gone) != 0;
+    grown.push_back({(touchesEarlier ? 0 : (uint64_t(1) << 62)) + (nextRandom() >> 2), set});
+  }
+  std::sort(grown.begin(), grown.end());
+  for (const auto& [rank, set] : grown) add(set);
+  // Random growth by two to four voxels.
+  for (int attempt = 0; attempt < 3 * kOptionsPerJoint && static_cast<int>(options.size()) < kOptionsPerJoint; ++attempt) {
+    Mask set = base;
+    const int extra = 2 + static_cast<int>(nextRandom() % 3);
+    for (int k = 0; k < extra; ++k) {
+      const Mask choices = neighbours(set | (Mask(1) << face)) & free;
+      if (!choices) break;
+      int pick = static_cast<int>(nextRandom() % popCount(choices));
+      Mask m = choices;
+      for (; pick > 0; --pick) m &= m - 1;
+      Mask closed = 0;
+      if (!close(set | (m & (~m + 1)), &closed)) continue;
+      set = closed;
+    }
+    add(set);
+  }
+  std::stable_sort(options.begin(), options.end(), [](Mask a, Mask b) { return popCount(a) < popCount(b); });
+  if (static_cast<int>(options.size()) > kOptionsPerJoint) options.resize(kOptionsPerJoint);
+  return options;
+}
+
+// Everything of R in the way of `beam` leaving along `direction` with any voxels of its cubes:
+// bodies of R's beams and voxels of R (free voxels of the beam's own cubes included, tagged).
+std::vector<Obstacle> FrameDesigner::corridorObstacles(int beam, int direction) const {
+  Aabb reach = bodyBounds_[beam];
+  for (int joint : frame_.beams[beam].joints) {
+    const Vec3& p = frame_.joints[joint].position;
+    const double half = frame_.jointSize / 2;
+    include(reach, {{p[0] - half, p[1] - half, p[2] - half}, {p[0] + half, p[1] + half, p[2] + half}});
+  }
+  reach = swept(reach, direction);
+  std::vector<Obstacle> obstacles;
+  for (size_t j = 0; j < frame_.joints.size(); ++j) {
+    const Vec3& p = frame_.joints[j].position;
+    const double half = frame_.jointSize / 2;
+    if (!overlap(reach, {{p[0] - half, p[1] - half, p[2] - half}, {p[0] + half, p[1] + half, p[2] + half}})) continue;
+    for (int v = 0; v < kJointVoxelCount; ++v) {
+      const int label = labels_[j][v];
+      if (label == beam || (label != kFree && !inRest(label))) continue;
+      Obstacle obstacle;
+      obstacle.box = jointVoxelBox(layout_, static_cast<int>(j), v);
+      obstacle.bounds = boundsOf(obstacle.box);
+      if (!overlap(reach, obstacle.bounds)) continue;
+      if (label == kFree) {
+        obstacle.joint = static_cast<int>(j);
+        obstacle.voxel = v;
+      }
+      obstacles.push_back(obstacle);
+    }
+  }
+  for (size_t other = 0; other < frame_.beams.size(); ++other) {
+    if (static_cast<int>(other) == beam || !inRest(static_cast<int>(other)) || !overlap(reach, bodyBounds_[other])) continue;
+    for (const OrientedBox& box : bodies_[other]) {
+      const Aabb bounds = boundsOf(box);
+      if (overlap(reach, bounds)) obstacles.push_back({box, bounds, -1, -1});
+    }
+  }
+  return obstacles;
+}
+
+// The beam's body and voxels (face voxels and `taken`) swept along `direction` miss R.
+bool FrameDesigner::sweepClear(int beam, int direction, const std::array<Mask, 2>& taken,
+                               const std::vector<Obstacle>& obstacles) const {
+  const Vec3 d = cubeFaceNormal(direction);
+  const std::array<int, 2>& joints = frame_.beams[beam].joints;
+  std::vector<OrientedBox> moving = bodies_[beam];
+  for (int end = 0; end < 2; ++end) {
+    Mask mine = taken[end];
+    for (int v = 0; v < kJointVoxelCount; ++v) {
+      if (labels_[joints[end]][v] == beam) mine |= Mask(1) << v;
+    }
+    for (Mask m = mine; m; m &= m - 1) moving.push_back(jointVoxelBox(layout_, joints[end], __builtin_ctz(m)));
+  }
+  std::vector<Aabb> movingBounds;
+  for (const OrientedBox& box : moving) movingBounds.push_back(swept(boundsOf(box), direction));
+  for (const Obstacle& obstacle : obstacles) {
+    if (obstacle.joint >= 0) {
+      const int end = obstacle.joint == joints[0] ? 0 : obstacle.joint == joints[1] ? 1 : -1;
+      if (end >= 0 && (taken[end] >> obstacle.voxel & 1)) continue;  // it moves with the beam
+    }
+    for (size_t m = 0; m < moving.size(); ++m) {
+      if (overlap(movingBounds[m], obstacle.bounds) && sweptBoxesCollide(moving[m], d, obstacle.box)) return false;
+    }
+  }
+  return true;
+}
+
+// A_1: the key is blocked by R_1 along every axis direction but its own (voxel faces in contact).
+bool FrameDesigner::keyMovesAlongOnly(const Step& step) const {
+  std::array<bool, 6> blocked{};
+  for (int joint : frame_.beams[step.beam].joints) {
+    const JointLabels& labels = labels_[joint];
+    for (int v = 0; v < kJointVoxelCount; ++v) {
+      if (labels[v] != step.beam) continue;
+      for (int d = 0; d < 6; ++d) {
+        const int w = stepVoxel(v, d);
+        if (w >= 0 && labels[w] != step.beam) blocked[d] = true;
+      }
+    }
+  }
+  for (int d = 0; d < 6; ++d) {
+    if (blocked[d] == (d == step.direction)) return false;
+  }
+  return true;
+}
+
+// A_i (i >= 2) with the candidate applied: the DBG of the key's axis is strongly connected without
+// the key, the two others are strongly connected (paper Section 4.3, footnote 1), so every DBG is
+// strongly connected or splits off the key alone (Section 3.2). The DBGs of +axis and -axis are
+// reverses of one another: three graphs suffice.
+bool FrameDesigner::restStronglyConnected(int candidate) {
+  const int parts = static_cast<int>(path_.size()) + 1;  // path_ holds the candidate as its last step
+  const int rest = parts - 1;
+  partOfBeam_.assign(frame_.beams.size(), rest);
+  for (size_t k = 0; k < path_.size(); ++k) partOfBeam_[path_[k].beam] = static_cast<int>(k);
+  (void)candidate;
+  // Joints where two parts meet: those of beams taken so far.
+  std::vector<int> joints;
+  for (const Step& step : path_) {
+    for (int joint : frame_.beams[step.beam].joints) joints.push_back(joint);
+  }
+  std::sort(joints.begin(), joints.end());
+  joints.erase(std::unique(joints.begin(), joints.end()), joints.end());
+  const int keyAxis = path_[0].direction / 2;
+  for (int axis = 0; axis < 3; ++axis) {
+    const int stride = axis == 0 ? 1 : axis == 1 ? 3 : 9;
+    const int skipped = axis == keyAxis ? 0 : -1;  // the part left out of the graph
+    edges_.clear();
+    for (int joint : joints) {
+      const JointLabels& labels = labels_[joint];
+      for (int v = 0; v < kJointVoxelCount; ++v) {
+        const int c = axis == 0 ? v % 3 : axis == 1 ? v / 3 % 3 : v / 9;
+        if (c == 2) continue;
+        const int a = labels[v] == kFree ? rest : partOfBeam_[labels[v]];
+        const int b = labels[v + stride] == kFree ? rest : partOfBeam_[labels[v + stride]];
+        if (a != b && a != skipped && b != skipped) edges_.push_back({a, b});
+      }
+    }
+    // Compressed adjacency both ways, then reach every non-key part from R forwards and backwards.
+    offsets_.assign(parts + 1, 0);
+    reverseOffsets_.assign(parts + 1, 0);
+    for (const auto& [a, b] : edges_) {
+      ++offsets_[a + 1];
+      ++reverseOffsets_[b + 1];
+    }
+    for (int p = 0; p < parts; ++p) {
+      offsets_[p + 1] += offsets_[p];
+      reverseOffsets_[p + 1] += reverseOffsets_[p];
+    }
+    targets_.assign(edges_.size(), 0);
+    reverseTargets_.assign(edges_.size(), 0);
+    {
+      std::vector<int> fill(offsets_.begin(), offsets_.end() - 1), reverseFill(reverseOffsets_.begin(), reverseOffsets_.end() - 1);
+      for (const auto& [a, b] : edges_) {
+        targets_[fill[a]++] = b;
+        reverseTargets_[reverseFill[b]++] = a;
+      }
+    }
+    for (int way = 0; way < 2; ++way) {
+      const std::vector<int>& offsets = way == 0 ? offsets_ : reverseOffsets_;
+      const std::vector<int>& targets = way == 0 ? targets_ : reverseTargets_;
+      std::vector<char> seen(parts, 0);
+      std::vector<int> stack{rest};
+      seen[rest] = 1;
+      int count = 1;
+      while (!stack.empty()) {
+        const int p = stack.back();
+        stack.pop_back();
+        for (int e = offsets[p]; e < offsets[p + 1]; ++e) {
+          if (!seen[targets[e]]) {
+            seen[targets[e]] = 1;
+            ++count;
+            stack.push_back(targets[e]);
+          }
+        }
+      }
+      if (count != (skipped == 0 ? parts - 1 : parts)) return false;
+    }
+  }
+  return true;
+}
+
+bool FrameDesigner::acceptable(const Step& step) {
+  apply(step);
+  const bool ok = path_.size() == 1 ? keyMovesAlongOnly(step) : restStronglyConnected(step.beam);
+  undo(step);
+  return ok;
+}
+
+// Up to `wanted` children for taking `beam` along `direction`: pairs of voxel sets at its two
+// joints, smallest first, kept when the beam sweeps clear and A_i passes.
+void FrameDesigner::childrenOfBeam(int beam, int direction, int wanted, std::vector<Step>& children) {
+  const std::vector<Obstacle> obstacles = corridorObstacles(beam, direction);
+  // The body alone against everything that will not join the beam.
+  {
+    std::vector<Obstacle> fixed;
+    for (const Obstacle& o : obstacles) {
+      const bool ownFree = o.joint >= 0 && (o.joint == frame_.beams[beam].joints[0] || o.joint == frame_.beams[beam].joints[1]);
+      if (!ownFree) fixed.push_back(o);
+    }
+    if (!sweepClear(beam, direction, {0, 0}, fixed)) return;
+  }
+  const std::vector<Mask> first = jointOptions(beam, 0, direction);
+  if (first.empty()) return;
+  const std::vector<Mask> second = jointOptions(beam, 1, direction);
+  if (second.empty()) return;
+  std::vector<std::pair<uint64_t, std::array<Mask, 2>>> pairs;
+  for (Mask a : first) {
+    for (Mask b : second) pairs.push_back({(uint64_t(popCount(a) + popCount(b)) << 40) + (nextRandom() >> 24), {a, b}});
+  }
+  std::sort(pairs.begin(), pairs.end());
+  int tried = 0, found = 0;
+  for (const auto& [rank, taken] : pairs) {
+    if (++tried > kPairsPerDirection || found >= wanted) break;
+    const Step step{beam, direction, taken};
+    if (!sweepClear(beam, direction, taken, obstacles)) continue;
+    if (!acceptable(step)) continue;
+    children.push_back(step);
+    ++found;
+  }
+}
+
+std::vector<Step> FrameDesigner::childrenOfCurrent() {
+  const int beams = static_cast<int>(frame_.beams.size());
+  // The parts-graph of R: beams sharing a joint.
+  std::vector<int> rest, index(beams, -1);
+  for (int b = 0; b < beams; ++b) {
+    if (inRest(b)) {
+      index[b] = static_cast<int>(rest.size());
+      rest.push_back(b);
+    }
+  }
+  std::vector<std::pair<int, int>> edges;
+  std::vector<int> restNeighbours(beams, 0);
+  std::vector<bool> touchesTaken(beams, false);
+  for (const std::vector<int>& atJoint : layout_.beamsAtJoint) {
+    bool taken = false;
+    for (int b : atJoint) taken = taken || !inRest(b);
+    for (size_t x = 0; x < atJoint.size(); ++x) {
+      if (!inRest(atJoint[x])) continue;
+      touchesTaken[atJoint[x]] = touchesTaken[atJoint[x]] || taken;
+      for (size_t y = x + 1; y < atJoint.size(); ++y) {
+        if (!inRest(atJoint[y])) continue;
+        edges.push_back({index[atJoint[x]], index[atJoint[y]]});
+        ++restNeighbours[atJoint[x]];
+        ++restNeighbours[atJoint[y]];
+      }
+    }
+  }
+  std::vector<bool> isCut(beams, false);
+  for (int i : findCutPoints(static_cast<int>(rest.size()), edges)) isCut[rest[i]] = true;
+  struct Candidate {
+    int beam;
+    int neighbours;
+    double height;
+    uint64_t tie;
+  };
+  std::vector<Candidate> candidates;
+  for (int b : rest) {
+    if (isCut[b] || (!path_.empty() && !touchesTaken[b])) continue;
+    const double height = frame_.joints[frame_.beams[b].joints[0]].position[1] + frame_.joints[frame_.beams[b].joints[1]].position[1];
+    candidates.push_back({b, path_.empty() ? 0 : restNeighbours[b], height, nextRandom()});
+  }
+  std::sort(candidates.begin(), candidates.end(), [](const Candidate& x, const Candidate& y) {
+    if (x.neighbours != y.neighbours) return x.neighbours < y.neighbours;
+    if (x.height != y.height) return x.height > y.height;
+    return x.tie < y.tie;
+  });
+  std::vector<Step> children;
+  for (const Candidate& candidate : candidates) {
+    // The key leaves upwards when it can (paper Section 4.2: gravity keeps it in); other
+    // directions in a seeded order.
+    std::array<int, 6> directions{2, 0, 1, 3, 4, 5};
+    for (int k = 5; k > (path_.empty() ? 1 : 0); --k) {
+      const int j = (path_.empty() ? 1 : 0) + static_cast<int>(nextRandom() % (k - (path_.empty() ? 1 : 0) + 1));
+      std::swap(directions[k], directions[j]);
+    }
+    for (int direction : directions) {
+      if (static_cast<int>(children.size()) >= options_.candidates) return children;
+      childrenOfBeam(candidate.beam, direction, 1, children);
+    }
+  }
+  return children;
+}
+
+FrameDesignResult FrameDesigner::run() {
+  FrameDesignResult result;
+  FrameDesignProgress& progress = result.progress;
+  const int beams = static_cast<int>(frame_.beams.size());
+  progress.targetParts = beams;
+  const std::vector<int> cuts = frameCutBeams(layout_);
+  if (!cuts.empty()) {
+    result.status = FrameDesignStatus::CutPoint;
+    result.message = "beam " + std::to_string(frame_.beams[cuts[0]].id) +
+                     " is a cut point of the parts-graph: taking it away splits the other beams, and no joints can make such "
+                     "a frame interlocking (paper Section 5.2, Fig. 18); add a beam that joins the two sides";
+    return result;
+  }
+  if (beams < 3) {
+    result.message = "an interlocking frame needs at least three beams; this one has " + std::to_string(beams);
+    return result;
+  }
+  std::vector<std::vector<Step>> pending{childrenOfCurrent()};
+  bool complete = false;
+  while (!pending.empty()) {
+    ++progress.nodes;
+    progress.depth = static_cast<int>(path_.size());
+    progress.seconds = seconds();
+    if (options_.onProgress && !options_.onProgress(progress)) {
+      result.status = FrameDesignStatus::Cancelled;
+      result.message = "cancelled after " + std::to_string(progress.nodes) + " nodes";
+      return result;
+    }
+    if ((options_.timeLimitSeconds > 0 && progress.seconds > options_.timeLimitSeconds) || progress.nodes > options_.nodeLimit) {
+      result.status = FrameDesignStatus::LimitReached;
+      result.message = "no design within the limits (" + std::to_string(progress.nodes) + " nodes; deepest " +
+                       std::to_string(progress.bestDepth) + " of " + std::to_string(beams) + " beams)";
+      return result;
+    }
+    if (pending.back().empty()) {  // no child left here: back to the parent's next sibling
+      pending.pop_back();
+      if (!path_.empty()) undo(path_.back());
+      continue;
+    }
+    const Step step = pending.back().front();
+    pending.back().erase(pending.back().begin());
+    apply(step);
+    progress.bestDepth = std::max(progress.bestDepth, static_cast<int>(path_.size()) + 1);
+    if (static_cast<int>(path_.size()) + 1 == beams) {
+      // R is the last beam: it owns every voxel still free. Accepted only if it verifies.
+      int last = 0;
+      while (!inRest(last)) ++last;
+      std::vector<JointLabels> labels = labels_;
+      for (JointLabels& joint : labels) std::replace(joint.begin(), joint.end(), kFree, last);
+      std::vector<int> order;
+      std::vector<Vec3> directions;
+      for (const Step& s : path_) {
+        order.push_back(s.beam);
+        directions.push_back(cubeFaceNormal(s.direction));
+      }
+      order.push_back(last);
+      if (frameDesignFailure(layout_, labels, order, directions).empty()) {
+        result.order = order;
+        result.directions = directions;
+        result.labels = labels;
+        complete = true;
+        break;
+      }
+      undo(step);
+      continue;
+    }
+    pending.push_back(childrenOfCurrent());
+  }
+  if (!complete) {
+    result.status = FrameDesignStatus::NotFound;
+    result.message = "no interlocking joints exist within the search (" + std::to_string(progress.nodes) + " nodes; deepest " +
+                     std::to_string(progress.bestDepth) + " of " + std::to_string(beams) + " beams)";
+    return result;
+  }
+  result.assembly = frameAssembly(layout_, result.labels, result.order);
+  result.status = FrameDesignStatus::Success;
+  result.message = "designed the joints of " + std::to_string(beams) + " beams (key: beam " +
+                   std::to_string(frame_.beams[result.order[0]].id) + ") in " + std::to_string(progress.nodes) + " nodes";
+  return result;
+}
+
+}  // namespace
+
+const char* frameDesignStatusName(FrameDesignStatus status) {
+  switch (status) {
+    case FrameDesignStatus::Success: return "success";
+    case FrameDesignStatus::NotFound: return "not-found";
+    case FrameDesignStatus::LimitReached: return "limit-reached";
+    case FrameDesignStatus::Cancelled: return "cancelled";
+    case FrameDesignStatus::CutPoint: return "cut-point";
+  }
+  return "not-found";
+}
+
+std::string frameDesignFailure(const FrameLayout& layout, const std::vector<JointLabels>& labels, const std::vector<int>& order,
+                               const std::vector<Vec3>& directions) {
+  const Frame& frame = layout.frame;
+  try {
+    validateJointLabels(layout, labels, "design");
+  } catch (const Error& e) {
+    return e.what();
+  }
+  std::vector<int> sorted = order;
+  std::sort(sorted.begin(), sorted.end());
+  for (size_t k = 0; k < sorted.size(); ++k) {
+    if (sorted[k] != static_cast<int>(k)) return "the removal order does not list every beam once";
+  }
+  if (directions.size() + 1 != order.size()) return "every beam but the last needs a removal direction";
+  const Assembly assembly = frameAssembly(layout, labels, order);
+  const InterlockingResult byGraphs = testInterlockingByGraphs(assembly, computeBaseDirections(assembly));
+  if (byGraphs.verdict != Verdict::Interlocking || byGraphs.key != 0) return "dbg: " + byGraphs.reason;
+  bool keyDirection = false;
+  for (const Vec3& d : byGraphs.keyDirections) keyDirection = keyDirection || dot(d, directions[0]) > 1 - 1e-9;
+  if (!keyDirection) return "the key is not free along its planned direction " + directionLabel(directions[0]);
+  std::vector<bool> present(frame.beams.size(), true);
+  for (size_t k = 0; k < directions.size(); ++k) {
+    const std::string obstacle = frameSweepObstacle(layout, labels, order[k], directions[k], present);
+    if (!obstacle.empty()) {
+      return "beam " + std::to_string(frame.beams[order[k]].id) + " cannot leave along " + directionLabel(directions[k]) +
+             ": it hits " + obstacle;
+    }
+    present[order[k]] = false;
+  }
+  return "";
+}
+
+FrameDesignResult designFrame(const FrameLayout& layout, const FrameDesignOptions& options) {
+  if (options.candidates < 1) throwBadInput("", "candidates must be at least 1");
+  FrameDesigner designer(layout, options);
+  FrameDesignResult result = designer.run();
+  if (result.status == FrameDesignStatus::Success) {
+    // The search accepts only what passes; checking again guards the result, never a guess.
+    const std::string failure = frameDesignFailure(layout, result.labels, result.order, result.directions);
+    if (!failure.empty()) throw Error(ErrorCode::Internal, "the frame design did not verify: " + failure);
+  }
+  return result;
+}
+
+}  // namespace desia

@@ -1,0 +1,127 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Frame structures (paper Section 5.3): beams joined at joints, every joint an axis-aligned cube of
+// 3x3x3 voxels. Every beam end enters the face of its joint cube whose normal is closest to the
+// beam's end tangent, at that face's centre voxel, so a joint holds at most six beams. A part is
+// one beam with the voxels it owns in the joint cubes at its two ends; parts touch only where
+// voxels of different parts share a face, so every contact normal is an axis (the DBG test is
+// exact, paper Section 3.2).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "desia/assembly.h"
+#include "desia/mesh.h"
+
+namespace desia {
+
+constexpr int kJointVoxelsPerSide = 3;
+constexpr int kJointVoxelCount = 27;
+constexpr int kMaxJointValence = 6;
+// Beams and joints a frame may have (checked while reading, before anything is allocated).
+constexpr int kMaxFrameBeams = 20000;
+constexpr int kMaxFrameJoints = 20000;
+constexpr int kMaxBeamPathPoints = 10000;
+
+// Faces of a joint cube, numbered as in FrameInterlock's .fpuz files: 0 +x, 1 -x, 2 +y, 3 -y,
+// 4 +z, 5 -z. Face f has axis f / 2 and points along + for even f.
+const char* cubeFaceName(int face);  // "+x", "-x", ...
+Vec3 cubeFaceNormal(int face);
+// The face's centre voxel (where a beam enters), as an index x + 3y + 9z of the cube's voxels.
+int faceCentreVoxel(int face);
+
+struct FrameJoint {
+  int id = 0;  // the id the user sees (1-based in files)
+  Vec3 position{0, 0, 0};
+};
+
+struct FrameBeam {
+  int id = 0;                // the id the user sees
+  int inputId = 0;           // the beam's id in the design it came from (result documents), else = id
+  std::array<int, 2> joints{0, 0};  // internal joint indices of its two ends
+  std::vector<Vec3> path;    // interior points of a curved beam (polyline), none for a straight beam
+};
+
+struct Frame {
+  std::vector<FrameJoint> joints;
+  std::vector<FrameBeam> beams;
+  double jointSize = 0;    // edge length of a joint cube; 0 = the default from the geometry
+  double beamSection = 0;  // side of the beams' square section; 0 = the voxel size (jointSize / 3)
+};
+
+// A validated frame with what follows from its geometry.
+struct FrameLayout {
+  Frame frame;                              // sizes resolved (never 0)
+  double voxelSize = 0;                     // jointSize / 3
+  std::vector<std::array<int, 2>> endFace;  // per beam, the face it enters at joints[0] and joints[1]
+  std::vector<std::array<int, 6>> faceBeam;  // per joint, the beam entering each face, or -1
+  std::vector<std::vector<int>> beamsAtJoint;  // per joint, its beams (sorted)
+};
+
+// The default joint cube: a fifth of the shortest beam (chord between its joints), and less than
+// half the smallest distance (largest coordinate difference) between two joints, so cubes never
+// overlap.
+double defaultJointSize(const Frame& frame);
+
+// Checks the frame and derives its layout. Throws BadInput naming `source`, the joint and the
+// beams for: a beam whose ends are one joint or one point, two beams between the same joints (and
+// along the same path), an end tangent that ties two faces, two beams through one face, valence
+// above 6, joint cubes that overlap or touch, a path point inside a joint cube, a beam that
+// crosses another beam or passes through a joint cube, a joint without beams, a frame that falls
+// apart into groups, sizes out of range (beam section above the voxel size).
+FrameLayout layoutFrame(Frame frame, const std::string& source);
+
+// The beams (internal indices, sorted) that are cut points of the parts-graph (nodes = beams,
+// adjacent when they share a joint): taking one away splits the others, and no joints can make
+// such a frame interlocking (paper Section 5.2, Fig. 18, which carries over to frames).
+std::vector<int> frameCutBeams(const FrameLayout& layout);
+
+// Voxel labels of every joint cube: index x + 3y + 9z (x fastest, as in .puz and .fpuz), value =
+// internal index of the beam owning the voxel, or -1 (not assigned yet, during design only).
+using JointLabels = std::array<int, kJointVoxelCount>;
+
+// Throws BadInput unless every voxel is owned by a beam at that joint, every beam owns its face
+// centre voxel, and the voxels of each beam at a joint are face-connected.
+void validateJointLabels(const FrameLayout& layout, const std::vector<JointLabels>& labels, const std::string& source);
+
+// The assembly the interlocking tests read: parts = beams (part k = beam `partOrder[k]`, id and
+// name from the beam), one contact per pair of parts and axis normal where their voxels share
+// faces (area = the number of faces).
+Assembly frameAssembly(const FrameLayout& layout, const std::vector<JointLabels>& labels,
+                       const std::vector<int>& partOrder);
+
+// An oriented box: centre, orthonormal axes, half extents along them.
+struct OrientedBox {
+  Vec3 centre{0, 0, 0};
+  std::array<Vec3, 3> axes{Vec3{1, 0, 0}, Vec3{0, 1, 0}, Vec3{0, 0, 1}};
+  Vec3 halfExtents{0, 0, 0};
+};
+
+// The body of a beam as boxes of its square section along its centreline: from the centre of the
+// face it enters at one joint, straight out of that face for half a voxel (when it then turns),
+// through its path, to the face at the other end. Each box reaches half a section further at both
+// ends, so bends are covered. Coordinates in the frame's units.
+std::vector<OrientedBox> beamBodyBoxes(const FrameLayout& layout, int beam);
+// The centreline's length from face to face (the cut length of a straight beam).
+double beamBodyLength(const FrameLayout& layout, int beam);
+// The box of voxel `voxel` (x + 3y + 9z) of joint `joint`.
+OrientedBox jointVoxelBox(const FrameLayout& layout, int joint, int voxel);
+
+// Does `moving`, translated by t * direction for some t > 0 (to infinity), overlap `fixed` with
+// positive depth? Touching faces do not count; sliding along them does not either. Exact for boxes
+// (separating axes over the whole motion).
+bool sweptBoxesCollide(const OrientedBox& moving, const Vec3& direction, const OrientedBox& fixed);
+
+// Can beam `beam`, with its voxels, leave along `direction` (unit axis) while the beams flagged in
+// `present` stay (their bodies and voxels)? Returns "" or what it hits ("beam 4", "a voxel of beam
+// 7 at joint 3").
+std::string frameSweepObstacle(const FrameLayout& layout, const std::vector<JointLabels>& labels, int beam,
+                               const Vec3& direction, const std::vector<bool>& present);
+
+// Closed meshes (in the frame's units) of one beam: its body boxes and its voxel groups, one
+// closed shell each (every edge in two triangles).
+TriangleMesh beamPartMesh(const FrameLayout& layout, const std::vector<JointLabels>& labels, int beam);
+
+}  // namespace desia

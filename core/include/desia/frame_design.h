@@ -1,0 +1,58 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Designing the voxel joints of an interlocking frame structure (paper Section 5.3): the key beam,
+// the order in which the other beams are taken out, the axis each one leaves along, and which beam
+// owns each voxel of each joint cube. Same shape as the plate planner (plate_design.h).
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "desia/assembly.h"
+#include "desia/frame.h"
+
+namespace desia {
+
+struct FrameDesignProgress {
+  int64_t nodes = 0;    // construction-tree nodes visited
+  int depth = 0;        // beams placed in the current node
+  int bestDepth = 0;
+  int targetParts = 0;  // the number of beams
+  double seconds = 0;
+};
+
+struct FrameDesignOptions {
+  uint64_t seed = 1;
+  int candidates = 4;             // children kept per node (the paper's m)
+  double timeLimitSeconds = 60;   // 0 = none
+  int64_t nodeLimit = 1'000'000;
+  // Called at every node of the search; return false to cancel.
+  std::function<bool(const FrameDesignProgress&)> onProgress;
+};
+
+enum class FrameDesignStatus { Success, NotFound, LimitReached, Cancelled, CutPoint };
+const char* frameDesignStatusName(FrameDesignStatus status);  // "success", "not-found", ...
+
+struct FrameDesignResult {
+  FrameDesignStatus status = FrameDesignStatus::NotFound;
+  std::string message;               // one sentence for the user
+  std::vector<int> order;            // beam indices: the key first, the last beam last
+  std::vector<Vec3> directions;      // axis direction order[k] leaves along (none for the last beam)
+  std::vector<JointLabels> labels;   // per joint, the owning beam of each voxel (internal indices)
+  Assembly assembly;                 // parts = beams in `order` (part 1 = key), voxel contacts
+  FrameDesignProgress progress;
+};
+
+// Designs the joints of a frame whose parts-graph has no cut point (otherwise: status CutPoint,
+// naming the beam). Deterministic for a seed. A success has been verified (frameDesignFailure).
+FrameDesignResult designFrame(const FrameLayout& layout, const FrameDesignOptions& options = {});
+
+// Why a complete design fails, or "" when it passes: the assembly of the joint voxels is
+// interlocking by the DBG test with order[0] as the only movable part, and each beam, with its
+// body and voxels, leaves the beams after it along its direction without hitting any of their
+// bodies or voxels (swept), in order.
+std::string frameDesignFailure(const FrameLayout& layout, const std::vector<JointLabels>& labels,
+                               const std::vector<int>& order, const std::vector<Vec3>& directions);
+
+}  // namespace desia

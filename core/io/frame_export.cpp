@@ -1,0 +1,143 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Exports of frame structures: part meshes (STL, OBJ), FrameInterlock's .fpuz, the cut list (CSV),
+// and the surfaces a viewer draws.
+#include <cmath>
+
+#include "desia/error.h"
+#include "desia/frame_format.h"
+#include "io/export_internals.h"
+
+namespace desia {
+namespace {
+
+std::string cellsText(const JointLabels& labels, int beam) {
+  std::string text;
+  for (int v = 0; v < kJointVoxelCount; ++v) {
+    if (labels[v] != beam) continue;
+    if (!text.empty()) text += ";";
+    text += std::to_string(v % 3) + " " + std::to_string(v / 3 % 3) + " " + std::to_string(v / 9);
+  }
+  return text;
+}
+
+// The bare joint cubes of a frame without designed joints.
+TriangleMesh cubesMesh(const FrameLayout& layout) {
+  TriangleMesh mesh;
+  for (size_t j = 0; j < layout.frame.joints.size(); ++j) {
+    VoxelGrid grid(1, 1, 1);
+    grid.setLabelAt(0, 1);
+    const TriangleMesh cube = partSurfaceMesh(grid, 1, layout.frame.jointSize);
+    const Vec3& p = layout.frame.joints[j].position;
+    const int first = static_cast<int>(mesh.vertices.size());
+    const double half = layout.frame.jointSize / 2;
+    for (const auto& v : cube.vertices) mesh.vertices.push_back({v[0] + p[0] - half, v[1] + p[1] - half, v[2] + p[2] - half});
+    for (const auto& t : cube.triangles) mesh.triangles.push_back({t[0] + first, t[1] + first, t[2] + first});
+  }
+  return mesh;
+}
+
+TriangleMesh bodyMesh(const FrameLayout& layout, int beam) {
+  std::vector<JointLabels> none(layout.frame.joints.size());
+  for (JointLabels& labels : none) labels.fill(-1);
+  return beamPartMesh(layout, none, beam);
+}
+
+std::vector<NamedMesh> partMeshes(const FrameDocument& document, int part, const std::string& source) {
+  const FrameLayout& layout = document.layout;
+  std::vector<NamedMesh> meshes;
+  for (int beam : document.order) {
+    const int id = layout.frame.beams[beam].id;
+    if (part != 0 && part != id) continue;
+    meshes.push_back({id, document.labels.empty() ? bodyMesh(layout, beam) : beamPartMesh(layout, document.labels, beam)});
+  }
+  if (meshes.empty()) throwBadInput(source, "part " + std::to_string(part) + " is not a beam of this frame (0 = all parts)");
+  if (document.labels.empty() && part == 0) meshes.push_back({0, cubesMesh(layout)});
+  return meshes;
+}
+
+std::vector<uint8_t> bytesOf(const std::string& text) { return std::vector<uint8_t>(text.begin(), text.end()); }
+
+}  // namespace
+
+std::string frameCutListCsv(const FrameDocument& document) {
+  const FrameLayout& layout = document.layout;
+  const Frame& frame = layout.frame;
+  std::string out =
+      "part,input beam,joint a,face a,joint b,face b,body length,section,voxels at a,cells at a,voxels at b,cells at b,removal\n";
+  for (size_t k = 0; k < document.order.size(); ++k) {
+    const int beam = document.order[k];
+    const FrameBeam& b = frame.beams[beam];
+    out += std::to_string(b.id) + "," + std::to_string(b.inputId ? b.inputId : b.id);
+    for (int end = 0; end < 2; ++end) out += "," + std::to_string(frame.joints[b.joints[end]].id) + "," + cubeFaceName(layout.endFace[beam][end]);
+    out += "," + formatNumber(beamBodyLength(layout, beam)) + "," + formatNumber(frame.beamSection);
+    for (int end = 0; end < 2; ++end) {
+      if (document.labels.empty()) {
+        out += ",,";
+        continue;
+      }
+      const JointLabels& labels = document.labels[b.joints[end]];
+      int count = 0;
+      for (int label : labels) count += label == beam ? 1 : 0;
+      out += "," + std::to_string(count) + "," + cellsText(labels, beam);
+    }
+    std::string removal = k + 1 == document.order.size() ? "stays" : "";
+    if (k < document.directions.size()) {
+      for (int face = 0; face < 6; ++face) {
+        if (cubeFaceNormal(face) == document.directions[k]) removal = cubeFaceName(face);
+      }
+    }
+    out += "," + removal + "\n";
+  }
+  return out;
+}
+
+std::vector<uint8_t> exportFrame(const FrameDocument& document, const std::string& format, int part, const std::string& source) {
+  const Frame& frame = document.layout.frame;
+  if (format == "fpuz" || format == "csv") {
+    if (part != 0) throwBadInput(source, "a ." + format + " file holds the whole frame, so it cannot hold only part " + std::to_string(part));
+    if (document.labels.empty()) throwBadInput(source, "this frame has no designed joints yet: run desia design frame first");
+    if (format == "csv") return bytesOf(frameCutListCsv(document));
+    for (const FrameBeam& beam : frame.beams) {
+      if (!beam.path.empty()) throwBadInput(source, "beam " + std::to_string(beam.id) + " is curved, and .fpuz holds straight beams only; export stl, obj or csv");
+    }
+    return bytesOf(formatFpuz(document));
+  }
+  if (format != "stl" && format != "stl-ascii" && format != "obj") {
+    throwBadInput(source, "unknown export format '" + format + "' for a frame (expected stl, stl-ascii, obj, fpuz or csv)");
+  }
+  const std::vector<NamedMesh> meshes = partMeshes(document, part, source);
+  const std::string what = part == 0 ? std::to_string(frame.beams.size()) + " beams" : "part " + std::to_string(part);
+  const std::string title = "frame export, " + what + ", one closed shell per body box and voxel group";
+  if (format == "stl") return bytesOf(binaryStl(meshes, title));
+  if (format == "stl-ascii") return bytesOf(asciiStl(meshes, part == 0 ? "frame" : "part" + std::to_string(part)));
+  return bytesOf(wavefrontObj(meshes, title));
+}
+
+std::vector<PartSurface> framePartSurfaces(const FrameDocument& document) {
+  std::vector<PartSurface> surfaces;
+  for (const NamedMesh& named : partMeshes(document, 0, "<input>")) {
+    PartSurface surface;
+    surface.partId = named.partId;
+    const TriangleMesh& mesh = named.mesh;
+    for (const auto& triangle : mesh.triangles) {
+      const auto& a = mesh.vertices[triangle[0]];
+      const auto& b = mesh.vertices[triangle[1]];
+      const auto& c = mesh.vertices[triangle[2]];
+      double n[3] = {(b[1] - a[1]) * (c[2] - a[2]) - (b[2] - a[2]) * (c[1] - a[1]),
+                     (b[2] - a[2]) * (c[0] - a[0]) - (b[0] - a[0]) * (c[2] - a[2]),
+                     (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])};
+      const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+      for (double& x : n) x = length > 0 ? x / length : 0;
+      for (const auto* vertex : {&a, &b, &c}) {
+        for (int k = 0; k < 3; ++k) {
+          surface.positions.push_back(static_cast<float>((*vertex)[k]));
+          surface.normals.push_back(static_cast<float>(n[k]));
+        }
+      }
+    }
+    surfaces.push_back(std::move(surface));
+  }
+  return surfaces;
+}
+
+}  // namespace desia
