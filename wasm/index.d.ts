@@ -273,10 +273,6 @@ export interface PartSurface {
   normals: Float32Array;
 }
 
-/**
- * Options of the plate and frame designers. Their cores have not landed yet: every call rejects
- * with code 'unsupported' for now. The options will be the designers' own, as for designVoxel.
- */
 /** Options of designPlate. */
 export interface PlateDesignOptions {
   /** Default 1: the same seed gives the same plan, natively and in WebAssembly. */
@@ -286,6 +282,19 @@ export interface PlateDesignOptions {
   nodeLimit?: number;
   /** Seconds, default 60. */
   timeLimit?: number;
+  /**
+   * 'cut' (default): joints cut into the plates (through and open mortise-and-tenon joints where a
+   * square edge stands on a face at a right angle), verified on the jointed plates. 'planned': the
+   * paper's graph design alone (halved, mortise-and-tenon or empty joints by angle), verified on
+   * the joints' model contacts; nothing to cut.
+   */
+  joints?: 'cut' | 'planned';
+  /** mm of play between a tenon and its mortise, cut into `fabricationPlates` (0 to 10, default 0). */
+  clearance?: number;
+  /** mm along the edge (default: from the edge's length). */
+  tenonWidth?: number;
+  /** Tenons per joint, 1 to 20 (default: 1, or 2 on edges longer than 8 thicknesses). */
+  tenonCount?: number;
   onProgress?: (progress: DesignProgress) => boolean | void;
   /** Name used in error messages. */
   source?: string;
@@ -340,10 +349,11 @@ export interface DesiaCore {
   /** An interactive design session; call dispose() when done. */
   designSession(shapeText: string, options: Omit<DesignVoxelOptions, 'onProgress'>): DesignSession;
   /**
-   * Plans the joints of a plate design (paper Section 5.2: key, removal order and directions, a
-   * joint per contact); options `seed`, `candidates`, `nodeLimit`, `timeLimit` (seconds). The
-   * result's `document` is the plan (kind 'plate', part 1 = the key), verified by both tests; the
-   * joints' cuts are not in the plates' outlines yet (`jointGeometry: 'planned'`).
+   * Designs the joints of a plate design (paper Section 5.2: key, removal order and directions, a
+   * joint per pair of touching plates). The result's `document` (kind 'plate', part 1 = the key)
+   * holds the plates with their tenons and mortises cut (`jointGeometry: 'cut'`; with
+   * `joints: 'planned'`, the plates as given and `jointGeometry: 'planned'`), verified by both
+   * tests and, when cut, by sweeping each plate out past the ones still in place.
    */
   designPlate(input: string | AssemblyDocument, options?: PlateDesignOptions): DesignResult;
   /** Designs a frame structure. Not yet: throws a DesiaError with code 'unsupported'. */

@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "cli_arguments.h"
 
+#include <cmath>
+#include <sstream>
+
 #include <algorithm>
 
 #include "desia/error.h"
@@ -53,6 +56,25 @@ long long integerOption(const std::string& flag, const std::string& text, long l
   if (used != text.size() || text.empty()) throw Error(ErrorCode::BadInput, flag + " expects an integer, got '" + text + "'");
   if (value < lo || value > hi) {
     throw Error(ErrorCode::BadInput, flag + " " + text + " is out of range (" + std::to_string(lo) + " to " + std::to_string(hi) + ")");
+  }
+  return value;
+}
+
+double numberOption(const std::string& flag, const std::string& text, double lo, double hi) {
+  size_t used = 0;
+  double value = 0;
+  try {
+    value = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != text.size() || text.empty() || !std::isfinite(value)) {
+    throw Error(ErrorCode::BadInput, flag + " expects a number, got '" + text + "'");
+  }
+  if (value < lo || value > hi) {
+    std::ostringstream range;
+    range << lo << " to " << hi;
+    throw Error(ErrorCode::BadInput, flag + " " + text + " is out of range (" + range.str() + ")");
   }
   return value;
 }

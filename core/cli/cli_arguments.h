@@ -32,4 +32,7 @@ int parseDigits(const std::string& text, const std::string& message);
 // An integer option value within [lo, hi]; throws BadInput naming the flag and the value else.
 long long integerOption(const std::string& flag, const std::string& text, long long lo, long long hi);
 
+// A finite decimal option value within [lo, hi] (millimetres and the like); BadInput else.
+double numberOption(const std::string& flag, const std::string& text, double lo, double hi);
+
 }  // namespace desia::cli

@@ -43,6 +43,10 @@ int runPlateDesignCommand(const std::vector<std::string>& args) {
     else if (flag == "--candidates") options.candidates = static_cast<int>(desia::cli::integerOption(flag, value, 1, 10000));
     else if (flag == "--node-limit") options.nodeLimit = desia::cli::integerOption(flag, value, 1, 1LL << 50);
     else if (flag == "--time-limit") options.timeLimitSeconds = static_cast<double>(desia::cli::integerOption(flag, value, 1, 10000000));
+    else if (flag == "--joints") options.realization = desia::parseJointRealization(value);
+    else if (flag == "--clearance") options.joints.clearance = desia::cli::numberOption(flag, value, 0, 10);
+    else if (flag == "--tenon-width") options.joints.tenonWidth = desia::cli::numberOption(flag, value, 1, 10000);
+    else if (flag == "--tenon-count") options.joints.tenonCount = static_cast<int>(desia::cli::integerOption(flag, value, 1, 20));
     else usage("unknown option " + flag + " for design plate");
   }
   if (input.empty()) usage("design plate needs --input DESIGN.json|.obj|.stl");
@@ -57,6 +61,7 @@ int runPlateDesignCommand(const std::vector<std::string>& args) {
     usage(input + ": design plate needs a plate design (kind \"plate\" with \"plates\" and no \"contacts\")");
   }
   std::vector<desia::PlateContact> contacts = desia::computePlateContacts(document.plates, document.plateOptions);
+  options.geometry = document.plateOptions;
   const bool live = !quiet && isatty(STDERR_FILENO);
   options.onProgress = [&](const desia::PlateDesignProgress& p) {
     if (live) std::fprintf(stderr, "\r%lld nodes, depth %d/%d, %.1f s   ", static_cast<long long>(p.nodes), p.depth + 1, p.targetParts, p.seconds);

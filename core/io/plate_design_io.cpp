@@ -2,6 +2,8 @@
 // The plate joint planner's options and result as JSON, for the WebAssembly module.
 #include <nlohmann/json.hpp>
 
+#include <sstream>
+
 #include "desia/check.h"
 #include "desia/error.h"
 #include "desia/plate_design_io.h"
@@ -31,6 +33,15 @@ int64_t integerOption(const json& value, const std::string& name, int64_t lo, in
   return value.get<int64_t>();
 }
 
+double numberOption(const json& value, const std::string& name, double lo, double hi) {
+  if (!value.is_number() || !(value.get<double>() >= lo && value.get<double>() <= hi)) {
+    std::ostringstream range;
+    range << lo << " to " << hi;
+    throwBadInput("", "design option '" + name + "' must be a number from " + range.str() + " (mm), got " + value.dump());
+  }
+  return value.get<double>();
+}
+
 }  // namespace
 
 PlateDesignOptions parsePlateDesignOptionsJson(const std::string& text) {
@@ -42,7 +53,14 @@ PlateDesignOptions parsePlateDesignOptionsJson(const std::string& text) {
     else if (name == "candidates") options.candidates = static_cast<int>(integerOption(value, name, 1, 10000));
     else if (name == "nodeLimit") options.nodeLimit = integerOption(value, name, 1, int64_t(1) << 50);
     else if (name == "timeLimit") options.timeLimitSeconds = static_cast<double>(integerOption(value, name, 1, 10000000));
-    else throwBadInput("", "unknown design option '" + name + "' for designPlate (expected seed, candidates, nodeLimit or timeLimit)");
+    else if (name == "joints") options.realization = parseJointRealization(value.is_string() ? value.get<std::string>() : value.dump());
+    else if (name == "clearance") options.joints.clearance = numberOption(value, name, 0, 10);
+    else if (name == "tenonWidth") options.joints.tenonWidth = numberOption(value, name, 1, 10000);
+    else if (name == "tenonCount") options.joints.tenonCount = static_cast<int>(integerOption(value, name, 1, 20));
+    else {
+      throwBadInput("", "unknown design option '" + name +
+                            "' for designPlate (expected seed, candidates, nodeLimit, timeLimit, joints, clearance, tenonWidth or tenonCount)");
+    }
   }
   return options;
 }

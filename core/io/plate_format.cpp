@@ -157,10 +157,15 @@ std::string plateDesignToJson(const AssemblyDocument& input, const PlateDesignRe
   root["version"] = 1;
   root["kind"] = "plate";
   root["name"] = (input.name.empty() ? std::string("plate structure") : input.name) + " - joint plan";
+  const bool cut = result.realization == JointRealization::Cut;
   json parts = json::array(), platesJson = json::array();
-  std::vector<Plate> ordered;
+  std::vector<Plate> ordered, fabrication;
   for (int index : result.order) {
-    Plate plate = plates[index];
+    Plate plate = cut ? result.jointedPlates[index] : plates[index];
+    if (cut) {
+      fabrication.push_back(result.fabricationPlates[index]);
+      fabrication.back().id = newId[index];
+    }
     plate.id = newId[index];
     ordered.push_back(plate);
     json part = {{"id", plate.id}, {"inputId", plates[index].id}};
@@ -189,7 +194,14 @@ std::string plateDesignToJson(const AssemblyDocument& input, const PlateDesignRe
   }
   root["removal"] = removal;
   root["plates"] = platesJson;
-  root["jointGeometry"] = "planned";  // the joints' cuts are not in the plates' outlines yet
+  // "cut": the plates carry their tenons and mortises and the contacts are theirs; "planned": the
+  // paper's graph design alone, the plates as given and the contacts those of the joint model.
+  root["jointGeometry"] = jointRealizationName(result.realization);
+  if (cut && result.clearance > 0) {
+    // With the clearance cut into the mortises: what the exports make. `plates` is what was verified.
+    root["clearance"] = result.clearance;
+    root["fabricationPlates"] = platesToJson(fabrication);
+  }
   return root.dump(indent);
 }
 

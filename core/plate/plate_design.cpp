@@ -1,20 +1,22 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Joint planning for plate structures (paper Section 5.2), on the construction tree of Algorithm 1.
+// Joint design for plate structures (paper Section 5.2), on the construction tree of Algorithm 1.
 //
 // A node of the tree is A_i = [P_1, ..., P_i, R_i]: the plates taken so far, each with its removal
-// direction d_k, and R_i, the plates not taken yet, which act as one part. Taking P_i plans a joint
-// between P_i and each plate of R_i it touches (R'_i): every joint lets P_i leave that plate along
-// d_i only. Candidates for P_i are the plates of R_{i-1} that are not cut points of R_{i-1}'s
-// parts-graph (R_i must stay connected); candidates for d_i are the edge vectors P_i shares with
-// its neighbours and its thickness axis, both signs, that do not push P_i into a plate it touches. A child is kept when
-// A_i is interlocking with P_1 as its key (for i >= 2; for A_1, when P_1 is free along d_1
+// direction d_i, and R_i, the plates not taken yet, which act as one part. Taking P_i gives a joint
+// between P_i and each plate of R_i it touches (R'_i). Candidates for P_i are the plates of R_{i-1}
+// that are not cut points of R_{i-1}'s parts-graph (R_i must stay connected); candidates for d_i
+// are the edge vectors P_i shares with its neighbours, its thickness axis and the directions its
+// tenons could leave in, both signs, that do not push P_i into a plate it touches. A child is kept
+// when A_i is interlocking with P_1 as its key (for i >= 2; for A_1, when P_1 is free along d_1
 // alone), and children are ranked by their number of empty joints, fewest first.
 //
-// The contacts of a joint. A joint allowing `mover` to leave `other` along d only is modelled by
-// the faces every such joint has (a tenon's or a slot's cheeks and ends): normals -d (the
-// shoulder), and ±u, ±v, two directions orthogonal to d (u along the mover's thickness axis
-// where possible). An empty joint keeps the plates' own contact faces. The interlocking tests run
-// on these contacts; the final plan passes both the DBG and the LP test.
+// The joints are those cuts can make (plate_joints.h): where P_i and a neighbour have a tenon
+// site whose tenons leave along d_i, a mortise-and-tenon joint, with the contacts its faces will
+// have: the shoulder, the tenons' cheeks (+-the tenon plate's thickness axis) and ends (+-along
+// the edge). Otherwise an empty joint: the plates' own contact faces. The paper's halved joints
+// (slots along d_i) need plates that cross, which the geometry reader does not accept yet. An
+// open mortise lets its tenon plate leave two ways; the model says so, and the tests decide.
+// A complete plan is cut into the plates and verified on that geometry before it is reported.
 #include "desia/plate_design.h"
 
 #include <algorithm>
@@ -26,18 +28,16 @@
 #include "desia/cut_points.h"
 #include "desia/error.h"
 #include "desia/interlocking.h"
+#include "desia/plate_joints.h"
 
 namespace desia {
 namespace {
 
-Vec3 minus(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-
 // Two unit vectors within about half a degree count as parallel (edge vectors of one design).
 bool parallel(const Vec3& a, const Vec3& b) { return norm(cross(a, b)) < 1e-2; }
 
-double angleDegrees(const Vec3& a, const Vec3& b) {
-  return std::acos(std::clamp(dot(normalized(a), normalized(b)), -1.0, 1.0)) * 180.0 / M_PI;
-}
+Vec3 minus(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+
 
 // What the geometry says about the plates: who touches whom, along which edge, with which faces.
 struct PlateGraph {
@@ -47,15 +47,11 @@ struct PlateGraph {
   std::vector<std::vector<int>> contactsOf;     // contact indices per plate
   std::vector<PlateContact> contacts;
   std::vector<Vec3> thicknessAxis;
-
-  int slot(int p, int q) const {
-    const auto& list = neighbours[p];
-    return static_cast<int>(std::lower_bound(list.begin(), list.end(), q) - list.begin());
-  }
-  const Vec3& edge(int p, int q) const { return edgeTo[p][slot(p, q)]; }
+  std::vector<std::optional<TenonSite>> tenonSites;  // per contact
 };
 
-PlateGraph buildPlateGraph(const std::vector<Plate>& plates, const std::vector<PlateContact>& contacts) {
+PlateGraph buildPlateGraph(const std::vector<Plate>& plates, const std::vector<PlateContact>& contacts,
+                           const JointCutOptions& jointOptions) {
   PlateGraph graph;
   graph.plateCount = static_cast<int>(plates.size());
   graph.contacts = contacts;
@@ -83,6 +79,7 @@ PlateGraph buildPlateGraph(const std::vector<Plate>& plates, const std::vector<P
     }
   }
   for (const Plate& plate : plates) graph.thicknessAxis.push_back(plateThicknessAxis(plate));
+  for (const PlateContact& contact : contacts) graph.tenonSites.push_back(tenonSiteOf(plates, contact, jointOptions));
   return graph;
 }
 
@@ -98,10 +95,45 @@ bool leavesWithoutPushing(const PlateGraph& graph, int plate, const std::vector<
   return true;
 }
 
-JointType jointTypeFor(const Vec3& edge, const Vec3& d) {
+// Does the site's joint let `mover` leave along d (the tenon plate along an exit, the mortise
+// plate against one)?
+bool jointLets(const TenonSite& site, int mover, const Vec3& d) {
+  for (const Vec3& exit : site.exits()) {
+    if (dot(site.tenonPlate == mover ? exit : negated(exit), d) > 1 - 1e-9) return true;
+  }
+  return false;
+}
+
+// The joint `mover` gets with `other` when it leaves along d: tenons on the largest contact whose
+// tenons leave along d, else empty.
+// The paper's rule for planned joints: halved where the shared edge runs along d, mortise-and-tenon
+// where it is within 45..135 degrees of d, empty otherwise.
+JointType plannedJointType(const Vec3& edge, const Vec3& d) {
   if (parallel(edge, d)) return JointType::Halved;
-  const double angle = angleDegrees(edge, d);
-  return angle >= 45 && angle <= 135 ? JointType::MortiseTenon : JointType::Empty;
+  const double cosine = std::abs(dot(normalized(edge), normalized(d)));
+  return cosine <= std::cos(M_PI / 4) + 1e-12 ? JointType::MortiseTenon : JointType::Empty;
+}
+
+PlateJoint jointFor(const PlateGraph& graph, int mover, int other, const Vec3& d, JointRealization realization) {
+  PlateJoint joint{mover, other, d, JointType::Empty, -1};
+  if (realization == JointRealization::Planned) {
+    joint.type = plannedJointType(graph.edgeTo[mover][static_cast<size_t>(
+                                      std::lower_bound(graph.neighbours[mover].begin(), graph.neighbours[mover].end(), other) -
+                                      graph.neighbours[mover].begin())],
+                                  d);
+    return joint;
+  }
+  for (int c : graph.contactsOf[mover]) {
+    const PlateContact& contact = graph.contacts[c];
+    if (contact.a != other && contact.b != other) continue;
+    const std::optional<TenonSite>& site = graph.tenonSites[c];
+    if (!site || !jointLets(*site, mover, d)) continue;
+    if (joint.contact < 0 || contact.area > graph.contacts[joint.contact].area) {
+      joint.type = JointType::MortiseTenon;
+      joint.contact = c;
+    }
+  }
+  return joint;
 }
 
 // One planned step: plate P_i leaves along d_i; its joints with the plates of R'_i.
@@ -113,7 +145,8 @@ struct Step {
 };
 
 // The assembly of A_i: parts 0..i-1 are the steps' plates, part i (when any plate is left) is R_i.
-// Joints add their model contacts; empty joints the plates' own contact faces.
+// Every contact of a joint's two plates keeps its faces, except the one the tenons are cut in,
+// which gets the faces of the tenons: the shoulder, their cheeks and their ends.
 Assembly modelAssembly(const PlateGraph& graph, const std::vector<Step>& steps, const std::vector<Plate>& plates) {
   std::vector<int> node(graph.plateCount, static_cast<int>(steps.size()));  // R_i by default
   Assembly assembly;
@@ -125,20 +158,30 @@ Assembly modelAssembly(const PlateGraph& graph, const std::vector<Step>& steps, 
   for (const Step& step : steps) {
     for (const PlateJoint& joint : step.joints) {
       const int a = node[joint.mover], b = node[joint.other];
-      if (joint.type == JointType::Empty) {
-        for (int c : graph.contactsOf[joint.mover]) {
-          const PlateContact& contact = graph.contacts[c];
-          if (contact.a == joint.mover && contact.b == joint.other) assembly.contacts.push_back({a, b, contact.normal, contact.area});
-          if (contact.b == joint.mover && contact.a == joint.other) assembly.contacts.push_back({a, b, negated(contact.normal), contact.area});
-        }
+      if (joint.type != JointType::Empty && joint.contact < 0) {
+        // A planned joint: a shoulder across d and the cheeks and ends every slot or tenon has.
+        const Vec3& d = joint.direction;
+        Vec3 u = minus(graph.thicknessAxis[joint.mover], scaled(d, dot(graph.thicknessAxis[joint.mover], d)));
+        if (norm(u) < 1e-6) u = cross(d, std::abs(d[0]) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0});
+        u = normalized(u);
+        const Vec3 v = cross(d, u);
+        for (const Vec3& n : {negated(d), u, negated(u), v, negated(v)}) assembly.contacts.push_back({a, b, *cleanedNormal(n), 1.0});
         continue;
       }
-      const Vec3& d = joint.direction;
-      Vec3 u = minus(graph.thicknessAxis[joint.mover], scaled(d, dot(graph.thicknessAxis[joint.mover], d)));
-      if (norm(u) < 1e-6) u = cross(d, std::abs(d[0]) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0});
-      u = normalized(u);
-      const Vec3 v = cross(d, u);
-      for (const Vec3& n : {negated(d), u, negated(u), v, negated(v)}) assembly.contacts.push_back({a, b, *cleanedNormal(n), 1.0});
+      for (int c : graph.contactsOf[joint.mover]) {
+        const PlateContact& contact = graph.contacts[c];
+        if (c == joint.contact) continue;
+        if (contact.a == joint.mover && contact.b == joint.other) assembly.contacts.push_back({a, b, contact.normal, contact.area});
+        if (contact.b == joint.mover && contact.a == joint.other) assembly.contacts.push_back({a, b, negated(contact.normal), contact.area});
+      }
+      if (joint.type != JointType::MortiseTenon) continue;
+      const TenonSite& site = *graph.tenonSites[joint.contact];
+      // Normals from the tenon plate into the mortise plate, turned when the mover has the mortises.
+      const double sign = site.tenonPlate == joint.mover ? 1 : -1;
+      std::vector<Vec3> faces{site.intoMortise, site.along, negated(site.along)};
+      if (site.openSide <= 0) faces.push_back(site.across);  // a cheek on that side (none where open)
+      if (site.openSide >= 0) faces.push_back(negated(site.across));
+      for (const Vec3& n : faces) assembly.contacts.push_back({a, b, *cleanedNormal(scaled(n, sign)), 1.0});
     }
   }
   return assembly;
@@ -163,16 +206,65 @@ std::string planFailure(const Assembly& model, const std::vector<Vec3>& directio
   return "";
 }
 
+// A complete plan made real: its joints cut into the plates (no clearance: the geometry the tests
+// judge), their contacts computed from that geometry with part k = order[k].
+struct JointedPlan {
+  std::vector<Plate> plates;
+  Assembly assembly;
+};
+
+JointedPlan cutPlan(const std::vector<Plate>& plates, const PlateGraph& graph, const std::vector<PlateJoint>& joints,
+                    const std::vector<int>& order, const PlateOptions& geometry, double clearance, const JointCutOptions& options) {
+  std::vector<TenonSite> sites;
+  for (const PlateJoint& joint : joints) {
+    if (joint.type == JointType::MortiseTenon) sites.push_back(*graph.tenonSites[joint.contact]);
+  }
+  JointCutOptions cut = options;
+  cut.clearance = clearance;
+  JointedPlan plan;
+  plan.plates = cutTenonJoints(plates, sites, cut);
+  validatePlates(plan.plates, geometry, "the jointed plates");
+  std::vector<int> position(plates.size(), 0);
+  for (size_t k = 0; k < order.size(); ++k) {
+    position[order[k]] = static_cast<int>(k);
+    plan.assembly.parts.push_back({plates[order[k]].id, plates[order[k]].name});
+  }
+  for (const PlateContact& contact : computePlateContacts(plan.plates, geometry)) {
+    plan.assembly.contacts.push_back({position[contact.a], position[contact.b], contact.normal, contact.area});
+  }
+  return plan;
+}
+
+// Why the jointed plates fail, or "": both interlocking tests on their computed contacts, and
+// each plate swept along its direction past every plate still in place.
+std::string jointedFailure(const JointedPlan& plan, const std::vector<int>& order, const std::vector<Vec3>& directions,
+                           double tolerance) {
+  const std::string failure = planFailure(plan.assembly, directions);
+  if (!failure.empty()) return failure;
+  for (size_t k = 0; k < directions.size(); ++k) {
+    for (size_t j = k + 1; j < order.size(); ++j) {
+      if (plateCollidesAlong(plan.plates[order[k]], plan.plates[order[j]], directions[k], tolerance)) {
+        return "plate " + std::to_string(plan.plates[order[k]].id) + " runs into plate " + std::to_string(plan.plates[order[j]].id) +
+               " when it leaves";
+      }
+    }
+  }
+  return "";
+}
+
 class PlateJointPlanner {
  public:
   PlateJointPlanner(const std::vector<Plate>& plates, const std::vector<PlateContact>& contacts, const PlateDesignOptions& options)
-      : plates_(plates), graph_(buildPlateGraph(plates, contacts)), options_(options), random_(options.seed * 0x9E3779B97F4A7C15ull + 1) {}
+      : plates_(plates), graph_(buildPlateGraph(plates, contacts, options.joints)), options_(options), random_(options.seed * 0x9E3779B97F4A7C15ull + 1) {}
 
   PlateDesignResult run();
 
  private:
   std::vector<Step> childrenOf(const std::vector<Step>& steps);
   bool acceptable(const std::vector<Step>& steps) const;
+  bool acceptComplete(const std::vector<Step>& path, PlateDesignResult* result);
+  bool cutAndVerify(const std::vector<PlateJoint>& joints, const std::vector<int>& order, const std::vector<Vec3>& directions,
+                    PlateDesignResult* result);
   Step makeStep(const std::vector<Step>& steps, int plate, const Vec3& d) const;
   std::vector<Vec3> candidateDirections(int plate) const;
   uint64_t nextRandom() {
@@ -185,16 +277,22 @@ class PlateJointPlanner {
   PlateGraph graph_;
   PlateDesignOptions options_;
   uint64_t random_;
+  std::string lastRejection_;  // why the last complete plan failed
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
 // The edge vectors the plate shares with its neighbours (paper Section 5.2), both signs, and, beyond
-// the paper, its own thickness axis: a plate closed in on every edge (a box of mitred plates) can
-// only leave across its faces, with a tenon on every edge.
+// the paper, its own thickness axis (a plate closed in on every edge can only leave across its
+// faces) and the axes of its tenon sites (the only ways a tenon joint lets it leave).
 std::vector<Vec3> PlateJointPlanner::candidateDirections(int plate) const {
   std::vector<Vec3> directions;
   std::vector<Vec3> lines = graph_.edgeTo[plate];
   lines.push_back(graph_.thicknessAxis[plate]);
+  for (int c : graph_.contactsOf[plate]) {
+    if (graph_.tenonSites[c]) {
+      for (const Vec3& exit : graph_.tenonSites[c]->exits()) lines.push_back(exit);
+    }
+  }
   for (const Vec3& edge : lines) {
     for (const Vec3& d : {edge, negated(edge)}) {
       bool known = false;
@@ -213,9 +311,8 @@ Step PlateJointPlanner::makeStep(const std::vector<Step>& steps, int plate, cons
   step.direction = d;
   for (int other : graph_.neighbours[plate]) {
     if (taken[other]) continue;
-    const JointType type = jointTypeFor(graph_.edge(plate, other), d);
-    step.joints.push_back({plate, other, d, type});
-    step.emptyJoints += type == JointType::Empty ? 1 : 0;
+    step.joints.push_back(jointFor(graph_, plate, other, d, options_.realization));
+    step.emptyJoints += step.joints.back().type == JointType::Empty ? 1 : 0;
   }
   return step;
 }
@@ -273,12 +370,13 @@ std::vector<Step> PlateJointPlanner::childrenOf(const std::vector<Step>& steps) 
       ranked.push_back({nextRandom(), next.back()});
     }
   }
-  // The key first of all: the plate with the most edges parallel to its direction (paper
-  // Section 5.2: halved joints there, so the key slides out along them).
+  // The paper picks the key with the most edges parallel to d_1, for its halved joints (planned
+  // joints only: cut halved joints need crossing plates). Then fewest empty joints first.
   auto parallelEdges = [&](const Step& step) {
+    if (!steps.empty() || options_.realization != JointRealization::Planned) return 0;
     int count = 0;
     for (const Vec3& edge : graph_.edgeTo[step.plate]) count += parallel(edge, step.direction) ? 1 : 0;
-    return steps.empty() ? count : 0;
+    return count;
   };
   std::sort(ranked.begin(), ranked.end(), [&](const auto& x, const auto& y) {
     if (parallelEdges(x.second) != parallelEdges(y.second)) return parallelEdges(x.second) > parallelEdges(y.second);
@@ -337,47 +435,100 @@ PlateDesignResult PlateJointPlanner::run() {
     pending.back().erase(pending.back().begin());
     progress.bestDepth = std::max(progress.bestDepth, static_cast<int>(path.size()) + 1);
     if (static_cast<int>(path.size()) + 1 == graph_.plateCount) {
-      // R is the last plate: a complete plan, accepted only if it verifies; else search on.
-      std::vector<Vec3> directions;
-      for (const Step& step : path) directions.push_back(step.direction);
-      if (planFailure(modelAssembly(graph_, path, plates_), directions).empty()) break;
+      // R is the last plate: a complete plan, accepted only if its jointed plates verify; else search on.
+      if (acceptComplete(path, &result)) break;
       path.pop_back();
       continue;
     }
     pending.push_back(childrenOf(path));
   }
-  if (static_cast<int>(path.size()) + 1 != graph_.plateCount) {
+  if (result.status != PlateDesignStatus::Success) {
     result.status = PlateDesignStatus::NotFound;
     result.message = "no interlocking joint plan exists within the search (" + std::to_string(progress.nodes) +
-                     " nodes; deepest " + std::to_string(progress.bestDepth) + " of " + std::to_string(graph_.plateCount) + " plates)";
+                     " nodes; deepest " + std::to_string(progress.bestDepth) + " of " + std::to_string(graph_.plateCount) + " plates" +
+                     (lastRejection_.empty() ? std::string(")") : "; the last complete plan failed on its jointed plates: " + lastRejection_ + ")") +
+                     (options_.realization == JointRealization::Cut
+                          ? " with the joints that can be cut (through and open mortise-and-tenon on square edges standing on a face "
+                            "at a right angle); joints 'planned' gives the paper's graph design alone"
+                          : "");
     return result;
   }
-  // The last plate: R_(n-1) itself.
-  std::vector<bool> taken(graph_.plateCount, false);
-  for (const Step& s : path) taken[s.plate] = true;
-  const int last = static_cast<int>(std::find(taken.begin(), taken.end(), false) - taken.begin());
-  for (const Step& step : path) {
-    result.order.push_back(step.plate);
-    result.directions.push_back(step.direction);
-    result.joints.insert(result.joints.end(), step.joints.begin(), step.joints.end());
-  }
-  result.order.push_back(last);
-  result.jointAssembly = modelAssembly(graph_, path, plates_);
-  result.jointAssembly.parts.back() = {plates_[last].id, plates_[last].name};
-  result.status = PlateDesignStatus::Success;
-  result.message = "planned " + std::to_string(result.joints.size()) + " joints in " + std::to_string(progress.nodes) + " nodes";
+  result.message = "designed " + std::to_string(result.joints.size()) + " joints in " + std::to_string(progress.nodes) + " nodes";
   return result;
+}
+
+// Cuts the joints into the plates and verifies the plan there; keeps the jointed plates on success.
+bool PlateJointPlanner::cutAndVerify(const std::vector<PlateJoint>& joints, const std::vector<int>& order,
+                                     const std::vector<Vec3>& directions, PlateDesignResult* result) {
+  try {
+    JointedPlan jointed = cutPlan(plates_, graph_, joints, order, options_.geometry, 0, options_.joints);
+    lastRejection_ = jointedFailure(jointed, order, directions, options_.geometry.contactTolerance);
+    if (!lastRejection_.empty()) return false;
+    result->jointedPlates = std::move(jointed.plates);
+    result->jointAssembly = std::move(jointed.assembly);
+    result->clearance = options_.joints.clearance;
+    result->fabricationPlates =
+        options_.joints.clearance > 0
+            ? cutPlan(plates_, graph_, joints, order, options_.geometry, options_.joints.clearance, options_.joints).plates
+            : result->jointedPlates;
+    return true;
+  } catch (const Error& error) {  // cuts that split a plate or run into each other: not this plan
+    lastRejection_ = error.what();
+    return false;
+  }
+}
+
+// A complete plan: its order (the steps' plates, then the one left), its joints cut into the
+// plates and verified there. On success the result holds the plan and its jointed plates.
+bool PlateJointPlanner::acceptComplete(const std::vector<Step>& path, PlateDesignResult* result) {
+  std::vector<bool> taken(graph_.plateCount, false);
+  std::vector<int> order;
+  std::vector<Vec3> directions;
+  std::vector<PlateJoint> joints;
+  for (const Step& step : path) {
+    taken[step.plate] = true;
+    order.push_back(step.plate);
+    directions.push_back(step.direction);
+    joints.insert(joints.end(), step.joints.begin(), step.joints.end());
+  }
+  order.push_back(static_cast<int>(std::find(taken.begin(), taken.end(), false) - taken.begin()));
+  const Assembly model = modelAssembly(graph_, path, plates_);
+  lastRejection_ = planFailure(model, directions);
+  if (!lastRejection_.empty()) return false;
+  if (options_.realization == JointRealization::Planned) {
+    result->jointAssembly = model;
+    result->jointAssembly.parts.back() = {plates_[order.back()].id, plates_[order.back()].name};
+  } else if (!cutAndVerify(joints, order, directions, result)) {
+    return false;
+  }
+  result->realization = options_.realization;
+  result->order = order;
+  result->directions = directions;
+  result->joints = joints;
+  result->status = PlateDesignStatus::Success;
+  return true;
 }
 
 }  // namespace
 
 const char* jointTypeName(JointType type) {
   switch (type) {
-    case JointType::Halved: return "halved";
     case JointType::MortiseTenon: return "mortise-tenon";
+    case JointType::Halved: return "halved";
     case JointType::Empty: return "empty";
   }
   return "empty";
+}
+
+JointRealization parseJointRealization(const std::string& name) {
+  if (name == "cut") return JointRealization::Cut;
+  if (name == "planned") return JointRealization::Planned;
+  throwBadInput("", "joints must be 'cut' (made in the plates and verified there) or 'planned' (the paper's graph design "
+                    "alone), got '" + name + "'");
+}
+
+const char* jointRealizationName(JointRealization realization) {
+  return realization == JointRealization::Cut ? "cut" : "planned";
 }
 
 PlateDesignResult designPlateJoints(const std::vector<Plate>& plates, const std::vector<PlateContact>& contacts,
@@ -388,7 +539,7 @@ PlateDesignResult designPlateJoints(const std::vector<Plate>& plates, const std:
   if (result.status == PlateDesignStatus::Success) {
     // The search accepts only what passes; checking again guards the result, never a guess.
     const std::string failure = planFailure(result.jointAssembly, result.directions);
-    if (!failure.empty()) throw Error(ErrorCode::Internal, "the joint plan did not verify: " + failure);
+    if (!failure.empty()) throw Error(ErrorCode::Internal, "the jointed plates did not verify: " + failure);
   }
   return result;
 }

@@ -3,8 +3,6 @@
 // between plates found where faces lie on one another. The overlap of two coplanar faces is a 2D
 // polygon intersection, done by Clipper (Angus Johnson's library, Debian's libpolyclipping) on
 // integer coordinates, exact and the same natively and in WebAssembly.
-#include <polyclipping/clipper.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -13,12 +11,10 @@
 #include "desia/cut_points.h"
 #include "desia/error.h"
 #include "desia/plate.h"
+#include "plate/plane_frame.h"
 
 namespace desia {
 namespace {
-
-// Clipper works on integers: 1e-4 mm steps, far below any tolerance, far from its range limit.
-constexpr double kClipperScale = 1e4;
 
 Vec3 minus(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
 Vec3 plus(const Vec3& a, const Vec3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
@@ -39,24 +35,6 @@ std::string millimetres(double value) {
   out << value << " mm";
   return out.str();
 }
-
-// A plane through `origin` with unit normal `normal`, and a 2D frame in it.
-struct PlaneFrame {
-  Vec3 origin, normal, u, v;
-  explicit PlaneFrame(const Vec3& origin_, const Vec3& normal_) : origin(origin_), normal(normalized(normal_)) {
-    const Vec3 axis = std::abs(normal[0]) < 0.6 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
-    u = normalized(cross(normal, axis));
-    v = cross(normal, u);
-  }
-  ClipperLib::IntPoint toClipper(const Vec3& p) const {
-    const Vec3 d = minus(p, origin);
-    return {static_cast<ClipperLib::cInt>(std::llround(dot(d, u) * kClipperScale)),
-            static_cast<ClipperLib::cInt>(std::llround(dot(d, v) * kClipperScale))};
-  }
-  Vec3 fromClipper(const ClipperLib::IntPoint& p) const {
-    return plus(origin, plus(scaled(u, static_cast<double>(p.X) / kClipperScale), scaled(v, static_cast<double>(p.Y) / kClipperScale)));
-  }
-};
 
 // One planar face of a plate solid: its loops (outline and holes, or one side quad) and its
 // outward unit normal.

@@ -31,14 +31,58 @@ double signedArea(const std::vector<Point2>& points, const std::vector<int>& loo
   return area / 2;
 }
 
-bool segmentsCross(const Point2& a, const Point2& b, const Point2& c, const Point2& d) {
+bool onSegment(const Point2& a, const Point2& b, const Point2& p) {
+  return std::min(a[0], b[0]) <= p[0] && p[0] <= std::max(a[0], b[0]) && std::min(a[1], b[1]) <= p[1] && p[1] <= std::max(a[1], b[1]);
+}
+
+// Do the closed segments ab and cd meet (touching and collinear overlaps count)?
+bool segmentsMeet(const Point2& a, const Point2& b, const Point2& c, const Point2& d) {
   const double d1 = cross2(c, d, a), d2 = cross2(c, d, b), d3 = cross2(a, b, c), d4 = cross2(a, b, d);
-  return ((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0));
+  if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0))) return true;
+  return (d1 == 0 && onSegment(c, d, a)) || (d2 == 0 && onSegment(c, d, b)) || (d3 == 0 && onSegment(a, b, c)) ||
+         (d4 == 0 && onSegment(a, b, d));
+}
+
+// Does the direction from loop vertex `at` towards b start inside the region, which lies left of
+// the loop's edges (outline counter-clockwise, holes clockwise)?
+bool locallyInside(const std::vector<Point2>& points, const std::vector<int>& loop, size_t at, const Point2& b) {
+  const Point2& p = points[loop[(at + loop.size() - 1) % loop.size()]];
+  const Point2& o = points[loop[at]];
+  const Point2& n = points[loop[(at + 1) % loop.size()]];
+  const bool leftOfIn = cross2(p, o, b) >= 0, leftOfOut = cross2(o, n, b) >= 0;
+  return cross2(p, o, n) >= 0 ? leftOfIn && leftOfOut : leftOfIn || leftOfOut;
+}
+
+// Even-odd containment of a point in the loops.
+bool insideLoops(const std::vector<Point2>& points, const std::vector<std::vector<int>>& loops, const Point2& q) {
+  bool inside = false;
+  for (const std::vector<int>& loop : loops) {
+    for (size_t i = 0, j = loop.size() - 1; i < loop.size(); j = i++) {
+      const Point2& a = points[loop[i]];
+      const Point2& b = points[loop[j]];
+      if ((a[1] > q[1]) != (b[1] > q[1]) && q[0] < (b[0] - a[0]) * (q[1] - a[1]) / (b[1] - a[1]) + a[0]) inside = !inside;
+    }
+  }
+  return inside;
+}
+
+// Can a bridge run from `from` to `to` without meeting any edge (other than at its own ends),
+// through the inside of the region?
+bool bridgeClear(const std::vector<Point2>& points, const std::vector<std::vector<int>>& loops, const Point2& from, const Point2& to) {
+  for (const std::vector<int>& loop : loops) {
+    for (size_t e = 0; e < loop.size(); ++e) {
+      const Point2& c = points[loop[e]];
+      const Point2& d = points[loop[(e + 1) % loop.size()]];
+      if (c == from || c == to || d == from || d == to) continue;
+      if (segmentsMeet(from, to, c, d)) return false;
+    }
+  }
+  return insideLoops(points, loops, {(from[0] + to[0]) / 2, (from[1] + to[1]) / 2});
 }
 
 // Joins each hole (clockwise) to the outline (counter-clockwise) by a two-way bridge from the
-// hole's rightmost vertex to the nearest outline vertex it can see, giving one simple-in-effect
-// polygon that ear clipping can cut.
+// hole's rightmost vertex to the nearest outline vertex it can see (no edge in the way, leaving
+// both vertices into the region), giving one simple-in-effect polygon that ear clipping can cut.
 std::vector<int> bridgeHoles(const std::vector<Point2>& points, std::vector<int> outer, std::vector<std::vector<int>> holes) {
   std::sort(holes.begin(), holes.end(), [&](const std::vector<int>& a, const std::vector<int>& b) {
     auto rightmost = [&](const std::vector<int>& h) {
@@ -55,23 +99,19 @@ std::vector<int> bridgeHoles(const std::vector<Point2>& points, std::vector<int>
       if (points[hole[i]][0] > points[hole[m]][0]) m = i;
     }
     const Point2& from = points[hole[m]];
-    size_t best = 0;
-    double bestDistance = HUGE_VAL;
-    for (size_t o = 0; o < outer.size(); ++o) {
+    std::vector<std::vector<int>> loops{outer};
+    loops.insert(loops.end(), holes.begin() + static_cast<long>(h), holes.end());
+    std::vector<size_t> candidates(outer.size());
+    for (size_t o = 0; o < outer.size(); ++o) candidates[o] = o;
+    auto distance = [&](size_t o) { return std::hypot(points[outer[o]][0] - from[0], points[outer[o]][1] - from[1]); };
+    std::stable_sort(candidates.begin(), candidates.end(), [&](size_t x, size_t y) { return distance(x) < distance(y); });
+    size_t best = candidates.front();
+    for (size_t o : candidates) {
       const Point2& to = points[outer[o]];
-      const double distance = std::hypot(to[0] - from[0], to[1] - from[1]);
-      if (distance >= bestDistance) continue;
-      bool visible = true;
-      auto blocks = [&](const std::vector<int>& loop) {
-        for (size_t e = 0; e < loop.size() && visible; ++e) {
-          if (segmentsCross(from, to, points[loop[e]], points[loop[(e + 1) % loop.size()]])) visible = false;
-        }
-      };
-      blocks(outer);
-      for (size_t other = h; other < holes.size(); ++other) blocks(holes[other]);
-      if (visible) {
+      if (to == from) continue;
+      if (locallyInside(points, outer, o, from) && locallyInside(points, hole, m, to) && bridgeClear(points, loops, from, to)) {
         best = o;
-        bestDistance = distance;
+        break;
       }
     }
     std::vector<int> merged(outer.begin(), outer.begin() + static_cast<long>(best) + 1);

@@ -31,15 +31,18 @@ def document(name, plates, **extra):
 
 
 def table():
-    # Fig. 17: a top, two side panels as legs, front and back aprons, a shelf. 18 mm boards.
+    # Fig. 17: a top, two side panels as legs, front and back aprons, a shelf. 18 mm boards. The
+    # top overhangs by 25 mm and the aprons stand 20 mm in from the edges, so every joint is a
+    # through mortise-and-tenon (a board flush with an edge would get an open mortise, which lets
+    # it slide out sideways).
     t = 18
     return document("TABLE (after Fig. 17): top, two side panels, two aprons and a shelf; orthogonal butt joints", [
-        box(1, "top", [0, 700, 0], [1000, 700 + t, 600]),
+        box(1, "top", [-25, 700, -25], [1025, 700 + t, 625]),
         box(2, "left side", [0, 0, 0], [t, 700, 600]),
         box(3, "right side", [1000 - t, 0, 0], [1000, 700, 600]),
-        box(4, "front apron", [t, 550, 0], [1000 - t, 700, t]),
-        box(5, "back apron", [t, 550, 600 - t], [1000 - t, 700, 600]),
-        box(6, "shelf", [t, 150, t], [1000 - t, 150 + t, 600 - t]),
+        box(4, "front apron", [t, 550, 20], [1000 - t, 700, 20 + t]),
+        box(5, "back apron", [t, 550, 580 - t], [1000 - t, 700, 580]),
+        box(6, "shelf", [t, 150, 40], [1000 - t, 150 + t, 560]),
     ])
 
 

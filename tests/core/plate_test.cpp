@@ -226,10 +226,11 @@ TEST(PlateRobustness, VerdictsAndContactsSurviveTurningTheWholeDesign) {
 namespace desia {
 namespace {
 
-PlateDesignResult planExample(const std::string& name, uint64_t seed = 1) {
+PlateDesignResult planExample(const std::string& name, uint64_t seed = 1, JointRealization realization = JointRealization::Planned) {
   const AssemblyDocument document = loadExample(name);
   PlateDesignOptions options;
   options.seed = seed;
+  options.realization = realization;
   return designPlateJoints(document.plates, computePlateContacts(document.plates, document.plateOptions), options);
 }
 
@@ -249,9 +250,13 @@ void ExpectPlanReverifies(const std::string& name, const PlateDesignResult& resu
 }
 
 TEST(PlateJointPlan, ExamplesGetVerifiedPlans) {
-  for (const char* name : {"table.json", "chair_repaired.json", "bookshelf.json", "mitred_box.json", "cabinet.json"}) {
+  const std::vector<std::pair<const char*, JointRealization>> cases{
+      {"table.json", JointRealization::Cut},           {"table.json", JointRealization::Planned},
+      {"chair_repaired.json", JointRealization::Planned}, {"bookshelf.json", JointRealization::Planned},
+      {"mitred_box.json", JointRealization::Planned},  {"cabinet.json", JointRealization::Planned}};
+  for (const auto& [name, realization] : cases) {
     const AssemblyDocument document = loadExample(name);
-    const PlateDesignResult result = planExample(name);
+    const PlateDesignResult result = planExample(name, 1, realization);
     ASSERT_EQ(result.status, PlateDesignStatus::Success) << name << ": " << result.message;
     ASSERT_EQ(result.order.size(), document.plates.size()) << name;
     EXPECT_EQ(std::set<int>(result.order.begin(), result.order.end()).size(), document.plates.size()) << name;
@@ -271,7 +276,7 @@ TEST(PlateJointPlan, ExamplesGetVerifiedPlans) {
 }
 
 TEST(PlateJointPlan, OrthogonalPlansUseSlotsAndTenonsWhereTheEdgesSay) {
-  const PlateDesignResult result = planExample("table.json");
+  const PlateDesignResult result = planExample("table.json", 1, JointRealization::Planned);
   ASSERT_EQ(result.status, PlateDesignStatus::Success);
   int halved = 0, tenons = 0;
   for (const PlateJoint& joint : result.joints) {
@@ -306,7 +311,9 @@ TEST(PlateJointPlan, SameSeedSamePlanAndTurnedDesignsPlanToo) {
       }
     }
   }
-  const PlateDesignResult result = designPlateJoints(turned.plates, computePlateContacts(turned.plates, turned.plateOptions));
+  PlateDesignOptions planned;
+  planned.realization = JointRealization::Planned;
+  const PlateDesignResult result = designPlateJoints(turned.plates, computePlateContacts(turned.plates, turned.plateOptions), planned);
   ASSERT_EQ(result.status, PlateDesignStatus::Success) << result.message;
   EXPECT_EQ(result.joints.size(), 12u);
 }
@@ -315,6 +322,7 @@ TEST(PlateJointPlan, CancellationAndLimitsStopTheSearch) {
   const AssemblyDocument document = loadExample("bookcase_123.json");
   const std::vector<PlateContact> contacts = computePlateContacts(document.plates, document.plateOptions);
   PlateDesignOptions options;
+  options.realization = JointRealization::Planned;
   int calls = 0;
   options.onProgress = [&](const PlateDesignProgress& p) {
     EXPECT_EQ(p.targetParts, 123);
@@ -325,6 +333,7 @@ TEST(PlateJointPlan, CancellationAndLimitsStopTheSearch) {
   EXPECT_EQ(calls, 3);
   EXPECT_EQ(cancelled.progress.nodes, 3);
   PlateDesignOptions limited;
+  limited.realization = JointRealization::Planned;
   limited.nodeLimit = 10;
   const PlateDesignResult result = designPlateJoints(document.plates, contacts, limited);
   EXPECT_EQ(result.status, PlateDesignStatus::LimitReached);
@@ -366,7 +375,7 @@ TEST(PlateMesh, EveryPlateIsAClosedOutwardSolidOfItsVolume) {
   const AssemblyDocument table = loadExample("table.json");
   const TriangleMesh top = plateMesh(table.plates[0]);
   EXPECT_TRUE(isClosed(top));
-  EXPECT_NEAR(signedVolume(top), 1000.0 * 600.0 * 18.0, 1e-3);
+  EXPECT_NEAR(signedVolume(top), 1050.0 * 650.0 * 18.0, 1e-3);
   // A mitred plate: 300 x 300 outside, 276 x 276 inside, 12 thick (a frustum).
   const AssemblyDocument box = loadExample("mitred_box.json");
   for (const Plate& plate : box.plates) {
@@ -455,8 +464,10 @@ TEST(PlateInput, ObjectsOfAnObjAndSlabsOfAnStlArePlates) {
       if (!stl) {
         EXPECT_EQ(reread.plates[0].name, "part1") << "OBJ object names become plate names";
       }
-      const PlateDesignResult a = designPlateJoints(original.plates, computePlateContacts(original.plates, {}));
-      const PlateDesignResult b = designPlateJoints(reread.plates, computePlateContacts(reread.plates, {}));
+      PlateDesignOptions planned;
+      planned.realization = JointRealization::Planned;
+      const PlateDesignResult a = designPlateJoints(original.plates, computePlateContacts(original.plates, {}), planned);
+      const PlateDesignResult b = designPlateJoints(reread.plates, computePlateContacts(reread.plates, {}), planned);
       ASSERT_EQ(b.status, PlateDesignStatus::Success) << source << ": " << b.message;
       EXPECT_EQ(b.order, a.order) << source;
       EXPECT_EQ(b.joints.size(), a.joints.size()) << source;

@@ -160,16 +160,24 @@ std::vector<Case> contactCases() {
                            "tests/data/contacts/fig4_huge_normal.json"}) {
     cases.push_back({file, parseAssemblyText(testing::readFileText(testing::projectPath(file)), file)});
   }
-  // Joint plans of the plate examples (their contacts are the joints'), as `desia design plate`
-  // writes them: the 45-degree mitres of the box among them.
-  for (const char* file : {"examples/plate/table.json", "examples/plate/mitred_box.json", "examples/plate/bookshelf.json",
-                           "examples/plate/cabinet.json"}) {
+  // Joint designs of the plate examples as `desia design plate` writes them: the table's cut joints
+  // (contacts of the jointed plates) and planned joints (the joint model's contacts), the
+  // 45-degree mitres of the box among them.
+  const std::vector<std::pair<const char*, JointRealization>> plateCases{
+      {"examples/plate/table.json", JointRealization::Cut},
+      {"examples/plate/table.json", JointRealization::Planned},
+      {"examples/plate/mitred_box.json", JointRealization::Planned},
+      {"examples/plate/bookshelf.json", JointRealization::Planned},
+      {"examples/plate/cabinet.json", JointRealization::Planned}};
+  for (const auto& [file, realization] : plateCases) {
     const AssemblyDocument design = parseAssemblyText(testing::readFileText(testing::projectPath(file)), file);
-    const PlateDesignResult plan = designPlateJoints(design.plates, computePlateContacts(design.plates, design.plateOptions));
+    PlateDesignOptions options;
+    options.realization = realization;
+    const PlateDesignResult plan = designPlateJoints(design.plates, computePlateContacts(design.plates, design.plateOptions), options);
     AssemblyDocument document = parseJsonDocument(plateDesignToJson(design, plan), std::string(file) + " plan");
     document.plates.clear();  // keep it a contact document: the transforms turn its normals
     document.geometryJson.clear();
-    cases.push_back({std::string(file) + " plan", document});
+    cases.push_back({std::string(file) + " plan (" + jointRealizationName(realization) + ")", document});
   }
   std::mt19937 random(14);
   for (const char* file : {"result_puz/Cube_4x4x4_K9_01.puz", "result_puz/Cube_Hollow_4x4x4_K7", "result_puz/Cube_4x4x4_K9.puz",

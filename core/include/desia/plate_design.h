@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Planning the joints of an interlocking plate structure (paper Section 5.2): the key, the order in
-// which the other plates are taken out, the direction each one leaves in, and the joint each
-// contact becomes. This is the paper's graph design stage; the joints' geometry (tenons, slots,
-// dovetails cut into the plates) is not generated yet, so a plan's contacts are those its joints
-// are defined to have (see plate_design.cpp).
+// Designing the joints of an interlocking plate structure (paper Section 5.2): the key, the order
+// in which the other plates are taken out, the direction each one leaves in, the joint each pair
+// of touching plates gets, and the joints cut into the plates (plate_joints.h). A result is
+// verified on the jointed plates themselves: their contacts computed from the geometry, both
+// interlocking tests, and each plate swept out along its direction past the plates still in place.
 #pragma once
 
 #include <cstdint>
@@ -13,15 +13,29 @@
 
 #include "desia/assembly.h"
 #include "desia/plate.h"
+#include "desia/plate_joints.h"
 
 namespace desia {
 
 enum class JointType {
-  Halved,        // the shared edge runs along the removal direction: a slot (paper Fig. 2)
-  MortiseTenon,  // the edge is within 45..135 degrees of it
-  Empty,         // neither: the plates only touch
+  MortiseTenon,      // tenons on one plate's edge, mortises through the other (planned: the edge
+                     // within 45..135 degrees of the direction)
+  Halved,            // planned only: the edge runs along the direction, a slot (paper Fig. 2)
+  Empty,             // the plates only touch
 };
-const char* jointTypeName(JointType type);  // "halved", "mortise-tenon", "empty"
+const char* jointTypeName(JointType type);  // "mortise-tenon", "halved", "empty"
+
+// What a design makes of its joints.
+enum class JointRealization {
+  // Joints cut into the plates (plate_joints.h: through and open mortise-and-tenon joints), each
+  // pair's joint chosen among those the geometry allows, the result verified on the jointed plates.
+  Cut,
+  // The paper's graph design stage alone (Section 5.2): halved, mortise-and-tenon or empty by the
+  // angle between the shared edge and the direction, each joint modelled by the faces every such
+  // joint has; verified on that model. Nothing to cut yet: halved joints need plates that cross,
+  // and the non-orthogonal variants (Fig. 16) and dovetails are not made.
+  Planned,
+};
 
 // A joint between two touching plates (internal indices): it lets `mover` leave `other` along
 // `direction` only (relative motion), the removal direction planned when `mover` was taken.
@@ -29,6 +43,7 @@ struct PlateJoint {
   int mover = 0, other = 0;
   Vec3 direction{0, 0, 0};
   JointType type = JointType::Empty;
+  int contact = -1;  // the contact the tenons are cut in (mortise-tenon), an index into the contacts
 };
 
 struct PlateDesignProgress {
@@ -44,6 +59,9 @@ struct PlateDesignOptions {
   int candidates = 30;            // children kept per node (the paper's m)
   double timeLimitSeconds = 60;
   int64_t nodeLimit = 1'000'000;
+  JointRealization realization = JointRealization::Cut;
+  JointCutOptions joints;          // tenon sizes and the clearance cut into the result
+  PlateOptions geometry;           // the contact tolerance for the jointed plates' contacts
   // Called at every node of the search; return false to cancel.
   std::function<bool(const PlateDesignProgress&)> onProgress;
 };
@@ -56,14 +74,26 @@ struct PlateDesignResult {
   std::vector<int> order;            // plate indices: the key first, the last plate last
   std::vector<Vec3> directions;      // removal direction of order[k] (none for the last plate)
   std::vector<PlateJoint> joints;
-  Assembly jointAssembly;            // the plates with the contacts of their joints (part ids = plate ids)
+  JointRealization realization = JointRealization::Cut;
+  // The plates with their joints cut (input order, no clearance): what was verified (Cut only).
+  std::vector<Plate> jointedPlates;
+  // The same with the clearance cut into the mortises: what to make (equal to jointedPlates without one).
+  std::vector<Plate> fabricationPlates;
+  double clearance = 0;  // mm of play cut into the fabrication plates' mortises
+  // The contacts of the jointed plates, computed from their geometry (Planned: the joints' model
+  // contacts); part k = order[k].
+  Assembly jointAssembly;
   PlateDesignProgress progress;
 };
 
-// Plans the joints of a connected plate structure whose parts-graph has no cut point (otherwise:
-// status CutPoint, naming it). A success has been verified: the joint assembly is interlocking
-// with the key as the only movable part by both the DBG and the LP test, and the plates leave in
-// the planned order along the planned directions.
+// "cut" or "planned"; BadInput naming the value else.
+JointRealization parseJointRealization(const std::string& name);
+const char* jointRealizationName(JointRealization realization);
+
+// Designs the joints of a connected plate structure whose parts-graph has no cut point (otherwise:
+// status CutPoint, naming it). A success has been verified on the jointed plates: their contacts,
+// computed from the geometry, are interlocking with the key as the only movable part by both the
+// DBG and the LP test, and each plate, swept along its direction, misses every plate after it.
 PlateDesignResult designPlateJoints(const std::vector<Plate>& plates, const std::vector<PlateContact>& contacts,
                                     const PlateDesignOptions& options = {});
 

@@ -1,0 +1,70 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The joints of a plate structure as cuts in the plates (paper Section 5.2, "geometry realization"),
+// and the checks that verify a plan on that jointed geometry.
+//
+// Joints are made where two-and-a-half-dimensional cuts (a laser or a CNC router cutting through
+// the board) can make them: a plate's square edge standing on another plate's face at a right
+// angle (T and L joints). The edge gets tenons as deep as the other plate is thick:
+// - through mortise-and-tenon: the mortises are holes inside the other plate, so the edge plate
+//   can leave along its own plane, straight away from the face, and in no other direction;
+// - open mortise-and-tenon (a bridle or finger joint): where the edge plate's outer face is flush
+//   with the other plate's edge, the mortises are notches open at that edge, so the edge plate can
+//   also slide out through the open side.
+// Every other contact stays an empty joint: the faces only touch.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "desia/assembly.h"
+#include "desia/plate.h"
+
+namespace desia {
+
+// Where a through mortise-and-tenon joint can be cut for one contact (internal plate indices).
+struct TenonSite {
+  int tenonPlate = 0;    // the plate standing on its edge (S)
+  int mortisePlate = 0;  // the plate whose face it stands on (F)
+  int edge = 0;          // the side of the tenon plate's outline (between vertices edge, edge + 1)
+  Vec3 intoMortise{0, 0, 0};  // unit: the tenon plate's outward side normal, into the mortise plate
+  Vec3 along{0, 0, 0};        // unit: along that side, from vertex edge to edge + 1
+  double from = 0, to = 0;    // the part of the side on the face, as distances along it from vertex edge
+  // 0: through mortises. +1 or -1: open mortises, the tenon plate's face on that side of its
+  // thickness axis flush with the mortise plate's edge.
+  int openSide = 0;
+  // The directions the tenon plate may leave the mortise plate in (one for through mortises; two,
+  // and the ways between them, for open ones).
+  std::vector<Vec3> exits() const;
+  Vec3 across{0, 0, 0};  // the tenon plate's thickness axis
+};
+
+struct JointCutOptions {
+  double tenonWidth = 0;  // mm along the edge; 0 = from the edge's length (a third, or a fifth for two tenons)
+  int tenonCount = 0;     // tenons per joint; 0 = one, or two on edges longer than 8 plate thicknesses
+  double clearance = 0;   // mm of play between a tenon and its mortise (the mortise grows by it)
+};
+
+// The site of a mortise-and-tenon joint on `contact`, when the geometry allows one: a square side
+// of one prismatic plate on a face of another, at right angles, its whole thickness on the face,
+// the mortises inside the face plate's outline (through) or open at its edge where the tenon
+// plate is flush with it (open); nothing otherwise.
+std::optional<TenonSite> tenonSiteOf(const std::vector<Plate>& plates, const PlateContact& contact,
+                                     const JointCutOptions& options = {});
+
+// The tenons' positions along a site: [start, end) distances from the side's first vertex.
+std::vector<std::pair<double, double>> tenonSpans(const std::vector<Plate>& plates, const TenonSite& site,
+                                                  const JointCutOptions& options);
+
+// The plates with tenons added to the tenon plates' edges and mortises cut through the mortise
+// plates, one joint per site (2D booleans by Clipper on each plate's face, the plates being
+// prisms). Throws BadInput naming the plate when the cuts split a plate or run into each other.
+std::vector<Plate> cutTenonJoints(const std::vector<Plate>& plates, const std::vector<TenonSite>& sites,
+                                  const JointCutOptions& options);
+
+// True when `mover`, moved along the unit direction d by any distance, would pass through
+// `obstacle` (their interiors meet). Exact for the plates' polyhedra: two surface triangles whose
+// shadows along d overlap with positive area, with the obstacle's triangle ahead, mean a collision.
+bool plateCollidesAlong(const Plate& mover, const Plate& obstacle, const Vec3& d, double tolerance);
+
+}  // namespace desia

@@ -1,0 +1,387 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Joint geometry for plate structures (paper Section 5.2, geometry realization; Fig. 2, left).
+//
+// A mortise-and-tenon joint: the tenon plate S stands with a square side on a face of the mortise
+// plate F, S at a right angle to F. Tenons grow out of that side, as deep as F is thick; mortises
+// of the same size (plus the clearance) go through F, inside it or open at its edge where S is
+// flush with it. The tenons' cheeks (normals +-S's thickness axis; one of them for an open
+// mortise) and ends (+-along the side) and the shoulder then block every way but out.
+//
+// The plates are prisms (every side square to the faces), so a cut is a 2D boolean on the face,
+// done by Clipper, and the second face is the first moved by the thickness: a jointed plate is
+// again a Plate that the contact computation, the meshes and the exports take as it is.
+#include "desia/plate_joints.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "analysis/vec3.h"
+#include "desia/error.h"
+#include "plate/plane_frame.h"
+
+namespace desia {
+namespace {
+
+Vec3 minus(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+Vec3 plus(const Vec3& a, const Vec3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
+
+constexpr double kSquare = 1e-6;          // |cos| below this: at a right angle
+constexpr double kTolerance = 0.05;       // mm: faces closer than this lie on one another
+constexpr double kMortiseMargin = 1.0;    // mm of material left around a mortise at least
+constexpr double kShortestJoint = 3.0;    // mm: a shorter contact gets no tenon
+
+std::string plateLabel(const Plate& plate) {
+  return "plate " + std::to_string(plate.id) + (plate.name.empty() ? "" : " (" + plate.name + ")");
+}
+
+double plateThickness(const Plate& plate) {
+  return std::abs(dot(minus(plate.top[0][0], plate.bottom[0][0]), plateThicknessAxis(plate)));
+}
+
+bool isPrism(const Plate& plate) {
+  const Vec3 lift = scaled(plateThicknessAxis(plate), plateThickness(plate));
+  for (size_t l = 0; l < plate.bottom.size(); ++l) {
+    for (size_t k = 0; k < plate.bottom[l].size(); ++k) {
+      if (norm(minus(plate.top[l][k], plus(plate.bottom[l][k], lift))) > 1e-6) return false;
+    }
+  }
+  return true;
+}
+
+ClipperLib::Path clipperPath(const Loop& loop, const PlaneFrame& frame) {
+  ClipperLib::Path path;
+  for (const Vec3& p : loop) path.push_back(frame.toClipper(p));
+  return path;
+}
+
+ClipperLib::Paths clipperPaths(const std::vector<Loop>& loops, const PlaneFrame& frame) {
+  ClipperLib::Paths paths;
+  for (const Loop& loop : loops) paths.push_back(clipperPath(loop, frame));
+  return paths;
+}
+
+double areaOf(const ClipperLib::Paths& paths) {
+  double area = 0;
+  for (const ClipperLib::Path& path : paths) area += ClipperLib::Area(path);
+  return std::abs(area) / (kClipperScale * kClipperScale);
+}
+
+// Area of the loops' region (non-zero) inside or outside `face` (its outline minus its holes).
+double areaAgainst(const std::vector<Loop>& loops, const std::vector<Loop>& face, const PlaneFrame& frame, bool outside) {
+  ClipperLib::Clipper clipper;
+  clipper.AddPaths(clipperPaths(loops, frame), ClipperLib::ptSubject, true);
+  clipper.AddPaths(clipperPaths(face, frame), ClipperLib::ptClip, true);
+  ClipperLib::Paths result;
+  clipper.Execute(outside ? ClipperLib::ctDifference : ClipperLib::ctIntersection, result, ClipperLib::pftNonZero,
+                  ClipperLib::pftEvenOdd);
+  return areaOf(result);
+}
+
+// A rectangle on the tenon plate's side: [start, end] along it, [low, high] across the tenon
+// plate's thickness, on the face the tenon plate stands on.
+Loop footprint(const Plate& tenonPlate, const TenonSite& site, double start, double end, double low, double high) {
+  const Vec3 base = tenonPlate.bottom[0][site.edge];
+  auto at = [&](double s, double t) { return plus(base, plus(scaled(site.along, s), scaled(site.across, t))); };
+  return {at(start, low), at(end, low), at(end, high), at(start, high)};
+}
+
+// The mortise of one tenon: its footprint grown by half the clearance, run out past the open edge.
+Loop mortiseOf(const std::vector<Plate>& plates, const TenonSite& site, double start, double end, double clearance) {
+  const Plate& tenonPlate = plates[site.tenonPlate];
+  const double width = plateThickness(tenonPlate), grow = clearance / 2;
+  const double low = site.openSide < 0 ? -kMortiseMargin - grow : -grow;
+  const double high = site.openSide > 0 ? width + kMortiseMargin + grow : width + grow;
+  return footprint(tenonPlate, site, start - grow, end + grow, low, high);
+}
+
+// The tenon itself, in the tenon plate's plane: out of its side, as deep as the mortise plate.
+Loop tenonOf(const std::vector<Plate>& plates, const TenonSite& site, double start, double end) {
+  const Vec3 base = plates[site.tenonPlate].bottom[0][site.edge];
+  const Vec3 out = scaled(site.intoMortise, plateThickness(plates[site.mortisePlate]));
+  // Reaching 0.01 mm into the plate, so that the union joins them across rounding (a turned design).
+  const Vec3 in = scaled(site.intoMortise, -0.01);
+  const Vec3 a = plus(base, scaled(site.along, start)), b = plus(base, scaled(site.along, end));
+  return {plus(a, in), plus(b, in), plus(b, out), plus(a, out)};
+}
+
+// Which kind of mortise fits: through (inside the face plate with a margin all round), open at
+// one side (that side of the tenon plate flush with the face plate's edge), or none.
+std::optional<int> mortiseKind(const std::vector<Plate>& plates, TenonSite site, const std::vector<std::pair<double, double>>& spans,
+                               double clearance) {
+  const Plate& tenonPlate = plates[site.tenonPlate];
+  const Plate& mortisePlate = plates[site.mortisePlate];
+  const PlaneFrame frame(mortisePlate.bottom[0][0], plateThicknessAxis(mortisePlate));
+  const double width = plateThickness(tenonPlate), margin = kMortiseMargin + clearance / 2;
+  constexpr double kFlush = 0.01;  // mm
+  auto inside = [&](double low, double high) {
+    std::vector<Loop> rects;
+    for (const auto& [start, end] : spans) rects.push_back(footprint(tenonPlate, site, start - margin, end + margin, low, high));
+    return areaAgainst(rects, mortisePlate.bottom, frame, true) < 1e-6;
+  };
+  auto clearBeyond = [&](double low, double high) {
+    std::vector<Loop> rects;
+    for (const auto& [start, end] : spans) rects.push_back(footprint(tenonPlate, site, start, end, low, high));
+    return areaAgainst(rects, mortisePlate.bottom, frame, false) < 1e-6;
+  };
+  if (inside(-margin, width + margin)) return 0;
+  if (inside(-margin, width - kFlush) && clearBeyond(width + kFlush, width + kMortiseMargin)) return 1;
+  if (inside(kFlush, width + margin) && clearBeyond(-kMortiseMargin, -kFlush)) return -1;
+  return std::nullopt;
+}
+
+// The contact's extent along a direction, from a point.
+std::pair<double, double> extentAlong(const Loop& region, const Vec3& origin, const Vec3& direction) {
+  double lo = HUGE_VAL, hi = -HUGE_VAL;
+  for (const Vec3& p : region) {
+    const double s = dot(minus(p, origin), direction);
+    lo = std::min(lo, s);
+    hi = std::max(hi, s);
+  }
+  return {lo, hi};
+}
+
+// The 2D region of a plate's faces after the cuts, as the loops of its bottom face (outline
+// first); throws when the cuts split it.
+std::vector<Loop> cutFace(const Plate& plate, const std::vector<Loop>& added, const std::vector<Loop>& removed) {
+  const PlaneFrame frame(plate.bottom[0][0], plateThicknessAxis(plate));
+  ClipperLib::Clipper grow;
+  grow.AddPaths(clipperPaths(plate.bottom, frame), ClipperLib::ptSubject, true);
+  grow.AddPaths(clipperPaths(added, frame), ClipperLib::ptClip, true);
+  ClipperLib::Paths grown;
+  grow.Execute(ClipperLib::ctUnion, grown, ClipperLib::pftEvenOdd, ClipperLib::pftNonZero);
+  ClipperLib::Clipper cut;
+  cut.StrictlySimple(true);
+  cut.AddPaths(grown, ClipperLib::ptSubject, true);
+  cut.AddPaths(clipperPaths(removed, frame), ClipperLib::ptClip, true);
+  ClipperLib::PolyTree tree;
+  cut.Execute(ClipperLib::ctDifference, tree, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+  if (tree.ChildCount() != 1) {
+    throwBadInput("", "the joints cut " + plateLabel(plate) + " into " + std::to_string(tree.ChildCount()) + " pieces");
+  }
+  const ClipperLib::PolyNode* outer = tree.Childs[0];
+  std::vector<Loop> loops;
+  auto toLoop = [&](const ClipperLib::Path& path) {
+    Loop loop;
+    for (const ClipperLib::IntPoint& point : path) loop.push_back(frame.fromClipper(point));
+    return loop;
+  };
+  loops.push_back(toLoop(outer->Contour));
+  for (const ClipperLib::PolyNode* hole : outer->Childs) {
+    if (hole->ChildCount() > 0) throwBadInput("", "the joints cut a loose piece inside " + plateLabel(plate));
+    loops.push_back(toLoop(hole->Contour));
+  }
+  return loops;
+}
+
+}  // namespace
+
+std::vector<Vec3> TenonSite::exits() const {
+  std::vector<Vec3> ways{negated(intoMortise)};
+  if (openSide != 0) ways.push_back(scaled(across, openSide));
+  return ways;
+}
+
+std::vector<std::pair<double, double>> tenonSpans(const std::vector<Plate>& plates, const TenonSite& site,
+                                                  const JointCutOptions& options) {
+  const double length = site.to - site.from;
+  const double thickness = plateThickness(plates[site.tenonPlate]);
+  const int count = options.tenonCount > 0 ? options.tenonCount : (length >= 8 * thickness ? 2 : 1);
+  const double width = options.tenonWidth > 0 ? options.tenonWidth : length / (2 * count + 1);
+  const double pitch = length / count;
+  // Tenons need room between them and at the ends: a tenon never wider than its share less a gap.
+  if (width >= pitch - std::min(pitch / 3, 2 * kMortiseMargin)) return {};
+  std::vector<std::pair<double, double>> spans;
+  for (int j = 0; j < count; ++j) {
+    const double centre = site.from + pitch * (j + 0.5);
+    spans.push_back({centre - width / 2, centre + width / 2});
+  }
+  return spans;
+}
+
+std::optional<TenonSite> tenonSiteOf(const std::vector<Plate>& plates, const PlateContact& contact, const JointCutOptions& options) {
+  const Vec3 axisA = plateThicknessAxis(plates[contact.a]), axisB = plateThicknessAxis(plates[contact.b]);
+  const bool aOnFace = std::abs(dot(contact.normal, axisA)) > 1 - kSquare;
+  const bool bOnFace = std::abs(dot(contact.normal, axisB)) > 1 - kSquare;
+  if (aOnFace == bOnFace || std::abs(dot(axisA, axisB)) > kSquare) return std::nullopt;
+  if (!isPrism(plates[contact.a]) || !isPrism(plates[contact.b])) return std::nullopt;
+  TenonSite site;
+  site.tenonPlate = aOnFace ? contact.b : contact.a;
+  site.mortisePlate = aOnFace ? contact.a : contact.b;
+  site.intoMortise = aOnFace ? negated(contact.normal) : contact.normal;
+  const Plate& tenonPlate = plates[site.tenonPlate];
+  const Loop& bottom = tenonPlate.bottom[0];
+  const std::vector<Vec3> sideNormals = plateSideNormals(tenonPlate, 0);
+  site.across = plateThicknessAxis(tenonPlate);
+  const Vec3 middle = [&] {
+    Vec3 sum{0, 0, 0};
+    for (const Vec3& p : contact.region) sum = plus(sum, p);
+    return scaled(sum, 1.0 / static_cast<double>(contact.region.size()));
+  }();
+  for (size_t k = 0; k < bottom.size(); ++k) {
+    const size_t next = (k + 1) % bottom.size();
+    if (dot(sideNormals[k], site.intoMortise) < 1 - kSquare) continue;
+    if (std::abs(dot(minus(middle, bottom[k]), site.intoMortise)) > kTolerance) continue;
+    site.edge = static_cast<int>(k);
+    site.along = normalized(minus(bottom[next], bottom[k]));
+    const auto [regionStart, regionEnd] = extentAlong(contact.region, bottom[k], site.along);
+    site.from = std::max(0.0, regionStart);
+    site.to = std::min(norm(minus(bottom[next], bottom[k])), regionEnd);
+    // The whole thickness of S must stand on F, or the tenon would hang beside the mortise.
+    const auto [acrossStart, acrossEnd] = extentAlong(contact.region, bottom[k], site.across);
+    if (acrossStart > kTolerance || acrossEnd < plateThickness(tenonPlate) - kTolerance) return std::nullopt;
+    if (site.to - site.from < kShortestJoint) return std::nullopt;
+    const std::vector<std::pair<double, double>> spans = tenonSpans(plates, site, options);
+    if (spans.empty()) return std::nullopt;
+    const std::optional<int> kind = mortiseKind(plates, site, spans, options.clearance);
+    if (!kind) return std::nullopt;
+    site.openSide = *kind;
+    return site;
+  }
+  return std::nullopt;
+}
+
+std::vector<Plate> cutTenonJoints(const std::vector<Plate>& plates, const std::vector<TenonSite>& sites,
+                                  const JointCutOptions& options) {
+  std::vector<std::vector<Loop>> added(plates.size()), removed(plates.size());
+  std::vector<double> removedArea(plates.size(), 0);
+  for (const TenonSite& site : sites) {
+    const PlaneFrame frame(plates[site.mortisePlate].bottom[0][0], plateThicknessAxis(plates[site.mortisePlate]));
+    for (const auto& [start, end] : tenonSpans(plates, site, options)) {
+      added[site.tenonPlate].push_back(tenonOf(plates, site, start, end));
+      removed[site.mortisePlate].push_back(mortiseOf(plates, site, start, end, options.clearance));
+      removedArea[site.mortisePlate] += areaOf({clipperPath(removed[site.mortisePlate].back(), frame)});
+    }
+  }
+  std::vector<Plate> jointed = plates;
+  for (size_t p = 0; p < plates.size(); ++p) {
+    if (added[p].empty() && removed[p].empty()) continue;
+    const Plate& plate = plates[p];
+    // Mortises of different joints must not run into each other.
+    const PlaneFrame frame(plate.bottom[0][0], plateThicknessAxis(plate));
+    ClipperLib::Clipper unite;
+    unite.AddPaths(clipperPaths(removed[p], frame), ClipperLib::ptSubject, true);
+    ClipperLib::Paths united;
+    unite.Execute(ClipperLib::ctUnion, united, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+    if (areaOf(united) < removedArea[p] - 1e-3) throwBadInput("", "the mortises cut into " + plateLabel(plate) + " run into each other");
+    const Vec3 lift = scaled(plateThicknessAxis(plate), plateThickness(plate));
+    jointed[p].bottom = cutFace(plate, added[p], removed[p]);
+    jointed[p].top.clear();
+    for (const Loop& loop : jointed[p].bottom) {
+      Loop top;
+      for (const Vec3& point : loop) top.push_back(plus(point, lift));
+      jointed[p].top.push_back(top);
+    }
+  }
+  return jointed;
+}
+
+namespace {
+
+struct Shadow {  // a triangle seen along d: 2D corners (u, v) and their depths along d
+  std::array<std::array<double, 2>, 3> corner;
+  std::array<double, 3> depth;
+  double minU, maxU, minV, maxV;
+};
+
+std::vector<Shadow> shadowsOf(const Plate& plate, const PlaneFrame& frame) {
+  const TriangleMesh mesh = plateMesh(plate);
+  std::vector<Shadow> shadows;
+  for (const auto& triangle : mesh.triangles) {
+    Shadow s;
+    for (int i = 0; i < 3; ++i) {
+      const Vec3& p = mesh.vertices[triangle[i]];
+      const Vec3 offset = minus(p, frame.origin);
+      s.corner[i] = {dot(offset, frame.u), dot(offset, frame.v)};
+      s.depth[i] = dot(offset, frame.normal);
+    }
+    const double twiceArea = (s.corner[1][0] - s.corner[0][0]) * (s.corner[2][1] - s.corner[0][1]) -
+                             (s.corner[2][0] - s.corner[0][0]) * (s.corner[1][1] - s.corner[0][1]);
+    if (std::abs(twiceArea) < 1e-9) continue;  // edge-on: its solid is seen through its neighbours
+    if (twiceArea < 0) {
+      std::swap(s.corner[1], s.corner[2]);
+      std::swap(s.depth[1], s.depth[2]);
+    }
+    s.minU = std::min({s.corner[0][0], s.corner[1][0], s.corner[2][0]});
+    s.maxU = std::max({s.corner[0][0], s.corner[1][0], s.corner[2][0]});
+    s.minV = std::min({s.corner[0][1], s.corner[1][1], s.corner[2][1]});
+    s.maxV = std::max({s.corner[0][1], s.corner[1][1], s.corner[2][1]});
+    shadows.push_back(s);
+  }
+  return shadows;
+}
+
+using Point2 = std::array<double, 2>;
+
+// The part of a convex polygon left of the directed line a -> b (Sutherland-Hodgman, one edge).
+std::vector<Point2> clipLeftOf(const std::vector<Point2>& polygon, const Point2& a, const Point2& b) {
+  auto side = [&](const Point2& p) { return (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0]); };
+  std::vector<Point2> out;
+  for (size_t i = 0; i < polygon.size(); ++i) {
+    const Point2& p = polygon[i];
+    const Point2& q = polygon[(i + 1) % polygon.size()];
+    const double sp = side(p), sq = side(q);
+    if (sp >= 0) out.push_back(p);
+    if ((sp >= 0) != (sq >= 0)) {
+      const double t = sp / (sp - sq);
+      out.push_back({p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])});
+    }
+  }
+  return out;
+}
+
+// Depth of a shadow's triangle plane at a 2D point (barycentric interpolation).
+double depthAt(const Shadow& s, const Point2& p) {
+  const auto& a = s.corner[0];
+  const auto& b = s.corner[1];
+  const auto& c = s.corner[2];
+  const double det = (b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]);
+  const double l1 = ((p[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (p[1] - a[1])) / det;
+  const double l2 = ((b[0] - a[0]) * (p[1] - a[1]) - (p[0] - a[0]) * (b[1] - a[1])) / det;
+  return s.depth[0] + l1 * (s.depth[1] - s.depth[0]) + l2 * (s.depth[2] - s.depth[0]);
+}
+
+double polygonPerimeter(const std::vector<Point2>& polygon) {
+  double length = 0;
+  for (size_t i = 0; i < polygon.size(); ++i) {
+    const Point2& p = polygon[i];
+    const Point2& q = polygon[(i + 1) % polygon.size()];
+    length += std::hypot(q[0] - p[0], q[1] - p[1]);
+  }
+  return length;
+}
+
+double polygonArea(const std::vector<Point2>& polygon) {
+  double twice = 0;
+  for (size_t i = 0; i < polygon.size(); ++i) {
+    const Point2& p = polygon[i];
+    const Point2& q = polygon[(i + 1) % polygon.size()];
+    twice += p[0] * q[1] - q[0] * p[1];
+  }
+  return std::abs(twice) / 2;
+}
+
+}  // namespace
+
+bool plateCollidesAlong(const Plate& mover, const Plate& obstacle, const Vec3& d, double tolerance) {
+  const PlaneFrame frame(mover.bottom[0][0], d);
+  const std::vector<Shadow> moving = shadowsOf(mover, frame);
+  const std::vector<Shadow> standing = shadowsOf(obstacle, frame);
+  for (const Shadow& m : moving) {
+    for (const Shadow& s : standing) {
+      if (m.maxU <= s.minU || s.maxU <= m.minU || m.maxV <= s.minV || s.maxV <= m.minV) continue;
+      std::vector<Point2> overlap(m.corner.begin(), m.corner.end());
+      for (int i = 0; i < 3 && !overlap.empty(); ++i) overlap = clipLeftOf(overlap, s.corner[i], s.corner[(i + 1) % 3]);
+      // Shadows that only touch, or overlap in a sliver narrower than the tolerance (rounding at a
+      // shared edge: 2 area / perimeter is about a sliver's width), do not meet.
+      if (overlap.size() < 3 || 2 * polygonArea(overlap) <= tolerance * polygonPerimeter(overlap)) continue;
+      // The depth gap is affine over the overlap: its largest value is at a corner.
+      for (const Point2& p : overlap) {
+        if (depthAt(s, p) - depthAt(m, p) > tolerance) return true;
+      }
+    }
+  }
+  return false;
+}
+
+}  // namespace desia

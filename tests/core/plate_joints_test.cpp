@@ -1,0 +1,301 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Joints cut into plates (core/plate/plate_joints.cpp) and the designs verified on them: the cut
+// geometry keeps the material (tenons fill their mortises), leaves the clearance asked for, gives
+// closed meshes, and the swept removal check agrees with an independent method (moving the plate
+// step by step and sampling its inside against the other plate's).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "analysis/vec3.h"
+#include "desia/check.h"
+#include "desia/error.h"
+#include "desia/plate_design.h"
+#include "desia/plate_design_io.h"
+#include "desia/plate_joints.h"
+#include "test_support.h"
+
+namespace desia {
+namespace {
+
+AssemblyDocument loadPlateExample(const std::string& name) {
+  const std::string path = "examples/plate/" + name;
+  return parseAssemblyText(testing::readFileText(testing::projectPath(path)), path);
+}
+
+PlateDesignResult designCut(const std::vector<Plate>& plates, const JointCutOptions& joints = {}) {
+  PlateDesignOptions options;
+  options.joints = joints;
+  return designPlateJoints(plates, computePlateContacts(plates, {}), options);
+}
+
+double meshVolume(const TriangleMesh& mesh) {
+  double volume = 0;
+  for (const auto& t : mesh.triangles) volume += dot(mesh.vertices[t[0]], cross(mesh.vertices[t[1]], mesh.vertices[t[2]])) / 6.0;
+  return volume;
+}
+
+double totalVolume(const std::vector<Plate>& plates) {
+  double volume = 0;
+  for (const Plate& plate : plates) volume += meshVolume(plateMesh(plate));
+  return volume;
+}
+
+TEST(PlateJoints, TheTableGetsThroughTenonsVerifiedOnTheCutPlates) {
+  const AssemblyDocument table = loadPlateExample("table.json");
+  const PlateDesignResult result = designCut(table.plates);
+  ASSERT_EQ(result.status, PlateDesignStatus::Success) << result.message;
+  EXPECT_EQ(result.realization, JointRealization::Cut);
+  ASSERT_EQ(result.joints.size(), 10u);
+  for (const PlateJoint& joint : result.joints) EXPECT_EQ(joint.type, JointType::MortiseTenon) << "every board is inset: all through";
+  // Tenons of the four boards standing under the top: 2 + 2 (sides) + 2 + 2 (aprons) mortises in it.
+  EXPECT_EQ(result.jointedPlates[0].bottom.size(), 9u);
+  // The tenons fill the mortises exactly: no material comes or goes.
+  EXPECT_NEAR(totalVolume(result.jointedPlates), totalVolume(table.plates), 1e-2);
+  for (const Plate& plate : result.jointedPlates) {
+    const TriangleMesh mesh = plateMesh(plate);
+    EXPECT_GT(meshVolume(mesh), 0) << plate.id;
+  }
+  // The written document carries the cut plates and their own contacts, and checks on its own.
+  const AssemblyDocument written = parseJsonDocument(plateDesignToJson(table, result), "table plan");
+  EXPECT_EQ(written.plates.size(), 6u);
+  for (CheckMethod method : {CheckMethod::Graphs, CheckMethod::Inequalities}) {
+    CheckOptions options;
+    options.method = method;
+    const CheckReport report = checkAssembly(written, options);
+    EXPECT_EQ(report.result.verdict, Verdict::Interlocking) << report.result.reason;
+    EXPECT_EQ(written.assembly.parts[report.result.key].id, 1);
+  }
+  // The contacts in the document are those of the cut geometry.
+  EXPECT_EQ(written.assembly.contacts.size(), computePlateContacts(result.jointedPlates, {}).size());
+}
+
+TEST(PlateJoints, TheClearanceGrowsEveryMortiseAndNothingElse) {
+  const AssemblyDocument table = loadPlateExample("table.json");
+  JointCutOptions joints;
+  joints.clearance = 0.2;
+  const PlateDesignResult result = designCut(table.plates, joints);
+  ASSERT_EQ(result.status, PlateDesignStatus::Success) << result.message;
+  EXPECT_NEAR(totalVolume(result.jointedPlates), totalVolume(table.plates), 1e-2) << "verified without play";
+  // Every mortise of the 18 mm boards is (width + 0.2) x (18 + 0.2) instead of width x 18, through 18 mm.
+  double play = 0;
+  for (size_t p = 0; p < table.plates.size(); ++p) {
+    const Plate& tight = result.jointedPlates[p];
+    const Plate& loose = result.fabricationPlates[p];
+    ASSERT_EQ(tight.bottom.size(), loose.bottom.size());
+    for (size_t l = 1; l < tight.bottom.size(); ++l) {
+      const double tightArea = norm(loopNormal(tight.bottom[l])) / 2, looseArea = norm(loopNormal(loose.bottom[l])) / 2;
+      // (w + c)(18 + c) - 18 w = c (w + 18) + c^2, and w = (tightArea / 18).
+      const double width = tightArea / 18;
+      EXPECT_NEAR(looseArea - tightArea, 0.2 * (width + 18) + 0.04, 1e-3);
+      play += (looseArea - tightArea) * 18;
+    }
+  }
+  EXPECT_GT(play, 0);
+  EXPECT_NEAR(totalVolume(result.jointedPlates) - totalVolume(result.fabricationPlates), play, 1e-2);
+  const std::string text = plateDesignToJson(table, result);
+  EXPECT_NE(text.find("\"fabricationPlates\""), std::string::npos);
+  EXPECT_NE(text.find("\"clearance\": 0.2"), std::string::npos);
+}
+
+// An axis-aligned board; its thinnest extent is its thickness (as examples/plate/make_examples.py).
+Plate board(int id, const Vec3& lo, const Vec3& hi) {
+  int axis = 0;
+  for (int k = 1; k < 3; ++k) axis = hi[k] - lo[k] < hi[axis] - lo[axis] ? k : axis;
+  const int u = (axis + 1) % 3, w = (axis + 2) % 3;  // (u, w, axis) right-handed
+  Plate plate;
+  plate.id = id;
+  Loop bottom, top;
+  for (const auto& [a, b] : std::vector<std::pair<double, double>>{{lo[u], lo[w]}, {hi[u], lo[w]}, {hi[u], hi[w]}, {lo[u], hi[w]}}) {
+    Vec3 p{0, 0, 0};
+    p[u] = a;
+    p[w] = b;
+    p[axis] = lo[axis];
+    bottom.push_back(p);
+    p[axis] = hi[axis];
+    top.push_back(p);
+  }
+  plate.bottom = {bottom};
+  plate.top = {top};
+  return plate;
+}
+
+TEST(PlateJoints, SweptRemovalOfTwoBoards) {
+  const Plate lower = board(1, {0, 0, 0}, {100, 100, 10});
+  const Plate upper = board(2, {20, 20, 10}, {80, 80, 20});
+  const double tolerance = 0.05;
+  EXPECT_FALSE(plateCollidesAlong(upper, lower, {0, 0, 1}, tolerance)) << "lifted off";
+  EXPECT_TRUE(plateCollidesAlong(upper, lower, {0, 0, -1}, tolerance)) << "pushed into";
+  EXPECT_FALSE(plateCollidesAlong(upper, lower, {1, 0, 0}, tolerance)) << "slides on the face";
+  EXPECT_TRUE(plateCollidesAlong(lower, upper, {0, 0, 1}, tolerance));
+  // A board far to the side, in the way of a move along +x only.
+  const Plate wall = board(3, {200, 0, 0}, {210, 100, 30});
+  EXPECT_TRUE(plateCollidesAlong(upper, wall, {1, 0, 0}, tolerance));
+  EXPECT_FALSE(plateCollidesAlong(upper, wall, {-1, 0, 0}, tolerance));
+  const double rise = std::tan(5 * M_PI / 180);
+  EXPECT_TRUE(plateCollidesAlong(upper, wall, normalized({1, 0, rise}), tolerance)) << "rises 10.5 on the way: its lower part hits";
+  EXPECT_FALSE(plateCollidesAlong(upper, wall, normalized({1, 0, 2 * rise}), tolerance)) << "rises 21: passes over the 30 mm wall";
+}
+
+// The independent method: a prism plate's inside as a point test (its bottom face, even-odd, and
+// its height), and a move step by step, sampling the mover's inside against the other plate.
+struct PrismInside {
+  explicit PrismInside(const Plate& plate)
+      : axis(plateThicknessAxis(plate)), base(plate.bottom[0][0]),
+        u(normalized(cross(axis, std::abs(axis[0]) < 0.6 ? Vec3{1, 0, 0} : Vec3{0, 1, 0}))), v(cross(axis, u)) {
+    thickness = dot(offset(plate.top[0][0]), axis);
+    for (const Loop& loop : plate.bottom) {
+      std::vector<std::array<double, 2>> flat;
+      for (const Vec3& p : loop) flat.push_back({dot(offset(p), u), dot(offset(p), v)});
+      loops.push_back(flat);
+    }
+    for (const Loop& loop : plate.bottom) {
+      for (const Vec3& p : loop) {
+        for (int k = 0; k < 3; ++k) {
+          lo[k] = std::min({lo[k], p[k], p[k] + thickness * axis[k]});
+          hi[k] = std::max({hi[k], p[k], p[k] + thickness * axis[k]});
+        }
+      }
+    }
+  }
+  Vec3 offset(const Vec3& p) const { return {p[0] - base[0], p[1] - base[1], p[2] - base[2]}; }
+  bool contains(const Vec3& point) const {
+    const Vec3 d = offset(point);
+    const double height = dot(d, axis);
+    if (height <= 0 || height >= thickness) return false;
+    const double px = dot(d, u), py = dot(d, v);
+    bool inside = false;
+    for (const auto& loop : loops) {
+      for (size_t i = 0, j = loop.size() - 1; i < loop.size(); j = i++) {
+        const auto& a = loop[i];
+        const auto& b = loop[j];
+        if ((a[1] > py) != (b[1] > py) && px < (b[0] - a[0]) * (py - a[1]) / (b[1] - a[1]) + a[0]) inside = !inside;
+      }
+    }
+    return inside;
+  }
+  Vec3 axis, base, u, v;
+  double thickness = 0;
+  std::vector<std::vector<std::array<double, 2>>> loops;
+  Vec3 lo{HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi{-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+};
+
+std::vector<Vec3> insideSamples(const PrismInside& plate) {
+  constexpr double kStep = 5.9;  // mm; the odd offsets keep samples off the boards' faces
+  std::vector<Vec3> samples;
+  for (double x = plate.lo[0] + 0.37; x < plate.hi[0]; x += kStep) {
+    for (double y = plate.lo[1] + 0.41; y < plate.hi[1]; y += kStep) {
+      for (double z = plate.lo[2] + 0.43; z < plate.hi[2]; z += kStep) {
+        if (plate.contains({x, y, z})) samples.push_back({x, y, z});
+      }
+    }
+  }
+  return samples;
+}
+
+bool sampledCollision(const PrismInside& mover, const std::vector<Vec3>& samples, const PrismInside& obstacle, const Vec3& d) {
+  // Steps shorter than the 18 mm boards, over the distances where the boxes can meet only.
+  double first = 0, last = 4000;
+  for (int k = 0; k < 3; ++k) {
+    if (d[k] == 0) {
+      if (mover.hi[k] <= obstacle.lo[k] || obstacle.hi[k] <= mover.lo[k]) return false;
+      continue;
+    }
+    const double a = (obstacle.lo[k] - mover.hi[k]) / d[k], b = (obstacle.hi[k] - mover.lo[k]) / d[k];
+    first = std::max(first, std::min(a, b));
+    last = std::min(last, std::max(a, b));
+  }
+  for (double t = first + 1; t < last; t += 8) {
+    for (const Vec3& p : samples) {
+      if (obstacle.contains({p[0] + t * d[0], p[1] + t * d[1], p[2] + t * d[2]})) return true;
+    }
+  }
+  return false;
+}
+
+TEST(PlateJoints, SweptRemovalAgreesWithSamplingOnTheJointedTable) {
+  const AssemblyDocument table = loadPlateExample("table.json");
+  const PlateDesignResult result = designCut(table.plates);
+  ASSERT_EQ(result.status, PlateDesignStatus::Success) << result.message;
+  const std::vector<Plate>& plates = result.jointedPlates;
+  std::vector<PrismInside> insides;
+  for (const Plate& plate : plates) insides.emplace_back(plate);
+  int collisions = 0, checks = 0;
+  // The legs and aprons against the top and each other, along the six axes (the top is big to sample).
+  for (size_t a = 1; a < plates.size(); ++a) {
+    const std::vector<Vec3> samples = insideSamples(insides[a]);
+    for (size_t b = 0; b < plates.size(); ++b) {
+      if (a == b) continue;
+      for (const Vec3& d : {Vec3{1, 0, 0}, Vec3{-1, 0, 0}, Vec3{0, 1, 0}, Vec3{0, -1, 0}, Vec3{0, 0, 1}, Vec3{0, 0, -1}}) {
+        const bool exact = plateCollidesAlong(plates[a], plates[b], d, 0.05);
+        EXPECT_EQ(exact, sampledCollision(insides[a], samples, insides[b], d)) << plates[a].id << " along " << d[0] << "," << d[1] << "," << d[2]
+                                                                  << " against " << plates[b].id;
+        collisions += exact ? 1 : 0;
+        ++checks;
+      }
+    }
+  }
+  EXPECT_GT(collisions, 10);
+  EXPECT_LT(collisions, checks);
+}
+
+TEST(PlateJoints, ATurnedTableDesignsTheSameJoints) {
+  const AssemblyDocument table = loadPlateExample("table.json");
+  const PlateDesignResult straight = designCut(table.plates);
+  ASSERT_EQ(straight.status, PlateDesignStatus::Success);
+  std::vector<Plate> turned = table.plates;
+  const double a = 0.7, b = -0.4;
+  for (Plate& plate : turned) {
+    for (auto* face : {&plate.bottom, &plate.top}) {
+      for (Loop& loop : *face) {
+        for (Vec3& p : loop) {
+          const Vec3 q{std::cos(a) * p[0] - std::sin(a) * p[1], std::sin(a) * p[0] + std::cos(a) * p[1], p[2]};
+          p = {q[0], std::cos(b) * q[1] - std::sin(b) * q[2], std::sin(b) * q[1] + std::cos(b) * q[2]};
+        }
+      }
+    }
+  }
+  const PlateDesignResult result = designCut(turned);
+  ASSERT_EQ(result.status, PlateDesignStatus::Success) << result.message;
+  EXPECT_EQ(result.order, straight.order);
+  EXPECT_EQ(result.joints.size(), straight.joints.size());
+  // Clipper's 1e-4 mm grid in the turned plates' own frames: a millionth of the volume at most.
+  EXPECT_NEAR(totalVolume(result.jointedPlates), totalVolume(straight.jointedPlates), 1e-6 * totalVolume(straight.jointedPlates));
+}
+
+TEST(PlateJoints, FlushBoardsGetOpenMortisesAndTenonsTooWideForAJointGetNone) {
+  // A board standing on a base, flush with the base's edge at x = 0: an open mortise.
+  const std::vector<Plate> plates{board(1, {0, 0, 0}, {200, 100, 18}), board(2, {0, 20, 18}, {200, 38, 200})};
+  const std::vector<PlateContact> contacts = computePlateContacts(plates, {});
+  ASSERT_EQ(contacts.size(), 1u);
+  const std::optional<TenonSite> site = tenonSiteOf(plates, contacts[0]);
+  ASSERT_TRUE(site.has_value());
+  EXPECT_EQ(site->tenonPlate, 1);
+  EXPECT_EQ(site->openSide, 0) << "20 mm in from the base's edges: through";
+  const std::vector<Plate> flush{board(1, {0, 0, 0}, {200, 100, 18}), board(2, {0, 0, 18}, {200, 18, 200})};
+  const std::optional<TenonSite> open = tenonSiteOf(flush, computePlateContacts(flush, {})[0]);
+  ASSERT_TRUE(open.has_value());
+  EXPECT_NE(open->openSide, 0);
+  EXPECT_EQ(open->exits().size(), 2u) << "out of the base, and out through the open side";
+  JointCutOptions wide;
+  wide.tenonWidth = 250;
+  EXPECT_FALSE(tenonSiteOf(plates, contacts[0], wide).has_value());
+  const std::vector<Plate> cut = cutTenonJoints(flush, {*open}, {});
+  EXPECT_EQ(cut[0].bottom.size(), 1u) << "open mortises are notches in the outline, not holes";
+  EXPECT_GT(cut[0].bottom[0].size(), 4u);
+  EXPECT_NEAR(totalVolume(cut), totalVolume(flush), 1e-2);
+}
+
+TEST(PlateJoints, DesignsThatNeedOtherJointsSaySoAndPlanWithThePaperAlone) {
+  const AssemblyDocument box = loadPlateExample("mitred_box.json");
+  const PlateDesignResult cut = designCut(box.plates);
+  EXPECT_EQ(cut.status, PlateDesignStatus::NotFound);
+  EXPECT_NE(cut.message.find("joints 'planned'"), std::string::npos) << cut.message;
+  EXPECT_THROW(parseJointRealization("glued"), Error);
+  EXPECT_EQ(parseJointRealization("planned"), JointRealization::Planned);
+}
+
+}  // namespace
+}  // namespace desia
