@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// `desia export`: a voxel assembly as part meshes (STL, OBJ) or as a BurrTools .xmpuzzle.
+// `desia export`: a voxel assembly as part meshes (STL, OBJ) or as a BurrTools .xmpuzzle; a plate
+// structure as meshes or cut files (SVG, DXF); a frame as meshes, .fpuz or a cut list.
 #include <cstdint>
 #include <iostream>
 #include <string>
@@ -8,6 +9,7 @@
 #include "cli_arguments.h"
 #include "cli_files.h"
 #include "commands.h"
+#include "desia/cut_sheets.h"
 #include "desia/document.h"
 #include "desia/error.h"
 #include "desia/export.h"
@@ -18,7 +20,8 @@ namespace {
 constexpr int kExitBadInput = 2;
 
 const char* kExportUsage =
-    "usage: desia export FILE --format stl|stl-ascii|obj|xmpuzzle [--part N] [--voxel-size S] --output OUT\n";
+    "usage: desia export FILE --format stl|stl-ascii|obj|xmpuzzle|svg|dxf|fpuz|csv [--part N] [--voxel-size S]\n"
+    "             [--sheet WxH] [--kerf MM] [--spacing MM] [--hairline] --output OUT\n";
 
 using desia::cli::UsageError;
 
@@ -38,11 +41,41 @@ double parseVoxelSize(const std::string& text) {
   return value;  // the range is checked by the core
 }
 
+// `args` without `flag` (an option without a value); `*present` tells whether it was there.
+std::vector<std::string> withoutFlag(const std::vector<std::string>& args, const std::string& flag, bool* present) {
+  std::vector<std::string> rest;
+  for (const std::string& arg : args) {
+    if (arg == flag) *present = true;
+    else rest.push_back(arg);
+  }
+  return rest;
+}
+
+// OUT.svg for one sheet; OUT-1.svg, OUT-2.svg, ... for several.
+std::string sheetFileName(const std::string& output, size_t sheet, size_t sheets) {
+  if (sheets == 1) return output;
+  const size_t dot = output.find_last_of('.');
+  const size_t slash = output.find_last_of('/');
+  const bool extension = dot != std::string::npos && (slash == std::string::npos || dot > slash);
+  return (extension ? output.substr(0, dot) : output) + "-" + std::to_string(sheet + 1) + (extension ? output.substr(dot) : "");
+}
+
+int exportCutSheets(const desia::AssemblyDocument& document, const std::string& input, const std::string& format,
+                    const desia::CutSheetOptions& cut, const std::string& output) {
+  const std::vector<std::string> sheets = desia::plateCutSheets(document, desia::parseCutFileFormat(format), cut);
+  for (size_t s = 0; s < sheets.size(); ++s) desia::cli::writeOutputFile(sheetFileName(output, s, sheets.size()), sheets[s]);
+  std::cout << input << ": " << document.plates.size() << " plates on " << sheets.size() << (sheets.size() == 1 ? " sheet" : " sheets")
+            << " as " << format << "; wrote " << sheetFileName(output, 0, sheets.size())
+            << (sheets.size() > 1 ? " to " + sheetFileName(output, sheets.size() - 1, sheets.size()) : std::string()) << "\n";
+  return 0;
+}
+
 int exportFile(const std::vector<std::string>& args) {
   std::string input, output, format;
   desia::ExportOptions options;
+  desia::CutSheetOptions cut;
   const desia::cli::Arguments arguments =
-      desia::cli::splitArguments(args, {"--format", "--part", "--voxel-size", "--output"});
+      desia::cli::splitArguments(withoutFlag(args, "--hairline", &cut.hairline), {"--format", "--part", "--voxel-size", "--output", "--sheet", "--kerf", "--spacing"});
   if (arguments.positional.size() > 1) throw UsageError{"export takes one FILE, got also " + arguments.positional[1]};
   if (!arguments.positional.empty()) input = arguments.positional[0];
   for (const auto& [name, value] : arguments.named) {
@@ -50,10 +83,18 @@ int exportFile(const std::vector<std::string>& args) {
     if (name == "--output") output = value;
     if (name == "--part") options.part = parsePart(value);
     if (name == "--voxel-size") options.voxelSize = parseVoxelSize(value);
+    if (name == "--sheet") desia::parseSheetSize(value, &cut);
+    if (name == "--kerf") cut.kerf = desia::cli::numberOption(name, value, 0, 5);
+    if (name == "--spacing") cut.spacing = desia::cli::numberOption(name, value, 0, 1000);
   }
   if (input.empty()) throw UsageError{"export needs a FILE (.puz or JSON voxel assembly)"};
   if (format.empty()) throw UsageError{"export needs --format stl|stl-ascii|obj|xmpuzzle"};
   if (output.empty()) throw UsageError{"export needs --output OUT"};
+  if (format == "svg" || format == "dxf") {
+    // Cut files of a plate structure (core/io/cut_sheets.cpp).
+    cut.source = input;
+    return exportCutSheets(desia::parseAssemblyText(desia::cli::readInputFile(input), input), input, format, cut, output);
+  }
   const bool frameOnlyFormat = format == "fpuz" || format == "csv";
   const desia::ExportFormat exportFormat = frameOnlyFormat ? desia::ExportFormat::StlBinary : desia::parseExportFormat(format);
 

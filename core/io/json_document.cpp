@@ -213,10 +213,19 @@ AssemblyDocument parseJsonDocument(const std::string& text, const std::string& s
       for (const Plate& plate : document.plates) {
         if (document.assembly.indexOfId(plate.id) < 0) fail(source, "plates", "plate " + std::to_string(plate.id) + " is not in 'parts'");
       }
+      if (root.contains("fabricationPlates")) {
+        // The plates with the clearance cut into their mortises: what the cut files make.
+        document.fabricationPlates = parsePlates(root["fabricationPlates"], source);
+        validatePlates(document.fabricationPlates, document.plateOptions, source);
+        if (document.fabricationPlates.size() != document.plates.size()) {
+          fail(source, "fabricationPlates", "expected one per plate (" + std::to_string(document.plates.size()) + "), found " +
+                                                std::to_string(document.fabricationPlates.size()));
+        }
+      }
     }
   }
   json geometry = json::object();
-  for (const char* section : {"plates", "frame", "joints", "removal", "jointGeometry"}) {
+  for (const char* section : {"plates", "frame", "joints", "removal", "jointGeometry", "clearance", "fabricationPlates"}) {
     if (root.contains(section)) geometry[section] = root[section];
   }
   if (!geometry.empty()) document.geometryJson = geometry.dump();

@@ -22,6 +22,7 @@ struct AssemblyDocument {
   Assembly assembly;         // parts and contacts (derived from the grid for voxel documents)
   std::string geometryJson;  // plate / frame geometry sections, kept verbatim for round trips
   std::vector<Plate> plates;          // kind == Plate, read from geometry (then contacts are computed)
+  std::vector<Plate> fabricationPlates;  // a design result with a clearance: the plates as they are cut
   std::vector<int> plateCutPoints;    // plates (internal indices) that are cut points of the parts-graph
   PlateOptions plateOptions;          // the contact tolerance the plates were read with
   bool contactsFromGeometry = false;  // the contacts were computed from `plates` (a design, not a plan)
