@@ -266,8 +266,13 @@ std::vector<Mask> FrameDesigner::jointOptions(int beam, int end, int direction) 
     const int v = __builtin_ctz(m);
     Mask set = 0;
     if (!close(base | (Mask(1) << v), &set)) continue;
+    // Best: a part taken before lies ahead along the direction (P_i -> P_out, case K = 1); next:
+    // one touches it at all.
+    const int ahead = stepVoxel(v, direction);
+    const bool blockedAhead = ahead >= 0 && (gone >> ahead & 1);
     const bool touchesEarlier = (neighbours(Mask(1) << v) & gone) != 0;
-    grown.push_back({(touchesEarlier ? 0 : (uint64_t(1) << 62)) + (nextRandom() >> 2), set});
+    const uint64_t rank = blockedAhead ? 0 : touchesEarlier ? 1 : 2;
+    grown.push_back({(rank << 60) + (nextRandom() >> 4), set});
   }
   std::sort(grown.begin(), grown.end());
   for (const auto& [rank, set] : grown) add(set);
@@ -474,9 +479,8 @@ void FrameDesigner::childrenOfBeam(int beam, int direction, int wanted, std::vec
     if (!sweepClear(beam, direction, {0, 0}, fixed)) return;
   }
   const std::vector<Mask> first = jointOptions(beam, 0, direction);
-  if (first.empty()) return;
   const std::vector<Mask> second = jointOptions(beam, 1, direction);
-  if (second.empty()) return;
+  if (first.empty() || second.empty()) return;
   std::vector<std::pair<uint64_t, std::array<Mask, 2>>> pairs;
   for (Mask a : first) {
     for (Mask b : second) pairs.push_back({(uint64_t(popCount(a) + popCount(b)) << 40) + (nextRandom() >> 24), {a, b}});
@@ -539,6 +543,8 @@ std::vector<Step> FrameDesigner::childrenOfCurrent() {
     if (x.height != y.height) return x.height > y.height;
     return x.tie < y.tie;
   });
+  // More keys than later children: a key whose subtree dies costs little, the whole search less.
+  const int wanted = path_.empty() ? 6 * options_.candidates : options_.candidates;
   std::vector<Step> children;
   for (const Candidate& candidate : candidates) {
     // The key leaves upwards when it can (paper Section 4.2: gravity keeps it in); other
@@ -549,7 +555,7 @@ std::vector<Step> FrameDesigner::childrenOfCurrent() {
       std::swap(directions[k], directions[j]);
     }
     for (int direction : directions) {
-      if (static_cast<int>(children.size()) >= options_.candidates) return children;
+      if (static_cast<int>(children.size()) >= wanted) return children;
       childrenOfBeam(candidate.beam, direction, 1, children);
     }
   }

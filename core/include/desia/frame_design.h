@@ -24,7 +24,7 @@ struct FrameDesignProgress {
 
 struct FrameDesignOptions {
   uint64_t seed = 1;
-  int candidates = 4;             // children kept per node (the paper's m)
+  int candidates = 2;             // children kept per node (the paper's m; FrameInterlock keeps 2)
   double timeLimitSeconds = 60;   // 0 = none
   int64_t nodeLimit = 1'000'000;
   // Called at every node of the search; return false to cancel.

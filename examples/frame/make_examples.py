@@ -1,0 +1,150 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""Writes the frame examples of examples/frame/ (input frames in millimetres, modelled after the
+paper's Fig. 19, Fig. 20, the SCAFFOLD inset and the FLOWER of Fig. 1, Section 5.3).
+Run from anywhere: python3 examples/frame/make_examples.py"""
+import json, math, os
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+
+def document(name, joints, beams, **extra):
+    doc = {"format": "desia-assembly", "version": 1, "kind": "frame", "name": name}
+    doc.update(extra)
+    doc["joints"] = [{"id": k + 1, "position": [round(c, 3) for c in p]} for k, p in enumerate(joints)]
+    doc["beams"] = []
+    for k, beam in enumerate(beams):
+        if isinstance(beam, dict):
+            entry = {"id": k + 1, "joints": beam["joints"]}
+            entry["path"] = [[round(c, 3) for c in p] for p in beam["path"]]
+            doc["beams"].append(entry)
+        else:
+            doc["beams"].append({"id": k + 1, "joints": list(beam)})
+    return doc
+
+
+def write(file_name, doc):
+    with open(os.path.join(HERE, file_name), "w") as out:
+        json.dump(doc, out, indent=1)
+        out.write("\n")
+
+
+def cube():
+    # Fig. 19: the 12 edges of a cube, every corner a three-way voxel joint.
+    s = 600
+    joints = [[x, y, z] for y in (0, s) for z in (0, s) for x in (0, s)]
+    index = {tuple(p): k + 1 for k, p in enumerate(joints)}
+    beams = []
+    for p in joints:
+        for axis in range(3):
+            if p[axis] == 0:
+                q = list(p)
+                q[axis] = s
+                beams.append((index[tuple(p)], index[tuple(q)]))
+    return document("FRAME CUBE (Fig. 19): the 12 edges of a 600 mm cube", joints, beams)
+
+
+def chair():
+    # Fig. 20: 1.0 m x 0.5 m x 0.5 m. Four legs; the feet joined in pairs by floor rails (front,
+    # back); side seat rails; the back legs go on up as the back posts under a top rail.
+    # 11 beams, joints of valence 2 and 3 (the paper's chair has 2 to 4; it does not give its exact
+    # beams).
+    w, d, seat, top = 500, 500, 450, 1000
+    joints = [
+        [0, 0, 0], [w, 0, 0], [w, 0, d], [0, 0, d],              # feet 1-4 (front: z = 0)
+        [0, seat, 0], [w, seat, 0], [w, seat, d], [0, seat, d],  # seat corners 5-8
+        [0, top, d], [w, top, d],                                # back top 9-10
+    ]
+    beams = [(1, 5), (2, 6), (3, 7), (4, 8),  # legs
+             (1, 2), (4, 3),                  # floor rails, front and back
+             (5, 8), (6, 7),                  # side seat rails
+             (8, 9), (7, 10), (9, 10)]        # back posts and top rail
+    return document("FRAME CHAIR (after Fig. 20): 1.0 m x 0.5 m x 0.5 m, 11 beams", joints, beams)
+
+
+def cut_point():
+    # Two square frames joined by one beam: that beam is a cut point of the parts-graph, and no
+    # joints can make such a frame interlocking (paper Fig. 18).
+    s = 400
+    joints = [[0, 0, 0], [s, 0, 0], [s, 0, s], [0, 0, s],
+              [2 * s, 0, 0], [3 * s, 0, 0], [3 * s, 0, s], [2 * s, 0, s]]
+    beams = [(1, 2), (2, 3), (3, 4), (4, 1), (5, 6), (6, 7), (7, 8), (8, 5), (2, 5)]
+    return document("TWO SQUARES joined by one beam (refused: beam 9 is a cut point)", joints, beams)
+
+
+def lattice(name, cells, spacing, skip=()):
+    nx, ny, nz = cells
+    joints, index = [], {}
+    for y in range(ny + 1):
+        for z in range(nz + 1):
+            for x in range(nx + 1):
+                index[(x, y, z)] = len(joints) + 1
+                joints.append([x * spacing, y * spacing, z * spacing])
+    beams = []
+    for (x, y, z), a in sorted(index.items(), key=lambda item: item[1]):
+        for axis, step in enumerate([(1, 0, 0), (0, 1, 0), (0, 0, 1)]):
+            q = (x + step[0], y + step[1], z + step[2])
+            if q in index and ((x, y, z), axis) not in skip:
+                beams.append((a, index[q]))
+    return document(name, joints, beams)
+
+
+def scaffold():
+    # The SCAFFOLD inset of Section 5.3 (92 beams): a 4 x 2 x 2-cell lattice (96 beams) without the
+    # four beams along z of the middle row at the lower middle level.
+    skip = {((x, 1, 1), 0) for x in range(4)}
+    doc = lattice("SCAFFOLD (Section 5.3 inset): a 4 x 2 x 2-cell lattice of 1 m cells, 92 beams", (4, 2, 2), 1000, skip)
+    assert len(doc["beams"]) == 92, len(doc["beams"])
+    return doc
+
+
+def scaffold_300():
+    doc = lattice("SCAFFOLD 4 x 4 x 4 cells (benchmark), 300 beams", (4, 4, 4), 1000)
+    assert len(doc["beams"]) == 300, len(doc["beams"])
+    return doc
+
+
+def flower():
+    # After the FLOWER of Fig. 1: curved beams. Six petals: two rings of six joints (the upper ring
+    # wider), joined by arcs that bulge outwards, and a stem: a centre joint below joined to the
+    # lower ring by four curved spokes... see the beam list below. Every path point stays a voxel
+    # away from the joint cubes.
+    n = 6
+    lower_r, upper_r, lower_y, upper_y = 400, 700, 300, 800
+    joints = []
+    for k in range(n):
+        a = 2 * math.pi * (k + 0.25) / n
+        joints.append([lower_r * math.cos(a), lower_y, lower_r * math.sin(a)])
+    for k in range(n):
+        a = 2 * math.pi * (k + 0.75) / n
+        joints.append([upper_r * math.cos(a), upper_y, upper_r * math.sin(a)])
+    joints.append([0, 0, 0])  # the stem's foot
+    beams = []
+
+    def arc(a, b, bulge, lift=0.0):
+        pa, pb = joints[a - 1], joints[b - 1]
+        mid = [(pa[i] + pb[i]) / 2 for i in range(3)]
+        r = math.hypot(mid[0], mid[2]) or 1
+        out = [mid[0] + bulge * mid[0] / r, mid[1] + lift, mid[2] + bulge * mid[2] / r]
+        return {"joints": [a, b], "path": [out]}
+
+    for k in range(n):  # lower ring, bulging outwards
+        beams.append(arc(k + 1, (k + 1) % n + 1, 60))
+    for k in range(n):  # upper ring
+        beams.append(arc(n + k + 1, n + (k + 1) % n + 1, 120, 60))
+    for k in range(n):  # petals: lower joint k to the upper joints on both sides
+        beams.append(arc(k + 1, n + k + 1, 150))
+        beams.append(arc(k + 1, n + (k - 1) % n + 1, 150))
+    return document("FLOWER (after Fig. 1): curved beams", joints[:-1], beams)
+
+
+def main():
+    write("frame_cube.json", cube())
+    write("frame_chair.json", chair())
+    write("cut_point.json", cut_point())
+    write("scaffold_92.json", scaffold())
+    write("scaffold_300.json", scaffold_300())
+
+
+if __name__ == "__main__":
+    main()
