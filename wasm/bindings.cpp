@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "desia/check.h"
+#include "desia/cut_sheets.h"
 #include "desia/plate_design.h"
 #include "desia/plate_design_io.h"
 #include "desia/design_io.h"
@@ -231,6 +232,18 @@ val partSurfaces(const std::string& text, const std::string& source) {
   });
 }
 
+// The cut files of a plate structure (JSON text): an array of strings, one SVG or DXF per sheet.
+val cutSheets(const std::string& text, const std::string& format, const std::string& optionsJson) {
+  return guarded([&] {
+    const desia::CutSheetOptions options = desia::parseCutSheetOptionsJson(optionsJson);
+    const std::vector<std::string> sheets =
+        desia::plateCutSheets(desia::parseAssemblyText(text, options.source), desia::parseCutFileFormat(format), options);
+    val result = val::array();
+    for (const std::string& sheet : sheets) result.call<void>("push", val(sheet));
+    return result;
+  });
+}
+
 std::string version() { return desia::kVersion; }
 
 }  // namespace
@@ -244,6 +257,7 @@ EMSCRIPTEN_BINDINGS(desia) {
   emscripten::function("designPlate", &designPlate);
   emscripten::function("exportAssembly", &exportAssembly);
   emscripten::function("partSurfaces", &partSurfaces);
+  emscripten::function("cutSheets", &cutSheets);
   emscripten::function("version", &version);
   emscripten::class_<DesignSession>("DesignSession")
       .constructor<std::string, std::string, std::string>()

@@ -477,6 +477,7 @@ export async function createDesia(options) {
     toPuz: simple('toPuz'),
     exportAssembly: simple('exportAssembly'),
     partSurfaces: simple('partSurfaces'),
+    cutSheets: simple('cutSheets'),
     designVoxel: simple('designVoxel'),
     designPlate: simple('designPlate'),
     designFrame: simple('designFrame'),

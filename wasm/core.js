@@ -73,8 +73,9 @@ export const OPTION_NAMES = Object.freeze({
   parseDocument: ['source'],
   voxelize: ['resolution', 'source'],
   toPuz: ['source'],
-  exportAssembly: ['format', 'part', 'voxelSize', 'source'],
+  exportAssembly: ['format', 'part', 'voxelSize', 'source', 'sheet', 'sheetIndex', 'kerf', 'spacing', 'hairline'],
   partSurfaces: ['source'],
+  cutSheets: ['format', 'sheet', 'kerf', 'spacing', 'hairline', 'source'],
 });
 
 /**
@@ -215,7 +216,7 @@ function callModule(call) {
 }
 
 function makeCore(module) {
-  return {
+  const core = {
     /** Interlocking check of .puz or JSON text; same fields as `desia check --json`. */
     check(text, options) {
       const { method = 'dbg', source = '<input>', graphs = false } = requireOptions('check', options, OPTION_NAMES.check);
@@ -252,12 +253,25 @@ function makeCore(module) {
     },
     /**
      * An assembly (text or document object) as a file for other tools: 'stl' (binary), 'stl-ascii',
-     * 'obj' or 'xmpuzzle' (BurrTools, voxel puzzles only). `part` 0 exports every part, k only part
-     * k; `voxelSize` scales voxel assemblies (model units per voxel). Returns the file's bytes.
+     * 'obj' or 'xmpuzzle' (BurrTools, voxel puzzles only); for plate structures also 'svg' and 'dxf'
+     * cut files (sheet `sheetIndex`, default 0, of those cutSheets makes with the same options).
+     * `part` 0 exports every part, k only part k; `voxelSize` scales voxel assemblies (model units
+     * per voxel). Returns the file's bytes.
      */
     exportAssembly(assembly, options) {
-      const { format = 'stl', part = 0, voxelSize = 1, source = '<input>' } =
+      const { format = 'stl', part = 0, voxelSize = 1, source = '<input>', sheetIndex = 0, ...cut } =
         requireOptions('exportAssembly', options, OPTION_NAMES.exportAssembly);
+      if (format === 'svg' || format === 'dxf') {
+        requireInt32(sheetIndex, 'exportAssembly: sheetIndex');
+        const sheets = core.cutSheets(assembly, { format, source, ...cut });
+        if (sheetIndex < 0 || sheetIndex >= sheets.length) {
+          throw new DesiaError(`exportAssembly: sheetIndex ${sheetIndex} is out of range: the plates fill ${sheets.length} sheet(s)`, 'bad-input');
+        }
+        return new TextEncoder().encode(sheets[sheetIndex]);
+      }
+      if (Object.keys(cut).length > 0) {
+        throw new DesiaError(`exportAssembly: ${listOf(Object.keys(cut))} apply to 'svg' and 'dxf' cut files only`, 'bad-input');
+      }
       const text = assemblyText(assembly, 'exportAssembly: assembly');
       requireString(format, 'exportAssembly: format');
       requireInt32(part, 'exportAssembly: part');
@@ -271,6 +285,22 @@ function makeCore(module) {
       const bytes = callModule(() => module.exportAssembly(text, format, part, voxelSize, source));
       // A view into the module's memory would be detached by the next memory growth: own a copy.
       return bytes.buffer === module.HEAPU8?.buffer ? bytes.slice() : bytes;
+    },
+    /**
+     * The cut files of a plate structure (a design result, text or object): one SVG or DXF text per
+     * sheet. Options: `format` 'svg' (default) or 'dxf', `sheet` 'WIDTHxHEIGHT' in mm (default: one
+     * sheet as large as needed), `kerf` (mm, outlines out and holes in by half), `spacing` (mm,
+     * default 5), `hairline` (SVG strokes 0.01 mm).
+     */
+    cutSheets(assembly, options) {
+      const { format = 'svg', ...rest } = requireOptions('cutSheets', options, OPTION_NAMES.cutSheets);
+      const text = assemblyText(assembly, 'cutSheets: assembly');
+      requireString(format, 'cutSheets: format');
+      if (typeof module.cutSheets !== 'function') {
+        throw new DesiaError('cutSheets: this build of the WebAssembly module has no cut files (rebuild dist/ with scripts/build.sh wasm)', 'unsupported');
+      }
+      const json = optionsJson('cutSheets', rest);
+      return callModule(() => module.cutSheets(text, format, json));
     },
     /**
      * The surface of every part of a voxel assembly (text or document object), ready to draw:
@@ -367,6 +397,7 @@ function makeCore(module) {
       return module.version();
     },
   };
+  return core;
 }
 
 /** A document object as JSON text; text stays text; anything else is refused. */

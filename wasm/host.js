@@ -99,6 +99,7 @@ export function createCoreHost(loadCore, post, { isCancelled = () => false } = {
     toPuz: (core, [assembly, options]) => core.toPuz(assembly, options),
     exportAssembly: (core, [assembly, options]) => core.exportAssembly(assembly, options),
     partSurfaces: (core, [assembly, options]) => core.partSurfaces(assembly, options),
+    cutSheets: (core, [assembly, options]) => core.cutSheets(assembly, options),
     designVoxel: (core, [shape, options], id) =>
       withProgress(id, (onProgress) => core.designVoxel(shape, { ...options, onProgress })),
     designPlate: (core, [input, options], id) =>

@@ -246,7 +246,7 @@ export interface AsyncDesignSession {
  * Export formats: 'stl' (binary STL), 'stl-ascii', 'obj' (Wavefront OBJ, one object per part) and
  * 'xmpuzzle' (BurrTools, voxel puzzles only).
  */
-export type ExportFormat = 'stl' | 'stl-ascii' | 'obj' | 'xmpuzzle';
+export type ExportFormat = 'stl' | 'stl-ascii' | 'obj' | 'xmpuzzle' | 'svg' | 'dxf';
 
 export interface ExportOptions {
   /** The file format (default 'stl'). */
@@ -255,6 +255,28 @@ export interface ExportOptions {
   part?: number;
   /** Model units per voxel edge for voxel assemblies (default 1). */
   voxelSize?: number;
+  /** Name used in error messages. */
+  source?: string;
+  /** 'svg' and 'dxf' only: which sheet (default 0); the other cut sheet options as for cutSheets. */
+  sheetIndex?: number;
+  sheet?: string;
+  kerf?: number;
+  spacing?: number;
+  hairline?: boolean;
+}
+
+/** Options of cutSheets: the cut files of a plate structure. */
+export interface CutSheetOptions {
+  /** 'svg' (default; true size in mm, red outer cuts, blue inner cuts, black engraving) or 'dxf' (R12, mm, one layer each). */
+  format?: 'svg' | 'dxf';
+  /** 'WIDTHxHEIGHT' in mm, e.g. '600x400' (default: one sheet as large as the plates need). */
+  sheet?: string;
+  /** mm the cutter removes: outlines move out and holes in by half of it (0 to 5, default 0). */
+  kerf?: number;
+  /** mm between plates and from the sheet's edges (default 5). */
+  spacing?: number;
+  /** SVG strokes 0.01 mm wide, for lasers that cut hairlines only (default false: 0.1 mm). */
+  hairline?: boolean;
   /** Name used in error messages. */
   source?: string;
 }
@@ -335,6 +357,12 @@ export interface DesiaCore {
    */
   exportAssembly(assembly: string | AssemblyDocument, options?: ExportOptions): Uint8Array;
   /**
+   * The cut files of a plate structure (a design result: its `fabricationPlates` when it has a
+   * clearance, else its `plates`): one SVG or DXF text per sheet, the plates laid flat, turned to
+   * their smallest box and nested. Throws a DesiaError naming a plate that fits no sheet.
+   */
+  cutSheets(assembly: string | AssemblyDocument, options?: CutSheetOptions): string[];
+  /**
    * The surface of every part of a voxel assembly (.puz text, JSON text or a document object),
    * in increasing part id, computed by the core from the same faces as the STL/OBJ export. Throws
    * a DesiaError ('bad-input') for a non-voxel document or one without voxels, as the export does.
@@ -406,6 +434,8 @@ export interface Desia {
   toPuz(assembly: string | AssemblyDocument, options?: { source?: string } & CallOptions): Promise<string>;
   /** An assembly as an STL, OBJ or BurrTools file; see {@link DesiaCore.exportAssembly}. */
   exportAssembly(assembly: string | AssemblyDocument, options?: ExportOptions & CallOptions): Promise<Uint8Array>;
+  /** The cut files of a plate structure, one text per sheet; see {@link DesiaCore.cutSheets}. */
+  cutSheets(assembly: string | AssemblyDocument, options?: CutSheetOptions & CallOptions): Promise<string[]>;
   /**
    * The surface of every part of a voxel assembly, ready to draw; see
    * {@link DesiaCore.partSurfaces}. The float arrays are moved out of the worker, not copied.

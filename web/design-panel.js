@@ -24,12 +24,14 @@ const FIELDS = {
   timeLimit: byId('design-time-limit'),
   rank: byId('design-rank'),
   mode: byId('design-mode'),
+  joints: byId('design-joints'),
+  clearance: byId('design-clearance'),
 };
 const NUMBER_FIELDS = ['parts', 'seed', 'candidates', 'timeLimit'];
-const FIELD_NAMES = { parts: 'Parts N', seed: 'Seed', candidates: 'Candidates m', timeLimit: 'Time limit' };
+const FIELD_NAMES = { parts: 'Parts N', seed: 'Seed', candidates: 'Candidates m', timeLimit: 'Time limit', clearance: 'Clearance' };
 
 /** The fields designPlate takes; the others are voxel-only and disabled for plates. */
-const PLATE_FIELDS = ['seed', 'candidates', 'timeLimit'];
+const PLATE_FIELDS = ['seed', 'candidates', 'timeLimit', 'clearance'];
 
 const ui = {
   panel: byId('design-panel'),
@@ -38,6 +40,7 @@ const ui = {
   plateNote: byId('design-plate-note'),
   sessionPlateNote: byId('session-plate-note'),
   voxelOnlyFields: [byId('design-parts-field'), byId('design-rank-field'), byId('design-mode-field')],
+  plateOnlyFields: [byId('design-joints-field'), byId('design-clearance-field')],
   form: byId('design-form'),
   designButton: byId('design-button'),
   cancelButton: byId('design-cancel'),
@@ -126,7 +129,12 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
       if (field.validity.badInput) throw new Error(`${FIELD_NAMES[key]}: not a number`);
       if (field.value.trim() !== '') options[key] = Number(field.value);
     }
-    if (kind === 'plate') return options;
+    if (kind === 'plate') {
+      options.joints = FIELDS.joints.value;
+      // A clearance is cut into the files to make; planned joints have none to cut.
+      if (options.joints === 'planned' || options.clearance === 0) delete options.clearance;
+      return options;
+    }
     options.rank = FIELDS.rank.value;
     options.mode = FIELDS.mode.value;
     return options;
@@ -386,6 +394,10 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
     for (const field of ui.voxelOnlyFields) {
       field.hidden = plate;
       field.querySelector('input, select').disabled = plate;
+    }
+    for (const field of ui.plateOnlyFields) {
+      field.hidden = !plate;
+      field.querySelector('input, select').disabled = !plate;
     }
     ui.designButton.disabled = busy;
     ui.cancelButton.disabled = !busy;

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The Export panel: saves the assembly on screen as .puz, as the JSON document, as STL or OBJ
-// meshes (3D printing; one part or all) or as a BurrTools .xmpuzzle. Every byte comes from the
-// core in the worker (toPuz, parseDocument, exportAssembly); the panel only picks the format and
-// part and hands the result to the browser as a download. SVG outlines are for plate structures
-// (laser cutting) and come with the plate core: the option is shown, disabled, until then.
+// meshes (3D printing; one part or all), as a BurrTools .xmpuzzle, or, for plate structures, as
+// SVG or DXF cut sheets (one download per sheet). Every byte comes from the core in the worker
+// (toPuz, parseDocument, exportAssembly, cutSheets); the panel only picks the format, part, sheet
+// size and kerf and hands the result to the browser as downloads.
 //
 // For tests: #export-panel[data-state] = '' | working | done | error, #export-message (what was
 // saved, or the core's message), #export-part (options: 0 = all parts, else a part id).
@@ -12,14 +12,17 @@
 import { byId, element } from './dom.js';
 
 /** What each format needs from the worker, its file extension and MIME type. */
+const ALL = ['voxel', 'plate', 'contacts', 'frame'];
 const FORMATS = {
-  puz: { op: 'to-puz', extension: 'puz', type: 'text/plain', perPart: false, voxelOnly: true },
-  json: { op: 'document-json', extension: 'json', type: 'application/json', perPart: false, voxelOnly: false },
-  // The core's mesh export writes voxel parts (plates and contact graphs are refused).
-  stl: { op: 'export', extension: 'stl', type: 'model/stl', perPart: true, voxelOnly: true },
-  'stl-ascii': { op: 'export', extension: 'stl', type: 'model/stl', perPart: true, voxelOnly: true },
-  obj: { op: 'export', extension: 'obj', type: 'model/obj', perPart: true, voxelOnly: true },
-  xmpuzzle: { op: 'export', extension: 'xmpuzzle', type: 'application/octet-stream', perPart: false, voxelOnly: true },
+  puz: { op: 'to-puz', extension: 'puz', type: 'text/plain', perPart: false, kinds: ['voxel'] },
+  json: { op: 'document-json', extension: 'json', type: 'application/json', perPart: false, kinds: ALL },
+  // The core's mesh export writes voxel parts and plates (contact graphs have no shapes).
+  stl: { op: 'export', extension: 'stl', type: 'model/stl', perPart: true, kinds: ['voxel', 'plate'] },
+  'stl-ascii': { op: 'export', extension: 'stl', type: 'model/stl', perPart: true, kinds: ['voxel', 'plate'] },
+  obj: { op: 'export', extension: 'obj', type: 'model/obj', perPart: true, kinds: ['voxel', 'plate'] },
+  xmpuzzle: { op: 'export', extension: 'xmpuzzle', type: 'application/octet-stream', perPart: false, kinds: ['voxel'] },
+  svg: { op: 'cut-sheets', extension: 'svg', type: 'image/svg+xml', perPart: false, kinds: ['plate'], cut: true },
+  dxf: { op: 'cut-sheets', extension: 'dxf', type: 'application/dxf', perPart: false, kinds: ['plate'], cut: true },
 };
 /** Object URLs of downloads are freed after this; the browser has read the blob by then. */
 const DOWNLOAD_URL_LIFETIME_MS = 60_000;
@@ -29,10 +32,10 @@ function baseName(name) {
   return (name.replace(/\.[^.]*$/, '') || 'assembly').replace(/[\\/:*?"<>|]+/g, '_');
 }
 
-/** `<name>.ext` for the whole assembly, `<name>-part3.ext` for part 3. */
-export function exportFileName(name, format, part) {
+/** `<name>.ext` for the whole assembly, `<name>-part3.ext` for part 3, `<name>-sheet2.svg` for sheet 2 of several. */
+export function exportFileName(name, format, part, sheet = 0) {
   const { extension } = FORMATS[format];
-  return `${baseName(name)}${part > 0 ? `-part${part}` : ''}.${extension}`;
+  return `${baseName(name)}${part > 0 ? `-part${part}` : ''}${sheet > 0 ? `-sheet${sheet}` : ''}.${extension}`;
 }
 
 function saveBlob(fileName, blob) {
@@ -53,6 +56,8 @@ export function createExportPanel({ core }) {
     panel: byId('export-panel'),
     format: byId('export-format'),
     part: byId('export-part'),
+    sheet: byId('export-sheet'),
+    kerf: byId('export-kerf'),
     button: byId('export-button'),
     message: byId('export-message'),
   };
@@ -68,16 +73,16 @@ export function createExportPanel({ core }) {
   }
 
   function refresh() {
-    const format = FORMATS[ui.format.value];
-    const voxel = assembly?.kind === 'voxel';
     for (const option of ui.format.options) {
       const known = FORMATS[option.value];
-      // .puz, .xmpuzzle, STL and OBJ hold voxel parts only; SVG waits for plates (disabled in the HTML).
-      if (known) option.disabled = known.voxelOnly && assembly !== null && !voxel;
+      // Each format holds the kinds it can (.puz and .xmpuzzle voxels, SVG and DXF plates).
+      if (known) option.disabled = assembly !== null && !known.kinds.includes(assembly.kind);
     }
-    // A plate design or plan is saved as its JSON document.
-    if (assembly && !voxel && ui.format.selectedOptions[0]?.disabled) ui.format.value = 'json';
+    if (assembly && ui.format.selectedOptions[0]?.disabled) ui.format.value = assembly.kind === 'plate' ? 'svg' : 'json';
+    const format = FORMATS[ui.format.value];
     ui.part.disabled = !assembly || !format?.perPart;
+    ui.part.hidden = Boolean(format?.cut);
+    ui.sheet.hidden = ui.kerf.hidden = !format?.cut;
     ui.button.disabled = !assembly || busy || exporting || !format || ui.format.selectedOptions[0]?.disabled;
   }
 
@@ -107,6 +112,10 @@ export function createExportPanel({ core }) {
     setMessage('working', `Exporting ${fileName}…`);
     refresh();
     try {
+      if (format.cut) {
+        await exportCutSheets(formatName, format, name, text);
+        return;
+      }
       const options = format.op === 'export'
         ? { format: formatName, part, voxelSize: 1, source: name }
         : { source: name };
@@ -121,6 +130,19 @@ export function createExportPanel({ core }) {
       exporting = false;
       refresh();
     }
+  }
+
+  /** The cut sheets of a plate structure, one download per sheet. */
+  async function exportCutSheets(formatName, format, name, text) {
+    const options = { format: formatName, source: name };
+    if (ui.sheet.value.trim()) options.sheet = ui.sheet.value.trim();
+    if (ui.kerf.value !== '') options.kerf = Number(ui.kerf.value);
+    const { value: sheets } = await core.run('cut-sheets', text, options);
+    const names = sheets.map((_, k) => exportFileName(name, formatName, 0, sheets.length > 1 ? k + 1 : 0));
+    sheets.forEach((sheet, k) => saveBlob(names[k], new Blob([sheet], { type: format.type })));
+    setMessage('done', sheets.length === 1
+      ? `Saved ${names[0]} (1 sheet).`
+      : `Saved ${sheets.length} sheets: ${names[0]} … ${names.at(-1)}.`);
   }
 
   ui.format.addEventListener('change', refresh);

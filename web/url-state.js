@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The page's shareable state lives in the URL's query string (example, parts, seed, candidates,
-// rank, mode, timeLimit, and resolution for a bundled mesh), so a design can be sent as a link.
+// rank, mode, timeLimit, joints and clearance for plates, and resolution for a bundled mesh), so a design can be sent as a link.
 // Reading it only pre-fills the page: a link never starts a design by itself.
 
-export const URL_KEYS = ['example', 'parts', 'seed', 'candidates', 'rank', 'mode', 'timeLimit', 'resolution'];
+export const URL_KEYS = ['example', 'parts', 'seed', 'candidates', 'rank', 'mode', 'timeLimit', 'joints', 'clearance', 'resolution'];
 
 /** The known parameters present in the URL, as strings. */
 export function readUrlState() {

@@ -15,6 +15,8 @@
 //          op 'document-json'     text = any assembly; result = its JSON document as text
 //          op 'export'            text = the assembly, options = exportAssembly's { format,
 //                                 part, voxelSize, source }; result = bytes (transferred)
+//          op 'cut-sheets'        text = a plate structure, options = cutSheets' { format, sheet,
+//                                 kerf, spacing, hairline, source }; result = one text per sheet
 //          op 'design'            text = the voxel shape, options = designVoxel's options (no onProgress)
 //          op 'design-plate'      text = the plate design, options = designPlate's { seed,
 //                                 candidates, timeLimit, source }; result = the DesignResult
@@ -83,6 +85,7 @@ const OPERATIONS = {
     }
     return packForTransfer(core.exportAssembly(text, options ?? {}));
   },
+  'cut-sheets': (core, text, options) => [core.cutSheets(text, options ?? {}), []],
   'session-open': (core, text, options) => {
     closeSession();
     session = core.designSession(text, options ?? {});

@@ -4,6 +4,7 @@
 // printed from integers of 1e-3 mm, so the files are byte for byte the same everywhere.
 #include "desia/cut_sheets.h"
 
+#include <nlohmann/json.hpp>
 #include <polyclipping/clipper.hpp>
 
 #include <algorithm>
@@ -16,6 +17,7 @@
 #include "analysis/vec3.h"
 #include "desia/error.h"
 #include "desia/plate.h"
+#include "io/json_input.h"
 #include "plate/plane_frame.h"
 
 namespace desia {
@@ -445,6 +447,35 @@ void parseSheetSize(const std::string& text, CutSheetOptions* options) {
   }
   options->sheetWidth = width;
   options->sheetHeight = height;
+}
+
+CutSheetOptions parseCutSheetOptionsJson(const std::string& text) {
+  const nlohmann::json root = parseJsonText(text, "cut sheet options");
+  if (!root.is_object()) throwBadInput("", "cut sheet options must be an object");
+  CutSheetOptions options;
+  auto number = [](const nlohmann::json& value, const std::string& name) {
+    if (!value.is_number()) throwBadInput("", "cut sheet option '" + name + "' must be a number of mm, got " + value.dump());
+    return value.get<double>();
+  };
+  for (const auto& [name, value] : root.items()) {
+    if (name == "sheet") {
+      if (!value.is_string()) throwBadInput("", "cut sheet option 'sheet' must be text such as \"600x400\", got " + value.dump());
+      parseSheetSize(value.get<std::string>(), &options);
+    } else if (name == "kerf") {
+      options.kerf = number(value, name);
+    } else if (name == "spacing") {
+      options.spacing = number(value, name);
+    } else if (name == "hairline") {
+      if (!value.is_boolean()) throwBadInput("", "cut sheet option 'hairline' must be true or false, got " + value.dump());
+      options.hairline = value.get<bool>();
+    } else if (name == "source") {
+      if (!value.is_string()) throwBadInput("", "cut sheet option 'source' must be text");
+      options.source = value.get<std::string>();
+    } else {
+      throwBadInput("", "unknown cut sheet option '" + name + "' (expected sheet, kerf, spacing, hairline or source)");
+    }
+  }
+  return options;
 }
 
 std::vector<std::string> plateCutSheets(const AssemblyDocument& document, CutFileFormat format, const CutSheetOptions& options) {

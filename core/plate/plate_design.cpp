@@ -241,9 +241,11 @@ std::string jointedFailure(const JointedPlan& plan, const std::vector<int>& orde
                            double tolerance) {
   const std::string failure = planFailure(plan.assembly, directions);
   if (!failure.empty()) return failure;
+  std::vector<TriangleMesh> meshes;
+  for (const Plate& plate : plan.plates) meshes.push_back(plateMesh(plate));
   for (size_t k = 0; k < directions.size(); ++k) {
     for (size_t j = k + 1; j < order.size(); ++j) {
-      if (plateCollidesAlong(plan.plates[order[k]], plan.plates[order[j]], directions[k], tolerance)) {
+      if (meshCollidesAlong(meshes[order[k]], meshes[order[j]], directions[k], tolerance)) {
         return "plate " + std::to_string(plan.plates[order[k]].id) + " runs into plate " + std::to_string(plan.plates[order[j]].id) +
                " when it leaves";
       }
@@ -453,6 +455,7 @@ PlateDesignResult PlateJointPlanner::run() {
                           : "");
     return result;
   }
+  progress.seconds = seconds();  // the cut and its verification included
   result.message = "designed " + std::to_string(result.joints.size()) + " joints in " + std::to_string(progress.nodes) + " nodes";
   return result;
 }

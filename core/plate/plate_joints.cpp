@@ -284,8 +284,7 @@ struct Shadow {  // a triangle seen along d: 2D corners (u, v) and their depths 
   double minU, maxU, minV, maxV;
 };
 
-std::vector<Shadow> shadowsOf(const Plate& plate, const PlaneFrame& frame) {
-  const TriangleMesh mesh = plateMesh(plate);
+std::vector<Shadow> shadowsOf(const TriangleMesh& mesh, const PlaneFrame& frame) {
   std::vector<Shadow> shadows;
   for (const auto& triangle : mesh.triangles) {
     Shadow s;
@@ -364,7 +363,21 @@ double polygonArea(const std::vector<Point2>& polygon) {
 }  // namespace
 
 bool plateCollidesAlong(const Plate& mover, const Plate& obstacle, const Vec3& d, double tolerance) {
-  const PlaneFrame frame(mover.bottom[0][0], d);
+  return meshCollidesAlong(plateMesh(mover), plateMesh(obstacle), d, tolerance);
+}
+
+bool meshCollidesAlong(const TriangleMesh& mover, const TriangleMesh& obstacle, const Vec3& d, double tolerance) {
+  if (mover.vertices.empty() || obstacle.vertices.empty()) return false;
+  // Boxes first: the obstacle must reach into the box the mover sweeps.
+  for (int k = 0; k < 3; ++k) {
+    double moverLo = HUGE_VAL, moverHi = -HUGE_VAL, lo = HUGE_VAL, hi = -HUGE_VAL;
+    for (const auto& p : mover.vertices) moverLo = std::min(moverLo, p[k]), moverHi = std::max(moverHi, p[k]);
+    for (const auto& p : obstacle.vertices) lo = std::min(lo, p[k]), hi = std::max(hi, p[k]);
+    if (d[k] > 1e-12) moverHi = HUGE_VAL;
+    if (d[k] < -1e-12) moverLo = -HUGE_VAL;
+    if (hi <= moverLo + tolerance || moverHi <= lo + tolerance) return false;
+  }
+  const PlaneFrame frame(mover.vertices[0], d);
   const std::vector<Shadow> moving = shadowsOf(mover, frame);
   const std::vector<Shadow> standing = shadowsOf(obstacle, frame);
   for (const Shadow& m : moving) {

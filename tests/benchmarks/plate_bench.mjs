@@ -17,14 +17,18 @@ const cli = path.join(root, 'build/native/core/cli/desia');
 const runsArgument = process.argv.indexOf('--runs');
 const runs = runsArgument > 0 ? Number(process.argv[runsArgument + 1]) : 5;
 
-// [example file, label, the paper's time (Table 1) or null]
+// [example file, label, the paper's time (Table 1) or null, joints: 'cut' (made in the plates and
+// verified there) or 'planned' (the paper's graph design alone)]
 const CASES = [
-  ['table.json', 'TABLE, 6 plates (Fig. 17)', '0.02 s'],
-  ['cabinet.json', 'CABINET, 7 plates, gable roof (Fig. 13)', '0.09 s'],
-  ['chair_repaired.json', 'CHAIR repaired, 10 plates (Fig. 18)', '0.22 s (8 plates)'],
-  ['bookshelf.json', 'BOOKSHELF, 12 plates (Fig. 1)', '0.30 s'],
-  ['mitred_box.json', 'MITRED BOX, 6 plates, 45-degree contacts', null],
-  ['bookcase_123.json', 'BOOKCASE, 123 plates', '— (largest: 33)'],
+  ['table.json', 'TABLE, 6 plates (Fig. 17)', '0.02 s', 'cut'],
+  ['table.json', 'TABLE, 6 plates (Fig. 17)', '0.02 s', 'planned'],
+  ['cabinet.json', 'CABINET, 7 plates, gable roof (Fig. 13)', '0.09 s', 'planned'],
+  ['chair_repaired.json', 'CHAIR repaired, 10 plates (Fig. 18)', '0.22 s (8 plates)', 'planned'],
+  ['bookshelf.json', 'BOOKSHELF, 12 plates (Fig. 1)', '0.30 s', 'planned'],
+  ['mitred_box.json', 'MITRED BOX, 6 plates, 45-degree contacts', null, 'planned'],
+  ['dodecahedron.json', 'DODECAHEDRON, 12 mitred plates', null, 'planned'],
+  ['lizard.json', 'LIZARD, 38 mitred plates (Fig. 1: 33)', '2.73 s', 'planned'],
+  ['bookcase_123.json', 'BOOKCASE, 123 plates', '— (largest: 33)', 'planned'],
 ];
 
 const median = (values) => [...values].sort((a, b) => a - b)[Math.floor(values.length / 2)];
@@ -32,9 +36,10 @@ const format = (seconds) => (seconds < 0.1 ? `${(seconds * 1000).toFixed(1)} ms`
 
 const core = await loadDesiaModule();
 const scratch = fs.mkdtempSync(path.join(os.tmpdir(), 'desia-plate-bench-'));
-console.log('| design | paper | native | WebAssembly (node) | joints | nodes |');
-console.log('| --- | ---: | ---: | ---: | ---: | ---: |');
-for (const [file, label, paper] of CASES) {
+console.log('| design | joints | paper | native | WebAssembly (node) | joints | nodes |');
+console.log('| --- | --- | ---: | ---: | ---: | ---: | ---: |');
+for (const [file, label, paper, joints_] of CASES) {
+  if (!fs.existsSync(path.join(root, 'examples/plate', file))) continue;
   const input = path.join(root, 'examples/plate', file);
   const text = fs.readFileSync(input, 'utf8');
   const native = [];
@@ -42,17 +47,17 @@ for (const [file, label, paper] of CASES) {
   let joints = 0;
   let nodes = 0;
   for (let run = 0; run < runs; run += 1) {
-    const result = spawnSync(cli, ['design', 'plate', '--input', input, '--output', path.join(scratch, 'plan.json'), '--quiet'], { encoding: 'utf8' });
+    const result = spawnSync(cli, ['design', 'plate', '--input', input, '--output', path.join(scratch, 'plan.json'), '--quiet', '--joints', joints_], { encoding: 'utf8' });
     if (result.status !== 0) throw new Error(`${file}: desia design plate failed: ${result.stderr}`);
     native.push(Number(/ in ([0-9.e-]+) s$/m.exec(result.stdout)[1]));
     const start = performance.now();
-    const design = core.designPlate(text);
+    const design = core.designPlate(text, { joints: joints_ });
     wasm.push((performance.now() - start) / 1000);
     if (design.status !== 'success' || design.verification.verdict !== 'interlocking') throw new Error(`${file}: ${design.message}`);
     joints = design.document.joints.length;
     nodes = design.progress.nodesVisited;
   }
-  console.log(`| ${label} | ${paper ?? '—'} | ${format(median(native))} | ${format(median(wasm))} | ${joints} | ${nodes} |`);
+  console.log(`| ${label} | ${joints_} | ${paper ?? '—'} | ${format(median(native))} | ${format(median(wasm))} | ${joints} | ${nodes} |`);
 }
 fs.rmSync(scratch, { recursive: true, force: true });
 console.log(`\nMedians of ${runs} runs; native: the CLI's own timing of planning and verification; WebAssembly: designPlate in node (planning, verification, the plan document and its check report).`);

@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Plate structures in the playground, in headless Chromium: the TABLE example is drawn (one mesh
-// per plate, framed in mm) and checked; Design plans its joints in the worker (interlocking, key
-// 1, ten joints listed, the disassembly moves each plate along its planned direction); the plan
-// downloads as JSON that the native CLI verifies; the CHAIR with a cut point shows the core's
+// per plate, framed in mm) and checked; Design cuts its joints in the worker (interlocking, key
+// 1, ten mortise-and-tenon joints listed, the disassembly moves each plate along its direction);
+// the result downloads as JSON that the native CLI verifies and as SVG cut sheets equal to the
+// CLI's; the CHAIR with a cut point shows the core's
 // cut-point message; the voxel-only controls are hidden or disabled for plates; a long plan (the
 // 123-plate BOOKCASE) shows progress and is cancelled.
 //
@@ -105,12 +106,12 @@ describe('plate structures in the playground (headless Chromium)', { timeout: 12
     assert.equal(await page.isHidden('#joints-details'), true, 'a design input has no joints yet');
     if (state.webgl === 'on') {
       assert.equal(state.meshes, '6', 'one mesh per plate');
-      // The plates are in mm: the camera frames the table (about 1000 x 718 x 600) and its
+      // The plates are in mm: the camera frames the table (about 1050 x 718 x 650) and its
       // removal paths, not one voxel; the grid has 100 mm cells; a removal step is half its size.
       const framing = await page.evaluate(() => window.__desiaView.framing());
       assert.ok(framing.distance > 1500 && framing.distance < 8000, `camera distance ${framing.distance}`);
       assert.equal(framing.gridCell, 100);
-      assert.equal(framing.removalStep, 500);
+      assert.equal(framing.removalStep, 525);
     }
     assert.match(await page.url(), /example=table\.json/, 'the example is in the URL');
 
@@ -127,45 +128,53 @@ describe('plate structures in the playground (headless Chromium)', { timeout: 12
     assert.equal(await page.isDisabled('#session-start'), true);
     assert.match(await page.textContent('#session-plate-note'), /voxel puzzles\s+only/);
     await page.click('#session-details summary');
-    // STL, OBJ, .puz and .xmpuzzle are voxel formats: the export offers the JSON document.
-    assert.equal(await page.inputValue('#export-format'), 'json');
-    assert.equal(await page.locator('#export-format option[value="stl"]').isDisabled(), true);
+    // .puz and .xmpuzzle are voxel formats; plates export as SVG or DXF cut sheets (offered
+    // first, with a sheet size and kerf), STL, OBJ or their JSON document.
+    assert.equal(await page.inputValue('#export-format'), 'svg');
+    assert.equal(await page.locator('#export-format option[value="puz"]').isDisabled(), true);
+    assert.equal(await page.locator('#export-format option[value="xmpuzzle"]').isDisabled(), true);
+    assert.equal(await page.locator('#export-format option[value="stl"]').isDisabled(), false);
+    assert.equal(await page.isVisible('#export-sheet'), true);
+    assert.equal(await page.isVisible('#export-kerf'), true);
+    // The joints are cut by default, with no clearance.
+    assert.equal(await page.inputValue('#design-joints'), 'cut');
+    assert.equal(await page.isVisible('#design-clearance'), true);
     await screenshot(page, 'plates-table-1400');
   });
 
   it('plans the TABLE\'s joints: interlocking with key 1, ten joints, removal along the plan', async () => {
     const outcome = await design(page, { seed: 1, candidates: 30, timeLimit: 60 });
     assert.equal(outcome.outcome, 'success', `design failed: ${outcome.message}`);
-    assert.equal(outcome.message, 'planned 10 joints in 5 nodes');
+    assert.equal(outcome.message, 'designed 10 joints in 5 nodes');
     assert.ok(outcome.updates >= 1, 'the last progress message arrived');
     assert.match(outcome.progressText, /^6 of 6 plates joined · \d+ nodes visited · depth \d+ · \d+\.\d s$/);
 
     const state = await waitForReady(page, TABLE_PLAN);
     assertInterlockingWithKey(state, 1);
     assert.equal(state.parts, '6');
-    assert.equal(state.keyDirections, '-z');
+    assert.equal(state.keyDirections, '+y');
     assert.equal(await page.textContent('#method'), 'graphs and linear program', 'the plan is verified by both tests');
 
     const list = await joints(page);
     assert.equal(list.length, 10);
     assert.equal(await page.textContent('#joints-summary'), 'Joints (10)');
     assert.deepEqual(list[0], {
-      mover: '1', other: '2', type: 'halved', direction: '-z',
-      text: 'plates 1 (right side) – 2 (top): halved, 1 slides along -z',
+      mover: '1', other: '2', type: 'mortise-tenon', direction: '+y',
+      text: 'plates 1 (top) – 2 (left side): mortise and tenon, 1 slides along +y',
     });
-    assert.ok(list.every((joint) => ['halved', 'mortise-tenon', 'empty'].includes(joint.type)), JSON.stringify(list));
-    // -0.9999999999999999 along x is written as the axis.
-    assert.equal(list[9].direction, '-x');
+    assert.ok(list.every((joint) => joint.type === 'mortise-tenon'), JSON.stringify(list));
+    // 0.9999999999999999 along x is written as the axis.
+    assert.equal(list[9].direction, '+x');
     assert.deepEqual(await page.$$eval('#paths li', (items) => items.map((item) => item.textContent)), [
-      'part 1: along -z', 'part 2: along +x', 'part 3: along +x', 'part 4: along -y', 'part 5: along -x', 'part 6: stays (last part)',
+      'part 1: along +y', 'part 2: along -x', 'part 3: along -x', 'part 4: along -x', 'part 5: along +x', 'part 6: stays (last part)',
     ]);
 
     if (state.webgl === 'on') {
       assert.equal(state.meshes, '6');
       const assembled = await viewState(page);
       assert.equal(assembled.steps, 5, 'five plates leave, the last stays');
-      // Halfway through the first removal, the key (plate 1) has moved along -z only, by a
-      // visible distance in mm (a fraction of the table's size, not one unit).
+      // Halfway through the first removal, the key (plate 1, the top) has moved along +y only,
+      // by a visible distance in mm (a fraction of the table's size, not one unit).
       await page.evaluate(() => {
         const range = document.querySelector('#disassembly-range');
         range.value = '0.5';
@@ -175,13 +184,13 @@ describe('plate structures in the playground (headless Chromium)', { timeout: 12
       const [x0, y0, z0] = assembled.positions[1];
       const [x1, y1, z1] = moving.positions[1];
       assert.equal(x1, x0);
-      assert.equal(y1, y0);
-      assert.ok(z0 - z1 > 100, `plate 1 moved ${z0 - z1} along -z`);
+      assert.equal(z1, z0);
+      assert.ok(y1 - y0 > 100, `plate 1 moved ${y1 - y0} along +y`);
       assert.deepEqual(moving.positions[2], assembled.positions[2], 'the others wait');
       assert.equal(moving.label, 'removing part 1 (1 of 5)');
-      assert.equal(moving.moves, 'along -z');
+      assert.equal(moving.moves, 'along +y');
       await screenshot(page, 'plates-table-plan-removing-1400');
-      // At step 3.5 plate 4 leaves along -y (downwards).
+      // At step 3.5 plate 4 (the back apron) leaves along -x.
       await page.evaluate(() => {
         const range = document.querySelector('#disassembly-range');
         range.value = '3.5';
@@ -189,8 +198,8 @@ describe('plate structures in the playground (headless Chromium)', { timeout: 12
       });
       const later = await viewState(page);
       assert.equal(later.positions[1], undefined, 'plate 1 is gone');
-      assert.ok(later.positions[4][1] < assembled.positions[4][1] - 100, 'plate 4 moves down');
-      assert.equal(later.moves, 'along -y');
+      assert.ok(later.positions[4][0] < assembled.positions[4][0] - 100, 'plate 4 moves along -x');
+      assert.equal(later.moves, 'along -x');
       await page.evaluate(() => {
         const range = document.querySelector('#disassembly-range');
         range.value = '0';
@@ -221,6 +230,29 @@ describe('plate structures in the playground (headless Chromium)', { timeout: 12
     assertInterlockingWithKey(state, 1);
     assert.equal((await joints(page)).length, 10);
     if (state.webgl === 'on') assert.equal(state.meshes, '6');
+  });
+
+  it('downloads the designed TABLE as SVG cut sheets at true size', async () => {
+    await page.selectOption('#export-format', 'svg');
+    await page.fill('#export-kerf', '0.1');
+    const [download] = await Promise.all([page.waitForEvent('download'), page.click('#export-button')]);
+    assert.equal(download.suggestedFilename(), 'table_plan_seed1.svg');
+    const svg = await readFile(await download.path(), 'utf8');
+    assert.match(svg, /<svg xmlns="http:\/\/www\.w3\.org\/2000\/svg" width="[0-9.]+mm" height="[0-9.]+mm"/);
+    assert.equal((svg.match(/<g id="plate-/g) || []).length, 6);
+    assert.match(await page.textContent('#export-message'), /^Saved table_plan_seed1\.svg \(1 sheet\)\.$/);
+    // The same sheet as the native CLI's for the same file and kerf.
+    const file = path.join(ARTIFACTS_DIR, TABLE_PLAN);
+    const cliSvg = path.join(ARTIFACTS_DIR, 'table_plan_seed1-cli.svg');
+    const cli = spawnSync(CLI, ['export', file, '--format', 'svg', '--kerf', '0.1', '--output', cliSvg], { encoding: 'utf8' });
+    assert.equal(cli.status, 0, cli.stderr);
+    assert.equal(svg, await readFile(cliSvg, 'utf8'));
+    // A sheet too small is the core's message, named.
+    await page.fill('#export-sheet', '600x400');
+    await page.click('#export-button');
+    await page.waitForFunction(() => document.querySelector('#export-panel').dataset.state === 'error');
+    assert.match(await page.textContent('#export-message'), /plate 1 \(1050\.1 x 650\.1 mm\) does not fit on a 600 x 400 mm sheet/, 'its size with the kerf');
+    await page.fill('#export-sheet', '');
   });
 
   it('shows the CHAIR\'s cut point in the check and after Design', async () => {
@@ -257,6 +289,8 @@ describe('plate structures in the playground (headless Chromium)', { timeout: 12
     assert.equal(state.parts, '123');
     if (state.webgl === 'on') assert.equal(state.meshes, '123');
     await screenshot(page, 'plates-bookcase-1400');
+    // Its boards meet flush: cut joints cannot lock it, the paper's plan alone can (and takes a while).
+    await page.selectOption('#design-joints', 'planned');
     await page.click('#design-button');
     await page.waitForFunction(() => Number(document.querySelector('#design-progress-box').dataset.updates) >= 2);
     const running = await designState(page);

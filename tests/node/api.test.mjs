@@ -249,6 +249,29 @@ test('designPlate plans the CLI\'s joints in the worker, with progress; bad opti
   await assert.rejects(desia.designPlate(table, { parts: 4 }), (error) => error.code === 'bad-input'
     && /unknown design option 'parts' for designPlate/.test(error.message));
   await assert.rejects(desia.designPlate(k9), (error) => error.code === 'bad-input' && /designPlate needs a plate design/.test(error.message));
+  assert.equal(result.document.jointGeometry, 'cut');
+  const loose = await desia.designPlate(table, { seed: 3, clearance: 0.2, tenonCount: 1 });
+  assert.equal(loose.status, 'success');
+  assert.equal(loose.document.clearance, 0.2);
+  assert.equal(loose.document.fabricationPlates.length, 6);
+  const planned = await desia.designPlate(table, { joints: 'planned' });
+  assert.equal(planned.document.jointGeometry, 'planned');
+  await assert.rejects(desia.designPlate(table, { joints: 'glued' }), (error) => error.code === 'bad-input' && /joints must be 'cut'/.test(error.message));
+  await assert.rejects(desia.designPlate(table, { clearance: -1 }), (error) => error.code === 'bad-input' && /clearance/.test(error.message));
+  // Cut sheets in the worker are the CLI's, byte for byte.
+  const resultFile = path.join(os.tmpdir(), `desia-plate-${process.pid}.json`);
+  fs.writeFileSync(resultFile, JSON.stringify(loose.document));
+  const svgFile = path.join(os.tmpdir(), `desia-plate-${process.pid}.svg`);
+  assert.equal(runCli(['export', resultFile, '--format', 'svg', '--kerf', '0.1', '--output', svgFile]).status, 0);
+  const sheets = await desia.cutSheets(loose.document, { kerf: 0.1 });
+  assert.equal(sheets.length, 1);
+  assert.equal(sheets[0], fs.readFileSync(svgFile, 'utf8'));
+  const bytes = await desia.exportAssembly(loose.document, { format: 'dxf' });
+  assert.match(new TextDecoder().decode(bytes), /CUT_OUTER/);
+  await assert.rejects(desia.cutSheets(loose.document, { sheet: '600x400' }), (error) => error.code === 'bad-input'
+    && /plate 1 \(1050 x 650 mm\) does not fit/.test(error.message));
+  await assert.rejects(desia.exportAssembly(loose.document, { format: 'svg', sheetIndex: 3 }), (error) => error.code === 'bad-input'
+    && /sheetIndex 3 is out of range/.test(error.message));
 });
 
 test('a design session in the worker steps like the synchronous one', async () => {
@@ -347,7 +370,9 @@ test('exportAssembly writes STL, OBJ and BurrTools files of a voxel puzzle', asy
   await rejectsWith(desia.exportAssembly(k9, { part: -1 }), 'bad-input', /part -1 does not exist: the assembly has parts 1 to 9/);
   await rejectsWith(desia.exportAssembly(k9, { format: 7 }), 'bad-input', /exportAssembly: format must be a string/);
   await rejectsWith(desia.exportAssembly(42), 'bad-input', /exportAssembly: assembly must be a string/);
-  await rejectsWith(desia.exportAssembly(k9, { format: 'dxf' }), 'bad-input', /dxf/);
+  await rejectsWith(desia.exportAssembly(k9, { format: 'dxf', source: 'k9.puz' }), 'bad-input', /^k9\.puz: cut files are made of plate structures/);
+  await rejectsWith(desia.exportAssembly(k9, { format: 'pdf' }), 'bad-input', /pdf/);
+  await rejectsWith(desia.exportAssembly(k9, { kerf: 0.1 }), 'bad-input', /kerf apply to 'svg' and 'dxf' cut files only/);
   await rejectsWith(desia.exportAssembly('4 4 4\n1 1 1 1\n1 1\n', { source: 'ragged.puz' }), 'bad-input',
     /^ragged\.puz:3: row 2 of layer 1 has 2 values, expected Nx = 4$/);
 });

@@ -123,4 +123,37 @@ test('design plate: a verified joint plan (exit 0) that check re-verifies; a cut
   const bad = runCli(['design', 'plate', '--input', flat, '--output', path.join(tmp, 'flat-plan.json')]);
   assert.equal(bad.status, 2);
   assert.match(bad.stderr, /flat\.json: plates\[0\] \(plate 1\)\.thickness: must be positive, found 0/);
+  assert.equal(document.jointGeometry, 'cut', 'the joints are cut into the plates by default');
+  assert.equal(runCli(['design', 'plate', '--input', path.join(examples, 'table.json'), '--output', path.join(tmp, 'x.json'), '--clearance', 'wide']).status, 2);
+  const box = runCli(['design', 'plate', '--input', path.join(examples, 'mitred_box.json'), '--output', path.join(tmp, 'box.json')]);
+  assert.equal(box.status, 1, 'mitred edges get no cut joints yet');
+  assert.match(box.stderr, /joints 'planned' gives the paper's graph design alone/);
+  const planned = runCli(['design', 'plate', '--input', path.join(examples, 'mitred_box.json'), '--output', path.join(tmp, 'box.json'), '--joints', 'planned']);
+  assert.equal(planned.status, 0, planned.stderr);
+  assert.equal(JSON.parse(fs.readFileSync(path.join(tmp, 'box.json'), 'utf8')).jointGeometry, 'planned');
+});
+
+test('export a designed plate structure as SVG and DXF cut sheets; a sheet too small is named', () => {
+  const examples = path.join(referenceDir, '../../../../examples/plate');
+  const result = path.join(tmp, 'table-cut.json');
+  assert.equal(runCli(['design', 'plate', '--input', path.join(examples, 'table.json'), '--output', result, '--clearance', '0.2']).status, 0);
+  const svg = path.join(tmp, 'table.svg');
+  const one = runCli(['export', result, '--format', 'svg', '--kerf', '0.1', '--output', svg]);
+  assert.equal(one.status, 0, one.stderr);
+  assert.match(one.stdout, /6 plates on 1 sheet as svg/);
+  const text = fs.readFileSync(svg, 'utf8');
+  assert.match(text, /<svg xmlns="http:\/\/www\.w3\.org\/2000\/svg" width="[0-9.]+mm" height="[0-9.]+mm" viewBox="0 0 /);
+  assert.equal((text.match(/<g id="plate-/g) || []).length, 6);
+  const several = runCli(['export', result, '--format', 'svg', '--sheet', '1200x800', '--output', path.join(tmp, 'sheets.svg')]);
+  assert.equal(several.status, 0, several.stderr);
+  const count = Number(several.stdout.match(/on (\d+) sheets/)[1]);
+  assert.ok(count > 1);
+  for (let k = 1; k <= count; k += 1) assert.ok(fs.existsSync(path.join(tmp, `sheets-${k}.svg`)), `sheet ${k}`);
+  const dxf = runCli(['export', result, '--format', 'dxf', '--output', path.join(tmp, 'table.dxf')]);
+  assert.equal(dxf.status, 0, dxf.stderr);
+  assert.match(fs.readFileSync(path.join(tmp, 'table.dxf'), 'utf8'), /\$INSUNITS\n70\n4\n/);
+  const small = runCli(['export', result, '--format', 'svg', '--sheet', '600x400', '--output', path.join(tmp, 'small.svg')]);
+  assert.equal(small.status, 2);
+  assert.match(small.stderr, /table-cut\.json: plate 1 \(1050 x 650 mm\) does not fit on a 600 x 400 mm sheet/);
+  assert.equal(runCli(['export', result, '--format', 'svg', '--sheet', '600by400', '--output', path.join(tmp, 'bad.svg')]).status, 2);
 });

@@ -29,6 +29,10 @@ struct CutSheetOptions {
 // "600x400" (mm); BadInput naming the text else.
 void parseSheetSize(const std::string& text, CutSheetOptions* options);
 
+// Options as the package passes them ({sheet: "600x400", kerf, spacing, hairline, source});
+// unknown names and bad values are BadInput.
+CutSheetOptions parseCutSheetOptionsJson(const std::string& text);
+
 // One file per sheet, in order. The plates are the document's `fabricationPlates` (a result cut
 // with a clearance) or its `plates`; each is laid flat on its first face (a plate with mitred
 // edges: the blank holding both faces), turned to its smallest bounding box, and shelf-packed in

@@ -66,5 +66,7 @@ std::vector<Plate> cutTenonJoints(const std::vector<Plate>& plates, const std::v
 // `obstacle` (their interiors meet). Exact for the plates' polyhedra: two surface triangles whose
 // shadows along d overlap with positive area, with the obstacle's triangle ahead, mean a collision.
 bool plateCollidesAlong(const Plate& mover, const Plate& obstacle, const Vec3& d, double tolerance);
+// The same for closed meshes (plateMesh of each plate, made once when many pairs are tested).
+bool meshCollidesAlong(const TriangleMesh& mover, const TriangleMesh& obstacle, const Vec3& d, double tolerance);
 
 }  // namespace desia
