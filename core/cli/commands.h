@@ -17,5 +17,8 @@ int runPlateDesignCommand(const std::vector<std::string>& args);  // args[0] == 
 // desia design frame --input FRAME.obj|.json|.fpuz [--seed S] [--time-limit S] [--node-limit N] [--joint-size MM] --output RESULT.json
 int runFrameDesignCommand(const std::vector<std::string>& args);  // args[0] == "frame"
 
+// desia plates-from-mesh --input MESH.obj|.stl --thickness T [--tolerance MM] [--merge-angle DEG] --output PLATES.json
+int runPlatesFromMeshCommand(const std::vector<std::string>& args);
+
 // desia export FILE --format stl|stl-ascii|obj|xmpuzzle [--part N] [--voxel-size S] --output OUT
 int runExportCommand(const std::vector<std::string>& args);

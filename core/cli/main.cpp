@@ -29,6 +29,8 @@ const char* kUsage =
     "             [--tenon-width MM] [--tenon-count N]\n"
     "       desia design frame --input FRAME.obj|.json|.fpuz --output RESULT.json [--seed S] [--candidates M]\n"
     "             [--time-limit SECONDS] [--node-limit N] [--joint-size MM]\n"
+    "       desia plates-from-mesh --input MESH.obj|.stl --thickness T [--tolerance MM] [--merge-angle DEG]\n"
+    "             --output PLATES.json\n"
     "       desia export FILE --format stl|stl-ascii|obj|xmpuzzle [--part N] [--voxel-size S] --output OUT\n"
     "       desia --version | --help\n"
     "\n"
@@ -54,6 +56,9 @@ const char* kUsage =
     "design frame designs the 3x3x3 voxel joints of a frame (paper Section 5.3): key beam, removal order\n"
     "        and axes, the beam owning each joint voxel; writes the result once the DBG test and the swept\n"
     "        removal verified it; exit 1 when none is found or a beam is a cut point (named)\n"
+    "plates-from-mesh makes every planar face of a closed low-poly mesh a plate of thickness T, inset\n"
+    "        inside the mesh with mitred edges (neighbours meet along a shared mitre face); writes the plate\n"
+    "        design for design plate; exit 0 written, 2 bad mesh or thickness (the face named)\n"
     "export  writes a voxel assembly as closed part meshes (binary or ASCII STL, OBJ with one object\n"
     "        per part; --part N for one part, --voxel-size S scales voxel units) or as a BurrTools\n"
     "        .xmpuzzle (gzip XML; the whole puzzle); exit 0 when written\n"
@@ -111,6 +116,7 @@ int main(int argc, char** argv) {
     if (args[0] == "check") return runCheck({args.begin() + 1, args.end()});
     if (args[0] == "voxelize") return runVoxelizeCommand({args.begin() + 1, args.end()});
     if (args[0] == "design") return runDesignCommand({args.begin() + 1, args.end()});
+    if (args[0] == "plates-from-mesh") return runPlatesFromMeshCommand({args.begin() + 1, args.end()});
     if (args[0] == "export") return runExportCommand({args.begin() + 1, args.end()});
     throw UsageError{"unknown command '" + args[0] + "'"};
   } catch (const UsageError& e) {
