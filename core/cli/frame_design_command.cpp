@@ -31,7 +31,8 @@ double positiveNumber(const std::string& flag, const std::string& text, double l
     used = 0;
   }
   if (used != text.size() || !(value >= lo) || !(value <= hi)) {
-    usage(flag + " expects a number from " + std::to_string(lo).substr(0, 3) + " to " + std::to_string(static_cast<long long>(hi)) + ", got '" + text + "'");
+    usage(flag + " expects a number from " + std::to_string(lo).substr(0, 3) + " to " +
+          std::to_string(static_cast<long long>(hi)) + ", got '" + text + "'");
   }
   return value;
 }
@@ -51,14 +52,22 @@ int runFrameDesignCommand(const std::vector<std::string>& args) {
     }
     if (i + 1 == args.size()) usage(flag + " needs a value");
     const std::string& value = args[++i];
-    if (flag == "--input") input = value;
-    else if (flag == "--output") output = value;
-    else if (flag == "--seed") options.seed = static_cast<uint64_t>(desia::cli::integerOption(flag, value, 0, 1LL << 62));
-    else if (flag == "--candidates") options.candidates = static_cast<int>(desia::cli::integerOption(flag, value, 1, 10000));
-    else if (flag == "--node-limit") options.nodeLimit = desia::cli::integerOption(flag, value, 1, 1LL << 50);
-    else if (flag == "--time-limit") options.timeLimitSeconds = positiveNumber(flag, value, 0, 1e7);
-    else if (flag == "--joint-size") jointSize = positiveNumber(flag, value, 1e-9, 1e9);
-    else usage("unknown option " + flag + " for design frame");
+    if (flag == "--input")
+      input = value;
+    else if (flag == "--output")
+      output = value;
+    else if (flag == "--seed")
+      options.seed = static_cast<uint64_t>(desia::cli::integerOption(flag, value, 0, 1LL << 62));
+    else if (flag == "--candidates")
+      options.candidates = static_cast<int>(desia::cli::integerOption(flag, value, 1, 10000));
+    else if (flag == "--node-limit")
+      options.nodeLimit = desia::cli::integerOption(flag, value, 1, 1LL << 50);
+    else if (flag == "--time-limit")
+      options.timeLimitSeconds = positiveNumber(flag, value, 0, 1e7);
+    else if (flag == "--joint-size")
+      jointSize = positiveNumber(flag, value, 1e-9, 1e9);
+    else
+      usage("unknown option " + flag + " for design frame");
   }
   if (input.empty()) usage("design frame needs --input FRAME.obj|.json|.fpuz");
   if (output.empty() || !desia::cli::hasExtension(output, ".json")) usage("design frame needs --output RESULT.json");
@@ -66,7 +75,8 @@ int runFrameDesignCommand(const std::vector<std::string>& args) {
   const bool live = !quiet && isatty(STDERR_FILENO);
   options.onProgress = [&](const desia::FrameDesignProgress& p) {
     if (live && p.nodes % 16 == 0) {
-      std::fprintf(stderr, "\r%lld nodes, depth %d/%d, %.1f s   ", static_cast<long long>(p.nodes), p.depth + 1, p.targetParts, p.seconds);
+      std::fprintf(stderr, "\r%lld nodes, depth %d/%d, %.1f s   ", static_cast<long long>(p.nodes), p.depth + 1,
+                   p.targetParts, p.seconds);
     }
     return interrupted == 0;
   };

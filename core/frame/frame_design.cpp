@@ -46,8 +46,8 @@ namespace {
 using Mask = uint32_t;  // a set of the 27 voxels of a joint cube
 
 constexpr int kFree = -1;
-constexpr int kOptionsPerJoint = 14;
-constexpr int kPairsPerDirection = 48;
+constexpr int kOptionsPerJoint = 20;
+constexpr int kPairsPerDirection = 80;
 
 int voxelIndex(int x, int y, int z) { return x + 3 * y + 9 * z; }
 
@@ -126,8 +126,10 @@ bool overlap(const Aabb& a, const Aabb& b) {
 
 Aabb swept(Aabb bounds, int direction) {
   const int axis = direction / 2;
-  if (direction % 2 == 0) bounds.hi[axis] = std::numeric_limits<double>::infinity();
-  else bounds.lo[axis] = -std::numeric_limits<double>::infinity();
+  if (direction % 2 == 0)
+    bounds.hi[axis] = std::numeric_limits<double>::infinity();
+  else
+    bounds.lo[axis] = -std::numeric_limits<double>::infinity();
   return bounds;
 }
 
@@ -160,7 +162,8 @@ class FrameDesigner {
     labels_.assign(frame_.joints.size(), JointLabels{});
     for (JointLabels& joint : labels_) joint.fill(kFree);
     for (int b = 0; b < beams; ++b) {
-      for (int end = 0; end < 2; ++end) labels_[frame_.beams[b].joints[end]][faceCentreVoxel(layout_.endFace[b][end])] = b;
+      for (int end = 0; end < 2; ++end)
+        labels_[frame_.beams[b].joints[end]][faceCentreVoxel(layout_.endFace[b][end])] = b;
     }
     stepOf_.assign(beams, -1);
   }
@@ -172,7 +175,8 @@ class FrameDesigner {
   void childrenOfBeam(int beam, int direction, int wanted, std::vector<Step>& children);
   std::vector<Mask> jointOptions(int beam, int end, int direction);
   std::vector<Obstacle> corridorObstacles(int beam, int direction) const;
-  bool sweepClear(int beam, int direction, const std::array<Mask, 2>& taken, const std::vector<Obstacle>& obstacles) const;
+  bool sweepClear(int beam, int direction, const std::array<Mask, 2>& taken,
+                  const std::vector<Obstacle>& obstacles) const;
   bool acceptable(const Step& step);
   bool keyMovesAlongOnly(const Step& step) const;
   bool restStronglyConnected(int candidate);
@@ -185,6 +189,7 @@ class FrameDesigner {
   double seconds() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
   int endOf(int beam, int joint) const { return frame_.beams[beam].joints[0] == joint ? 0 : 1; }
   bool inRest(int beam) const { return stepOf_[beam] < 0; }
+  int width_ = 1;  // children kept per node in the current search
 
   const FrameLayout& layout_;
   const Frame& frame_;
@@ -227,9 +232,12 @@ std::vector<Mask> FrameDesigner::jointOptions(int beam, int end, int direction) 
   const int face = faceCentreVoxel(layout_.endFace[beam][end]);
   Mask free = 0, restFaces = 0, gone = 0;
   for (int v = 0; v < kJointVoxelCount; ++v) {
-    if (labels[v] == kFree) free |= Mask(1) << v;
-    else if (labels[v] != beam && inRest(labels[v])) restFaces |= Mask(1) << v;
-    else if (labels[v] != beam) gone |= Mask(1) << v;  // owned by a beam taken before
+    if (labels[v] == kFree)
+      free |= Mask(1) << v;
+    else if (labels[v] != beam && inRest(labels[v]))
+      restFaces |= Mask(1) << v;
+    else if (labels[v] != beam)
+      gone |= Mask(1) << v;  // owned by a beam taken before
   }
   if (!restFaces) return {free};  // the last beam of R here takes every free voxel
   // Closure along the direction: everything free ahead joins; a voxel of R ahead forbids it.
@@ -276,10 +284,11 @@ std::vector<Mask> FrameDesigner::jointOptions(int beam, int end, int direction) 
   }
   std::sort(grown.begin(), grown.end());
   for (const auto& [rank, set] : grown) add(set);
-  // Random growth by two to four voxels.
-  for (int attempt = 0; attempt < 3 * kOptionsPerJoint && static_cast<int>(options.size()) < kOptionsPerJoint; ++attempt) {
+  // Random growth by two to eight voxels.
+  for (int attempt = 0; attempt < 3 * kOptionsPerJoint && static_cast<int>(options.size()) < kOptionsPerJoint;
+       ++attempt) {
     Mask set = base;
-    const int extra = 2 + static_cast<int>(nextRandom() % 3);
+    const int extra = 2 + static_cast<int>(nextRandom() % 7);
     for (int k = 0; k < extra; ++k) {
       const Mask choices = neighbours(set | (Mask(1) << face)) & free;
       if (!choices) break;
@@ -327,7 +336,8 @@ std::vector<Obstacle> FrameDesigner::corridorObstacles(int beam, int direction) 
     }
   }
   for (size_t other = 0; other < frame_.beams.size(); ++other) {
-    if (static_cast<int>(other) == beam || !inRest(static_cast<int>(other)) || !overlap(reach, bodyBounds_[other])) continue;
+    if (static_cast<int>(other) == beam || !inRest(static_cast<int>(other)) || !overlap(reach, bodyBounds_[other]))
+      continue;
     for (const OrientedBox& box : bodies_[other]) {
       const Aabb bounds = boundsOf(box);
       if (overlap(reach, bounds)) obstacles.push_back({box, bounds, -1, -1});
@@ -428,7 +438,8 @@ bool FrameDesigner::restStronglyConnected(int candidate) {
     targets_.assign(edges_.size(), 0);
     reverseTargets_.assign(edges_.size(), 0);
     {
-      std::vector<int> fill(offsets_.begin(), offsets_.end() - 1), reverseFill(reverseOffsets_.begin(), reverseOffsets_.end() - 1);
+      std::vector<int> fill(offsets_.begin(), offsets_.end() - 1),
+          reverseFill(reverseOffsets_.begin(), reverseOffsets_.end() - 1);
       for (const auto& [a, b] : edges_) {
         targets_[fill[a]++] = b;
         reverseTargets_[reverseFill[b]++] = a;
@@ -473,7 +484,8 @@ void FrameDesigner::childrenOfBeam(int beam, int direction, int wanted, std::vec
   {
     std::vector<Obstacle> fixed;
     for (const Obstacle& o : obstacles) {
-      const bool ownFree = o.joint >= 0 && (o.joint == frame_.beams[beam].joints[0] || o.joint == frame_.beams[beam].joints[1]);
+      const bool ownFree =
+          o.joint >= 0 && (o.joint == frame_.beams[beam].joints[0] || o.joint == frame_.beams[beam].joints[1]);
       if (!ownFree) fixed.push_back(o);
     }
     if (!sweepClear(beam, direction, {0, 0}, fixed)) return;
@@ -535,7 +547,8 @@ std::vector<Step> FrameDesigner::childrenOfCurrent() {
   std::vector<Candidate> candidates;
   for (int b : rest) {
     if (isCut[b] || (!path_.empty() && !touchesTaken[b])) continue;
-    const double height = frame_.joints[frame_.beams[b].joints[0]].position[1] + frame_.joints[frame_.beams[b].joints[1]].position[1];
+    const double height =
+        frame_.joints[frame_.beams[b].joints[0]].position[1] + frame_.joints[frame_.beams[b].joints[1]].position[1];
     candidates.push_back({b, path_.empty() ? 0 : restNeighbours[b], height, nextRandom()});
   }
   std::sort(candidates.begin(), candidates.end(), [](const Candidate& x, const Candidate& y) {
@@ -544,7 +557,7 @@ std::vector<Step> FrameDesigner::childrenOfCurrent() {
     return x.tie < y.tie;
   });
   // More keys than later children: a key whose subtree dies costs little, the whole search less.
-  const int wanted = path_.empty() ? 6 * options_.candidates : options_.candidates;
+  const int wanted = path_.empty() ? 6 * width_ : width_;
   std::vector<Step> children;
   for (const Candidate& candidate : candidates) {
     // The key leaves upwards when it can (paper Section 4.2: gravity keeps it in); other
@@ -570,76 +583,86 @@ FrameDesignResult FrameDesigner::run() {
   const std::vector<int> cuts = frameCutBeams(layout_);
   if (!cuts.empty()) {
     result.status = FrameDesignStatus::CutPoint;
-    result.message = "beam " + std::to_string(frame_.beams[cuts[0]].id) +
-                     " is a cut point of the parts-graph: taking it away splits the other beams, and no joints can make such "
-                     "a frame interlocking (paper Section 5.2, Fig. 18); add a beam that joins the two sides";
+    result.message =
+        "beam " + std::to_string(frame_.beams[cuts[0]].id) +
+        " is a cut point of the parts-graph: taking it away splits the other beams, and no joints can make such "
+        "a frame interlocking (paper Section 5.2, Fig. 18); add a beam that joins the two sides";
     return result;
   }
   if (beams < 3) {
     result.message = "an interlocking frame needs at least three beams; this one has " + std::to_string(beams);
     return result;
   }
-  std::vector<std::vector<Step>> pending{childrenOfCurrent()};
+  // Iterative widening: a tree searched to the end with m children per node is searched again
+  // with 2m (up to 32), so a narrow first search costs little and never ends the design early.
   bool complete = false;
-  while (!pending.empty()) {
-    ++progress.nodes;
-    progress.depth = static_cast<int>(path_.size());
-    progress.seconds = seconds();
-    if (options_.onProgress && !options_.onProgress(progress)) {
-      result.status = FrameDesignStatus::Cancelled;
-      result.message = "cancelled after " + std::to_string(progress.nodes) + " nodes";
-      return result;
-    }
-    if ((options_.timeLimitSeconds > 0 && progress.seconds > options_.timeLimitSeconds) || progress.nodes > options_.nodeLimit) {
-      result.status = FrameDesignStatus::LimitReached;
-      result.message = "no design within the limits (" + std::to_string(progress.nodes) + " nodes; deepest " +
-                       std::to_string(progress.bestDepth) + " of " + std::to_string(beams) + " beams)";
-      return result;
-    }
-    if (pending.back().empty()) {  // no child left here: back to the parent's next sibling
-      pending.pop_back();
-      if (!path_.empty()) undo(path_.back());
-      continue;
-    }
-    const Step step = pending.back().front();
-    pending.back().erase(pending.back().begin());
-    apply(step);
-    progress.bestDepth = std::max(progress.bestDepth, static_cast<int>(path_.size()) + 1);
-    if (static_cast<int>(path_.size()) + 1 == beams) {
-      // R is the last beam: it owns every voxel still free. Accepted only if it verifies.
-      int last = 0;
-      while (!inRest(last)) ++last;
-      std::vector<JointLabels> labels = labels_;
-      for (JointLabels& joint : labels) std::replace(joint.begin(), joint.end(), kFree, last);
-      std::vector<int> order;
-      std::vector<Vec3> directions;
-      for (const Step& s : path_) {
-        order.push_back(s.beam);
-        directions.push_back(cubeFaceNormal(s.direction));
+  for (width_ = options_.candidates; !complete; width_ *= 2) {
+    if (width_ > std::max(32, options_.candidates)) break;
+    std::vector<std::vector<Step>> pending{childrenOfCurrent()};
+    while (!pending.empty()) {
+      ++progress.nodes;
+      progress.depth = static_cast<int>(path_.size());
+      progress.seconds = seconds();
+      if (options_.onProgress && !options_.onProgress(progress)) {
+        result.status = FrameDesignStatus::Cancelled;
+        result.message = "cancelled after " + std::to_string(progress.nodes) + " nodes";
+        return result;
       }
-      order.push_back(last);
-      if (frameDesignFailure(layout_, labels, order, directions).empty()) {
-        result.order = order;
-        result.directions = directions;
-        result.labels = labels;
-        complete = true;
-        break;
+      if ((options_.timeLimitSeconds > 0 && progress.seconds > options_.timeLimitSeconds) ||
+          progress.nodes > options_.nodeLimit) {
+        result.status = FrameDesignStatus::LimitReached;
+        result.message = "no design within the limits (" + std::to_string(progress.nodes) + " nodes; deepest " +
+                         std::to_string(progress.bestDepth) + " of " + std::to_string(beams) + " beams)";
+        return result;
       }
-      undo(step);
-      continue;
+      if (pending.back().empty()) {  // no child left here: back to the parent's next sibling
+        pending.pop_back();
+        if (!path_.empty()) undo(path_.back());
+        continue;
+      }
+      const Step step = pending.back().front();
+      pending.back().erase(pending.back().begin());
+      apply(step);
+      progress.bestDepth = std::max(progress.bestDepth, static_cast<int>(path_.size()) + 1);
+      if (static_cast<int>(path_.size()) + 1 == beams) {
+        // R is the last beam: it owns every voxel still free. Accepted only if it verifies.
+        int last = 0;
+        while (!inRest(last)) ++last;
+        std::vector<JointLabels> labels = labels_;
+        for (JointLabels& joint : labels) std::replace(joint.begin(), joint.end(), kFree, last);
+        std::vector<int> order;
+        std::vector<Vec3> directions;
+        for (const Step& s : path_) {
+          order.push_back(s.beam);
+          directions.push_back(cubeFaceNormal(s.direction));
+        }
+        order.push_back(last);
+        if (frameDesignFailure(layout_, labels, order, directions).empty()) {
+          result.order = order;
+          result.directions = directions;
+          result.labels = labels;
+          complete = true;
+          break;
+        }
+        undo(step);
+        continue;
+      }
+      pending.push_back(childrenOfCurrent());
     }
-    pending.push_back(childrenOfCurrent());
+    while (!path_.empty() && !complete) undo(path_.back());
   }
   if (!complete) {
     result.status = FrameDesignStatus::NotFound;
-    result.message = "no interlocking joints exist within the search (" + std::to_string(progress.nodes) + " nodes; deepest " +
-                     std::to_string(progress.bestDepth) + " of " + std::to_string(beams) + " beams)";
+    result.message = "no interlocking joints exist within the search (" + std::to_string(progress.nodes) +
+                     " nodes; deepest " + std::to_string(progress.bestDepth) + " of " + std::to_string(beams) +
+                     " beams)";
     return result;
   }
   result.assembly = frameAssembly(layout_, result.labels, result.order);
   result.status = FrameDesignStatus::Success;
   result.message = "designed the joints of " + std::to_string(beams) + " beams (key: beam " +
-                   std::to_string(frame_.beams[result.order[0]].id) + ") in " + std::to_string(progress.nodes) + " nodes";
+                   std::to_string(frame_.beams[result.order[0]].id) + ") in " + std::to_string(progress.nodes) +
+                   " nodes";
   return result;
 }
 
@@ -647,17 +670,22 @@ FrameDesignResult FrameDesigner::run() {
 
 const char* frameDesignStatusName(FrameDesignStatus status) {
   switch (status) {
-    case FrameDesignStatus::Success: return "success";
-    case FrameDesignStatus::NotFound: return "not-found";
-    case FrameDesignStatus::LimitReached: return "limit-reached";
-    case FrameDesignStatus::Cancelled: return "cancelled";
-    case FrameDesignStatus::CutPoint: return "cut-point";
+    case FrameDesignStatus::Success:
+      return "success";
+    case FrameDesignStatus::NotFound:
+      return "not-found";
+    case FrameDesignStatus::LimitReached:
+      return "limit-reached";
+    case FrameDesignStatus::Cancelled:
+      return "cancelled";
+    case FrameDesignStatus::CutPoint:
+      return "cut-point";
   }
   return "not-found";
 }
 
-std::string frameDesignFailure(const FrameLayout& layout, const std::vector<JointLabels>& labels, const std::vector<int>& order,
-                               const std::vector<Vec3>& directions) {
+std::string frameDesignFailure(const FrameLayout& layout, const std::vector<JointLabels>& labels,
+                               const std::vector<int>& order, const std::vector<Vec3>& directions) {
   const Frame& frame = layout.frame;
   try {
     validateJointLabels(layout, labels, "design");
@@ -680,8 +708,8 @@ std::string frameDesignFailure(const FrameLayout& layout, const std::vector<Join
   for (size_t k = 0; k < directions.size(); ++k) {
     const std::string obstacle = frameSweepObstacle(layout, labels, order[k], directions[k], present);
     if (!obstacle.empty()) {
-      return "beam " + std::to_string(frame.beams[order[k]].id) + " cannot leave along " + directionLabel(directions[k]) +
-             ": it hits " + obstacle;
+      return "beam " + std::to_string(frame.beams[order[k]].id) + " cannot leave along " +
+             directionLabel(directions[k]) + ": it hits " + obstacle;
     }
     present[order[k]] = false;
   }

@@ -159,7 +159,8 @@ int faceOfTangent(const FrameLayout& layout, int beam, int end, const std::strin
                               "'s position, so it has no direction there");
   }
   std::array<int, 3> order{0, 1, 2};
-  std::stable_sort(order.begin(), order.end(), [&](int x, int y) { return std::abs(tangent[x]) > std::abs(tangent[y]); });
+  std::stable_sort(order.begin(), order.end(),
+                   [&](int x, int y) { return std::abs(tangent[x]) > std::abs(tangent[y]); });
   const double best = std::abs(tangent[order[0]]), second = std::abs(tangent[order[1]]);
   const int face = 2 * order[0] + (tangent[order[0]] < 0 ? 1 : 0);
   if (best - second <= 1e-6 * best) {
@@ -194,12 +195,14 @@ int faceCentreVoxel(int face) {
 double defaultJointSize(const Frame& frame) {
   double shortest = std::numeric_limits<double>::infinity();
   for (const FrameBeam& beam : frame.beams) {
-    shortest = std::min(shortest, norm(minus(frame.joints[beam.joints[0]].position, frame.joints[beam.joints[1]].position)));
+    shortest =
+        std::min(shortest, norm(minus(frame.joints[beam.joints[0]].position, frame.joints[beam.joints[1]].position)));
   }
   // Closest pair of joints by largest coordinate difference: sweep along x.
   std::vector<int> byX(frame.joints.size());
   std::iota(byX.begin(), byX.end(), 0);
-  std::sort(byX.begin(), byX.end(), [&](int a, int b) { return frame.joints[a].position[0] < frame.joints[b].position[0]; });
+  std::sort(byX.begin(), byX.end(),
+            [&](int a, int b) { return frame.joints[a].position[0] < frame.joints[b].position[0]; });
   double closest = std::numeric_limits<double>::infinity();
   for (size_t i = 0; i < byX.size(); ++i) {
     for (size_t j = i + 1; j < byX.size(); ++j) {
@@ -214,9 +217,9 @@ double defaultJointSize(const Frame& frame) {
 
 FrameLayout layoutFrame(Frame frame, const std::string& source) {
   FrameLayout layout;
-  if (frame.joints.empty() || frame.beams.empty()) throwBadInput(source, "a frame needs joints and beams; this one has " +
-                                                                             std::to_string(frame.joints.size()) + " joints and " +
-                                                                             std::to_string(frame.beams.size()) + " beams");
+  if (frame.joints.empty() || frame.beams.empty())
+    throwBadInput(source, "a frame needs joints and beams; this one has " + std::to_string(frame.joints.size()) +
+                              " joints and " + std::to_string(frame.beams.size()) + " beams");
   const int jointCount = static_cast<int>(frame.joints.size());
   const int beamCount = static_cast<int>(frame.beams.size());
   // Each beam on its own: two different joints at two different places.
@@ -247,9 +250,9 @@ FrameLayout layoutFrame(Frame frame, const std::string& source) {
       }
       const auto [it, inserted] = seen.insert({{lo, hi, path}, b});
       if (!inserted) {
-        throwBadInput(source, "beams " + std::to_string(frame.beams[it->second].id) + " and " + std::to_string(beam.id) +
-                                  " are the same beam: both join " + jointName(frame, lo) + " and " + jointName(frame, hi) +
-                                  (path.empty() ? "" : " along the same path"));
+        throwBadInput(source, "beams " + std::to_string(frame.beams[it->second].id) + " and " +
+                                  std::to_string(beam.id) + " are the same beam: both join " + jointName(frame, lo) +
+                                  " and " + jointName(frame, hi) + (path.empty() ? "" : " along the same path"));
       }
     }
   }
@@ -260,10 +263,12 @@ FrameLayout layoutFrame(Frame frame, const std::string& source) {
   }
   for (int j = 0; j < jointCount; ++j) {
     const std::vector<int>& beams = layout.beamsAtJoint[j];
-    if (beams.empty()) throwBadInput(source, jointName(frame, j) + " at " + pointText(frame.joints[j].position) + " joins no beam");
+    if (beams.empty())
+      throwBadInput(source, jointName(frame, j) + " at " + pointText(frame.joints[j].position) + " joins no beam");
     if (static_cast<int>(beams.size()) > kMaxJointValence) {
-      throwBadInput(source, jointName(frame, j) + " joins " + std::to_string(beams.size()) + " beams (" + beamList(frame, beams) +
-                                "): a joint cube has six faces, so a joint joins at most six beams (paper Section 5.3)");
+      throwBadInput(
+          source, jointName(frame, j) + " joins " + std::to_string(beams.size()) + " beams (" + beamList(frame, beams) +
+                      "): a joint cube has six faces, so a joint joins at most six beams (paper Section 5.3)");
     }
   }
   {
@@ -276,8 +281,9 @@ FrameLayout layoutFrame(Frame frame, const std::string& source) {
     for (const FrameBeam& beam : frame.beams) parent[root(beam.joints[0])] = root(beam.joints[1]);
     for (int j = 1; j < jointCount; ++j) {
       if (root(j) != root(0)) {
-        throwBadInput(source, "the frame falls apart: " + jointName(frame, j) + " (with " + beamName(frame, layout.beamsAtJoint[j][0]) +
-                                  ") is not connected to " + jointName(frame, 0) + " by beams");
+        throwBadInput(source, "the frame falls apart: " + jointName(frame, j) + " (with " +
+                                  beamName(frame, layout.beamsAtJoint[j][0]) + ") is not connected to " +
+                                  jointName(frame, 0) + " by beams");
       }
     }
   }
@@ -289,15 +295,17 @@ FrameLayout layoutFrame(Frame frame, const std::string& source) {
   layout.voxelSize = frame.jointSize / kJointVoxelsPerSide;
   if (frame.beamSection == 0) frame.beamSection = layout.voxelSize;
   if (!(frame.beamSection > 0) || frame.beamSection > layout.voxelSize * (1 + 1e-9)) {
-    throwBadInput(source, "the beam section " + number(frame.beamSection) + " must be positive and at most the voxel size " +
-                              number(layout.voxelSize) + " (a third of the joint size " + number(frame.jointSize) +
+    throwBadInput(source, "the beam section " + number(frame.beamSection) +
+                              " must be positive and at most the voxel size " + number(layout.voxelSize) +
+                              " (a third of the joint size " + number(frame.jointSize) +
                               "): a beam enters the centre voxel of a cube face");
   }
   // Joint cubes apart from one another.
   {
     std::vector<int> byX(jointCount);
     std::iota(byX.begin(), byX.end(), 0);
-    std::sort(byX.begin(), byX.end(), [&](int a, int b) { return frame.joints[a].position[0] < frame.joints[b].position[0]; });
+    std::sort(byX.begin(), byX.end(),
+              [&](int a, int b) { return frame.joints[a].position[0] < frame.joints[b].position[0]; });
     for (size_t i = 0; i < byX.size(); ++i) {
       for (size_t k = i + 1; k < byX.size(); ++k) {
         const Vec3& a = frame.joints[byX[i]].position;
@@ -338,8 +346,9 @@ FrameLayout layoutFrame(Frame frame, const std::string& source) {
     for (const Vec3& point : f.beams[b].path) {
       for (int j = 0; j < jointCount; ++j) {
         if (chebyshevDistance(point, f.joints[j].position) < half + layout.voxelSize) {
-          throwBadInput(source, beamName(f, b) + ": path point " + pointText(point) + " lies in or next to the joint cube of " +
-                                    jointName(f, j) + " (keep path points a voxel away from the cubes)");
+          throwBadInput(source, beamName(f, b) + ": path point " + pointText(point) +
+                                    " lies in or next to the joint cube of " + jointName(f, j) +
+                                    " (keep path points a voxel away from the cubes)");
         }
       }
     }
@@ -376,14 +385,17 @@ FrameLayout layoutFrame(Frame frame, const std::string& source) {
       if (p.beam >= 0 && p.beam == q.beam) continue;
       const Piece& beamPiece = p.beam >= 0 ? p : q;
       const Piece& other = p.beam >= 0 ? q : p;
-      if (other.beam < 0 && (beamPiece.joint == other.joint || beamPiece.otherJoint == other.joint)) continue;  // its own end
+      if (other.beam < 0 && (beamPiece.joint == other.joint || beamPiece.otherJoint == other.joint))
+        continue;  // its own end
       if (!boundsOverlap(p.bounds, q.bounds) || !boxesOverlap(p.box, q.box)) continue;
       if (other.beam < 0) {
-        throwBadInput(source, beamName(f, beamPiece.beam) + " passes through the joint cube of " + jointName(f, other.joint));
+        throwBadInput(source,
+                      beamName(f, beamPiece.beam) + " passes through the joint cube of " + jointName(f, other.joint));
       }
       const int first = std::min(p.beam, q.beam), second = std::max(p.beam, q.beam);
-      throwBadInput(source, "beams " + std::to_string(f.beams[first].id) + " and " + std::to_string(f.beams[second].id) +
-                                " cross or overlap (with a section of " + number(f.beamSection) + ")");
+      throwBadInput(source, "beams " + std::to_string(f.beams[first].id) + " and " +
+                                std::to_string(f.beams[second].id) + " cross or overlap (with a section of " +
+                                number(f.beamSection) + ")");
     }
   }
   for (auto& beams : layout.beamsAtJoint) std::sort(beams.begin(), beams.end());
@@ -455,7 +467,8 @@ void validateJointLabels(const FrameLayout& layout, const std::vector<JointLabel
   }
 }
 
-Assembly frameAssembly(const FrameLayout& layout, const std::vector<JointLabels>& labels, const std::vector<int>& partOrder) {
+Assembly frameAssembly(const FrameLayout& layout, const std::vector<JointLabels>& labels,
+                       const std::vector<int>& partOrder) {
   const Frame& frame = layout.frame;
   Assembly assembly;
   std::vector<int> partOf(frame.beams.size(), -1);
@@ -474,8 +487,10 @@ Assembly frameAssembly(const FrameLayout& layout, const std::vector<JointLabels>
         const int a = partOf[labels[j][v]], b = partOf[labels[j][w]];
         if (a == b) continue;
         // Normal +axis k from a (below) to b (above).
-        if (a < b) ++faces[{a, b, 2 * k}];
-        else ++faces[{b, a, 2 * k + 1}];
+        if (a < b)
+          ++faces[{a, b, 2 * k}];
+        else
+          ++faces[{b, a, 2 * k + 1}];
       }
     }
   }
@@ -490,7 +505,8 @@ std::vector<OrientedBox> beamBodyBoxes(const FrameLayout& layout, int beam) {
   const std::vector<Vec3> points = beamCentreline(layout, beam);
   std::vector<OrientedBox> boxes;
   for (size_t i = 0; i + 1 < points.size(); ++i) {
-    if (norm(minus(points[i + 1], points[i])) > 0) boxes.push_back(segmentBox(points[i], points[i + 1], layout.frame.beamSection));
+    if (norm(minus(points[i + 1], points[i])) > 0)
+      boxes.push_back(segmentBox(points[i], points[i + 1], layout.frame.beamSection));
   }
   return boxes;
 }
@@ -532,7 +548,8 @@ bool sweptBoxesCollide(const OrientedBox& moving, const Vec3& direction, const O
   for (const Vec3& axis : axes) {
     double reach = 0;
     for (int i = 0; i < 3; ++i) {
-      reach += moving.halfExtents[i] * std::abs(dot(moving.axes[i], axis)) + fixed.halfExtents[i] * std::abs(dot(fixed.axes[i], axis));
+      reach += moving.halfExtents[i] * std::abs(dot(moving.axes[i], axis)) +
+               fixed.halfExtents[i] * std::abs(dot(fixed.axes[i], axis));
     }
     reach -= 1e-9 * reach + 1e-12;  // touching is not overlapping
     const double gap = dot(between, axis);
@@ -613,7 +630,8 @@ void appendBox(TriangleMesh& mesh, const OrientedBox& box) {
   // Faces as corner quads; each triangle turned to face away from the centre (outward).
   static const int quads[6][4] = {{0, 2, 6, 4}, {1, 5, 7, 3}, {0, 4, 5, 1}, {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 6, 7, 5}};
   for (const auto& q : quads) {
-    for (const std::array<int, 3>& corners : {std::array<int, 3>{q[0], q[1], q[2]}, std::array<int, 3>{q[0], q[2], q[3]}}) {
+    for (const std::array<int, 3>& corners :
+         {std::array<int, 3>{q[0], q[1], q[2]}, std::array<int, 3>{q[0], q[2], q[3]}}) {
       std::array<int, 3> t{first + corners[0], first + corners[1], first + corners[2]};
       const Vec3& a = mesh.vertices[t[0]];
       const Vec3 normal = cross(minus(mesh.vertices[t[1]], a), minus(mesh.vertices[t[2]], a));

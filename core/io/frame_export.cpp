@@ -30,7 +30,8 @@ TriangleMesh cubesMesh(const FrameLayout& layout) {
     const Vec3& p = layout.frame.joints[j].position;
     const int first = static_cast<int>(mesh.vertices.size());
     const double half = layout.frame.jointSize / 2;
-    for (const auto& v : cube.vertices) mesh.vertices.push_back({v[0] + p[0] - half, v[1] + p[1] - half, v[2] + p[2] - half});
+    for (const auto& v : cube.vertices)
+      mesh.vertices.push_back({v[0] + p[0] - half, v[1] + p[1] - half, v[2] + p[2] - half});
     for (const auto& t : cube.triangles) mesh.triangles.push_back({t[0] + first, t[1] + first, t[2] + first});
   }
   return mesh;
@@ -48,9 +49,11 @@ std::vector<NamedMesh> partMeshes(const FrameDocument& document, int part, const
   for (int beam : document.order) {
     const int id = layout.frame.beams[beam].id;
     if (part != 0 && part != id) continue;
-    meshes.push_back({id, document.labels.empty() ? bodyMesh(layout, beam) : beamPartMesh(layout, document.labels, beam)});
+    meshes.push_back(
+        {id, document.labels.empty() ? bodyMesh(layout, beam) : beamPartMesh(layout, document.labels, beam)});
   }
-  if (meshes.empty()) throwBadInput(source, "part " + std::to_string(part) + " is not a beam of this frame (0 = all parts)");
+  if (meshes.empty())
+    throwBadInput(source, "part " + std::to_string(part) + " is not a beam of this frame (0 = all parts)");
   if (document.labels.empty() && part == 0) meshes.push_back({0, cubesMesh(layout)});
   return meshes;
 }
@@ -63,12 +66,14 @@ std::string frameCutListCsv(const FrameDocument& document) {
   const FrameLayout& layout = document.layout;
   const Frame& frame = layout.frame;
   std::string out =
-      "part,input beam,joint a,face a,joint b,face b,body length,section,voxels at a,cells at a,voxels at b,cells at b,removal\n";
+      "part,input beam,joint a,face a,joint b,face b,body length,section,voxels at a,cells at a,voxels at b,cells at "
+      "b,removal\n";
   for (size_t k = 0; k < document.order.size(); ++k) {
     const int beam = document.order[k];
     const FrameBeam& b = frame.beams[beam];
     out += std::to_string(b.id) + "," + std::to_string(b.inputId ? b.inputId : b.id);
-    for (int end = 0; end < 2; ++end) out += "," + std::to_string(frame.joints[b.joints[end]].id) + "," + cubeFaceName(layout.endFace[beam][end]);
+    for (int end = 0; end < 2; ++end)
+      out += "," + std::to_string(frame.joints[b.joints[end]].id) + "," + cubeFaceName(layout.endFace[beam][end]);
     out += "," + formatNumber(beamBodyLength(layout, beam)) + "," + formatNumber(frame.beamSection);
     for (int end = 0; end < 2; ++end) {
       if (document.labels.empty()) {
@@ -91,19 +96,26 @@ std::string frameCutListCsv(const FrameDocument& document) {
   return out;
 }
 
-std::vector<uint8_t> exportFrame(const FrameDocument& document, const std::string& format, int part, const std::string& source) {
+std::vector<uint8_t> exportFrame(const FrameDocument& document, const std::string& format, int part,
+                                 const std::string& source) {
   const Frame& frame = document.layout.frame;
   if (format == "fpuz" || format == "csv") {
-    if (part != 0) throwBadInput(source, "a ." + format + " file holds the whole frame, so it cannot hold only part " + std::to_string(part));
-    if (document.labels.empty()) throwBadInput(source, "this frame has no designed joints yet: run desia design frame first");
+    if (part != 0)
+      throwBadInput(
+          source, "a ." + format + " file holds the whole frame, so it cannot hold only part " + std::to_string(part));
+    if (document.labels.empty())
+      throwBadInput(source, "this frame has no designed joints yet: run desia design frame first");
     if (format == "csv") return bytesOf(frameCutListCsv(document));
     for (const FrameBeam& beam : frame.beams) {
-      if (!beam.path.empty()) throwBadInput(source, "beam " + std::to_string(beam.id) + " is curved, and .fpuz holds straight beams only; export stl, obj or csv");
+      if (!beam.path.empty())
+        throwBadInput(source, "beam " + std::to_string(beam.id) +
+                                  " is curved, and .fpuz holds straight beams only; export stl, obj or csv");
     }
     return bytesOf(formatFpuz(document));
   }
   if (format != "stl" && format != "stl-ascii" && format != "obj") {
-    throwBadInput(source, "unknown export format '" + format + "' for a frame (expected stl, stl-ascii, obj, fpuz or csv)");
+    throwBadInput(source,
+                  "unknown export format '" + format + "' for a frame (expected stl, stl-ascii, obj, fpuz or csv)");
   }
   const std::vector<NamedMesh> meshes = partMeshes(document, part, source);
   const std::string what = part == 0 ? std::to_string(frame.beams.size()) + " beams" : "part " + std::to_string(part);

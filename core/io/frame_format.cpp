@@ -35,25 +35,29 @@ bool endsWithIgnoringCase(const std::string& text, const std::string& suffix) {
 }
 
 Vec3 pointAt(const json& value, const std::string& source, const std::string& path) {
-  if (!value.is_array() || value.size() != 3) fail(source, path, "expected [x, y, z], found " + value.dump().substr(0, 60));
+  if (!value.is_array() || value.size() != 3)
+    fail(source, path, "expected [x, y, z], found " + value.dump().substr(0, 60));
   Vec3 p{};
   for (int k = 0; k < 3; ++k) {
     if (!value[k].is_number()) fail(source, path, "expected three numbers, found " + value.dump().substr(0, 60));
     p[k] = value[k].get<double>();
-    if (!std::isfinite(p[k]) || std::abs(p[k]) > kMaxCoordinate) fail(source, path, "coordinate " + value[k].dump() + " is not a finite number up to 1e9");
+    if (!std::isfinite(p[k]) || std::abs(p[k]) > kMaxCoordinate)
+      fail(source, path, "coordinate " + value[k].dump() + " is not a finite number up to 1e9");
   }
   return p;
 }
 
 int idAt(const json& value, const std::string& source, const std::string& path) {
   if (!value.is_number_integer() || value.get<int64_t>() < 1 || value.get<int64_t>() > (1 << 30)) {
-    fail(source, path, "expected an integer id from 1 to " + std::to_string(1 << 30) + ", found " + value.dump().substr(0, 40));
+    fail(source, path,
+         "expected an integer id from 1 to " + std::to_string(1 << 30) + ", found " + value.dump().substr(0, 40));
   }
   return static_cast<int>(value.get<int64_t>());
 }
 
 double sizeAt(const json& value, const std::string& source, const std::string& path) {
-  if (!value.is_number() || !(value.get<double>() > 0) || !std::isfinite(value.get<double>()) || value.get<double>() > kMaxCoordinate) {
+  if (!value.is_number() || !(value.get<double>() > 0) || !std::isfinite(value.get<double>()) ||
+      value.get<double>() > kMaxCoordinate) {
     fail(source, path, "expected a positive number, found " + value.dump().substr(0, 40));
   }
   return value.get<double>();
@@ -83,13 +87,16 @@ std::vector<int> beamsById(const Frame& frame) {
 
 // The frame sections of a JSON object (the document's root or its `frame` object).
 FrameDocument frameFromJsonObject(const json& root, const std::string& source, double jointSize) {
-  const json& object = root.contains("frame") && root["frame"].is_object() && root["frame"].contains("beams") ? root["frame"] : root;
+  const json& object =
+      root.contains("frame") && root["frame"].is_object() && root["frame"].contains("beams") ? root["frame"] : root;
   const std::string prefix = &object == &root ? "" : "frame.";
   FrameDocument document;
   Frame frame;
   const auto joints = object.find("joints");
-  if (joints == object.end() || !joints->is_array()) fail(source, prefix + "joints", "expected a list of joints ([x, y, z] or {id, position})");
-  if (joints->size() > static_cast<size_t>(kMaxFrameJoints)) throw Error(ErrorCode::TooLarge, source + ": more than " + std::to_string(kMaxFrameJoints) + " joints");
+  if (joints == object.end() || !joints->is_array())
+    fail(source, prefix + "joints", "expected a list of joints ([x, y, z] or {id, position})");
+  if (joints->size() > static_cast<size_t>(kMaxFrameJoints))
+    throw Error(ErrorCode::TooLarge, source + ": more than " + std::to_string(kMaxFrameJoints) + " joints");
   std::map<int, int> jointIndex;
   for (size_t j = 0; j < joints->size(); ++j) {
     const std::string path = prefix + "joints[" + std::to_string(j) + "]";
@@ -103,12 +110,15 @@ FrameDocument frameFromJsonObject(const json& root, const std::string& source, d
       joint.id = static_cast<int>(j + 1);
       joint.position = pointAt(entry, source, path);
     }
-    if (!jointIndex.insert({joint.id, static_cast<int>(j)}).second) fail(source, path, "duplicate joint id " + std::to_string(joint.id));
+    if (!jointIndex.insert({joint.id, static_cast<int>(j)}).second)
+      fail(source, path, "duplicate joint id " + std::to_string(joint.id));
     frame.joints.push_back(joint);
   }
   const auto beams = object.find("beams");
-  if (beams == object.end() || !beams->is_array()) fail(source, prefix + "beams", "expected a list of beams ([a, b] or {id, joints, path})");
-  if (beams->size() > static_cast<size_t>(kMaxFrameBeams)) throw Error(ErrorCode::TooLarge, source + ": more than " + std::to_string(kMaxFrameBeams) + " beams");
+  if (beams == object.end() || !beams->is_array())
+    fail(source, prefix + "beams", "expected a list of beams ([a, b] or {id, joints, path})");
+  if (beams->size() > static_cast<size_t>(kMaxFrameBeams))
+    throw Error(ErrorCode::TooLarge, source + ": more than " + std::to_string(kMaxFrameBeams) + " beams");
   std::set<int> beamIds;
   for (size_t b = 0; b < beams->size(); ++b) {
     const std::string path = prefix + "beams[" + std::to_string(b) + "]";
@@ -123,20 +133,25 @@ FrameDocument frameFromJsonObject(const json& root, const std::string& source, d
       if (entry.contains("path")) {
         const json& points = entry["path"];
         if (!points.is_array()) fail(source, path + ".path", "expected a list of [x, y, z] points");
-        if (points.size() > static_cast<size_t>(kMaxBeamPathPoints)) throw Error(ErrorCode::TooLarge, source + ": " + path + ".path: too many points");
-        for (size_t k = 0; k < points.size(); ++k) beam.path.push_back(pointAt(points[k], source, path + ".path[" + std::to_string(k) + "]"));
+        if (points.size() > static_cast<size_t>(kMaxBeamPathPoints))
+          throw Error(ErrorCode::TooLarge, source + ": " + path + ".path: too many points");
+        for (size_t k = 0; k < points.size(); ++k)
+          beam.path.push_back(pointAt(points[k], source, path + ".path[" + std::to_string(k) + "]"));
       }
     }
     if (!ends->is_array() || ends->size() != 2) fail(source, path, "expected the ids of two joints [a, b]");
     for (int end = 0; end < 2; ++end) {
-      const int id = idAt((*ends)[end], source, path + (ends == &entry ? "" : ".joints") + "[" + std::to_string(end) + "]");
+      const int id =
+          idAt((*ends)[end], source, path + (ends == &entry ? "" : ".joints") + "[" + std::to_string(end) + "]");
       const auto it = jointIndex.find(id);
       if (it == jointIndex.end()) fail(source, path, "joint " + std::to_string(id) + " is not in 'joints'");
       beam.joints[end] = it->second;
     }
-    beam.inputId = entry.is_object() && entry.contains("inputId") ? idAt(entry["inputId"], source, path + ".inputId") : beam.id;
+    beam.inputId =
+        entry.is_object() && entry.contains("inputId") ? idAt(entry["inputId"], source, path + ".inputId") : beam.id;
     // A path may repeat its joints' positions at its ends.
-    if (!beam.path.empty() && beam.path.front() == frame.joints[beam.joints[0]].position) beam.path.erase(beam.path.begin());
+    if (!beam.path.empty() && beam.path.front() == frame.joints[beam.joints[0]].position)
+      beam.path.erase(beam.path.begin());
     if (!beam.path.empty() && beam.path.back() == frame.joints[beam.joints[1]].position) beam.path.pop_back();
     if (!beamIds.insert(beam.id).second) fail(source, path, "duplicate beam id " + std::to_string(beam.id));
     frame.beams.push_back(beam);
@@ -151,18 +166,21 @@ FrameDocument frameFromJsonObject(const json& root, const std::string& source, d
   if (object.contains("jointVoxels")) {
     const json& voxels = object["jointVoxels"];
     if (!voxels.is_array() || voxels.size() != f.joints.size()) {
-      fail(source, prefix + "jointVoxels", "expected one list of 27 beam ids per joint (" + std::to_string(f.joints.size()) + " joints)");
+      fail(source, prefix + "jointVoxels",
+           "expected one list of 27 beam ids per joint (" + std::to_string(f.joints.size()) + " joints)");
     }
     std::map<int, int> beamIndex;
     for (size_t b = 0; b < f.beams.size(); ++b) beamIndex[f.beams[b].id] = static_cast<int>(b);
     for (size_t j = 0; j < voxels.size(); ++j) {
       const std::string path = prefix + "jointVoxels[" + std::to_string(j) + "]";
-      if (!voxels[j].is_array() || voxels[j].size() != kJointVoxelCount) fail(source, path, "expected 27 beam ids (x fastest, then y, then z)");
+      if (!voxels[j].is_array() || voxels[j].size() != kJointVoxelCount)
+        fail(source, path, "expected 27 beam ids (x fastest, then y, then z)");
       JointLabels labels{};
       for (int v = 0; v < kJointVoxelCount; ++v) {
         const int id = idAt(voxels[j][v], source, path + "[" + std::to_string(v) + "]");
         const auto it = beamIndex.find(id);
-        if (it == beamIndex.end()) fail(source, path + "[" + std::to_string(v) + "]", "beam " + std::to_string(id) + " is not in 'beams'");
+        if (it == beamIndex.end())
+          fail(source, path + "[" + std::to_string(v) + "]", "beam " + std::to_string(id) + " is not in 'beams'");
         labels[v] = it->second;
       }
       document.labels.push_back(labels);
@@ -173,18 +191,24 @@ FrameDocument frameFromJsonObject(const json& root, const std::string& source, d
   if (object.contains("removal")) {
     const json& removal = object["removal"];
     if (!removal.is_array() || removal.size() + 1 != f.beams.size()) {
-      fail(source, prefix + "removal", "expected a direction for every beam but the last (" + std::to_string(f.beams.size() - 1) + " entries)");
+      fail(source, prefix + "removal",
+           "expected a direction for every beam but the last (" + std::to_string(f.beams.size() - 1) + " entries)");
     }
     for (size_t k = 0; k < removal.size(); ++k) {
       const std::string path = prefix + "removal[" + std::to_string(k) + "]";
       const json& entry = removal[k];
-      if (!entry.is_object() || !entry.contains("part") || !entry.contains("direction")) fail(source, path, "expected {part, direction}");
+      if (!entry.is_object() || !entry.contains("part") || !entry.contains("direction"))
+        fail(source, path, "expected {part, direction}");
       const int part = idAt(entry["part"], source, path + ".part");
       if (part != f.beams[document.order[k]].id) {
-        fail(source, path + ".part", "beams leave in id order: expected " + std::to_string(f.beams[document.order[k]].id) + ", found " + std::to_string(part));
+        fail(source, path + ".part",
+             "beams leave in id order: expected " + std::to_string(f.beams[document.order[k]].id) + ", found " +
+                 std::to_string(part));
       }
       const int face = entry["direction"].is_string() ? directionFromLabel(entry["direction"].get<std::string>()) : -1;
-      if (face < 0) fail(source, path + ".direction", "expected an axis direction such as \"+y\", found " + entry["direction"].dump().substr(0, 40));
+      if (face < 0)
+        fail(source, path + ".direction",
+             "expected an axis direction such as \"+y\", found " + entry["direction"].dump().substr(0, 40));
       document.directions.push_back(cubeFaceNormal(face));
     }
   }
@@ -205,8 +229,9 @@ FrameDocument frameFromObj(const std::string& text, const std::string& source, d
     const long value = std::strtol(digits.c_str(), &end, 10);
     const long count = static_cast<long>(frame.joints.size());
     if (digits.empty() || *end != '\0' || value == 0 || value > count || value < -count) {
-      throwBadInput(location(source, lineNumber, token.column), "vertex reference '" + token.text + "' is not a vertex defined above (" +
-                                                                     std::to_string(count) + " so far)");
+      throwBadInput(
+          location(source, lineNumber, token.column),
+          "vertex reference '" + token.text + "' is not a vertex defined above (" + std::to_string(count) + " so far)");
     }
     return static_cast<int>(value > 0 ? value - 1 : count + value);
   };
@@ -226,18 +251,22 @@ FrameDocument frameFromObj(const std::string& text, const std::string& source, d
         char* end = nullptr;
         joint.position[k] = std::strtod(line.tokens[1 + k].text.c_str(), &end);
         if (*end != '\0' || !std::isfinite(joint.position[k]) || std::abs(joint.position[k]) > kMaxCoordinate) {
-          throwBadInput(location(source, line.number, line.tokens[1 + k].column), "vertex coordinate '" + line.tokens[1 + k].text + "' is not a finite number up to 1e9");
+          throwBadInput(location(source, line.number, line.tokens[1 + k].column),
+                        "vertex coordinate '" + line.tokens[1 + k].text + "' is not a finite number up to 1e9");
         }
       }
-      if (frame.joints.size() >= static_cast<size_t>(kMaxFrameJoints)) throw Error(ErrorCode::TooLarge, source + ": more than " + std::to_string(kMaxFrameJoints) + " joints");
+      if (frame.joints.size() >= static_cast<size_t>(kMaxFrameJoints))
+        throw Error(ErrorCode::TooLarge, source + ": more than " + std::to_string(kMaxFrameJoints) + " joints");
       frame.joints.push_back(joint);
     } else if (record == "l" || record == "f") {
       std::vector<int> vertices;
       for (size_t t = 1; t < line.tokens.size(); ++t) vertices.push_back(vertexIndex(line.tokens[t], line.number));
-      if (vertices.size() < 2) throwBadInput(location(source, line.number), "'" + record + "' needs at least two vertices");
+      if (vertices.size() < 2)
+        throwBadInput(location(source, line.number), "'" + record + "' needs at least two vertices");
       for (size_t k = 0; k + 1 < vertices.size(); ++k) addEdge(vertices[k], vertices[k + 1]);
       if (record == "f" && vertices.size() > 2) addEdge(vertices.back(), vertices.front());
-      if (edges.size() > static_cast<size_t>(kMaxFrameBeams)) throw Error(ErrorCode::TooLarge, source + ": more than " + std::to_string(kMaxFrameBeams) + " beams");
+      if (edges.size() > static_cast<size_t>(kMaxFrameBeams))
+        throw Error(ErrorCode::TooLarge, source + ": more than " + std::to_string(kMaxFrameBeams) + " beams");
     }
   }
   for (size_t b = 0; b < edges.size(); ++b) {
@@ -283,7 +312,8 @@ FrameDocument frameFromFpuz(const std::string& text, const std::string& source, 
     char* end = nullptr;
     const double value = std::strtod(token.text.c_str(), &end);
     if (*end != '\0' || !std::isfinite(value) || std::abs(value) > kMaxCoordinate) {
-      throwBadInput(location(source, where(at - 1), token.column), what + " '" + token.text + "' is not a finite number up to 1e9");
+      throwBadInput(location(source, where(at - 1), token.column),
+                    what + " '" + token.text + "' is not a finite number up to 1e9");
     }
     return value;
   };
@@ -319,20 +349,26 @@ FrameDocument frameFromFpuz(const std::string& text, const std::string& source, 
   for (int64_t j = 0; j < jointCount; ++j) {
     for (int v = 0; v < kJointVoxelCount; ++v) {
       const int64_t value = integer("a voxel value", 0, beamCount + 1);
-      if (value == 0) throwBadInput(location(source, where(at - 1)), "joint " + std::to_string(j + 1) + " has an empty voxel (0); every voxel of a joint cube belongs to a beam here");
+      if (value == 0)
+        throwBadInput(location(source, where(at - 1)),
+                      "joint " + std::to_string(j + 1) +
+                          " has an empty voxel (0); every voxel of a joint cube belongs to a beam here");
       if (value == beamCount + 1) assigned = false;
       labels[j][v] = static_cast<int>(value - 1);
     }
   }
-  if (at != tokens.size()) throwBadInput(location(source, where(at), tokens[at].column), "unexpected data after the last joint");
+  if (at != tokens.size())
+    throwBadInput(location(source, where(at), tokens[at].column), "unexpected data after the last joint");
   FrameDocument document;
   document.layout = layoutFrame(std::move(frame), source);
   const Frame& f = document.layout.frame;
   for (size_t b = 0; b < f.beams.size(); ++b) {
     for (int end = 0; end < 2; ++end) {
       if (document.layout.endFace[b][end] != faces[b][end]) {
-        throwBadInput(source, "beam " + std::to_string(b + 1) + ": the file has it enter the " + cubeFaceName(faces[b][end]) + " face of joint " +
-                                  std::to_string(f.beams[b].joints[end] + 1) + ", but its direction there is closest to the " +
+        throwBadInput(source, "beam " + std::to_string(b + 1) + ": the file has it enter the " +
+                                  cubeFaceName(faces[b][end]) + " face of joint " +
+                                  std::to_string(f.beams[b].joints[end] + 1) +
+                                  ", but its direction there is closest to the " +
                                   cubeFaceName(document.layout.endFace[b][end]) + " face");
       }
     }
@@ -373,7 +409,8 @@ json frameToJson(const FrameDocument& document) {
   if (!document.directions.empty()) {
     json removal = json::array();
     for (size_t k = 0; k < document.directions.size(); ++k) {
-      removal.push_back({{"part", frame.beams[document.order[k]].id}, {"direction", directionName(document.directions[k])}});
+      removal.push_back(
+          {{"part", frame.beams[document.order[k]].id}, {"direction", directionName(document.directions[k])}});
     }
     root["removal"] = removal;
   }
@@ -389,7 +426,8 @@ FrameDocument parseFrameText(const std::string& text, const std::string& source,
   if (isFpuzSource(source)) return frameFromFpuz(text, source, jointSize);
   const json root = parseJsonText(text, source);
   if (!root.is_object()) fail(source, "", "the JSON document must be an object");
-  if (!root.contains("kind") || root["kind"] != "frame") fail(source, "kind", "expected \"frame\" for a frame structure");
+  if (!root.contains("kind") || root["kind"] != "frame")
+    fail(source, "kind", "expected \"frame\" for a frame structure");
   return frameFromJsonObject(root, source, jointSize);
 }
 
@@ -409,8 +447,10 @@ std::string frameDocumentToJson(const FrameDocument& document, int indent) {
   return root.dump(indent);
 }
 
-std::string frameResultToJson(const FrameLayout& layout, const FrameDesignResult& result, const std::string& name, int indent) {
-  if (result.status != FrameDesignStatus::Success) throwBadInput("", "only a successful frame design has a result document");
+std::string frameResultToJson(const FrameLayout& layout, const FrameDesignResult& result, const std::string& name,
+                              int indent) {
+  if (result.status != FrameDesignStatus::Success)
+    throwBadInput("", "only a successful frame design has a result document");
   // Beams renumbered in removal order: part 1 is the key.
   Frame frame = layout.frame;
   frame.beams.clear();
@@ -452,7 +492,8 @@ AssemblyDocument assemblyDocumentFromFrame(const FrameDocument& frameDocument) {
 
 FrameDocument frameFromAssemblyDocument(const AssemblyDocument& document, const std::string& source) {
   if (document.kind != AssemblyKind::Frame || document.geometryJson.empty()) {
-    throwBadInput(source, std::string("expected a frame structure, this is a ") + assemblyKindName(document.kind) + " document");
+    throwBadInput(
+        source, std::string("expected a frame structure, this is a ") + assemblyKindName(document.kind) + " document");
   }
   const json root = json::parse(document.geometryJson);
   if (!root.contains("beams")) throwBadInput(source, "this frame document has contacts but no beams");
@@ -482,7 +523,8 @@ std::string formatFpuz(const FrameDocument& document) {
     return std::string(buffer);
   };
   std::string out = std::to_string(frame.joints.size()) + " " + number(layout.voxelSize) + "\n";
-  for (const FrameJoint& joint : frame.joints) out += number(joint.position[0]) + " " + number(joint.position[1]) + " " + number(joint.position[2]) + "\n";
+  for (const FrameJoint& joint : frame.joints)
+    out += number(joint.position[0]) + " " + number(joint.position[1]) + " " + number(joint.position[2]) + "\n";
   out += std::to_string(frame.beams.size()) + "\n";
   for (int beam : document.order) {
     out += std::to_string(6 * frame.beams[beam].joints[0] + layout.endFace[beam][0]) + " " +

@@ -12,7 +12,8 @@ namespace desia {
 // A document of kind "frame" with `joints` and `beams` (at the top or inside `frame`): the frame
 // validated, parts = beams, contacts = the faces between the voxels of different beams when its
 // joints are designed. Throws BadInput naming `source`.
-AssemblyDocument frameAssemblyDocumentFromJson(const nlohmann::json& root, const std::string& source, const std::string& name);
+AssemblyDocument frameAssemblyDocumentFromJson(const nlohmann::json& root, const std::string& source,
+                                               const std::string& name);
 
 // True when `source` names a FrameInterlock .fpuz file.
 bool isFpuzSource(const std::string& source);

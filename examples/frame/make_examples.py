@@ -105,37 +105,51 @@ def scaffold_300():
 
 
 def flower():
-    # After the FLOWER of Fig. 1: curved beams. Six petals: two rings of six joints (the upper ring
-    # wider), joined by arcs that bulge outwards, and a stem: a centre joint below joined to the
-    # lower ring by four curved spokes... see the beam list below. Every path point stays a voxel
-    # away from the joint cubes.
-    n = 6
-    lower_r, upper_r, lower_y, upper_y = 400, 700, 300, 800
-    joints = []
-    for k in range(n):
-        a = 2 * math.pi * (k + 0.25) / n
-        joints.append([lower_r * math.cos(a), lower_y, lower_r * math.sin(a)])
-    for k in range(n):
-        a = 2 * math.pi * (k + 0.75) / n
-        joints.append([upper_r * math.cos(a), upper_y, upper_r * math.sin(a)])
-    joints.append([0, 0, 0])  # the stem's foot
+    # After the FLOWER of Fig. 1: 23 curved beams. The topology of a 2 x 1 x 1-cell lattice (20
+    # beams) with a stem loop below its middle (3 beams); the upper joints spread out and up like
+    # an opening flower, and every beam bows outwards through a path: it leaves each joint straight
+    # out of the face the lattice gives it (so the face is never in doubt), then arcs.
+    cell = 500
+    grid = [(x, y, z) for y in (0, 1) for z in (0, 1) for x in (0, 1, 2)]
+    centre = [cell, 0, cell / 2]
+
+    def place(x, y, z):
+        p = [x * cell, y * cell, z * cell]
+        if y == 1:  # the upper ring opens: farther from the axis, and higher
+            p = [centre[0] + 1.3 * (p[0] - centre[0]), 650, centre[2] + 1.6 * (p[2] - centre[2])]
+        return p
+
+    joints = [place(*g) for g in grid]
+    index = {g: k for k, g in enumerate(grid)}
+    ends = []  # (joint a, face normal a, joint b, face normal b)
+    for g in grid:
+        for axis in range(3):
+            q = list(g)
+            q[axis] += 1
+            if tuple(q) in index:
+                n = [0, 0, 0]
+                n[axis] = 1
+                ends.append((index[g], n, index[tuple(q)], [-c for c in n]))
+    joints.append([cell, -400, 0])     # stem joints below the middle of the lower ring
+    joints.append([cell, -400, cell])
+    s1, s2 = len(joints) - 2, len(joints) - 1
+    ends.append((index[(1, 0, 0)], [0, -1, 0], s1, [0, 1, 0]))
+    ends.append((index[(1, 0, 1)], [0, -1, 0], s2, [0, 1, 0]))
+    ends.append((s1, [0, 0, 1], s2, [0, 0, -1]))
     beams = []
-
-    def arc(a, b, bulge, lift=0.0):
-        pa, pb = joints[a - 1], joints[b - 1]
-        mid = [(pa[i] + pb[i]) / 2 for i in range(3)]
-        r = math.hypot(mid[0], mid[2]) or 1
-        out = [mid[0] + bulge * mid[0] / r, mid[1] + lift, mid[2] + bulge * mid[2] / r]
-        return {"joints": [a, b], "path": [out]}
-
-    for k in range(n):  # lower ring, bulging outwards
-        beams.append(arc(k + 1, (k + 1) % n + 1, 60))
-    for k in range(n):  # upper ring
-        beams.append(arc(n + k + 1, n + (k + 1) % n + 1, 120, 60))
-    for k in range(n):  # petals: lower joint k to the upper joints on both sides
-        beams.append(arc(k + 1, n + k + 1, 150))
-        beams.append(arc(k + 1, n + (k - 1) % n + 1, 150))
-    return document("FLOWER (after Fig. 1): curved beams", joints[:-1], beams)
+    for a, na, b, nb in ends:
+        pa, pb = joints[a], joints[b]
+        length = math.dist(pa, pb)
+        out = 0.3 * length
+        start = [pa[k] + out * na[k] for k in range(3)]
+        end = [pb[k] + out * nb[k] for k in range(3)]
+        mid = [(start[k] + end[k]) / 2 for k in range(3)]
+        radial = [mid[0] - centre[0], 0, mid[2] - centre[2]]
+        r = math.hypot(radial[0], radial[2]) or 1
+        bow = [0.15 * length * radial[0] / r, 0.08 * length, 0.15 * length * radial[2] / r]
+        beams.append({"joints": [a + 1, b + 1], "path": [start, [mid[k] + bow[k] for k in range(3)], end]})
+    assert len(beams) == 23, len(beams)
+    return document("FLOWER (after Fig. 1): 23 curved beams", joints, beams)
 
 
 def main():
@@ -144,6 +158,7 @@ def main():
     write("cut_point.json", cut_point())
     write("scaffold_92.json", scaffold())
     write("scaffold_300.json", scaffold_300())
+    write("flower.json", flower())
 
 
 if __name__ == "__main__":

@@ -74,6 +74,14 @@ TEST(FrameDesign, ScaffoldOf92BeamsIsInterlocking) {
   ExpectVerifiedResult(scaffold, design(scaffold, 4), 92);
 }
 
+TEST(FrameDesign, FlowerOfCurvedBeamsIsInterlocking) {
+  const FrameDocument flower = loadFrameExample("flower.json");
+  int curved = 0;
+  for (const FrameBeam& beam : flower.layout.frame.beams) curved += beam.path.empty() ? 0 : 1;
+  EXPECT_EQ(curved, 23);
+  ExpectVerifiedResult(flower, design(flower), 23);
+}
+
 TEST(FrameDesign, SameSeedSameBytes) {
   const FrameDocument chair = loadFrameExample("frame_chair.json");
   const std::string first = frameResultToJson(chair.layout, design(chair, 7));
@@ -132,22 +140,27 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(
         BadFrame{"twoBeamsOneFace", frameJson("[[0,0,0],[100,0,0],[100,10,0]]", "[[1,2],[1,3],[2,3]]"),
                  "joint 1: beams 1 and 2 both enter its +x face"},
-        BadFrame{"tie", frameJson("[[0,0,0],[100,100,0],[200,0,0]]", "[[1,2],[2,3],[1,3]]"),
-                 "joint 1: beam 1 leaves along (0.707107, 0.707107, 0), as close to the cube's +x face as to its +y face"},
-        BadFrame{"valence7", frameJson("[[0,0,0],[100,0,0],[-100,0,0],[0,100,0],[0,-100,0],[0,0,100],[0,0,-100],[100,100,100]]",
-                                       "[[1,2],[1,3],[1,4],[1,5],[1,6],[1,7],[1,8]]"),
+        BadFrame{
+            "tie", frameJson("[[0,0,0],[100,100,0],[200,0,0]]", "[[1,2],[2,3],[1,3]]"),
+            "joint 1: beam 1 leaves along (0.707107, 0.707107, 0), as close to the cube's +x face as to its +y face"},
+        BadFrame{"valence7",
+                 frameJson("[[0,0,0],[100,0,0],[-100,0,0],[0,100,0],[0,-100,0],[0,0,100],[0,0,-100],[100,100,100]]",
+                           "[[1,2],[1,3],[1,4],[1,5],[1,6],[1,7],[1,8]]"),
                  "joint 1 joins 7 beams (1, 2, 3, 4, 5, 6, 7)"},
         BadFrame{"zeroLength", frameJson("[[0,0,0],[0,0,0]]", "[[1,2]]"), "beam 1 has zero length"},
         BadFrame{"loop", frameJson("[[0,0,0],[1,0,0]]", "[[1,1]]"), "beam 1 starts and ends at joint 1"},
         BadFrame{"duplicate", frameJson("[[0,0,0],[100,0,0]]", "[[1,2],[2,1]]"), "beams 1 and 2 are the same beam"},
         BadFrame{"overlap", frameJson("[[0,0,0],[100,0,0],[0,100,0]]", "[[1,2],[1,3]]", R"("jointSize": 100, )"),
-                 "the joint cubes of joint 1 and joint 3 overlap or touch: the joints are 100 apart along an axis and a cube is 100 wide"},
+                 "the joint cubes of joint 1 and joint 3 overlap or touch: the joints are 100 apart along an axis and "
+                 "a cube is 100 wide"},
         BadFrame{"fallsApart", frameJson("[[0,0,0],[100,0,0],[0,500,0],[100,500,0]]", "[[1,2],[3,4]]"),
                  "the frame falls apart: joint 3 (with beam 2) is not connected to joint 1"},
-        BadFrame{"lonelyJoint", frameJson("[[0,0,0],[100,0,0],[500,500,500]]", "[[1,2]]"), "joint 3 at (500, 500, 500) joins no beam"},
+        BadFrame{"lonelyJoint", frameJson("[[0,0,0],[100,0,0],[500,500,500]]", "[[1,2]]"),
+                 "joint 3 at (500, 500, 500) joins no beam"},
         BadFrame{"unknownJoint", frameJson("[[0,0,0],[100,0,0]]", "[[1,3]]"), "beams[0]: joint 3 is not in 'joints'"},
-        BadFrame{"crossing", frameJson("[[0,0,0],[1000,0,0],[500,-500,0],[500,500,0],[0,500,0],[1000,-500,0]]",
-                                       "[[1,2],[3,4],[4,5],[5,1],[3,6],[6,2]]"),
+        BadFrame{"crossing",
+                 frameJson("[[0,0,0],[1000,0,0],[500,-500,0],[500,500,0],[0,500,0],[1000,-500,0]]",
+                           "[[1,2],[3,4],[4,5],[5,1],[3,6],[6,2]]"),
                  "beams 1 and 2 cross or overlap"},
         BadFrame{"thickBeam", frameJson("[[0,0,0],[100,0,0]]", "[[1,2]]", R"("jointSize": 30, "beamSection": 20, )"),
                  "the beam section 20 must be positive and at most the voxel size 10"}));
@@ -166,7 +179,9 @@ TEST(FrameFormats, ObjFacesAndLinesGiveBeamsOnce) {
     parseFrameText("v 0 0 0\nl 1 2\n", "bad.obj");
     FAIL();
   } catch (const Error& e) {
-    EXPECT_NE(std::string(e.what()).find("bad.obj:2:5: vertex reference '2' is not a vertex defined above"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("bad.obj:2:5: vertex reference '2' is not a vertex defined above"),
+              std::string::npos)
+        << e.what();
   }
 }
 
@@ -235,7 +250,7 @@ TEST(FrameGeometry, SweptBoxesCollideOnlyWhenMovingInto) {
   EXPECT_TRUE(sweptBoxesCollide(a, {1, 0, 0}, b));
   EXPECT_FALSE(sweptBoxesCollide(a, {-1, 0, 0}, b));
   EXPECT_FALSE(sweptBoxesCollide(a, {0, 1, 0}, b));  // sliding along the contact
-  b.centre = {3, 0.9, 0};  // ahead, overlapping in y
+  b.centre = {3, 0.9, 0};                            // ahead, overlapping in y
   EXPECT_TRUE(sweptBoxesCollide(a, {1, 0, 0}, b));
   b.centre = {3, 1.0, 0};  // ahead, only touching in y
   EXPECT_FALSE(sweptBoxesCollide(a, {1, 0, 0}, b));

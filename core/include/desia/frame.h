@@ -38,10 +38,10 @@ struct FrameJoint {
 };
 
 struct FrameBeam {
-  int id = 0;                // the id the user sees
-  int inputId = 0;           // the beam's id in the design it came from (result documents), else = id
+  int id = 0;                       // the id the user sees
+  int inputId = 0;                  // the beam's id in the design it came from (result documents), else = id
   std::array<int, 2> joints{0, 0};  // internal joint indices of its two ends
-  std::vector<Vec3> path;    // interior points of a curved beam (polyline), none for a straight beam
+  std::vector<Vec3> path;           // interior points of a curved beam (polyline), none for a straight beam
 };
 
 struct Frame {
@@ -53,10 +53,10 @@ struct Frame {
 
 // A validated frame with what follows from its geometry.
 struct FrameLayout {
-  Frame frame;                              // sizes resolved (never 0)
-  double voxelSize = 0;                     // jointSize / 3
-  std::vector<std::array<int, 2>> endFace;  // per beam, the face it enters at joints[0] and joints[1]
-  std::vector<std::array<int, 6>> faceBeam;  // per joint, the beam entering each face, or -1
+  Frame frame;                                 // sizes resolved (never 0)
+  double voxelSize = 0;                        // jointSize / 3
+  std::vector<std::array<int, 2>> endFace;     // per beam, the face it enters at joints[0] and joints[1]
+  std::vector<std::array<int, 6>> faceBeam;    // per joint, the beam entering each face, or -1
   std::vector<std::vector<int>> beamsAtJoint;  // per joint, its beams (sorted)
 };
 

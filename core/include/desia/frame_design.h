@@ -15,8 +15,8 @@
 namespace desia {
 
 struct FrameDesignProgress {
-  int64_t nodes = 0;    // construction-tree nodes visited
-  int depth = 0;        // beams placed in the current node
+  int64_t nodes = 0;  // construction-tree nodes visited
+  int depth = 0;      // beams placed in the current node
   int bestDepth = 0;
   int targetParts = 0;  // the number of beams
   double seconds = 0;
@@ -24,8 +24,8 @@ struct FrameDesignProgress {
 
 struct FrameDesignOptions {
   uint64_t seed = 1;
-  int candidates = 2;             // children kept per node (the paper's m; FrameInterlock keeps 2)
-  double timeLimitSeconds = 60;   // 0 = none
+  int candidates = 2;            // children kept per node (the paper's m; FrameInterlock keeps 2)
+  double timeLimitSeconds = 60;  // 0 = none
   int64_t nodeLimit = 1'000'000;
   // Called at every node of the search; return false to cancel.
   std::function<bool(const FrameDesignProgress&)> onProgress;
@@ -36,11 +36,11 @@ const char* frameDesignStatusName(FrameDesignStatus status);  // "success", "not
 
 struct FrameDesignResult {
   FrameDesignStatus status = FrameDesignStatus::NotFound;
-  std::string message;               // one sentence for the user
-  std::vector<int> order;            // beam indices: the key first, the last beam last
-  std::vector<Vec3> directions;      // axis direction order[k] leaves along (none for the last beam)
-  std::vector<JointLabels> labels;   // per joint, the owning beam of each voxel (internal indices)
-  Assembly assembly;                 // parts = beams in `order` (part 1 = key), voxel contacts
+  std::string message;              // one sentence for the user
+  std::vector<int> order;           // beam indices: the key first, the last beam last
+  std::vector<Vec3> directions;     // axis direction order[k] leaves along (none for the last beam)
+  std::vector<JointLabels> labels;  // per joint, the owning beam of each voxel (internal indices)
+  Assembly assembly;                // parts = beams in `order` (part 1 = key), voxel contacts
   FrameDesignProgress progress;
 };
 
