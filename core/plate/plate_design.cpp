@@ -80,6 +80,7 @@ PlateGraph buildPlateGraph(const std::vector<Plate>& plates, const std::vector<P
   }
   for (const Plate& plate : plates) graph.thicknessAxis.push_back(plateThicknessAxis(plate));
   for (const PlateContact& contact : contacts) graph.tenonSites.push_back(tenonSiteOf(plates, contact, jointOptions));
+  staggerOpposingSites(plates, &graph.tenonSites);
   return graph;
 }
 
@@ -425,7 +426,8 @@ PlateDesignResult PlateJointPlanner::run() {
     if ((options_.timeLimitSeconds > 0 && progress.seconds > options_.timeLimitSeconds) || progress.nodes > options_.nodeLimit) {
       result.status = PlateDesignStatus::LimitReached;
       result.message = "no plan within the limits (" + std::to_string(progress.nodes) + " nodes; deepest " +
-                       std::to_string(progress.bestDepth) + " of " + std::to_string(graph_.plateCount) + " plates)";
+                       std::to_string(progress.bestDepth) + " of " + std::to_string(graph_.plateCount) + " plates" +
+                       (lastRejection_.empty() ? std::string(")") : "; the last complete plan failed: " + lastRejection_ + ")");
       return result;
     }
     if (pending.back().empty()) {  // no child left here: back to the parent's next sibling

@@ -187,6 +187,22 @@ std::vector<std::pair<double, double>> tenonSpans(const std::vector<Plate>& plat
   const double length = site.to - site.from;
   const double thickness = plateThickness(plates[site.tenonPlate]);
   const int count = options.tenonCount > 0 ? options.tenonCount : (length >= 8 * thickness ? 2 : 1);
+  if (site.stagger != 0) {
+    // 4 count + 1 equal pieces; this side's tenons in pieces 1, 5, 9, ... or 3, 7, 11, ...
+    const double piece = length / (4 * count + 1);
+    const double width = std::min(options.tenonWidth > 0 ? options.tenonWidth : piece, piece);
+    if (width < 2 * kMortiseMargin) return {};
+    // Pieces are counted the same way on both sides: along the edge's canonical direction.
+    const bool reversed = dot(site.along, canonicalSign(site.along)) < 0;
+    std::vector<std::pair<double, double>> spans;
+    for (int j = 0; j < count; ++j) {
+      const int index = 4 * j + (site.stagger > 0 ? 1 : 3);
+      const double centre = site.from + piece * ((reversed ? 4 * count - index : index) + 0.5);
+      spans.push_back({centre - width / 2, centre + width / 2});
+    }
+    std::sort(spans.begin(), spans.end());
+    return spans;
+  }
   const double width = options.tenonWidth > 0 ? options.tenonWidth : length / (2 * count + 1);
   const double pitch = length / count;
   // Tenons need room between them and at the ends: a tenon never wider than its share less a gap.
@@ -197,6 +213,32 @@ std::vector<std::pair<double, double>> tenonSpans(const std::vector<Plate>& plat
     spans.push_back({centre - width / 2, centre + width / 2});
   }
   return spans;
+}
+
+void staggerOpposingSites(const std::vector<Plate>& plates, std::vector<std::optional<TenonSite>>* sites) {
+  auto footprintBox = [&](const TenonSite& site) {
+    const Plate& mortisePlate = plates[site.mortisePlate];
+    const PlaneFrame frame(mortisePlate.bottom[0][0], plateThicknessAxis(mortisePlate));
+    const Loop rect = footprint(plates[site.tenonPlate], site, site.from, site.to, 0, plateThickness(plates[site.tenonPlate]));
+    std::array<double, 4> box{HUGE_VAL, HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+    for (const Vec3& p : rect) {
+      const double x = dot(frame.offset(p), frame.u), y = dot(frame.offset(p), frame.v);
+      box = {std::min(box[0], x), std::min(box[1], y), std::max(box[2], x), std::max(box[3], y)};
+    }
+    return box;
+  };
+  for (size_t i = 0; i < sites->size(); ++i) {
+    for (size_t j = i + 1; j < sites->size(); ++j) {
+      std::optional<TenonSite>& a = (*sites)[i];
+      std::optional<TenonSite>& b = (*sites)[j];
+      if (!a || !b || a->mortisePlate != b->mortisePlate || dot(a->intoMortise, b->intoMortise) > -0.5) continue;
+      const std::array<double, 4> p = footprintBox(*a), q = footprintBox(*b);
+      if (p[2] <= q[0] + kTolerance || q[2] <= p[0] + kTolerance || p[3] <= q[1] + kTolerance || q[3] <= p[1] + kTolerance) continue;
+      const bool aFromBelow = dot(a->intoMortise, plateThicknessAxis(plates[a->mortisePlate])) > 0;
+      a->stagger = aFromBelow ? 1 : -1;
+      b->stagger = -a->stagger;
+    }
+  }
 }
 
 std::optional<TenonSite> tenonSiteOf(const std::vector<Plate>& plates, const PlateContact& contact, const JointCutOptions& options) {

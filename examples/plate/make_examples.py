@@ -46,6 +46,23 @@ def table():
     ])
 
 
+def long_table(bays, bay=600.0, t=18.0, depth=600.0, height=700.0):
+    """A long table of `bays` bays, 4 bays + 2 plates: a top over a row of side panels, a front and
+    a back apron and a shelf in each bay. The middle panels carry aprons and shelves from both
+    sides at the same place: their tenons take turns (staggered) so the mortises never meet."""
+    length = bays * (bay + t) + t
+    plates = [box(1, "top", [-25, height, -25], [length + 25, height + t, depth + 25])]
+    for i in range(bays + 1):
+        x = i * (bay + t)
+        plates.append(box(len(plates) + 1, f"side {i + 1}", [x, 0, 0], [x + t, height, depth]))
+    for i in range(bays):
+        x0 = i * (bay + t) + t
+        plates.append(box(len(plates) + 1, f"front apron {i + 1}", [x0, 550, 20], [x0 + bay, height, 20 + t]))
+        plates.append(box(len(plates) + 1, f"back apron {i + 1}", [x0, 550, depth - 20 - t], [x0 + bay, height, depth - 20]))
+        plates.append(box(len(plates) + 1, f"shelf {i + 1}", [x0, 150, 40], [x0 + bay, 150 + t, depth - 40]))
+    return document(f"LONG TABLE of {bays} bays ({len(plates)} plates): through mortise-and-tenon joints everywhere", plates)
+
+
 def chair(with_bar):
     # Fig. 18: a seat on two legs with a back; the back panel touches only the seat, so the seat
     # is a cut point. The repaired chair adds a bar joining the back to the legs.
@@ -153,6 +170,8 @@ def main():
         "bookshelf.json": shelf(3, 3, "BOOKSHELF (after Fig. 1): 3 x 3 cells, two sides, 4 shelves and 6 uprights (12 plates)"),
         "bookcase_123.json": shelf(10, 12, "BOOKCASE of 10 x 12 cells: two sides, 11 shelves and 110 uprights (123 plates)"),
         "table.json": table(),
+        "bench_2_bays.json": long_table(2),
+        "long_table_102.json": long_table(25),
         "chair_cut_point.json": chair(False),
         "chair_repaired.json": chair(True),
         "mitred_box.json": mitred_box(),

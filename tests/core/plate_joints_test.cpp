@@ -288,6 +288,40 @@ TEST(PlateJoints, FlushBoardsGetOpenMortisesAndTenonsTooWideForAJointGetNone) {
   EXPECT_NEAR(totalVolume(cut), totalVolume(flush), 1e-2);
 }
 
+TEST(PlateJoints, OpposingTenonsTakeTurnsInAMiddlePanel) {
+  // The middle side panel of a two-bay table carries aprons and shelves from both sides at the
+  // same place: without staggering, their mortises would be the same holes.
+  const AssemblyDocument bench = loadPlateExample("bench_2_bays.json");
+  const std::vector<PlateContact> contacts = computePlateContacts(bench.plates, {});
+  std::vector<std::optional<TenonSite>> sites;
+  for (const PlateContact& contact : contacts) sites.push_back(tenonSiteOf(bench.plates, contact));
+  staggerOpposingSites(bench.plates, &sites);
+  const int middle = 2;  // plate 3, "side 2"
+  ASSERT_EQ(bench.plates[middle].name, "side 2");
+  int staggered = 0;
+  std::vector<std::pair<double, double>> heights;  // absolute y spans of the aprons' tenons in it
+  for (const auto& site : sites) {
+    if (!site || site->mortisePlate != middle) continue;
+    EXPECT_NE(site->stagger, 0);
+    ++staggered;
+    for (const auto& [start, end] : tenonSpans(bench.plates, *site, {})) {
+      const double base = bench.plates[site->tenonPlate].bottom[0][site->edge][1];
+      const double a = base + start * site->along[1], b = base + end * site->along[1];
+      if (std::abs(site->along[1]) > 0.5) heights.push_back({std::min(a, b), std::max(a, b)});
+    }
+  }
+  EXPECT_EQ(staggered, 6) << "two aprons and a shelf from each side";
+  std::sort(heights.begin(), heights.end());
+  for (size_t k = 1; k < heights.size(); ++k) {
+    if (heights[k].first == heights[k - 1].first) continue;  // front and back aprons: other places along z
+    EXPECT_GE(heights[k].first, heights[k - 1].second - 1e-9) << "tenons from the two sides do not overlap";
+  }
+  const PlateDesignResult result = designCut(bench.plates);
+  ASSERT_EQ(result.status, PlateDesignStatus::Success) << result.message;
+  EXPECT_EQ(result.jointedPlates[middle].bottom.size(), 1u + 12u) << "12 separate mortises";
+  EXPECT_NEAR(totalVolume(result.jointedPlates), totalVolume(bench.plates), 1e-2);
+}
+
 TEST(PlateJoints, DesignsThatNeedOtherJointsSaySoAndPlanWithThePaperAlone) {
   const AssemblyDocument box = loadPlateExample("mitred_box.json");
   const PlateDesignResult cut = designCut(box.plates);

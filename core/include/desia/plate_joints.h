@@ -37,6 +37,10 @@ struct TenonSite {
   // and the ways between them, for open ones).
   std::vector<Vec3> exits() const;
   Vec3 across{0, 0, 0};  // the tenon plate's thickness axis
+  // 0: tenons spread along the joint. +1 / -1: two plates stand on opposite faces of the mortise
+  // plate at the same place, and their tenons take turns (this one's in the odd quarters or in
+  // the others), so their mortises never meet.
+  int stagger = 0;
 };
 
 struct JointCutOptions {
@@ -51,6 +55,10 @@ struct JointCutOptions {
 // plate is flush with it (open); nothing otherwise.
 std::optional<TenonSite> tenonSiteOf(const std::vector<Plate>& plates, const PlateContact& contact,
                                      const JointCutOptions& options = {});
+
+// Where two sites' plates stand on opposite faces of one mortise plate over the same region,
+// gives them opposite staggers (see TenonSite::stagger). Sites are per contact, some empty.
+void staggerOpposingSites(const std::vector<Plate>& plates, std::vector<std::optional<TenonSite>>* sites);
 
 // The tenons' positions along a site: [start, end) distances from the side's first vertex.
 std::vector<std::pair<double, double>> tenonSpans(const std::vector<Plate>& plates, const TenonSite& site,
