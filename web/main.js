@@ -42,12 +42,17 @@ const EXAMPLES = [
   { file: 'bunny_origin.puz', label: 'Bunny', shape: true },
   { file: 'dog_origin.puz', label: 'Dog', shape: true },
   { file: 'table.json', label: 'Table, 6 plates', plate: true },
+  { file: 'bench_2_bays.json', label: 'Table of 2 bays, 10 plates', plate: true },
+  { file: 'long_table_102.json', label: 'Long table, 102 plates', plate: true },
   { file: 'chair_cut_point.json', label: 'Chair with a cut point, 8 plates', plate: true },
-  { file: 'chair_repaired.json', label: 'Chair repaired, 10 plates', plate: true },
-  { file: 'cabinet.json', label: 'Cabinet under a gable roof, 7 plates', plate: true },
-  { file: 'mitred_box.json', label: 'Mitred box, 6 plates', plate: true },
-  { file: 'bookshelf.json', label: 'Bookshelf, 12 plates', plate: true },
-  { file: 'bookcase_123.json', label: 'Bookcase, 123 plates', plate: true },
+  // Mitred, non-orthogonal or flush boards: designed with Joints "planned only".
+  { file: 'chair_repaired.json', label: 'Chair repaired, 10 plates (planned)', plate: true },
+  { file: 'cabinet.json', label: 'Cabinet under a gable roof, 7 plates (planned)', plate: true },
+  { file: 'mitred_box.json', label: 'Mitred box, 6 plates (planned)', plate: true },
+  { file: 'dodecahedron.json', label: 'Dodecahedron, 12 mitred plates (planned)', plate: true },
+  { file: 'lizard.json', label: 'Lizard, 38 mitred plates (planned)', plate: true },
+  { file: 'bookshelf.json', label: 'Bookshelf, 12 plates (planned)', plate: true },
+  { file: 'bookcase_123.json', label: 'Bookcase, 123 plates (planned)', plate: true },
 ];
 const EXAMPLES_URL = new URL('../examples/voxel/', import.meta.url);
 const PLATE_EXAMPLES_URL = new URL('../examples/plate/', import.meta.url);
