@@ -185,6 +185,11 @@ export interface DesignResult {
   document: AssemblyDocument | null;
   /** The check that verified it (the same fields as `desia check --json`), or null. */
   verification: CheckReport | null;
+  /**
+   * designPlate with status 'cut-point': the repair the core proposes (bars that bypass the cut
+   * point, paper Fig. 18) as a plate design to open and design, or null when none was found.
+   */
+  repair?: { message: string; document: AssemblyDocument } | null;
 }
 
 

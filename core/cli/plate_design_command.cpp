@@ -5,6 +5,7 @@
 #include <csignal>
 #include <cstdio>
 #include <iostream>
+#include <optional>
 
 #include "cli_arguments.h"
 #include "cli_files.h"
@@ -15,6 +16,7 @@
 #include "desia/mesh.h"
 #include "desia/plate_design.h"
 #include "desia/plate_design_io.h"
+#include "desia/plate_repair.h"
 
 namespace {
 
@@ -23,10 +25,30 @@ extern "C" void onPlateDesignInterrupt(int) { interrupted = 1; }
 
 [[noreturn]] void usage(const std::string& message) { throw desia::Error(desia::ErrorCode::BadInput, message); }
 
+// A cut point: named, with the repair the core proposes (paper Fig. 18) written to `repairOutput`
+// when asked for, else offered. Exit 1 either way: the design as given cannot interlock.
+int reportCutPoint(const desia::AssemblyDocument& document, const std::string& input, const std::string& message,
+                   const std::string& repairOutput) {
+  std::cerr << "desia: " << input << ": " << message << "\n";
+  const std::optional<desia::PlateRepair> repair = desia::proposeCutPointRepair(document.plates, document.plateOptions);
+  if (!repair) {
+    std::cerr << "desia: no bar joining the groups was found: add a part by hand\n";
+    return 1;
+  }
+  if (repairOutput.empty()) {
+    std::cerr << "desia: a repair exists (" << repair->message << "): write it with --repair REPAIRED.json\n";
+    return 1;
+  }
+  desia::AssemblyDocument repaired = desia::documentFromPlates(repair->plates, document.plateOptions, input, document.name + " (repaired)");
+  desia::cli::writeOutputFile(repairOutput, desia::documentToJson(repaired) + "\n");
+  std::cerr << "desia: " << repair->message << "; wrote " << repairOutput << " (design it with desia design plate)\n";
+  return 1;
+}
+
 }  // namespace
 
 int runPlateDesignCommand(const std::vector<std::string>& args) {
-  std::string input, output;
+  std::string input, output, repairOutput;
   desia::PlateDesignOptions options;
   bool quiet = false;
   for (size_t i = 1; i < args.size(); ++i) {
@@ -43,6 +65,7 @@ int runPlateDesignCommand(const std::vector<std::string>& args) {
     else if (flag == "--candidates") options.candidates = static_cast<int>(desia::cli::integerOption(flag, value, 1, 10000));
     else if (flag == "--node-limit") options.nodeLimit = desia::cli::integerOption(flag, value, 1, 1LL << 50);
     else if (flag == "--time-limit") options.timeLimitSeconds = static_cast<double>(desia::cli::integerOption(flag, value, 1, 10000000));
+    else if (flag == "--repair") repairOutput = value;
     else if (flag == "--joints") options.realization = desia::parseJointRealization(value);
     else if (flag == "--clearance") options.joints.clearance = desia::cli::numberOption(flag, value, 0, 10);
     else if (flag == "--tenon-width") options.joints.tenonWidth = desia::cli::numberOption(flag, value, 1, 10000);
@@ -51,6 +74,7 @@ int runPlateDesignCommand(const std::vector<std::string>& args) {
   }
   if (input.empty()) usage("design plate needs --input DESIGN.json|.obj|.stl");
   if (output.empty() || !desia::cli::hasExtension(output, ".json")) usage("design plate needs --output RESULT.json");
+  if (!repairOutput.empty() && !desia::cli::hasExtension(repairOutput, ".json")) usage("--repair needs a .json file");
   // A design from a modelling tool (one OBJ object per plate, or an STL of separate slabs), or JSON.
   const bool mesh = desia::cli::hasExtension(input, ".obj") || desia::cli::hasExtension(input, ".stl");
   const std::string bytes = desia::cli::readInputFile(input);
@@ -71,6 +95,7 @@ int runPlateDesignCommand(const std::vector<std::string>& args) {
   const desia::PlateDesignResult result = desia::designPlateJoints(document.plates, contacts, options);
   std::signal(SIGINT, SIG_DFL);
   if (live) std::fprintf(stderr, "\r%70s\r", "");
+  if (result.status == desia::PlateDesignStatus::CutPoint) return reportCutPoint(document, input, result.message, repairOutput);
   if (result.status != desia::PlateDesignStatus::Success) {
     std::cerr << "desia: " << input << ": " << result.message << "\n";
     return 1;

@@ -2,11 +2,13 @@
 // The plate joint planner's options and result as JSON, for the WebAssembly module.
 #include <nlohmann/json.hpp>
 
+#include <optional>
 #include <sstream>
 
 #include "desia/check.h"
 #include "desia/error.h"
 #include "desia/plate_design_io.h"
+#include "desia/plate_repair.h"
 #include "io/json_input.h"
 
 namespace desia {
@@ -89,6 +91,14 @@ std::string plateDesignResultToJson(const AssemblyDocument& input, const PlateDe
   } else {
     root["document"] = nullptr;
     root["verification"] = nullptr;
+  }
+  // A cut point: the repair the core proposes (bars that bypass it, Fig. 18) as a design to open.
+  root["repair"] = nullptr;
+  if (result.status == PlateDesignStatus::CutPoint && !input.plates.empty()) {
+    if (const std::optional<PlateRepair> repair = proposeCutPointRepair(input.plates, input.plateOptions)) {
+      const AssemblyDocument repaired = documentFromPlates(repair->plates, input.plateOptions, "repair", input.name + " (repaired)");
+      root["repair"] = {{"message", repair->message}, {"document", json::parse(documentToJson(repaired, -1))}};
+    }
   }
   return root.dump();
 }

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <set>
 
 #include "analysis/vec3.h"
 #include "desia/check.h"
@@ -15,6 +16,7 @@
 #include "desia/plate_design.h"
 #include "desia/plate_design_io.h"
 #include "desia/plate_joints.h"
+#include "desia/plate_repair.h"
 #include "test_support.h"
 
 namespace desia {
@@ -329,6 +331,41 @@ TEST(PlateJoints, DesignsThatNeedOtherJointsSaySoAndPlanWithThePaperAlone) {
   EXPECT_NE(cut.message.find("joints 'planned'"), std::string::npos) << cut.message;
   EXPECT_THROW(parseJointRealization("glued"), Error);
   EXPECT_EQ(parseJointRealization("planned"), JointRealization::Planned);
+}
+
+}  // namespace
+}  // namespace desia
+
+namespace desia {
+namespace {
+
+TEST(PlateRepair, TheChairGetsOneBarFromLegToBackAndNoCutPointIsLeft) {
+  const AssemblyDocument chair = loadPlateExample("chair_cut_point.json");
+  ASSERT_EQ(plateCutPoints(static_cast<int>(chair.plates.size()), computePlateContacts(chair.plates, {})), std::vector<int>{4});
+  const std::optional<PlateRepair> repair = proposeCutPointRepair(chair.plates);
+  ASSERT_TRUE(repair.has_value());
+  ASSERT_EQ(repair->added.size(), 1u) << "one part, as the paper's Fig. 18";
+  const Plate& bar = repair->plates.back();
+  EXPECT_EQ(bar.id, 9);
+  EXPECT_EQ(bar.name, "bar joining plates 1 and 6");
+  EXPECT_EQ(repair->message, "added plate 9, a bar joining plates 1 and 6 past cut point 5");
+  // It lies against the left leg's outer face and the back's edge, outside both: x from -18 to 0.
+  for (const Vec3& p : bar.bottom[0]) EXPECT_EQ(p[0], 0.0);
+  for (const Vec3& p : bar.top[0]) EXPECT_EQ(p[0], -18.0);
+  const std::vector<PlateContact> contacts = computePlateContacts(repair->plates, {});
+  EXPECT_TRUE(plateCutPoints(static_cast<int>(repair->plates.size()), contacts).empty());
+  std::set<int> touched;
+  for (const PlateContact& c : contacts) {
+    if (c.a == 8) touched.insert(repair->plates[c.b].id);
+    if (c.b == 8) touched.insert(repair->plates[c.a].id);
+  }
+  EXPECT_EQ(touched, (std::set<int>{1, 5, 6})) << "the leg, the back, and the seat's edge between them";
+  // The repaired chair designs (the paper's plan; its boards meet flush, see the README).
+  PlateDesignOptions planned;
+  planned.realization = JointRealization::Planned;
+  EXPECT_EQ(designPlateJoints(repair->plates, contacts, planned).status, PlateDesignStatus::Success);
+  // Nothing to repair without a cut point.
+  EXPECT_FALSE(proposeCutPointRepair(loadPlateExample("table.json").plates).has_value());
 }
 
 }  // namespace

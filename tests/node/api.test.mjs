@@ -246,6 +246,10 @@ test('designPlate plans the CLI\'s joints in the worker, with progress; bad opti
   const chair = await desia.designPlate(fs.readFileSync(path.join(examples, 'chair_cut_point.json'), 'utf8'));
   assert.equal(chair.status, 'cut-point');
   assert.match(chair.message, /^plate 5 is a cut point of the parts-graph/);
+  assert.equal(chair.repair.message, 'added plate 9, a bar joining plates 1 and 6 past cut point 5');
+  assert.equal(chair.repair.document.plates.length, 9);
+  const fixed = await desia.designPlate(chair.repair.document, { joints: 'planned' });
+  assert.equal(fixed.status, 'success', fixed.message);
   await assert.rejects(desia.designPlate(table, { parts: 4 }), (error) => error.code === 'bad-input'
     && /unknown design option 'parts' for designPlate/.test(error.message));
   await assert.rejects(desia.designPlate(k9), (error) => error.code === 'bad-input' && /designPlate needs a plate design/.test(error.message));

@@ -118,6 +118,15 @@ test('design plate: a verified joint plan (exit 0) that check re-verifies; a cut
   assert.equal(chair.status, 1);
   assert.match(chair.stderr, /chair_cut_point\.json: plate 5 is a cut point of the parts-graph/);
   assert.equal(fs.existsSync(path.join(tmp, 'chair.json')), false);
+  assert.match(chair.stderr, /a repair exists \(added plate 9, a bar joining plates 1 and 6 past cut point 5\): write it with --repair/);
+  const repairFile = path.join(tmp, 'chair-repaired.json');
+  const repaired = runCli(['design', 'plate', '--input', path.join(examples, 'chair_cut_point.json'), '--output', path.join(tmp, 'chair.json'), '--repair', repairFile]);
+  assert.equal(repaired.status, 1, 'the chair as given still cannot interlock');
+  assert.match(repaired.stderr, /wrote .*chair-repaired\.json \(design it with desia design plate\)/);
+  const proposal = JSON.parse(fs.readFileSync(repairFile, 'utf8'));
+  assert.equal(proposal.plates.length, 9);
+  const again_ = runCli(['design', 'plate', '--input', repairFile, '--output', path.join(tmp, 'chair-plan.json'), '--joints', 'planned']);
+  assert.equal(again_.status, 0, again_.stderr);
 
   const flat = writeTemp('flat.json', '{"kind":"plate","plates":[{"id":1,"outline":[[0,0,0],[1,0,0],[0,1,0]],"thickness":0}]}');
   const bad = runCli(['design', 'plate', '--input', flat, '--output', path.join(tmp, 'flat-plan.json')]);

@@ -20,7 +20,8 @@ std::string plateDesignToJson(const AssemblyDocument& input, const PlateDesignRe
 PlateDesignOptions parsePlateDesignOptionsJson(const std::string& text);
 std::string plateDesignProgressToJson(const PlateDesignProgress& progress);
 // {status, message, progress, puz: null, document: the plan or null, verification: its check with
-// both tests or null}, the shape of the voxel designer's result.
+// both tests or null, repair: for a cut point, {message, document} of the design with the bars
+// proposeCutPointRepair adds, or null}, the shape of the voxel designer's result.
 std::string plateDesignResultToJson(const AssemblyDocument& input, const PlateDesignResult& result);
 
 }  // namespace desia
