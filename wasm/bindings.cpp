@@ -18,6 +18,9 @@
 #include "desia/document.h"
 #include "desia/error.h"
 #include "desia/export.h"
+#include "desia/frame_design.h"
+#include "desia/frame_design_io.h"
+#include "desia/frame_format.h"
 #include "desia/puz_format.h"
 #include "desia/mesh.h"
 #include "desia/version.h"
@@ -151,6 +154,27 @@ val designPlate(const std::string& text, const std::string& optionsJson, const s
   });
 }
 
+// Designs the voxel joints of a frame (paper Section 5.3) from JSON, OBJ or .fpuz text (by the
+// extension of `source`); options and progress as for designPlate.
+val designFrame(const std::string& text, const std::string& optionsJson, const std::string& source, val onProgress) {
+  return guarded([&] {
+    desia::FramePackageOptions options = desia::parseFrameDesignOptionsJson(optionsJson);
+    const desia::FrameDocument frame = desia::parseFrameText(text, source, options.jointSize);
+    if (onProgress.typeOf().as<std::string>() == "function") {
+      options.design.onProgress = [&onProgress](const desia::FrameDesignProgress& progress) {
+        return !(onProgress(parseJsonText(desia::frameDesignProgressToJson(progress))).isFalse());
+      };
+    }
+    return parseJsonText(desia::frameDesignResultToJson(frame, desia::designFrame(frame.layout, options.design)));
+  });
+}
+
+// A frame from JSON, OBJ or .fpuz text (by the extension of `source`) as its JSON document, checked
+// (the frame of an OBJ file's lines and face edges); `jointSize` > 0 overrides the joint cube size.
+val parseFrame(const std::string& text, const std::string& source, double jointSize) {
+  return guarded([&] { return parseJsonText(desia::frameDocumentToJson(desia::parseFrameText(text, source, jointSize), -1)); });
+}
+
 // The interactive design session (a long-lived handle: JS must call delete(), which the facade's
 // dispose() does). Every method returns plain data.
 class DesignSession {
@@ -207,9 +231,12 @@ val exportAssembly(const std::string& text, const std::string& format, int part,
     options.part = part;
     options.voxelSize = voxelSize;
     options.source = source;
-    const desia::ExportFormat exportFormat = desia::parseExportFormat(format);
+    const desia::AssemblyDocument document = desia::parseAssemblyText(text, source);
+    // Frames have their own exports (meshes, .fpuz, the cut list) in the core.
     const std::vector<uint8_t> bytes =
-        desia::exportAssembly(desia::parseAssemblyText(text, source), exportFormat, options);
+        desia::isFrameDocument(document)
+            ? desia::exportFrame(desia::frameFromAssemblyDocument(document, source), format, part, source)
+            : desia::exportAssembly(document, desia::parseExportFormat(format), options);
     return val(emscripten::typed_memory_view(bytes.size(), bytes.data())).call<val>("slice");
   });
 }
@@ -219,7 +246,10 @@ val exportAssembly(const std::string& text, const std::string& format, int part,
 // once, like exportAssembly's bytes).
 val partSurfaces(const std::string& text, const std::string& source) {
   return guarded([&] {
-    const std::vector<desia::PartSurface> surfaces = desia::partSurfaces(desia::parseAssemblyText(text, source), source);
+    const desia::AssemblyDocument document = desia::parseAssemblyText(text, source);
+    const std::vector<desia::PartSurface> surfaces =
+        desia::isFrameDocument(document) ? desia::framePartSurfaces(desia::frameFromAssemblyDocument(document, source))
+                                         : desia::partSurfaces(document, source);
     val result = val::array();
     for (const desia::PartSurface& surface : surfaces) {
       val part = val::object();
@@ -255,6 +285,8 @@ EMSCRIPTEN_BINDINGS(desia) {
   emscripten::function("voxelize", &voxelize);
   emscripten::function("designVoxel", &designVoxel);
   emscripten::function("designPlate", &designPlate);
+  emscripten::function("designFrame", &designFrame);
+  emscripten::function("parseFrame", &parseFrame);
   emscripten::function("exportAssembly", &exportAssembly);
   emscripten::function("partSurfaces", &partSurfaces);
   emscripten::function("cutSheets", &cutSheets);

@@ -1,0 +1,32 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The frame designer's options, progress and result as JSON, for the WebAssembly module (the
+// package's designFrame); the same shapes as the plate planner's (plate_design_io.h).
+#pragma once
+
+#include <string>
+
+#include "desia/document.h"
+#include "desia/frame_design.h"
+#include "desia/frame_format.h"
+
+namespace desia {
+
+// The package's designFrame options: the designer's, and the joint cube size used when reading
+// the frame (0 = the file's or the default from the geometry).
+struct FramePackageOptions {
+  FrameDesignOptions design;
+  double jointSize = 0;
+};
+
+// Options as the package passes them ({seed, candidates, nodeLimit, timeLimit, jointSize}); unknown
+// names and values out of range are BadInput.
+FramePackageOptions parseFrameDesignOptionsJson(const std::string& text);
+std::string frameDesignProgressToJson(const FrameDesignProgress& progress);
+// {status, message, progress, puz: null, document: the result document (frameResultToJson) or
+// null, verification: its DBG check report (what `desia check RESULT.json` prints) or null}.
+std::string frameDesignResultToJson(const FrameDocument& input, const FrameDesignResult& result);
+
+// Is this assembly document a frame given by its geometry (a frame, or a designed one)?
+bool isFrameDocument(const AssemblyDocument& document);
+
+}  // namespace desia

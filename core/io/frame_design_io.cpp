@@ -1,0 +1,101 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The frame designer's options and result as JSON, for the WebAssembly module.
+#include "desia/frame_design_io.h"
+
+#include <nlohmann/json.hpp>
+
+#include <sstream>
+
+#include "desia/check.h"
+#include "desia/error.h"
+#include "io/json_input.h"
+
+namespace desia {
+namespace {
+
+using nlohmann::json;
+
+int64_t integerOption(const json& value, const std::string& name, int64_t lo, int64_t hi) {
+  if (!value.is_number_integer() || value.get<int64_t>() < lo || value.get<int64_t>() > hi) {
+    throwBadInput("", "design option '" + name + "' must be an integer from " + std::to_string(lo) + " to " +
+                          std::to_string(hi) + ", got " + value.dump());
+  }
+  return value.get<int64_t>();
+}
+
+double numberOption(const json& value, const std::string& name, double lo, double hi, const char* unit) {
+  if (!value.is_number() || !(value.get<double>() >= lo && value.get<double>() <= hi)) {
+    std::ostringstream range;
+    range << lo << " to " << hi;
+    throwBadInput("",
+                  "design option '" + name + "' must be a number from " + range.str() + unit + ", got " + value.dump());
+  }
+  return value.get<double>();
+}
+
+}  // namespace
+
+FramePackageOptions parseFrameDesignOptionsJson(const std::string& text) {
+  const json root = parseJsonText(text, "design options");
+  if (!root.is_object()) throwBadInput("", "design options must be an object");
+  FramePackageOptions options;
+  for (const auto& [name, value] : root.items()) {
+    if (name == "seed") {
+      options.design.seed = static_cast<uint64_t>(integerOption(value, name, 0, int64_t(1) << 62));
+    } else if (name == "candidates") {
+      options.design.candidates = static_cast<int>(integerOption(value, name, 1, 10000));
+    } else if (name == "nodeLimit") {
+      options.design.nodeLimit = integerOption(value, name, 1, int64_t(1) << 50);
+    } else if (name == "timeLimit") {
+      options.design.timeLimitSeconds = numberOption(value, name, 0, 1e7, " (seconds, 0 = none)");
+    } else if (name == "jointSize") {
+      // Like --joint-size: the edge of a joint cube in the frame's units.
+      if (!value.is_number() || !(value.get<double>() > 0 && value.get<double>() <= 1e9)) {
+        throwBadInput(
+            "", "design option 'jointSize' must be a number above 0 and up to 1e9 (model units), got " + value.dump());
+      }
+      options.jointSize = value.get<double>();
+    } else {
+      throwBadInput("", "unknown design option '" + name +
+                            "' for designFrame (expected seed, candidates, nodeLimit, timeLimit or jointSize)");
+    }
+  }
+  return options;
+}
+
+std::string frameDesignProgressToJson(const FrameDesignProgress& progress) {
+  return json{{"nodesVisited", progress.nodes},
+              {"depth", progress.depth},
+              {"bestDepth", progress.bestDepth},
+              {"targetParts", progress.targetParts},
+              {"elapsedSeconds", progress.seconds}}
+      .dump();
+}
+
+std::string frameDesignResultToJson(const FrameDocument& input, const FrameDesignResult& result) {
+  json root;
+  root["status"] = frameDesignStatusName(result.status);
+  root["message"] = result.message;
+  // Timing differs between runs; keep results reproducible.
+  root["progress"] = {{"nodesVisited", result.progress.nodes},
+                      {"bestDepth", result.progress.bestDepth},
+                      {"targetParts", result.progress.targetParts}};
+  root["puz"] = nullptr;
+  if (result.status == FrameDesignStatus::Success) {
+    // The same text `desia design frame` writes (before its final newline), checked as written.
+    const std::string text = frameResultToJson(input.layout, result, input.name);
+    const AssemblyDocument written = parseAssemblyText(text, "result");
+    root["document"] = json::parse(text);
+    root["verification"] = json::parse(checkReportToJson(written, checkAssembly(written), -1));
+  } else {
+    root["document"] = nullptr;
+    root["verification"] = nullptr;
+  }
+  return root.dump();
+}
+
+bool isFrameDocument(const AssemblyDocument& document) {
+  return document.kind == AssemblyKind::Frame && document.contactsFromGeometry;
+}
+
+}  // namespace desia
