@@ -232,7 +232,8 @@ std::vector<uint8_t> exportPlates(const AssemblyDocument& document, ExportFormat
     throwBadInput(options.source, "BurrTools .xmpuzzle holds voxel puzzles; export plates as stl, stl-ascii or obj");
   }
   std::vector<NamedMesh> meshes;
-  for (const Plate& plate : document.plates) {
+  // A result cut with a clearance: the plates to make (their mortises larger), not the verified ones.
+  for (const Plate& plate : document.fabricationPlates.empty() ? document.plates : document.fabricationPlates) {
     if (options.part == 0 || options.part == plate.id) meshes.push_back({plate.id, plateMesh(plate)});
   }
   if (meshes.empty()) throwBadInput(options.source, "part " + std::to_string(options.part) + " is not a plate of this structure (0 = all plates)");
