@@ -13,6 +13,8 @@
 #include "analysis/vec3.h"
 #include "desia/check.h"
 #include "desia/error.h"
+#include "desia/export.h"
+#include "desia/mesh.h"
 #include "desia/plate_design.h"
 #include "desia/plate_design_io.h"
 #include "desia/plate_joints.h"
@@ -100,6 +102,10 @@ TEST(PlateJoints, TheClearanceGrowsEveryMortiseAndNothingElse) {
   const std::string text = plateDesignToJson(table, result);
   EXPECT_NE(text.find("\"fabricationPlates\""), std::string::npos);
   EXPECT_NE(text.find("\"clearance\": 0.2"), std::string::npos);
+  // What is exported to make is the fabrication plates: their volume, less the play.
+  const AssemblyDocument written = parseJsonDocument(text, "table result");
+  const std::vector<uint8_t> stl = exportAssembly(written, ExportFormat::StlBinary, {});
+  EXPECT_NEAR(meshVolume(parseMesh(std::string(stl.begin(), stl.end()), "table.stl")), totalVolume(result.fabricationPlates), 1e-6 * totalVolume(result.fabricationPlates)) << "float32 STL";
 }
 
 // An axis-aligned board; its thinnest extent is its thickness (as examples/plate/make_examples.py).
