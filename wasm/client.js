@@ -481,6 +481,7 @@ export async function createDesia(options) {
     designVoxel: simple('designVoxel'),
     designPlate: simple('designPlate'),
     designFrame: simple('designFrame'),
+    parseFrame: simple('parseFrame'),
     async designSession(shape, callOptions) {
       const { signal, coreOptions } = splitOptions('designSession', callOptions);
 

@@ -76,6 +76,7 @@ export const OPTION_NAMES = Object.freeze({
   exportAssembly: ['format', 'part', 'voxelSize', 'source', 'sheet', 'sheetIndex', 'kerf', 'spacing', 'hairline'],
   partSurfaces: ['source'],
   cutSheets: ['format', 'sheet', 'kerf', 'spacing', 'hairline', 'source'],
+  parseFrame: ['source', 'jointSize'],
 });
 
 /**
@@ -254,7 +255,8 @@ function makeCore(module) {
     /**
      * An assembly (text or document object) as a file for other tools: 'stl' (binary), 'stl-ascii',
      * 'obj' or 'xmpuzzle' (BurrTools, voxel puzzles only); for plate structures also 'svg' and 'dxf'
-     * cut files (sheet `sheetIndex`, default 0, of those cutSheets makes with the same options).
+     * cut files (sheet `sheetIndex`, default 0, of those cutSheets makes with the same options);
+     * for frame structures 'stl', 'stl-ascii', 'obj', 'fpuz' (FrameInterlock) and 'csv' (cut list).
      * `part` 0 exports every part, k only part k; `voxelSize` scales voxel assemblies (model units
      * per voxel). Returns the file's bytes.
      */
@@ -303,10 +305,11 @@ function makeCore(module) {
       return callModule(() => module.cutSheets(text, format, json));
     },
     /**
-     * The surface of every part of a voxel assembly (text or document object), ready to draw:
+     * The surface of every part of an assembly (text or document object), ready to draw:
      * [{ partId, positions, normals }] in increasing part id, Float32Arrays of non-indexed
-     * triangles (9 floats each) with flat outward axis normals, in voxel units: the triangles of
-     * the part's STL/OBJ export.
+     * triangles (9 floats each) with flat outward normals: the triangles of the part's STL/OBJ
+     * export. Voxels in voxel units; plates and frames in their model units (a frame without
+     * designed joints: its beams, then its bare joint cubes as part 0).
      */
     partSurfaces(assembly, options) {
       const { source = '<input>' } = requireOptions('partSurfaces', options, OPTION_NAMES.partSurfaces);
@@ -389,9 +392,32 @@ function makeCore(module) {
     designPlate(input, options) {
       return forwardDesigner(module, 'designPlate', 'plate', input, options);
     },
-    /** Designs a frame structure: not available until the frame designer core lands. */
+    /**
+     * Designs the 3x3x3 voxel joints of a frame structure (paper Section 5.3): the key beam, the
+     * order and axis each beam leaves along, the owner of every joint voxel. `input`: a frame as a
+     * JSON document (text or object), or OBJ / .fpuz text when `source` ends with .obj / .fpuz.
+     * Options (checked by the core): seed, candidates, nodeLimit, timeLimit, jointSize. Same result
+     * shape as designPlate; `document` is the CLI's result document for the same seed.
+     */
     designFrame(input, options) {
       return forwardDesigner(module, 'designFrame', 'frame', input, options);
+    },
+    /**
+     * A frame from JSON (text or object), OBJ (lines and face edges) or .fpuz text (by the
+     * extension of `source`) as its checked JSON document (kind 'frame'); `jointSize` > 0 overrides
+     * the joint cube size. Throws a DesiaError naming the joint and beams of an invalid frame.
+     */
+    parseFrame(input, options) {
+      const { source = '<input>', jointSize = 0 } = requireOptions('parseFrame', options, OPTION_NAMES.parseFrame);
+      const text = assemblyText(input, 'parseFrame: input');
+      requireString(source, 'parseFrame: source');
+      if (typeof jointSize !== 'number' || !Number.isFinite(jointSize) || jointSize < 0) {
+        throw new DesiaError(`parseFrame: jointSize must be a number of model units (0 = from the file or the geometry), got ${describeValue(jointSize)}`, 'bad-input');
+      }
+      if (typeof module.parseFrame !== 'function') {
+        throw new DesiaError('parseFrame: this build of the WebAssembly module has no frame reader (rebuild dist/ with scripts/build.sh wasm)', 'unsupported');
+      }
+      return callModule(() => module.parseFrame(text, source, jointSize));
     },
     version() {
       return module.version();

@@ -100,6 +100,7 @@ export function createCoreHost(loadCore, post, { isCancelled = () => false } = {
     exportAssembly: (core, [assembly, options]) => core.exportAssembly(assembly, options),
     partSurfaces: (core, [assembly, options]) => core.partSurfaces(assembly, options),
     cutSheets: (core, [assembly, options]) => core.cutSheets(assembly, options),
+    parseFrame: (core, [input, options]) => core.parseFrame(input, options),
     designVoxel: (core, [shape, options], id) =>
       withProgress(id, (onProgress) => core.designVoxel(shape, { ...options, onProgress })),
     designPlate: (core, [input, options], id) =>

@@ -175,11 +175,11 @@ export interface DesignProgress {
 }
 
 export interface DesignResult {
-  /** 'cut-point' (designPlate only): the parts-graph has a cut point, named in `message`. */
+  /** 'cut-point' (designPlate, designFrame): the parts-graph has a cut point, named in `message`. */
   status: 'success' | 'not-found' | 'limit-reached' | 'cancelled' | 'cut-point';
   message: string;
   progress: DesignProgress;
-  /** The verified puzzle as .puz text (part 1 = key), or null (always null for plates). */
+  /** The verified puzzle as .puz text (part 1 = key), or null (always null for plates and frames). */
   puz: string | null;
   /** The verified puzzle as a JSON assembly document, or null. */
   document: AssemblyDocument | null;
@@ -251,7 +251,7 @@ export interface AsyncDesignSession {
  * Export formats: 'stl' (binary STL), 'stl-ascii', 'obj' (Wavefront OBJ, one object per part) and
  * 'xmpuzzle' (BurrTools, voxel puzzles only).
  */
-export type ExportFormat = 'stl' | 'stl-ascii' | 'obj' | 'xmpuzzle' | 'svg' | 'dxf';
+export type ExportFormat = 'stl' | 'stl-ascii' | 'obj' | 'xmpuzzle' | 'svg' | 'dxf' | 'fpuz' | 'csv';
 
 export interface ExportOptions {
   /** The file format (default 'stl'). */
@@ -327,6 +327,33 @@ export interface PlateDesignOptions {
   source?: string;
 }
 
+/** Options of designFrame (the same as `desia design frame`'s flags). */
+export interface FrameDesignOptions {
+  /** Default 1: the same seed gives the same result document, natively and in WebAssembly. */
+  seed?: number;
+  /** Children kept per node of the construction tree (the paper's m), default 2. */
+  candidates?: number;
+  nodeLimit?: number;
+  /** Seconds, default 60; 0 = none. */
+  timeLimit?: number;
+  /** Edge of a joint cube in the frame's units (default: the file's, else from the geometry). */
+  jointSize?: number;
+  onProgress?: (progress: DesignProgress) => boolean | void;
+  /**
+   * Name used in error messages; its extension picks the input format: '.obj' (lines and face
+   * edges are beams), '.fpuz' (FrameInterlock), otherwise a JSON document of kind 'frame'.
+   */
+  source?: string;
+}
+
+/** Options of parseFrame. */
+export interface ParseFrameOptions {
+  /** Name used in error messages; '.obj' and '.fpuz' pick those formats, otherwise JSON. */
+  source?: string;
+  /** Edge of a joint cube in the frame's units; 0 (default) = the file's or from the geometry. */
+  jointSize?: number;
+}
+
 export interface StructureDesignOptions {
   onProgress?: (progress: DesignProgress) => boolean | void;
   /** Name used in error messages. */
@@ -358,7 +385,8 @@ export interface DesiaCore {
   toPuz(assembly: string | AssemblyDocument, options?: { source?: string }): string;
   /**
    * An assembly (.puz text, JSON text or a document object) as a file for other tools: STL or OBJ
-   * meshes of its parts (3D printing), or a BurrTools .xmpuzzle. Returns the file's bytes.
+   * meshes of its parts (3D printing), or a BurrTools .xmpuzzle; a frame also as FrameInterlock
+   * '.fpuz' or its 'csv' cut list (both need designed joints). Returns the file's bytes.
    */
   exportAssembly(assembly: string | AssemblyDocument, options?: ExportOptions): Uint8Array;
   /**
@@ -368,9 +396,11 @@ export interface DesiaCore {
    */
   cutSheets(assembly: string | AssemblyDocument, options?: CutSheetOptions): string[];
   /**
-   * The surface of every part of a voxel assembly (.puz text, JSON text or a document object),
-   * in increasing part id, computed by the core from the same faces as the STL/OBJ export. Throws
-   * a DesiaError ('bad-input') for a non-voxel document or one without voxels, as the export does.
+   * The surface of every part of an assembly (.puz text, JSON text or a document object), in
+   * increasing part id, computed by the core from the same faces as the STL/OBJ export: voxels in
+   * voxel units, plates and frames in their model units (a frame without designed joints: its
+   * beams, then its bare joint cubes as part 0). Throws a DesiaError ('bad-input') for a voxel
+   * document without voxels, as the export does.
    */
   partSurfaces(assembly: string | AssemblyDocument, options?: { source?: string }): PartSurface[];
   /**
@@ -389,8 +419,20 @@ export interface DesiaCore {
    * tests and, when cut, by sweeping each plate out past the ones still in place.
    */
   designPlate(input: string | AssemblyDocument, options?: PlateDesignOptions): DesignResult;
-  /** Designs a frame structure. Not yet: throws a DesiaError with code 'unsupported'. */
-  designFrame(input: string | AssemblyDocument, options?: StructureDesignOptions): DesignResult;
+  /**
+   * Designs the 3x3x3 voxel joints of a frame structure (paper Section 5.3). `input`: a frame
+   * document (JSON text or object), or OBJ / .fpuz text named by `source`. The result's `document`
+   * (kind 'frame': beams renumbered in removal order, part 1 = the key, `jointVoxels`, `removal`)
+   * is byte for byte the document `desia design frame` writes for the same seed; `verification`
+   * is its DBG check. A frame whose beams' graph has a cut point gives status 'cut-point'.
+   */
+  designFrame(input: string | AssemblyDocument, options?: FrameDesignOptions): DesignResult;
+  /**
+   * A frame from a JSON document, OBJ (lines and face edges) or .fpuz text as its checked JSON
+   * document (kind 'frame'), ready for partSurfaces and designFrame. Throws a DesiaError naming the
+   * joint and beams of an invalid frame.
+   */
+  parseFrame(input: string | AssemblyDocument, options?: ParseFrameOptions): AssemblyDocument;
   /** The core's version, e.g. '0.1.0'. */
   version(): string;
 }
@@ -457,8 +499,10 @@ export interface Desia {
   designSession(shapeText: string, options: Omit<DesignVoxelOptions, 'onProgress'> & CallOptions): Promise<AsyncDesignSession>;
   /** {@link DesiaCore.designPlate} in the worker. */
   designPlate(input: string | AssemblyDocument, options?: PlateDesignOptions & CallOptions): Promise<DesignResult>;
-  /** Designs a frame structure. Not yet: rejects with a DesiaError with code 'unsupported'. */
-  designFrame(input: string | AssemblyDocument, options?: StructureDesignOptions & CallOptions): Promise<DesignResult>;
+  /** {@link DesiaCore.designFrame} in the worker. */
+  designFrame(input: string | AssemblyDocument, options?: FrameDesignOptions & CallOptions): Promise<DesignResult>;
+  /** {@link DesiaCore.parseFrame} in the worker. */
+  parseFrame(input: string | AssemblyDocument, options?: ParseFrameOptions & CallOptions): Promise<AssemblyDocument>;
   /** The core's version, e.g. '0.1.0' (known since createDesia resolved). */
   version(): string;
   /**

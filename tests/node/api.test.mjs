@@ -218,15 +218,16 @@ test('bad design input and options reject with a DesiaError with the core messag
   assert.equal((await desia.check(k9)).key, 1);
 });
 
-test('designFrame rejects as unsupported until its core lands', async () => {
-  const expected = (error) => {
+test('designFrame names unknown options and bad frames in the worker and the sync core (more: frame_api.test.mjs)', async () => {
+  const expected = (pattern) => (error) => {
     assert.ok(error instanceof DesiaError, String(error));
-    assert.equal(error.code, 'unsupported');
-    assert.match(error.message, /^designFrame: the frame designer core has not landed yet/);
+    assert.equal(error.code, 'bad-input');
+    assert.match(error.message, pattern);
     return true;
   };
-  await assert.rejects(desia.designFrame('{}', { parts: 4 }), expected);
-  assert.throws(() => core.designFrame('{}', { parts: 4 }), expected);
+  await assert.rejects(desia.designFrame('{}', { parts: 4 }), expected(/^unknown design option 'parts' for designFrame/));
+  assert.throws(() => core.designFrame('{}', { parts: 4 }), expected(/^unknown design option 'parts' for designFrame/));
+  assert.throws(() => core.designFrame('{}'), expected(/^<input>: kind: expected "frame"/));
 });
 
 test('designPlate plans the CLI\'s joints in the worker, with progress; bad options and cut points are named', async () => {
