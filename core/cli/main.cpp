@@ -62,7 +62,8 @@ const char* kUsage =
     "        design for design plate; exit 0 written, 2 bad mesh or thickness (the face named)\n"
     "export  writes a voxel assembly as closed part meshes (binary or ASCII STL, OBJ with one object\n"
     "        per part; --part N for one part, --voxel-size S scales voxel units) or as a BurrTools\n"
-    "        .xmpuzzle (gzip XML; the whole puzzle); exit 0 when written\n"
+    "        .xmpuzzle (gzip XML; the whole puzzle); exit 0 when written. A frame result exports as stl,\n"
+    "        stl-ascii, obj (each beam with its joint voxels), fpuz (FrameInterlock) or csv (the cut list)\n"
     "exit    0 interlocking, 1 not interlocking (or deadlocked), 2 bad input or usage\n";
 
 struct UsageError {
