@@ -326,7 +326,9 @@ struct Shadow {  // a triangle seen along d: 2D corners (u, v) and their depths 
   double minU, maxU, minV, maxV;
 };
 
-std::vector<Shadow> shadowsOf(const TriangleMesh& mesh, const PlaneFrame& frame) {
+// The shadows of the triangles whose outward normal points along `facing` times the frame's
+// normal (the direction of motion).
+std::vector<Shadow> shadowsOf(const TriangleMesh& mesh, const PlaneFrame& frame, int facing) {
   std::vector<Shadow> shadows;
   for (const auto& triangle : mesh.triangles) {
     Shadow s;
@@ -339,6 +341,9 @@ std::vector<Shadow> shadowsOf(const TriangleMesh& mesh, const PlaneFrame& frame)
     const double twiceArea = (s.corner[1][0] - s.corner[0][0]) * (s.corner[2][1] - s.corner[0][1]) -
                              (s.corner[2][0] - s.corner[0][0]) * (s.corner[1][1] - s.corner[0][1]);
     if (std::abs(twiceArea) < 1e-9) continue;  // edge-on: its solid is seen through its neighbours
+    // Keep the triangles facing `facing` times d (outward triangles wind counter-clockwise seen
+    // from outside, and (u, v, d) is right-handed: those facing +d have a positive area).
+    if ((twiceArea > 0) != (facing > 0)) continue;
     if (twiceArea < 0) {
       std::swap(s.corner[1], s.corner[2]);
       std::swap(s.depth[1], s.depth[2]);
@@ -420,8 +425,11 @@ bool meshCollidesAlong(const TriangleMesh& mover, const TriangleMesh& obstacle, 
     if (hi <= moverLo + tolerance || moverHi <= lo + tolerance) return false;
   }
   const PlaneFrame frame(mover.vertices[0], d);
-  const std::vector<Shadow> moving = shadowsOf(mover, frame);
-  const std::vector<Shadow> standing = shadowsOf(obstacle, frame);
+  // On a line along d, a piece [p0, p1] of the mover moved by t > 0 meets a piece [q0, q1] of the
+  // obstacle for some t exactly when q1 > p0: the obstacle's far end (a triangle facing +d) lies
+  // beyond the mover's rear end (a triangle facing -d). Those triangles alone decide.
+  const std::vector<Shadow> moving = shadowsOf(mover, frame, -1);
+  const std::vector<Shadow> standing = shadowsOf(obstacle, frame, +1);
   for (const Shadow& m : moving) {
     for (const Shadow& s : standing) {
       if (m.maxU <= s.minU || s.maxU <= m.minU || m.maxV <= s.minV || s.maxV <= m.minV) continue;
