@@ -3,12 +3,13 @@
 // The Design panel: designs an N-part interlocking voxel puzzle from the assembly on screen
 // (all its voxels are the shape), automatically (designVoxel, with live progress) or step by
 // step (a design session); for a plate design it plans the joints (designPlate: seed,
-// candidates, time limit; N, ranking, mode and step by step do not apply). Everything runs in the worker; the panel only collects parameters,
+// candidates, time limit; N, ranking, mode and step by step do not apply), for a frame it designs
+// the 3x3x3 voxel joints (designFrame: seed, candidates, time limit). Everything runs in the worker; the panel only collects parameters,
 // shows progress and hands finished assemblies to the page. Cancel terminates the worker (a
 // busy WebAssembly worker cannot read a message), so the page keeps what it showed before.
 //
 // For tests: body[data-design] = '' | running | success | not-found | limit-reached |
-// cancelled | cut-point | error (the last outcome), #design-panel[data-kind] = voxel | plate (what
+// cancelled | cut-point | error (the last outcome), #design-panel[data-kind] = voxel | plate | frame (what
 // Design will do), #design-message (the core's message),
 // #design-progress-box[data-updates] (progress messages seen in the current run),
 // #session-state[data-parts, data-children, data-complete] (the open session's node).
@@ -32,12 +33,23 @@ const FIELD_NAMES = { parts: 'Parts N', seed: 'Seed', candidates: 'Candidates m'
 
 /** The fields designPlate takes; the others are voxel-only and disabled for plates. */
 const PLATE_FIELDS = ['seed', 'candidates', 'timeLimit', 'clearance'];
+/** The fields designFrame takes. */
+const FRAME_FIELDS = ['seed', 'candidates', 'timeLimit'];
+/** The designers' default m (the Candidates field follows the kind until the user edits it). */
+const DEFAULT_CANDIDATES = { voxel: '30', plate: '30', frame: '2' };
+/** Per kind of structure: the worker operation, what a run is called, what its parts are. */
+const STRUCTURES = {
+  plate: { op: 'design-plate', label: 'Planning joints…', noun: 'plates joined', parts: 'plates', suffix: 'plan' },
+  frame: { op: 'design-frame', label: 'Designing frame joints…', noun: 'beams placed', parts: 'beams', suffix: 'frame' },
+};
 
 const ui = {
   panel: byId('design-panel'),
   voxelHint: byId('design-hint'),
   plateHint: byId('design-plate-hint'),
   plateNote: byId('design-plate-note'),
+  frameHint: byId('design-frame-hint'),
+  frameNote: byId('design-frame-note'),
   sessionPlateNote: byId('session-plate-note'),
   voxelOnlyFields: [byId('design-parts-field'), byId('design-rank-field'), byId('design-mode-field')],
   plateOnlyFields: [byId('design-joints-field'), byId('design-clearance-field')],
@@ -74,7 +86,7 @@ export function defaultParts(voxels) {
 
 /** 'Cube_4x4x4_origin.puz' -> 'Cube_4x4x4'; names of earlier designs lose their suffix too. */
 function baseName(name) {
-  return name.replace(/\.[^.]*$/, '').replace(/_N\d+_seed\d+$/, '').replace(/_plan_seed\d+$/, '').replace(/_step\d+of\d+(_child\d+)?$/, '').replace(/_origin$/, '');
+  return name.replace(/\.[^.]*$/, '').replace(/_N\d+_seed\d+$/, '').replace(/_(plan|frame)_seed\d+$/, '').replace(/_step\d+of\d+(_child\d+)?$/, '').replace(/_origin$/, '');
 }
 
 function seconds(ms) {
@@ -94,7 +106,7 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
   let session = null;
   /** The latest run (design or session step): { started, latest, updates, clock, withProgress, noun }. */
   let run = null;
-  /** The kind of assembly on screen: 'plate' designs joints, anything else voxels. */
+  /** The kind of assembly on screen: 'plate' and 'frame' design joints, anything else voxels. */
   let kind = 'voxel';
 
   // -------------------------------------------------------------------------------------------
@@ -124,11 +136,13 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
    */
   function readOptions() {
     const options = {};
-    for (const key of kind === 'plate' ? PLATE_FIELDS : NUMBER_FIELDS) {
+    const keys = kind === 'plate' ? PLATE_FIELDS : kind === 'frame' ? FRAME_FIELDS : NUMBER_FIELDS;
+    for (const key of keys) {
       const field = FIELDS[key];
       if (field.validity.badInput) throw new Error(`${FIELD_NAMES[key]}: not a number`);
       if (field.value.trim() !== '') options[key] = Number(field.value);
     }
+    if (kind === 'frame') return options;
     if (kind === 'plate') {
       options.joints = FIELDS.joints.value;
       // A clearance is cut into the files to make; planned joints have none to cut.
@@ -215,7 +229,7 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
   function readRequest() {
     const shape = getShape();
     if (!shape) {
-      setOutcome('error', 'Load a voxel shape or a plate design first (an example, your own .puz / .json, or a mesh to voxelize).');
+      setOutcome('error', 'Load a voxel shape, a plate design or a frame first (an example, your own .puz / .json / .fpuz, or a mesh to voxelize).');
       return null;
     }
     try {
@@ -236,13 +250,13 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
     const request = readRequest();
     if (!request) return;
     const { shape, options } = request;
-    const plate = kind === 'plate';
+    const structure = STRUCTURES[kind] ?? null;
     syncUrl();
-    begin(plate ? 'Planning joints…' : 'Designing…', { withProgress: true, ...(plate ? { noun: 'plates joined' } : {}) });
+    begin(structure ? structure.label : 'Designing…', { withProgress: true, ...(structure ? { noun: structure.noun } : {}) });
     try {
-      const operation = plate ? 'design-plate' : 'design';
+      const operation = structure ? structure.op : 'design';
       const { value: result, elapsedMs } = await core.run(operation, shape.text, { ...options, source: shape.name }, { onProgress });
-      if (plate) {
+      if (structure) {
         // The result's progress is the final count (a finished plan has every plate joined); a cut
         // point is found before any search, so there is no progress to show.
         if (result.progress) run.latest = { depth: 0, ...run.latest, ...result.progress };
@@ -251,10 +265,10 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
       end();
       if (result.status === 'success' && result.document) {
         showAssembly({
-          name: plate
-            ? `${baseName(shape.name)}_plan_seed${options.seed ?? 1}.json`
+          name: structure
+            ? `${baseName(shape.name)}_${structure.suffix}_seed${options.seed ?? 1}.json`
             : `${baseName(shape.name)}_N${result.progress.targetParts}_seed${options.seed ?? 1}.puz`,
-          text: plate ? `${JSON.stringify(result.document, null, 2)}\n` : result.puz,
+          text: structure ? `${JSON.stringify(result.document, null, 2)}\n` : result.puz,
           document: result.document,
           surfaces: result.surfaces,
           report: result.verification,
@@ -266,7 +280,7 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
       setOutcome(result.status, result.message);
     } catch (error) {
       const elapsed = end();
-      if (error.cancelled) setOutcome('cancelled', cancelledMessage(run.latest, elapsed, plate ? 'plates' : 'parts'));
+      if (error.cancelled) setOutcome('cancelled', cancelledMessage(run.latest, elapsed, structure ? structure.parts : 'parts'));
       else setOutcome('error', error.message);
     }
   }
@@ -311,7 +325,7 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
   }
 
   async function startSession() {
-    if (kind === 'plate') return;
+    if (kind !== 'voxel') return;
     const request = readRequest();
     if (!request) return;
     const { shape, options } = request;
@@ -385,15 +399,19 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
     const alive = sessionAlive();
     const childCount = alive ? session.snapshot.childCount : 0;
     const plate = kind === 'plate';
+    const frame = kind === 'frame';
+    const structure = plate || frame;
     ui.panel.dataset.kind = kind;
-    ui.panel.setAttribute('aria-label', plate ? 'Plan the joints of a plate design' : 'Design a voxel puzzle');
-    ui.voxelHint.hidden = plate;
+    ui.panel.setAttribute('aria-label', plate ? 'Plan the joints of a plate design' : frame ? 'Design the joints of a frame' : 'Design a voxel puzzle');
+    ui.voxelHint.hidden = structure;
     ui.plateHint.hidden = !plate;
     ui.plateNote.hidden = !plate;
-    ui.sessionPlateNote.hidden = !plate;
+    ui.frameHint.hidden = !frame;
+    ui.frameNote.hidden = !frame;
+    ui.sessionPlateNote.hidden = !structure;
     for (const field of ui.voxelOnlyFields) {
-      field.hidden = plate;
-      field.querySelector('input, select').disabled = plate;
+      field.hidden = structure;
+      field.querySelector('input, select').disabled = structure;
     }
     for (const field of ui.plateOnlyFields) {
       field.hidden = !plate;
@@ -401,7 +419,7 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
     }
     ui.designButton.disabled = busy;
     ui.cancelButton.disabled = !busy;
-    ui.sessionStart.disabled = busy || plate;
+    ui.sessionStart.disabled = busy || structure;
     ui.sessionStart.textContent = alive ? 'Restart' : 'Start';
     ui.sessionNext.disabled = busy || !alive || childCount === 0;
     ui.sessionBack.disabled = busy || !alive || session.snapshot.partsPlaced <= 1;
@@ -442,13 +460,16 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
       return busy;
     },
     /**
-     * The assembly on screen is of `kind` ('voxel', 'plate', ...): plates get the joint planner
-     * (and no N, ranking, mode or step by step). A voxel session stays open across plate views.
+     * The assembly on screen is of `kind` ('voxel', 'plate', 'frame', ...): plates get the joint
+     * planner, frames the frame designer (neither has N, ranking, mode or step by step). A voxel
+     * session stays open across plate and frame views. Candidates m follows the designer's
+     * default while it holds the previous kind's default.
      */
     setKind(next) {
-      const plate = next === 'plate';
-      if (plate === (kind === 'plate')) return;
-      kind = plate ? 'plate' : 'voxel';
+      const resolved = next === 'plate' || next === 'frame' ? next : 'voxel';
+      if (resolved === kind) return;
+      if (FIELDS.candidates.value === DEFAULT_CANDIDATES[kind]) FIELDS.candidates.value = DEFAULT_CANDIDATES[resolved];
+      kind = resolved;
       refreshControls();
     },
     /** A new shape is on screen: N follows its size until the user sets N. */

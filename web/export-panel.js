@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The Export panel: saves the assembly on screen as .puz, as the JSON document, as STL or OBJ
-// meshes (3D printing; one part or all), as a BurrTools .xmpuzzle, or, for plate structures, as
-// SVG or DXF cut sheets (one download per sheet). Every byte comes from the core in the worker
+// meshes (3D printing; one part or all), as a BurrTools .xmpuzzle, for plate structures as
+// SVG or DXF cut sheets (one download per sheet), for frames as .fpuz and a CSV cut list. Every byte comes from the core in the worker
 // (toPuz, parseDocument, exportAssembly, cutSheets); the panel only picks the format, part, sheet
 // size and kerf and hands the result to the browser as downloads.
 //
@@ -16,10 +16,13 @@ const ALL = ['voxel', 'plate', 'contacts', 'frame'];
 const FORMATS = {
   puz: { op: 'to-puz', extension: 'puz', type: 'text/plain', perPart: false, kinds: ['voxel'] },
   json: { op: 'document-json', extension: 'json', type: 'application/json', perPart: false, kinds: ALL },
-  // The core's mesh export writes voxel parts and plates (contact graphs have no shapes).
-  stl: { op: 'export', extension: 'stl', type: 'model/stl', perPart: true, kinds: ['voxel', 'plate'] },
-  'stl-ascii': { op: 'export', extension: 'stl', type: 'model/stl', perPart: true, kinds: ['voxel', 'plate'] },
-  obj: { op: 'export', extension: 'obj', type: 'model/obj', perPart: true, kinds: ['voxel', 'plate'] },
+  // The core's mesh export writes voxel parts, plates and frames (contact graphs have no shapes).
+  stl: { op: 'export', extension: 'stl', type: 'model/stl', perPart: true, kinds: ['voxel', 'plate', 'frame'] },
+  'stl-ascii': { op: 'export', extension: 'stl', type: 'model/stl', perPart: true, kinds: ['voxel', 'plate', 'frame'] },
+  obj: { op: 'export', extension: 'obj', type: 'model/obj', perPart: true, kinds: ['voxel', 'plate', 'frame'] },
+  // A designed frame as FrameInterlock's .fpuz and as its cut list (beam lengths, joint voxels).
+  fpuz: { op: 'export', extension: 'fpuz', type: 'text/plain', perPart: false, kinds: ['frame'] },
+  csv: { op: 'export', extension: 'csv', type: 'text/csv', perPart: false, kinds: ['frame'] },
   xmpuzzle: { op: 'export', extension: 'xmpuzzle', type: 'application/octet-stream', perPart: false, kinds: ['voxel'] },
   svg: { op: 'cut-sheets', extension: 'svg', type: 'image/svg+xml', perPart: false, kinds: ['plate'], cut: true },
   dxf: { op: 'cut-sheets', extension: 'dxf', type: 'application/dxf', perPart: false, kinds: ['plate'], cut: true },
@@ -75,7 +78,7 @@ export function createExportPanel({ core }) {
   function refresh() {
     for (const option of ui.format.options) {
       const known = FORMATS[option.value];
-      // Each format holds the kinds it can (.puz and .xmpuzzle voxels, SVG and DXF plates).
+      // Each format holds the kinds it can (.puz and .xmpuzzle voxels, SVG and DXF plates, .fpuz and CSV frames).
       if (known) option.disabled = assembly !== null && !known.kinds.includes(assembly.kind);
     }
     if (assembly && ui.format.selectedOptions[0]?.disabled) ui.format.value = assembly.kind === 'plate' ? 'svg' : 'json';

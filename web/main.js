@@ -53,13 +53,25 @@ const EXAMPLES = [
   { file: 'lizard.json', label: 'Lizard, 38 mitred plates (planned)', plate: true },
   { file: 'bookshelf.json', label: 'Bookshelf, 12 plates (planned)', plate: true },
   { file: 'bookcase_123.json', label: 'Bookcase, 123 plates (planned)', plate: true },
+  // Frames (examples/frame/, in mm): beams joined by 3x3x3 voxel joints; Design makes the joints.
+  { file: 'frame_cube.json', label: 'Frame cube, 12 beams', frame: true },
+  { file: 'frame_chair.json', label: 'Frame chair, 11 beams', frame: true },
+  { file: 'flower.json', label: 'Flower, 23 curved beams', frame: true },
+  { file: 'scaffold_92.json', label: 'Scaffold, 92 beams', frame: true },
+  { file: 'scaffold_300.json', label: 'Scaffold 4×4×4 cells, 300 beams', frame: true },
+  { file: 'cut_point.json', label: 'Two squares with a cut-point beam', frame: true },
+  { file: 'frame_cube_result.json', label: 'Frame cube, designed', frame: true },
+  { file: 'frame_chair_result.json', label: 'Frame chair, designed', frame: true },
+  { file: 'flower_result.json', label: 'Flower, designed', frame: true },
+  { file: 'scaffold_92_result.json', label: 'Scaffold of 92 beams, designed', frame: true },
 ];
 const EXAMPLES_URL = new URL('../examples/voxel/', import.meta.url);
 const PLATE_EXAMPLES_URL = new URL('../examples/plate/', import.meta.url);
+const FRAME_EXAMPLES_URL = new URL('../examples/frame/', import.meta.url);
 
 function exampleUrl(file) {
   const example = EXAMPLES.find((candidate) => candidate.file === file);
-  return new URL(file, example?.plate ? PLATE_EXAMPLES_URL : EXAMPLES_URL);
+  return new URL(file, example?.plate ? PLATE_EXAMPLES_URL : example?.frame ? FRAME_EXAMPLES_URL : EXAMPLES_URL);
 }
 const USER_FILE_OPTION = '__user-file__';
 
@@ -149,7 +161,7 @@ function setCurrent(assembly, report = null) {
   current = assembly ? { ...assembly, kind: report?.kind ?? null } : null;
   if (current) designPanel.setKind(current.kind);
   ui.downloadButton.disabled = !current;
-  ui.downloadButton.textContent = isJsonName(current?.name) ? 'Download .json' : 'Download .puz';
+  ui.downloadButton.textContent = `Download .${/\.(json|fpuz)$/i.exec(current?.name ?? '')?.[1]?.toLowerCase() ?? 'puz'}`;
 }
 
 function isJsonName(name) {
@@ -250,7 +262,7 @@ function loadUserFile(file) {
   option.textContent = `Your file: ${file.name}`;
   option.hidden = false;
   ui.exampleSelect.value = USER_FILE_OPTION;
-  if (isMeshName(file.name)) return meshInput.openFile(file);
+  if (isMeshName(file.name)) return openMeshOrFrame(file);
   meshInput.forget();
   return loadAssembly(file.name, async () => {
     if (file.size > MAX_FILE_BYTES) {
@@ -258,6 +270,24 @@ function loadUserFile(file) {
     }
     return decodeText(file.name, await file.arrayBuffer());
   });
+}
+
+/** An OBJ with line elements (`l`) is a frame (its lines and face edges are beams); others are meshes to voxelize. */
+async function openMeshOrFrame(file) {
+  if (!/\.obj$/i.test(file.name) || file.size > MAX_FILE_BYTES) return meshInput.openFile(file);
+  let text;
+  try {
+    text = decodeText(file.name, await file.arrayBuffer());
+  } catch {
+    return meshInput.openFile(file); // the voxelizer names what is wrong with it
+  }
+  if (!/^\s*l\s/m.test(text)) return meshInput.openFile(file);
+  meshInput.forget();
+  // The core reads the OBJ as a frame and gives its JSON document, which the page then shows.
+  return loadAssembly(`${file.name.replace(/\.obj$/i, '')}.json`, async () => {
+    const { value } = await core.run('frame-document', text, { source: file.name });
+    return value;
+  }, { origin: file.name });
 }
 
 /**
@@ -268,7 +298,7 @@ function decodeText(name, buffer) {
   try {
     return new TextDecoder('utf-8', { fatal: true }).decode(buffer);
   } catch {
-    throw new Error(`${name}: not a text file (it is not valid UTF-8); expected a .puz or desia .json assembly`);
+    throw new Error(`${name}: not a text file (it is not valid UTF-8); expected a .puz, desia .json or .fpuz file`);
   }
 }
 
@@ -365,7 +395,7 @@ function fillExampleSelect() {
   userOption.hidden = true;
   const puzzles = document.createElement('optgroup');
   puzzles.label = 'Puzzles';
-  puzzles.append(...EXAMPLES.filter((example) => !example.shape && !example.plate).map(exampleOption));
+  puzzles.append(...EXAMPLES.filter((example) => !example.shape && !example.plate && !example.frame).map(exampleOption));
   const shapes = document.createElement('optgroup');
   shapes.label = 'Shapes to design from';
   shapes.append(...EXAMPLES.filter((example) => example.shape).map(exampleOption));
@@ -375,7 +405,10 @@ function fillExampleSelect() {
   const plates = document.createElement('optgroup');
   plates.label = 'Plate structures';
   plates.append(...EXAMPLES.filter((example) => example.plate).map(exampleOption));
-  ui.exampleSelect.replaceChildren(userOption, puzzles, shapes, meshes, plates);
+  const frames = document.createElement('optgroup');
+  frames.label = 'Frame structures';
+  frames.append(...EXAMPLES.filter((example) => example.frame).map(exampleOption));
+  ui.exampleSelect.replaceChildren(userOption, puzzles, shapes, meshes, plates, frames);
 }
 
 function initialExample() {

@@ -299,10 +299,17 @@ export class AssemblyView {
     this.#scale = voxel
       ? { step: 1, runOut: RUN_OUT_VOXELS, cell: 1 }
       : { step: extent * STEP_EXTENT_FRACTION, runOut: extent * RUN_OUT_EXTENT_FRACTION, cell: niceStep(extent / GRID_CELLS_PER_EXTENT) };
-    this.#partNoun = document_?.kind === 'plate' ? 'plate' : 'part';
+    this.#partNoun = document_?.kind === 'plate' ? 'plate' : document_?.kind === 'frame' ? 'beam' : 'part';
     for (const plate of Array.isArray(document_?.plates) ? document_.plates : []) {
       if (Number.isInteger(plate?.id) && typeof plate.name === 'string' && plate.name) this.#partNames.set(plate.id, plate.name);
     }
+    // A designed frame's beams keep the id they had in the input.
+    for (const beam of document_?.kind === 'frame' && Array.isArray(document_.beams) ? document_.beams : []) {
+      if (Number.isInteger(beam?.id) && Number.isInteger(beam.inputId) && beam.inputId !== beam.id) {
+        this.#partNames.set(beam.id, `input beam ${beam.inputId}`);
+      }
+    }
+    if (document_?.kind === 'frame') this.#partNames.set(0, 'joint cubes (no joints designed yet)');
     // Whole-cell offsets keep voxel boundaries (and round plate coordinates) on the grid lines.
     const cell = this.#scale.cell;
     const snap = (value) => Math.floor(value / cell) * cell;
@@ -402,7 +409,9 @@ export class AssemblyView {
     // A plate design without joints is not interlocking by nature: greying out all but its
     // witness would hide the design. Its cut points (no joints can help) are marked instead.
     const plate = report?.kind === 'plate';
-    const witnessParts = new Set(plate ? [] : (report?.witness?.parts ?? []));
+    // The same for a frame without joints: its beams merely touch.
+    const structure = plate || report?.kind === 'frame';
+    const witnessParts = new Set(structure ? [] : (report?.witness?.parts ?? []));
     this.#cutPoints = new Set(plate ? (report?.cutPoints ?? []) : []);
     for (const [partId, mesh] of this.#meshes) {
       const isKey = partId === this.#keyId;
@@ -722,14 +731,35 @@ export function formatDirection(vector) {
  * direction, in order; the last one stays. Null for documents without a removal.
  */
 export function planDisassembly(document_) {
-  const removal = document_?.kind === 'plate' && Array.isArray(document_.removal) ? document_.removal : null;
+  const planned = document_?.kind === 'plate' || document_?.kind === 'frame';
+  const removal = planned && Array.isArray(document_.removal) ? document_.removal : null;
   if (!removal?.length) return null;
-  return {
-    order: removal.map((step) => step.part),
-    paths: removal.map((step) => (Array.isArray(step.direction)
-      ? [{ dir: formatDirection(step.direction), vector: step.direction, steps: 1 }]
-      : [])),
-  };
+  // A frame's beam leaves along an axis ('+y'), as far as the whole frame is wide (two steps),
+  // so that the beam with its joint voxels is clear of the frame before it fades out.
+  const steps = document_.kind === 'frame' ? 2 : 1;
+  const order = removal.map((step) => step.part);
+  const paths = removal.map((step) => {
+    const vector = Array.isArray(step.direction) ? step.direction : axisVector(step.direction);
+    return vector ? [{ dir: formatDirection(vector), vector, steps }] : [];
+  });
+  // A frame's removal lists the beams that leave; the last beam stays where it is.
+  const beams = document_.kind === 'frame' && Array.isArray(document_.beams) ? document_.beams.map((beam) => beam.id) : [];
+  for (const id of beams) {
+    if (!order.includes(id)) {
+      order.push(id);
+      paths.push([]);
+    }
+  }
+  return { order, paths };
+}
+
+/** '+y' -> [0, 1, 0]; anything else null. */
+function axisVector(label) {
+  const match = /^([+-])([xyz])$/.exec(String(label ?? '').trim());
+  if (!match) return null;
+  const vector = [0, 0, 0];
+  vector['xyz'.indexOf(match[2])] = match[1] === '+' ? 1 : -1;
+  return vector;
 }
 
 /** The report to show for `document_`: a plate plan's own removal replaces the check's disassembly. */

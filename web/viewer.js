@@ -314,11 +314,12 @@ export function mountViewer(host, options = {}) {
   }
 
   /**
-   * The part surfaces of `document_` from the viewer's core (null for documents without voxels
-   * or plates: the view says it cannot draw them).
+   * The part surfaces of `document_` from the viewer's core (null for documents without voxels,
+   * plates or beams: the view says it cannot draw them).
    */
   async function surfacesOf(document_, name) {
-    const drawn = document_?.kind === 'voxel' || (document_?.kind === 'plate' && document_.plates?.length > 0);
+    const drawn = document_?.kind === 'voxel' || (document_?.kind === 'plate' && document_.plates?.length > 0)
+      || (document_?.kind === 'frame' && document_.beams?.length > 0);
     if (!drawn) return null;
     const desia = desiaSource ?? await pageDesia();
     return desia.partSurfaces(document_, { source: name || 'assembly' });
@@ -354,7 +355,7 @@ export function mountViewer(host, options = {}) {
     current = { document: document_, report, name };
     message.hidden = true;
     view.show(document_, surfaces);
-    // A plate plan plays its own removal directions.
+    // A plate plan or a designed frame plays its own removal directions.
     const planned = report ? withPlannedRemoval(report, document_) : null;
     view.applyReport(planned ?? {});
     playback.setDisassembly(planned?.disassembly ?? null);
@@ -384,7 +385,7 @@ export function mountViewer(host, options = {}) {
       if (typeof text !== 'string') throw new Error('mountViewer: give src, or text with a name');
       const desia = desiaSource ?? await pageDesia();
       // `source` makes the core's messages name the file (and the line) they are about. Voxel
-      // assemblies and plates have surfaces: a voxel document's error counts once the document says it is one.
+      // assemblies, plates and frames have surfaces: a voxel document's error counts once the document says it is one.
       const [document_, report, surfaces] = await Promise.all([
         desia.parseDocument(text, { source: name }),
         desia.check(text, { source: name }),

@@ -21,6 +21,11 @@
 //          op 'design-plate'      text = the plate design, options = designPlate's { seed,
 //                                 candidates, timeLimit, source }; result = the DesignResult
 //                                 (document = the joint plan, or null) with `surfaces`
+//          op 'design-frame'      text = the frame (JSON, or OBJ / .fpuz text named by
+//                                 options.source), options = designFrame's { seed, candidates,
+//                                 timeLimit, jointSize, source }; result as for 'design-plate'
+//          op 'frame-document'    text = a frame as JSON, OBJ or .fpuz (by options.source);
+//                                 result = its JSON document as text (parseFrame)
 //          op 'session-open'      text = the voxel shape, options = designSession's options
 //          op 'session-next' | 'session-back' | 'session-close'
 //          op 'session-choose' | 'session-preview'   options = { n } (child index)
@@ -40,7 +45,7 @@
 // Session results are snapshots { partsPlaced, targetParts, complete, childCount, document,
 // surfaces, report, moved? } (report = the core's check of the current assembly); a preview is
 // { index, document, surfaces, report }; a design result carries `surfaces` too. `surfaces` is
-// the core's partSurfaces of `document` (Float32Arrays, transferred; voxel parts or plates) or
+// the core's partSurfaces of `document` (Float32Arrays, transferred; voxel parts, plates or frames) or
 // null (no document, or one known only by its contacts). One session per worker: opening one disposes the previous one.
 
 import { loadDesiaModule } from '../wasm/core.js';
@@ -69,6 +74,8 @@ const OPERATIONS = {
   },
   design: (core, text, options, context) => designOperation(core, 'designVoxel', text, options, context),
   'design-plate': (core, text, options, context) => designOperation(core, 'designPlate', text, options, context),
+  'design-frame': (core, text, options, context) => designOperation(core, 'designFrame', text, options, context),
+  'frame-document': (core, text, options) => [JSON.stringify(core.parseFrame(text, options ?? {})), []],
   voxelize: (core, text, options, { bytes }) => {
     if (!(bytes instanceof Uint8Array)) throw Object.assign(new Error('voxelize: no mesh bytes were sent'), { code: 'bad-input' });
     const document = core.voxelize(bytes, options ?? {});
@@ -110,7 +117,7 @@ const OPERATIONS = {
   },
 };
 
-/** Runs designVoxel or designPlate, posting throttled progress for request `id`. */
+/** Runs designVoxel, designPlate or designFrame, posting throttled progress for request `id`. */
 function designOperation(core, designer, text, options, { id }) {
   // Returning nothing from onProgress lets the search go on; the page stops it by terminating
   // the worker.
@@ -146,20 +153,24 @@ function sessionSnapshot(core, extra = {}) {
   return withSurfaces(core, snapshot, 'design session');
 }
 
-/** Documents whose parts have surfaces to draw: voxel parts and plates (contact graphs have none). */
+/** Documents whose parts have surfaces to draw: voxel parts, plates and frames (contact graphs have none). */
 function hasSurfaces(document) {
   if (document?.kind === 'voxel') return true;
+  if (document?.kind === 'frame') return Array.isArray(document.beams) && document.beams.length > 0;
   return document?.kind === 'plate' && Array.isArray(document.plates) && document.plates.length > 0;
 }
 
 /**
  * `value` (holding a `document`) with `surfaces`: the core's part surfaces of that document for
- * the 3D view (null when it is neither a voxel nor a plate document), as `[value, transferList]`: the labels and
+ * the 3D view (null when it is not a voxel, plate or frame document), as `[value, transferList]`: the labels and
  * the surfaces' float arrays are moved to the page, not copied.
  */
 function withSurfaces(core, value, source = '<input>') {
   const { document } = value;
-  const surfaces = hasSurfaces(document) ? core.partSurfaces(document, { source: String(source ?? '<input>') }) : null;
+  // The document is JSON whatever the file was: a name ending in .fpuz or .obj would make the core
+  // read it as that format.
+  const name = String(source ?? '<input>').replace(/\.(fpuz|obj)$/i, '.$1 (as JSON)');
+  const surfaces = hasSurfaces(document) ? core.partSurfaces(document, { source: name }) : null;
   const [packed, transfer] = packForTransfer({ ...value, surfaces });
   return [packed, [...transfer, ...surfaceBuffers(surfaces)]];
 }
