@@ -31,6 +31,15 @@ if [ "${1:-}" = "plate" ]; then
   exit 0
 fi
 
+if [ "${1:-}" = "frame" ]; then
+  # The frame designer against Table 1 (issue 9), natively and in WebAssembly. Seconds.
+  shift
+  bash scripts/build.sh native
+  bash scripts/build.sh wasm
+  node tests/benchmarks/frame_bench.mjs "$@"
+  exit 0
+fi
+
 if [ "${1:-}" = "package" ]; then
   # The npm package as a caller feels it (issue 4): worker start-up, calls through the worker,
   # abort latency, voxelize and export. About 10 seconds after the build.
