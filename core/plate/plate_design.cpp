@@ -14,8 +14,9 @@
 // site whose tenons leave along d_i, a mortise-and-tenon joint, with the contacts its faces will
 // have: the shoulder, the tenons' cheeks (+-the tenon plate's thickness axis) and ends (+-along
 // the edge). Otherwise an empty joint: the plates' own contact faces. The paper's halved joints
-// (slots along d_i) need plates that cross, which the geometry reader does not accept yet. An
-// open mortise lets its tenon plate leave two ways; the model says so, and the tests decide.
+// (slots along d_i) join plates that cross (computePlateContacts finds crossings): the mover
+// leaves along the crossing line, its slot behind it, the other's ahead. An open mortise lets its
+// tenon plate leave two ways; the model says so, and the tests decide.
 // A complete plan is cut into the plates and verified on that geometry before it is reported.
 #include "desia/plate_design.h"
 
@@ -115,7 +116,36 @@ JointType plannedJointType(const Vec3& edge, const Vec3& d) {
   return cosine <= std::cos(M_PI / 4) + 1e-12 ? JointType::MortiseTenon : JointType::Empty;
 }
 
-PlateJoint jointFor(const PlateGraph& graph, int mover, int other, const Vec3& d, JointRealization realization) {
+// The crossing between two plates (an index into the contacts), or -1.
+int crossingBetween(const PlateGraph& graph, int p, int q) {
+  for (int c : graph.contactsOf[p]) {
+    const PlateContact& contact = graph.contacts[c];
+    if (contact.crossing && (contact.a == q || contact.b == q)) return c;
+  }
+  return -1;
+}
+
+// Crossing plates are joined by slots (a halved joint): the mover leaves along the crossing line,
+// its slot opening behind it and the other plate's ahead of it (where their outlines end at the
+// crossing). Any other direction would pull one plate through the other: no joint, no step.
+std::optional<PlateJoint> halvedJointFor(const PlateGraph& graph, int crossing, int mover, int other, const Vec3& d,
+                                         JointRealization realization) {
+  const PlateContact& contact = graph.contacts[crossing];
+  if (!parallel(contact.edgeDirection, d)) return std::nullopt;
+  if (realization == JointRealization::Cut) {
+    const bool ahead = dot(d, contact.edgeDirection) > 0;  // which end of the line d points to
+    const std::array<bool, 2>& moverOpens = contact.a == mover ? contact.aOpens : contact.bOpens;
+    const std::array<bool, 2>& otherOpens = contact.a == mover ? contact.bOpens : contact.aOpens;
+    if (!moverOpens[ahead ? 0 : 1] || !otherOpens[ahead ? 1 : 0]) return std::nullopt;
+  }
+  return PlateJoint{mover, other, d, JointType::Halved, realization == JointRealization::Cut ? crossing : -1};
+}
+
+// The joint `mover` gets with `other` when it leaves along d, or nothing when they cross and
+// cannot part that way.
+std::optional<PlateJoint> jointFor(const PlateGraph& graph, int mover, int other, const Vec3& d, JointRealization realization) {
+  const int crossing = crossingBetween(graph, mover, other);
+  if (crossing >= 0) return halvedJointFor(graph, crossing, mover, other, d, realization);
   PlateJoint joint{mover, other, d, JointType::Empty, -1};
   if (realization == JointRealization::Planned) {
     joint.type = plannedJointType(graph.edgeTo[mover][static_cast<size_t>(
@@ -143,6 +173,7 @@ struct Step {
   Vec3 direction{0, 0, 0};
   std::vector<PlateJoint> joints;
   int emptyJoints = 0;
+  bool blocked = false;  // a crossing plate cannot part along the direction
 };
 
 // The assembly of A_i: parts 0..i-1 are the steps' plates, part i (when any plate is left) is R_i.
@@ -159,7 +190,7 @@ Assembly modelAssembly(const PlateGraph& graph, const std::vector<Step>& steps, 
   for (const Step& step : steps) {
     for (const PlateJoint& joint : step.joints) {
       const int a = node[joint.mover], b = node[joint.other];
-      if (joint.type != JointType::Empty && joint.contact < 0) {
+      if (joint.type == JointType::Halved || (joint.type != JointType::Empty && joint.contact < 0)) {
         // A planned joint: a shoulder across d and the cheeks and ends every slot or tenon has.
         const Vec3& d = joint.direction;
         Vec3 u = minus(graph.thicknessAxis[joint.mover], scaled(d, dot(graph.thicknessAxis[joint.mover], d)));
@@ -171,7 +202,7 @@ Assembly modelAssembly(const PlateGraph& graph, const std::vector<Step>& steps, 
       }
       for (int c : graph.contactsOf[joint.mover]) {
         const PlateContact& contact = graph.contacts[c];
-        if (c == joint.contact) continue;
+        if (c == joint.contact || contact.crossing) continue;
         if (contact.a == joint.mover && contact.b == joint.other) assembly.contacts.push_back({a, b, contact.normal, contact.area});
         if (contact.b == joint.mover && contact.a == joint.other) assembly.contacts.push_back({a, b, negated(contact.normal), contact.area});
       }
@@ -217,13 +248,19 @@ struct JointedPlan {
 JointedPlan cutPlan(const std::vector<Plate>& plates, const PlateGraph& graph, const std::vector<PlateJoint>& joints,
                     const std::vector<int>& order, const PlateOptions& geometry, double clearance, const JointCutOptions& options) {
   std::vector<TenonSite> sites;
+  std::vector<SlotCut> slots;
   for (const PlateJoint& joint : joints) {
     if (joint.type == JointType::MortiseTenon) sites.push_back(*graph.tenonSites[joint.contact]);
+    if (joint.type == JointType::Halved) {
+      for (const SlotCut& slot : halvedSlots(plates, graph.contacts[joint.contact], joint.mover, joint.direction, clearance)) {
+        slots.push_back(slot);
+      }
+    }
   }
   JointCutOptions cut = options;
   cut.clearance = clearance;
   JointedPlan plan;
-  plan.plates = cutTenonJoints(plates, sites, cut);
+  plan.plates = cutTenonJoints(plates, sites, cut, slots);
   validatePlates(plan.plates, geometry, "the jointed plates");
   std::vector<int> position(plates.size(), 0);
   for (size_t k = 0; k < order.size(); ++k) {
@@ -314,8 +351,13 @@ Step PlateJointPlanner::makeStep(const std::vector<Step>& steps, int plate, cons
   step.direction = d;
   for (int other : graph_.neighbours[plate]) {
     if (taken[other]) continue;
-    step.joints.push_back(jointFor(graph_, plate, other, d, options_.realization));
-    step.emptyJoints += step.joints.back().type == JointType::Empty ? 1 : 0;
+    const std::optional<PlateJoint> joint = jointFor(graph_, plate, other, d, options_.realization);
+    if (!joint) {
+      step.blocked = true;
+      continue;
+    }
+    step.joints.push_back(*joint);
+    step.emptyJoints += joint->type == JointType::Empty ? 1 : 0;
   }
   return step;
 }
@@ -369,7 +411,7 @@ std::vector<Step> PlateJointPlanner::childrenOf(const std::vector<Step>& steps) 
       if (!leavesWithoutPushing(graph_, plate, others, d)) continue;
       std::vector<Step> next = steps;
       next.push_back(makeStep(steps, plate, d));
-      if (!acceptable(next)) continue;
+      if (next.back().blocked || !acceptable(next)) continue;
       ranked.push_back({nextRandom(), next.back()});
     }
   }

@@ -5,6 +5,7 @@
 // integer coordinates, exact and the same natively and in WebAssembly.
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <sstream>
 
 #include "analysis/vec3.h"
@@ -264,6 +265,146 @@ void validatePlates(const std::vector<Plate>& plates, const PlateOptions& option
   for (const Plate& plate : plates) validatePlate(plate, options.contactTolerance, source);
 }
 
+namespace {
+
+bool isPrismPlate(const Plate& plate, const Vec3& axis, double thickness) {
+  for (size_t l = 0; l < plate.bottom.size(); ++l) {
+    for (size_t k = 0; k < plate.bottom[l].size(); ++k) {
+      if (norm(minus(plate.top[l][k], plus(plate.bottom[l][k], scaled(axis, thickness)))) > 1e-6) return false;
+    }
+  }
+  return true;
+}
+
+double thicknessOf(const Plate& plate, const Vec3& axis) { return dot(minus(plate.top[0][0], plate.bottom[0][0]), axis); }
+
+// The part of `plate`'s face inside the slab of `other` (between its faces), as Clipper paths in
+// `frame` (the plate's first face plane).
+ClipperLib::Paths insideSlab(const Plate& plate, const PlaneFrame& frame, const Vec3& point, const Vec3& line, const Vec3& across,
+                             double width, double reach, double tolerance) {
+  // The slab's inside, a tolerance in from each face: a hole as wide as the slab (a mortise) then
+  // splits the region, and a face lying on the slab's face adds nothing.
+  const Vec3 low = plus(point, scaled(across, tolerance)), high = plus(point, scaled(across, width - tolerance));
+  const Loop strip{plus(low, scaled(line, -reach)), plus(low, scaled(line, reach)), plus(high, scaled(line, reach)),
+                   plus(high, scaled(line, -reach))};
+  ClipperLib::Clipper clipper;
+  clipper.AddPaths(clipperPaths(plate.bottom, frame), ClipperLib::ptSubject, true);
+  clipper.AddPaths(clipperPaths({strip}, frame), ClipperLib::ptClip, true);
+  ClipperLib::Paths inside;
+  clipper.Execute(ClipperLib::ctIntersection, inside, ClipperLib::pftEvenOdd, ClipperLib::pftNonZero);
+  return inside;
+}
+
+double pathsArea(const ClipperLib::Paths& paths) {
+  double area = 0;
+  for (const ClipperLib::Path& path : paths) area += ClipperLib::Area(path);
+  return std::abs(area) / (kClipperScale * kClipperScale);
+}
+
+// Where along `line` (from `point`) the region has material: each outer path's extent (a connected
+// piece covers every position between its ends), merged.
+std::vector<std::pair<double, double>> shadowOnLine(const ClipperLib::Paths& paths, const PlaneFrame& frame, const Vec3& point,
+                                                    const Vec3& line) {
+  std::vector<std::pair<double, double>> spans;
+  for (const ClipperLib::Path& path : paths) {
+    if (!ClipperLib::Orientation(path)) continue;  // a hole: its piece's ends are its outline's
+    double lo = HUGE_VAL, hi = -HUGE_VAL;
+    for (const ClipperLib::IntPoint& q : path) {
+      const double t = dot(minus(frame.fromClipper(q), point), line);
+      lo = std::min(lo, t);
+      hi = std::max(hi, t);
+    }
+    spans.push_back({lo, hi});
+  }
+  std::sort(spans.begin(), spans.end());
+  std::vector<std::pair<double, double>> merged;
+  for (const auto& span : spans) {
+    if (!merged.empty() && span.first <= merged.back().second) merged.back().second = std::max(merged.back().second, span.second);
+    else merged.push_back(span);
+  }
+  return merged;
+}
+
+// The stretches where both shadows have material, longer than the tolerance.
+std::vector<std::pair<double, double>> commonStretches(const std::vector<std::pair<double, double>>& x,
+                                                       const std::vector<std::pair<double, double>>& y, double tolerance) {
+  std::vector<std::pair<double, double>> common;
+  for (const auto& [x0, x1] : x) {
+    for (const auto& [y0, y1] : y) {
+      const double from = std::max(x0, y0), to = std::min(x1, y1);
+      if (to - from > tolerance) common.push_back({from, to});
+    }
+  }
+  return common;
+}
+
+// Plates p and q crossing through each other: perpendicular prisms whose faces each fill the other's
+// slab over a common stretch of the line where their planes meet. A partial overlap is refused.
+std::optional<PlateContact> plateCrossing(const std::vector<Plate>& plates, int p, int q, double tolerance) {
+  const Plate& a = plates[p];
+  const Plate& b = plates[q];
+  const Vec3 ta = plateThicknessAxis(a), tb = plateThicknessAxis(b);
+  if (std::abs(dot(ta, tb)) > 1e-6) return std::nullopt;
+  const double ha = thicknessOf(a, ta), hb = thicknessOf(b, tb);
+  if (!isPrismPlate(a, ta, ha) || !isPrismPlate(b, tb, hb)) return std::nullopt;
+  const Vec3 line = canonicalSign(normalized(cross(ta, tb)));
+  // On both first faces: the planes' common line, with (ta, tb, line) orthonormal.
+  const Vec3 point = plus(scaled(ta, dot(a.bottom[0][0], ta)), scaled(tb, dot(b.bottom[0][0], tb)));
+  const Box boxA = boxOf(a), boxB = boxOf(b);
+  double reach = 0;
+  for (int k = 0; k < 3; ++k) reach += std::max(boxA.hi[k], boxB.hi[k]) - std::min(boxA.lo[k], boxB.lo[k]) + std::abs(point[k]);
+  const PlaneFrame frameA(a.bottom[0][0], ta), frameB(b.bottom[0][0], tb);
+  const ClipperLib::Paths inA = insideSlab(a, frameA, point, line, tb, hb, reach, tolerance);  // a's material in b's slab
+  const ClipperLib::Paths inB = insideSlab(b, frameB, point, line, ta, ha, reach, tolerance);
+  if (pathsArea(inA) <= tolerance * tolerance || pathsArea(inB) <= tolerance * tolerance) return std::nullopt;
+  // A point at `t` along the line is in both plates when each has material in the other's slab
+  // there: the plates meet where their shadows on the line overlap (a tenon in its mortise: never).
+  const std::vector<std::pair<double, double>> shadowA = shadowOnLine(inA, frameA, point, line);
+  const std::vector<std::pair<double, double>> shadowB = shadowOnLine(inB, frameB, point, line);
+  const std::vector<std::pair<double, double>> common = commonStretches(shadowA, shadowB, tolerance);
+
+  if (common.empty()) return std::nullopt;
+  if (common.size() > 1) {
+    throwBadInput("", plateName(a) + " and " + plateName(b) + " overlap in " + std::to_string(common.size()) +
+                      " places: make them cross through once (each filling the other's thickness) or meet face to face");
+  }
+  const double from = common[0].first, to = common[0].second;
+  const double a0 = shadowA.front().first, a1 = shadowA.back().second, b0 = shadowB.front().first, b1 = shadowB.back().second;
+  // Crossing through: over [from, to] each plate's material fills the other's whole thickness.
+  auto band = [&](const Vec3& across, double width) {
+    const Vec3 low = plus(point, scaled(across, tolerance)), high = plus(point, scaled(across, width - tolerance));
+    return Loop{plus(low, scaled(line, from)), plus(low, scaled(line, to)), plus(high, scaled(line, to)), plus(high, scaled(line, from))};
+  };
+  const Loop bandA = band(tb, hb), bandB = band(ta, ha);
+  auto filled = [&](const Plate& plate, const PlaneFrame& frame, const Loop& band, double width) {
+    ClipperLib::Clipper clipper;
+    clipper.AddPaths(clipperPaths(plate.bottom, frame), ClipperLib::ptSubject, true);
+    clipper.AddPaths(clipperPaths({band}, frame), ClipperLib::ptClip, true);
+    ClipperLib::Paths inside;
+    clipper.Execute(ClipperLib::ctIntersection, inside, ClipperLib::pftEvenOdd, ClipperLib::pftNonZero);
+    return std::abs(pathsArea(inside) - (width - 2 * tolerance) * (to - from)) <= tolerance * (to - from + width);
+  };
+  if (!filled(a, frameA, bandA, hb) || !filled(b, frameB, bandB, ha)) {
+    throwBadInput("", plateName(a) + " and " + plateName(b) + " overlap without passing through each other: make them cross "
+                      "through (each filling the other's thickness) or meet face to face");
+  }
+  PlateContact crossing;
+  crossing.a = p;
+  crossing.b = q;
+  crossing.crossing = true;
+  crossing.edgeDirection = line;
+  crossing.crossingPoint = point;
+  crossing.crossingFrom = from;
+  crossing.crossingTo = to;
+  crossing.area = (to - from) * std::max(ha, hb);
+  // A slot opens where the plate's material in the other's slab ends with the crossing.
+  crossing.aOpens = {a0 >= from - tolerance, a1 <= to + tolerance};
+  crossing.bOpens = {b0 >= from - tolerance, b1 <= to + tolerance};
+  return crossing;
+}
+
+}  // namespace
+
 std::vector<PlateContact> computePlateContacts(const std::vector<Plate>& plates, const PlateOptions& options) {
   const double tolerance = options.contactTolerance;
   std::vector<std::vector<SolidFace>> faces;
@@ -314,6 +455,9 @@ std::vector<PlateContact> computePlateContacts(const std::vector<Plate>& plates,
           contacts.push_back(contact);
         }
       }
+      if (std::optional<PlateContact> crossing = plateCrossing(plates, static_cast<int>(p), static_cast<int>(q), tolerance)) {
+        contacts.push_back(*crossing);
+      }
     }
   }
   return contacts;
@@ -359,7 +503,10 @@ void requireConnectedPlates(const std::vector<Plate>& plates, const std::vector<
 Assembly assemblyFromPlates(const std::vector<Plate>& plates, const std::vector<PlateContact>& contacts) {
   Assembly assembly;
   for (const Plate& plate : plates) assembly.parts.push_back({plate.id, plate.name});
-  for (const PlateContact& c : contacts) assembly.contacts.push_back({c.a, c.b, c.normal, c.area});
+  // A crossing blocks nothing yet: it is a joint to be cut (it joins the parts-graph all the same).
+  for (const PlateContact& c : contacts) {
+    if (!c.crossing) assembly.contacts.push_back({c.a, c.b, c.normal, c.area});
+  }
   return assembly;
 }
 

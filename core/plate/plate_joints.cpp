@@ -283,16 +283,43 @@ std::optional<TenonSite> tenonSiteOf(const std::vector<Plate>& plates, const Pla
   return std::nullopt;
 }
 
+std::vector<SlotCut> halvedSlots(const std::vector<Plate>& plates, const PlateContact& crossing, int mover, const Vec3& d,
+                                 double clearance) {
+  const int other = crossing.a == mover ? crossing.b : crossing.a;
+  const Vec3& line = crossing.edgeDirection;
+  const double sign = dot(d, line) > 0 ? 1 : -1;
+  const double middle = (crossing.crossingFrom + crossing.crossingTo) / 2;
+  // Far enough past the crossing's ends to run out of the outline there (it ends with the crossing).
+  const double out = crossing.crossingTo - crossing.crossingFrom + kMortiseMargin;
+  auto slot = [&](int plate, int across, double towards) {
+    const Vec3 axis = plateThicknessAxis(plates[across]);
+    const double width = plateThickness(plates[across]);
+    // From the middle of the crossing out past its end `towards` (+1: +line), across the other
+    // plate's thickness (its first face is on crossingPoint's plane) plus the clearance.
+    const double start = middle, end = towards > 0 ? crossing.crossingTo + out : crossing.crossingFrom - out;
+    auto at = [&](double t, double w) { return plus(crossing.crossingPoint, plus(scaled(line, t), scaled(axis, w))); };
+    return SlotCut{plate, {at(start, -clearance / 2), at(end, -clearance / 2), at(end, width + clearance / 2), at(start, width + clearance / 2)}};
+  };
+  // The mover's slot opens behind it (it slides off the other plate forwards); the other's ahead.
+  return {slot(mover, other, -sign), slot(other, mover, sign)};
+}
+
 std::vector<Plate> cutTenonJoints(const std::vector<Plate>& plates, const std::vector<TenonSite>& sites,
-                                  const JointCutOptions& options) {
+                                  const JointCutOptions& options, const std::vector<SlotCut>& slots) {
   std::vector<std::vector<Loop>> added(plates.size()), removed(plates.size());
   std::vector<double> removedArea(plates.size(), 0);
+  for (const SlotCut& slot : slots) {
+    const PlaneFrame frame(plates[slot.plate].bottom[0][0], plateThicknessAxis(plates[slot.plate]));
+    removed[slot.plate].push_back(slot.rectangle);
+    // Only the part inside the plate counts against the overlap check below.
+    removedArea[slot.plate] += areaAgainst({slot.rectangle}, plates[slot.plate].bottom, frame, false);
+  }
   for (const TenonSite& site : sites) {
     const PlaneFrame frame(plates[site.mortisePlate].bottom[0][0], plateThicknessAxis(plates[site.mortisePlate]));
     for (const auto& [start, end] : tenonSpans(plates, site, options)) {
       added[site.tenonPlate].push_back(tenonOf(plates, site, start, end));
       removed[site.mortisePlate].push_back(mortiseOf(plates, site, start, end, options.clearance));
-      removedArea[site.mortisePlate] += areaOf({clipperPath(removed[site.mortisePlate].back(), frame)});
+      removedArea[site.mortisePlate] += areaAgainst({removed[site.mortisePlate].back()}, plates[site.mortisePlate].bottom, frame, false);
     }
   }
   std::vector<Plate> jointed = plates;
@@ -305,7 +332,15 @@ std::vector<Plate> cutTenonJoints(const std::vector<Plate>& plates, const std::v
     unite.AddPaths(clipperPaths(removed[p], frame), ClipperLib::ptSubject, true);
     ClipperLib::Paths united;
     unite.Execute(ClipperLib::ctUnion, united, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
-    if (areaOf(united) < removedArea[p] - 1e-3) throwBadInput("", "the mortises cut into " + plateLabel(plate) + " run into each other");
+    std::vector<Loop> unitedLoops;
+    for (const ClipperLib::Path& path : united) {
+      Loop loop;
+      for (const ClipperLib::IntPoint& point : path) loop.push_back(frame.fromClipper(point));
+      unitedLoops.push_back(loop);
+    }
+    if (areaAgainst(unitedLoops, plate.bottom, frame, false) < removedArea[p] - 1e-3) {
+      throwBadInput("", "the mortises and slots cut into " + plateLabel(plate) + " run into each other");
+    }
     const Vec3 lift = scaled(plateThicknessAxis(plate), plateThickness(plate));
     jointed[p].bottom = cutFace(plate, added[p], removed[p]);
     jointed[p].top.clear();

@@ -9,6 +9,7 @@
 #include <array>
 #include <cmath>
 #include <set>
+#include <string>
 
 #include "analysis/vec3.h"
 #include "desia/check.h"
@@ -372,6 +373,55 @@ TEST(PlateRepair, TheChairGetsOneBarFromLegToBackAndNoCutPointIsLeft) {
   EXPECT_EQ(designPlateJoints(repair->plates, contacts, planned).status, PlateDesignStatus::Success);
   // Nothing to repair without a cut point.
   EXPECT_FALSE(proposeCutPointRepair(loadPlateExample("table.json").plates).has_value());
+}
+
+}  // namespace
+}  // namespace desia
+
+namespace desia {
+namespace {
+
+TEST(PlateCrossings, CrossingPlatesAreFoundAndHalvedJointsCutThem) {
+  // A (thickness along z) and B (thickness along x) pass through each other along y.
+  const std::vector<Plate> plates{board(1, {0, 0, 40}, {100, 100, 58}), board(2, {40, 0, 0}, {58, 100, 100})};
+  const std::vector<PlateContact> contacts = computePlateContacts(plates, {});
+  ASSERT_EQ(contacts.size(), 1u);
+  const PlateContact& crossing = contacts[0];
+  EXPECT_TRUE(crossing.crossing);
+  EXPECT_EQ(crossing.edgeDirection, (Vec3{0, 1, 0}));
+  EXPECT_NEAR(crossing.crossingTo - crossing.crossingFrom, 100, 1e-9);
+  EXPECT_EQ(crossing.aOpens, (std::array<bool, 2>{true, true}));
+  EXPECT_TRUE(assemblyFromPlates(plates, contacts).contacts.empty()) << "a crossing blocks nothing until it is cut";
+  // Plate 1 leaves along +y: its slot opens below (from the middle down), plate 2's above.
+  const std::vector<SlotCut> slots = halvedSlots(plates, crossing, 0, {0, 1, 0}, 0);
+  ASSERT_EQ(slots.size(), 2u);
+  const std::vector<Plate> cut = cutTenonJoints(plates, {}, {}, slots);
+  EXPECT_NEAR(totalVolume(cut), totalVolume(plates) - 18.0 * 18.0 * 100.0, 1e-3) << "the overlap is cut away once";
+  const std::vector<PlateContact> after = computePlateContacts(cut, {});
+  std::set<std::string> normals;
+  for (const PlateContact& c : after) {
+    EXPECT_FALSE(c.crossing) << "the slots part them";
+    const Vec3 n = c.a == 0 ? c.normal : negated(c.normal);  // from plate 1 into plate 2
+    normals.insert(std::to_string(static_cast<int>(std::lround(n[0]))) + std::to_string(static_cast<int>(std::lround(n[1]))) +
+                   std::to_string(static_cast<int>(std::lround(n[2]))));
+  }
+  // Slot walls across both thicknesses (+-x, +-z) and the slot bottoms (plate 1 blocked going down).
+  EXPECT_EQ(normals, (std::set<std::string>{"100", "-100", "001", "00-1", "0-10"}));
+  EXPECT_FALSE(plateCollidesAlong(cut[0], cut[1], {0, 1, 0}, 0.05));
+  EXPECT_TRUE(plateCollidesAlong(cut[0], cut[1], {0, -1, 0}, 0.05));
+  EXPECT_TRUE(plateCollidesAlong(cut[0], cut[1], {1, 0, 0}, 0.05));
+  EXPECT_TRUE(plateCollidesAlong(cut[0], cut[1], {0, 0, 1}, 0.05));
+}
+
+TEST(PlateCrossings, PlatesThatOverlapOnlyInPartAreRefusedWithBothNamed) {
+  // B reaches 8 mm past A's end: it would overlap A's corner without passing through it.
+  const std::vector<Plate> plates{board(1, {0, 0, 40}, {100, 100, 58}), board(2, {90, 0, 0}, {108, 100, 100})};
+  try {
+    computePlateContacts(plates, {});
+    ADD_FAILURE() << "a partial overlap was accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("plate 1 and plate 2 overlap without passing through each other"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 // T and L joints) and two plates meeting edge to edge along a shared, possibly mitred, face.
 #pragma once
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -51,13 +52,25 @@ struct PlateContact {
   double area = 0;            // mm^2 of the overlap
   Vec3 edgeDirection{0, 0, 0};  // the shared edge line's direction: where the plates' mid-planes meet
   std::vector<Vec3> region;   // the overlap polygon (largest piece), in 3D
+  // Two plates that cross (an X, to be joined by slots: a halved joint, paper Fig. 2) are in the
+  // parts-graph with a crossing instead of a face contact: no normal, `edgeDirection` the crossing
+  // line, `area` the crossing's area seen across it. See computePlateContacts.
+  bool crossing = false;
+  Vec3 crossingPoint{0, 0, 0};        // on the crossing line and on both plates' first faces
+  double crossingFrom = 0, crossingTo = 0;  // the crossing's extent along the line, from crossingPoint
+  // Where a slot may open (the plate's outline ends at the crossing on that side): [0] towards
+  // -edgeDirection, [1] towards +edgeDirection; for plate a and plate b.
+  std::array<bool, 2> aOpens{false, false}, bOpens{false, false};
 };
 
 // Checks every plate (planar faces, positive thickness, parallel matching faces, loops that do not
 // cross themselves) and throws BadInput naming the plate and the problem.
 void validatePlates(const std::vector<Plate>& plates, const PlateOptions& options, const std::string& source);
 
-// All contacts between the plates, in a fixed order (by plate pair, then faces).
+// All contacts between the plates, in a fixed order (by plate pair, then faces), and the crossings
+// of perpendicular prism plates that pass through each other (each plate's material fills the
+// other's thickness over the crossing). Throws BadInput naming both plates when such plates
+// overlap only in part (neither a contact nor a crossing explains it).
 std::vector<PlateContact> computePlateContacts(const std::vector<Plate>& plates, const PlateOptions& options);
 
 // Throws BadInput when some plate touches nothing or the plates fall into separate groups.

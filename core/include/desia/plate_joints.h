@@ -65,10 +65,23 @@ std::vector<std::pair<double, double>> tenonSpans(const std::vector<Plate>& plat
                                                   const JointCutOptions& options);
 
 // The plates with tenons added to the tenon plates' edges and mortises cut through the mortise
-// plates, one joint per site (2D booleans by Clipper on each plate's face, the plates being
+// plates, one joint per site, and the slots cut (2D booleans by Clipper on each plate's face, the plates being
 // prisms). Throws BadInput naming the plate when the cuts split a plate or run into each other.
+// A slot to cut out of a plate (a halved joint's half): a rectangle in its plane, through it.
+struct SlotCut {
+  int plate = 0;
+  Loop rectangle;
+};
+
+// The two slots of a halved joint (paper Fig. 2, middle) at a crossing: `mover` leaves along d
+// (along the crossing line), so its slot runs from the middle of the crossing back out of its
+// outline behind it, and the other plate's from the middle out of its outline ahead; each as wide
+// as the other plate is thick plus the clearance.
+std::vector<SlotCut> halvedSlots(const std::vector<Plate>& plates, const PlateContact& crossing, int mover, const Vec3& d,
+                                 double clearance);
+
 std::vector<Plate> cutTenonJoints(const std::vector<Plate>& plates, const std::vector<TenonSite>& sites,
-                                  const JointCutOptions& options);
+                                  const JointCutOptions& options, const std::vector<SlotCut>& slots = {});
 
 // True when `mover`, moved along the unit direction d by any distance, would pass through
 // `obstacle` (their interiors meet). Exact for the plates' polyhedra: two surface triangles whose
