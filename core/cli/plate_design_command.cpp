@@ -39,7 +39,8 @@ int reportCutPoint(const desia::AssemblyDocument& document, const std::string& i
     std::cerr << "desia: a repair exists (" << repair->message << "): write it with --repair REPAIRED.json\n";
     return 1;
   }
-  desia::AssemblyDocument repaired = desia::documentFromPlates(repair->plates, document.plateOptions, input, document.name + " (repaired)");
+  desia::AssemblyDocument repaired =
+      desia::documentFromPlates(repair->plates, document.plateOptions, input, document.name + " (repaired)");
   desia::cli::writeOutputFile(repairOutput, desia::documentToJson(repaired) + "\n");
   std::cerr << "desia: " << repair->message << "; wrote " << repairOutput << " (design it with desia design plate)\n";
   return 1;
@@ -59,18 +60,30 @@ int runPlateDesignCommand(const std::vector<std::string>& args) {
     }
     if (i + 1 == args.size()) usage(flag + " needs a value");
     const std::string& value = args[++i];
-    if (flag == "--input") input = value;
-    else if (flag == "--output") output = value;
-    else if (flag == "--seed") options.seed = static_cast<uint64_t>(desia::cli::integerOption(flag, value, 0, 1LL << 62));
-    else if (flag == "--candidates") options.candidates = static_cast<int>(desia::cli::integerOption(flag, value, 1, 10000));
-    else if (flag == "--node-limit") options.nodeLimit = desia::cli::integerOption(flag, value, 1, 1LL << 50);
-    else if (flag == "--time-limit") options.timeLimitSeconds = static_cast<double>(desia::cli::integerOption(flag, value, 1, 10000000));
-    else if (flag == "--repair") repairOutput = value;
-    else if (flag == "--joints") options.realization = desia::parseJointRealization(value);
-    else if (flag == "--clearance") options.joints.clearance = desia::cli::numberOption(flag, value, 0, 10);
-    else if (flag == "--tenon-width") options.joints.tenonWidth = desia::cli::numberOption(flag, value, 1, 10000);
-    else if (flag == "--tenon-count") options.joints.tenonCount = static_cast<int>(desia::cli::integerOption(flag, value, 1, 20));
-    else usage("unknown option " + flag + " for design plate");
+    if (flag == "--input")
+      input = value;
+    else if (flag == "--output")
+      output = value;
+    else if (flag == "--seed")
+      options.seed = static_cast<uint64_t>(desia::cli::integerOption(flag, value, 0, 1LL << 62));
+    else if (flag == "--candidates")
+      options.candidates = static_cast<int>(desia::cli::integerOption(flag, value, 1, 10000));
+    else if (flag == "--node-limit")
+      options.nodeLimit = desia::cli::integerOption(flag, value, 1, 1LL << 50);
+    else if (flag == "--time-limit")
+      options.timeLimitSeconds = static_cast<double>(desia::cli::integerOption(flag, value, 1, 10000000));
+    else if (flag == "--repair")
+      repairOutput = value;
+    else if (flag == "--joints")
+      options.realization = desia::parseJointRealization(value);
+    else if (flag == "--clearance")
+      options.joints.clearance = desia::cli::numberOption(flag, value, 0, 10);
+    else if (flag == "--tenon-width")
+      options.joints.tenonWidth = desia::cli::numberOption(flag, value, 1, 10000);
+    else if (flag == "--tenon-count")
+      options.joints.tenonCount = static_cast<int>(desia::cli::integerOption(flag, value, 1, 20));
+    else
+      usage("unknown option " + flag + " for design plate");
   }
   if (input.empty()) usage("design plate needs --input DESIGN.json|.obj|.stl");
   if (output.empty() || !desia::cli::hasExtension(output, ".json")) usage("design plate needs --output RESULT.json");
@@ -88,14 +101,17 @@ int runPlateDesignCommand(const std::vector<std::string>& args) {
   options.geometry = document.plateOptions;
   const bool live = !quiet && isatty(STDERR_FILENO);
   options.onProgress = [&](const desia::PlateDesignProgress& p) {
-    if (live) std::fprintf(stderr, "\r%lld nodes, depth %d/%d, %.1f s   ", static_cast<long long>(p.nodes), p.depth + 1, p.targetParts, p.seconds);
+    if (live)
+      std::fprintf(stderr, "\r%lld nodes, depth %d/%d, %.1f s   ", static_cast<long long>(p.nodes), p.depth + 1,
+                   p.targetParts, p.seconds);
     return interrupted == 0;
   };
   std::signal(SIGINT, onPlateDesignInterrupt);
   const desia::PlateDesignResult result = desia::designPlateJoints(document.plates, contacts, options);
   std::signal(SIGINT, SIG_DFL);
   if (live) std::fprintf(stderr, "\r%70s\r", "");
-  if (result.status == desia::PlateDesignStatus::CutPoint) return reportCutPoint(document, input, result.message, repairOutput);
+  if (result.status == desia::PlateDesignStatus::CutPoint)
+    return reportCutPoint(document, input, result.message, repairOutput);
   if (result.status != desia::PlateDesignStatus::Success) {
     std::cerr << "desia: " << input << ": " << result.message << "\n";
     return 1;

@@ -43,7 +43,9 @@ struct FlatPlate {
 
 constexpr double kScale = kClipperScale;
 
-Point2 toPoint(const ClipperLib::IntPoint& p) { return {static_cast<double>(p.X) / kScale, static_cast<double>(p.Y) / kScale}; }
+Point2 toPoint(const ClipperLib::IntPoint& p) {
+  return {static_cast<double>(p.X) / kScale, static_cast<double>(p.Y) / kScale};
+}
 
 ClipperLib::Paths facePaths(const std::vector<Loop>& loops, const PlaneFrame& frame) {
   ClipperLib::Paths paths;
@@ -80,7 +82,8 @@ bool insideRings(const std::vector<Ring>& rings, const Point2& q) {
     for (size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
       const Point2& a = ring[i];
       const Point2& b = ring[j];
-      if ((a[1] > q[1]) != (b[1] > q[1]) && q[0] < (b[0] - a[0]) * (q[1] - a[1]) / (b[1] - a[1]) + a[0]) inside = !inside;
+      if ((a[1] > q[1]) != (b[1] > q[1]) && q[0] < (b[0] - a[0]) * (q[1] - a[1]) / (b[1] - a[1]) + a[0])
+        inside = !inside;
     }
   }
   return inside;
@@ -203,7 +206,8 @@ std::vector<Mark> matingMarks(const std::vector<Plate>& plates, size_t index, co
   return marks;
 }
 
-FlatPlate flatten(const std::vector<Plate>& plates, size_t index, const std::vector<PlateContact>& contacts, double kerf) {
+FlatPlate flatten(const std::vector<Plate>& plates, size_t index, const std::vector<PlateContact>& contacts,
+                  double kerf) {
   const Plate& plate = plates[index];
   const PlaneFrame frame(plate.bottom[0][0], plateThicknessAxis(plate));
   FlatPlate flat;
@@ -221,7 +225,8 @@ FlatPlate flatten(const std::vector<Plate>& plates, size_t index, const std::vec
   // Keep one mark per mating plate (the first that landed on the plate).
   std::vector<Mark> unique;
   for (const Mark& mark : flat.marks) {
-    if (std::none_of(unique.begin(), unique.end(), [&](const Mark& m) { return m.text == mark.text; })) unique.push_back(mark);
+    if (std::none_of(unique.begin(), unique.end(), [&](const Mark& m) { return m.text == mark.text; }))
+      unique.push_back(mark);
   }
   flat.marks = unique;
   layFlat(&flat);
@@ -255,7 +260,8 @@ std::vector<Placement> pack(std::vector<FlatPlate>& flats, const CutSheetOptions
     totalArea += (flat.width + gap) * (flat.height + gap);
     widest = std::max(widest, flat.width);
   }
-  const double usableWidth = fixed ? options.sheetWidth - 2 * gap : std::max(widest, std::ceil(std::sqrt(totalArea) * 1.2));
+  const double usableWidth =
+      fixed ? options.sheetWidth - 2 * gap : std::max(widest, std::ceil(std::sqrt(totalArea) * 1.2));
   const double usableHeight = fixed ? options.sheetHeight - 2 * gap : HUGE_VAL;
   std::vector<size_t> order(flats.size());
   for (size_t k = 0; k < order.size(); ++k) order[k] = k;
@@ -263,16 +269,18 @@ std::vector<Placement> pack(std::vector<FlatPlate>& flats, const CutSheetOptions
   std::vector<bool> turned(flats.size(), false);
   for (size_t k : order) {
     // A plate too long for the sheet's width may fit turned a quarter.
-    if (flats[k].width > usableWidth && flats[k].height <= usableWidth && flats[k].width <= usableHeight) turned[k] = true;
+    if (flats[k].width > usableWidth && flats[k].height <= usableWidth && flats[k].width <= usableHeight)
+      turned[k] = true;
     const double w = turned[k] ? flats[k].height : flats[k].width, h = turned[k] ? flats[k].width : flats[k].height;
     if (w > usableWidth + 1e-9 || h > usableHeight + 1e-9) {
       std::ostringstream size;
       size.precision(6);
       size << flats[k].width << " x " << flats[k].height << " mm";
-      throwBadInput(options.source, "plate " + std::to_string(flats[k].id) + " (" + size.str() + ") does not fit on a " +
-                                        std::to_string(static_cast<long long>(options.sheetWidth)) + " x " +
-                                        std::to_string(static_cast<long long>(options.sheetHeight)) + " mm sheet with " +
-                                        std::to_string(static_cast<long long>(gap)) + " mm margins");
+      throwBadInput(options.source,
+                    "plate " + std::to_string(flats[k].id) + " (" + size.str() + ") does not fit on a " +
+                        std::to_string(static_cast<long long>(options.sheetWidth)) + " x " +
+                        std::to_string(static_cast<long long>(options.sheetHeight)) + " mm sheet with " +
+                        std::to_string(static_cast<long long>(gap)) + " mm margins");
     }
   }
   auto heightOf = [&](size_t k) { return turned[k] ? flats[k].width : flats[k].height; };
@@ -299,7 +307,8 @@ std::vector<Placement> pack(std::vector<FlatPlate>& flats, const CutSheetOptions
     sheetHeights.back() = std::max(sheetHeights.back(), rowY + rowHeight);
   }
   for (double used : sheetHeights) {
-    sheets->push_back(fixed ? Sheet{options.sheetWidth, options.sheetHeight} : Sheet{usedWidth + 2 * gap, used + 2 * gap});
+    sheets->push_back(fixed ? Sheet{options.sheetWidth, options.sheetHeight}
+                            : Sheet{usedWidth + 2 * gap, used + 2 * gap});
   }
   for (Placement& placement : placements) {
     FlatPlate& flat = flats[placement.plate];
@@ -333,27 +342,31 @@ std::string svgPath(const Ring& ring, double sheetHeight) {
   return d + " Z";
 }
 
-std::string svgSheet(const std::vector<FlatPlate>& flats, const std::vector<Placement>& placements, int sheet, const Sheet& size,
-                     const CutSheetOptions& options, int sheetCount) {
+std::string svgSheet(const std::vector<FlatPlate>& flats, const std::vector<Placement>& placements, int sheet,
+                     const Sheet& size, const CutSheetOptions& options, int sheetCount) {
   const std::string stroke = options.hairline ? "0.01" : "0.1";
   std::ostringstream out;
   out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
       << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << mm(size.width) << "mm\" height=\"" << mm(size.height)
       << "mm\" viewBox=\"0 0 " << mm(size.width) << " " << mm(size.height) << "\">\n"
-      << "<title>desia cut sheet " << sheet + 1 << " of " << sheetCount << " (mm; red: outer cuts, blue: inner cuts, black: engrave"
+      << "<title>desia cut sheet " << sheet + 1 << " of " << sheetCount
+      << " (mm; red: outer cuts, blue: inner cuts, black: engrave"
       << (options.kerf > 0 ? "; kerf " + mm(options.kerf) + " mm compensated" : std::string()) << ")</title>\n"
-      << "<style>.outer{fill:none;stroke:#ff0000;stroke-width:" << stroke << "}.inner{fill:none;stroke:#0000ff;stroke-width:"
-      << stroke << "}.engrave{fill:none;stroke:#000000;stroke-width:" << stroke
+      << "<style>.outer{fill:none;stroke:#ff0000;stroke-width:" << stroke
+      << "}.inner{fill:none;stroke:#0000ff;stroke-width:" << stroke
+      << "}.engrave{fill:none;stroke:#000000;stroke-width:" << stroke
       << ";font-family:sans-serif;text-anchor:middle;dominant-baseline:central}</style>\n";
   for (const Placement& placement : placements) {
     if (placement.sheet != sheet) continue;
     const FlatPlate& flat = flats[placement.plate];
     out << "<g id=\"plate-" << flat.id << "\">\n";
-    for (const Ring& ring : flat.outlines) out << "<path class=\"outer\" stroke=\"#ff0000\" fill=\"none\" d=\"" << svgPath(ring, size.height) << "\"/>\n";
-    for (const Ring& ring : flat.holes) out << "<path class=\"inner\" stroke=\"#0000ff\" fill=\"none\" d=\"" << svgPath(ring, size.height) << "\"/>\n";
+    for (const Ring& ring : flat.outlines)
+      out << "<path class=\"outer\" stroke=\"#ff0000\" fill=\"none\" d=\"" << svgPath(ring, size.height) << "\"/>\n";
+    for (const Ring& ring : flat.holes)
+      out << "<path class=\"inner\" stroke=\"#0000ff\" fill=\"none\" d=\"" << svgPath(ring, size.height) << "\"/>\n";
     for (const Mark& mark : flat.marks) {
-      out << "<text class=\"engrave\" stroke=\"#000000\" fill=\"none\" x=\"" << mm(mark.at[0]) << "\" y=\"" << mm(size.height - mark.at[1])
-          << "\" font-size=\"" << mm(mark.size) << "\">" << mark.text << "</text>\n";
+      out << "<text class=\"engrave\" stroke=\"#000000\" fill=\"none\" x=\"" << mm(mark.at[0]) << "\" y=\""
+          << mm(size.height - mark.at[1]) << "\" font-size=\"" << mm(mark.size) << "\">" << mark.text << "</text>\n";
     }
     out << "</g>\n";
   }
@@ -377,7 +390,8 @@ std::string dxfSheet(const std::vector<FlatPlate>& flats, const std::vector<Plac
   dxfPair(out, 0, "TABLE");
   dxfPair(out, 2, "LAYER");
   dxfPair(out, 70, "3");
-  for (const auto& [name, colour] : std::vector<std::pair<std::string, int>>{{"CUT_OUTER", 1}, {"CUT_INNER", 5}, {"ENGRAVE", 7}}) {
+  for (const auto& [name, colour] :
+       std::vector<std::pair<std::string, int>>{{"CUT_OUTER", 1}, {"CUT_INNER", 5}, {"ENGRAVE", 7}}) {
     dxfPair(out, 0, "LAYER");
     dxfPair(out, 2, name);
     dxfPair(out, 70, "0");
@@ -443,7 +457,8 @@ void parseSheetSize(const std::string& text, CutSheetOptions* options) {
   }
   if (x == std::string::npos || usedW != x || usedH != text.size() - x - 1 || !(width >= 10 && width <= 100000) ||
       !(height >= 10 && height <= 100000)) {
-    throwBadInput("", "the sheet size must be WIDTHxHEIGHT in mm, each 10 to 100000 (e.g. 600x400), got '" + text + "'");
+    throwBadInput("",
+                  "the sheet size must be WIDTHxHEIGHT in mm, each 10 to 100000 (e.g. 600x400), got '" + text + "'");
   }
   options->sheetWidth = width;
   options->sheetHeight = height;
@@ -454,19 +469,22 @@ CutSheetOptions parseCutSheetOptionsJson(const std::string& text) {
   if (!root.is_object()) throwBadInput("", "cut sheet options must be an object");
   CutSheetOptions options;
   auto number = [](const nlohmann::json& value, const std::string& name) {
-    if (!value.is_number()) throwBadInput("", "cut sheet option '" + name + "' must be a number of mm, got " + value.dump());
+    if (!value.is_number())
+      throwBadInput("", "cut sheet option '" + name + "' must be a number of mm, got " + value.dump());
     return value.get<double>();
   };
   for (const auto& [name, value] : root.items()) {
     if (name == "sheet") {
-      if (!value.is_string()) throwBadInput("", "cut sheet option 'sheet' must be text such as \"600x400\", got " + value.dump());
+      if (!value.is_string())
+        throwBadInput("", "cut sheet option 'sheet' must be text such as \"600x400\", got " + value.dump());
       parseSheetSize(value.get<std::string>(), &options);
     } else if (name == "kerf") {
       options.kerf = number(value, name);
     } else if (name == "spacing") {
       options.spacing = number(value, name);
     } else if (name == "hairline") {
-      if (!value.is_boolean()) throwBadInput("", "cut sheet option 'hairline' must be true or false, got " + value.dump());
+      if (!value.is_boolean())
+        throwBadInput("", "cut sheet option 'hairline' must be true or false, got " + value.dump());
       options.hairline = value.get<bool>();
     } else if (name == "source") {
       if (!value.is_string()) throwBadInput("", "cut sheet option 'source' must be text");
@@ -478,13 +496,16 @@ CutSheetOptions parseCutSheetOptionsJson(const std::string& text) {
   return options;
 }
 
-std::vector<std::string> plateCutSheets(const AssemblyDocument& document, CutFileFormat format, const CutSheetOptions& options) {
+std::vector<std::string> plateCutSheets(const AssemblyDocument& document, CutFileFormat format,
+                                        const CutSheetOptions& options) {
   if (document.kind != AssemblyKind::Plate || document.plates.empty()) {
     throwBadInput(options.source, "cut files are made of plate structures (kind \"plate\" with \"plates\")");
   }
   if (!(options.kerf >= 0 && options.kerf <= 5)) throwBadInput(options.source, "the kerf must be 0 to 5 mm");
-  if (!(options.spacing >= 0 && options.spacing <= 1000)) throwBadInput(options.source, "the spacing must be 0 to 1000 mm");
-  if ((options.sheetWidth > 0) != (options.sheetHeight > 0)) throwBadInput(options.source, "a sheet needs a width and a height");
+  if (!(options.spacing >= 0 && options.spacing <= 1000))
+    throwBadInput(options.source, "the spacing must be 0 to 1000 mm");
+  if ((options.sheetWidth > 0) != (options.sheetHeight > 0))
+    throwBadInput(options.source, "a sheet needs a width and a height");
   const std::vector<Plate>& plates = document.fabricationPlates.empty() ? document.plates : document.fabricationPlates;
   const std::vector<PlateContact> contacts = computePlateContacts(document.plates, document.plateOptions);
   std::vector<FlatPlate> flats;
@@ -493,9 +514,9 @@ std::vector<std::string> plateCutSheets(const AssemblyDocument& document, CutFil
   const std::vector<Placement> placements = pack(flats, options, &sheets);
   std::vector<std::string> files;
   for (size_t s = 0; s < sheets.size(); ++s) {
-    files.push_back(format == CutFileFormat::Svg
-                        ? svgSheet(flats, placements, static_cast<int>(s), sheets[s], options, static_cast<int>(sheets.size()))
-                        : dxfSheet(flats, placements, static_cast<int>(s)));
+    files.push_back(format == CutFileFormat::Svg ? svgSheet(flats, placements, static_cast<int>(s), sheets[s], options,
+                                                            static_cast<int>(sheets.size()))
+                                                 : dxfSheet(flats, placements, static_cast<int>(s)));
   }
   return files;
 }

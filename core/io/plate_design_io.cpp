@@ -18,19 +18,24 @@ using nlohmann::json;
 
 const char* statusName(PlateDesignStatus status) {
   switch (status) {
-    case PlateDesignStatus::Success: return "success";
-    case PlateDesignStatus::NotFound: return "not-found";
-    case PlateDesignStatus::LimitReached: return "limit-reached";
-    case PlateDesignStatus::Cancelled: return "cancelled";
-    case PlateDesignStatus::CutPoint: return "cut-point";
+    case PlateDesignStatus::Success:
+      return "success";
+    case PlateDesignStatus::NotFound:
+      return "not-found";
+    case PlateDesignStatus::LimitReached:
+      return "limit-reached";
+    case PlateDesignStatus::Cancelled:
+      return "cancelled";
+    case PlateDesignStatus::CutPoint:
+      return "cut-point";
   }
   return "not-found";
 }
 
 int64_t integerOption(const json& value, const std::string& name, int64_t lo, int64_t hi) {
   if (!value.is_number_integer() || value.get<int64_t>() < lo || value.get<int64_t>() > hi) {
-    throwBadInput("", "design option '" + name + "' must be an integer from " + std::to_string(lo) + " to " + std::to_string(hi) +
-                          ", got " + value.dump());
+    throwBadInput("", "design option '" + name + "' must be an integer from " + std::to_string(lo) + " to " +
+                          std::to_string(hi) + ", got " + value.dump());
   }
   return value.get<int64_t>();
 }
@@ -39,7 +44,8 @@ double numberOption(const json& value, const std::string& name, double lo, doubl
   if (!value.is_number() || !(value.get<double>() >= lo && value.get<double>() <= hi)) {
     std::ostringstream range;
     range << lo << " to " << hi;
-    throwBadInput("", "design option '" + name + "' must be a number from " + range.str() + " (mm), got " + value.dump());
+    throwBadInput("",
+                  "design option '" + name + "' must be a number from " + range.str() + " (mm), got " + value.dump());
   }
   return value.get<double>();
 }
@@ -51,25 +57,37 @@ PlateDesignOptions parsePlateDesignOptionsJson(const std::string& text) {
   if (!root.is_object()) throwBadInput("", "design options must be an object");
   PlateDesignOptions options;
   for (const auto& [name, value] : root.items()) {
-    if (name == "seed") options.seed = static_cast<uint64_t>(integerOption(value, name, 0, int64_t(1) << 62));
-    else if (name == "candidates") options.candidates = static_cast<int>(integerOption(value, name, 1, 10000));
-    else if (name == "nodeLimit") options.nodeLimit = integerOption(value, name, 1, int64_t(1) << 50);
-    else if (name == "timeLimit") options.timeLimitSeconds = static_cast<double>(integerOption(value, name, 1, 10000000));
-    else if (name == "joints") options.realization = parseJointRealization(value.is_string() ? value.get<std::string>() : value.dump());
-    else if (name == "clearance") options.joints.clearance = numberOption(value, name, 0, 10);
-    else if (name == "tenonWidth") options.joints.tenonWidth = numberOption(value, name, 1, 10000);
-    else if (name == "tenonCount") options.joints.tenonCount = static_cast<int>(integerOption(value, name, 1, 20));
+    if (name == "seed")
+      options.seed = static_cast<uint64_t>(integerOption(value, name, 0, int64_t(1) << 62));
+    else if (name == "candidates")
+      options.candidates = static_cast<int>(integerOption(value, name, 1, 10000));
+    else if (name == "nodeLimit")
+      options.nodeLimit = integerOption(value, name, 1, int64_t(1) << 50);
+    else if (name == "timeLimit")
+      options.timeLimitSeconds = static_cast<double>(integerOption(value, name, 1, 10000000));
+    else if (name == "joints")
+      options.realization = parseJointRealization(value.is_string() ? value.get<std::string>() : value.dump());
+    else if (name == "clearance")
+      options.joints.clearance = numberOption(value, name, 0, 10);
+    else if (name == "tenonWidth")
+      options.joints.tenonWidth = numberOption(value, name, 1, 10000);
+    else if (name == "tenonCount")
+      options.joints.tenonCount = static_cast<int>(integerOption(value, name, 1, 20));
     else {
       throwBadInput("", "unknown design option '" + name +
-                            "' for designPlate (expected seed, candidates, nodeLimit, timeLimit, joints, clearance, tenonWidth or tenonCount)");
+                            "' for designPlate (expected seed, candidates, nodeLimit, timeLimit, joints, clearance, "
+                            "tenonWidth or tenonCount)");
     }
   }
   return options;
 }
 
 std::string plateDesignProgressToJson(const PlateDesignProgress& progress) {
-  return json{{"nodesVisited", progress.nodes}, {"depth", progress.depth}, {"bestDepth", progress.bestDepth},
-              {"targetParts", progress.targetParts}, {"elapsedSeconds", progress.seconds}}
+  return json{{"nodesVisited", progress.nodes},
+              {"depth", progress.depth},
+              {"bestDepth", progress.bestDepth},
+              {"targetParts", progress.targetParts},
+              {"elapsedSeconds", progress.seconds}}
       .dump();
 }
 
@@ -78,7 +96,8 @@ std::string plateDesignResultToJson(const AssemblyDocument& input, const PlateDe
   root["status"] = statusName(result.status);
   root["message"] = result.message;
   // Timing differs between runs; keep results reproducible.
-  root["progress"] = {{"nodesVisited", result.progress.nodes}, {"bestDepth", result.progress.bestDepth},
+  root["progress"] = {{"nodesVisited", result.progress.nodes},
+                      {"bestDepth", result.progress.bestDepth},
                       {"targetParts", result.progress.targetParts}};
   root["puz"] = nullptr;
   if (result.status == PlateDesignStatus::Success) {
@@ -96,7 +115,8 @@ std::string plateDesignResultToJson(const AssemblyDocument& input, const PlateDe
   root["repair"] = nullptr;
   if (result.status == PlateDesignStatus::CutPoint && !input.plates.empty()) {
     if (const std::optional<PlateRepair> repair = proposeCutPointRepair(input.plates, input.plateOptions)) {
-      const AssemblyDocument repaired = documentFromPlates(repair->plates, input.plateOptions, "repair", input.name + " (repaired)");
+      const AssemblyDocument repaired =
+          documentFromPlates(repair->plates, input.plateOptions, "repair", input.name + " (repaired)");
       root["repair"] = {{"message", repair->message}, {"document", json::parse(documentToJson(repaired, -1))}};
     }
   }

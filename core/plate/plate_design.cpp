@@ -39,13 +39,12 @@ bool parallel(const Vec3& a, const Vec3& b) { return norm(cross(a, b)) < 1e-2; }
 
 Vec3 minus(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
 
-
 // What the geometry says about the plates: who touches whom, along which edge, with which faces.
 struct PlateGraph {
   int plateCount = 0;
-  std::vector<std::vector<int>> neighbours;     // sorted plate indices
-  std::vector<std::vector<Vec3>> edgeTo;        // edgeTo[p][k]: edge direction shared with neighbours[p][k]
-  std::vector<std::vector<int>> contactsOf;     // contact indices per plate
+  std::vector<std::vector<int>> neighbours;  // sorted plate indices
+  std::vector<std::vector<Vec3>> edgeTo;     // edgeTo[p][k]: edge direction shared with neighbours[p][k]
+  std::vector<std::vector<int>> contactsOf;  // contact indices per plate
   std::vector<PlateContact> contacts;
   std::vector<Vec3> thicknessAxis;
   std::vector<std::optional<TenonSite>> tenonSites;  // per contact
@@ -143,15 +142,17 @@ std::optional<PlateJoint> halvedJointFor(const PlateGraph& graph, int crossing, 
 
 // The joint `mover` gets with `other` when it leaves along d, or nothing when they cross and
 // cannot part that way.
-std::optional<PlateJoint> jointFor(const PlateGraph& graph, int mover, int other, const Vec3& d, JointRealization realization) {
+std::optional<PlateJoint> jointFor(const PlateGraph& graph, int mover, int other, const Vec3& d,
+                                   JointRealization realization) {
   const int crossing = crossingBetween(graph, mover, other);
   if (crossing >= 0) return halvedJointFor(graph, crossing, mover, other, d, realization);
   PlateJoint joint{mover, other, d, JointType::Empty, -1};
   if (realization == JointRealization::Planned) {
-    joint.type = plannedJointType(graph.edgeTo[mover][static_cast<size_t>(
-                                      std::lower_bound(graph.neighbours[mover].begin(), graph.neighbours[mover].end(), other) -
-                                      graph.neighbours[mover].begin())],
-                                  d);
+    joint.type =
+        plannedJointType(graph.edgeTo[mover][static_cast<size_t>(
+                             std::lower_bound(graph.neighbours[mover].begin(), graph.neighbours[mover].end(), other) -
+                             graph.neighbours[mover].begin())],
+                         d);
     return joint;
   }
   for (int c : graph.contactsOf[mover]) {
@@ -197,14 +198,17 @@ Assembly modelAssembly(const PlateGraph& graph, const std::vector<Step>& steps, 
         if (norm(u) < 1e-6) u = cross(d, std::abs(d[0]) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0});
         u = normalized(u);
         const Vec3 v = cross(d, u);
-        for (const Vec3& n : {negated(d), u, negated(u), v, negated(v)}) assembly.contacts.push_back({a, b, *cleanedNormal(n), 1.0});
+        for (const Vec3& n : {negated(d), u, negated(u), v, negated(v)})
+          assembly.contacts.push_back({a, b, *cleanedNormal(n), 1.0});
         continue;
       }
       for (int c : graph.contactsOf[joint.mover]) {
         const PlateContact& contact = graph.contacts[c];
         if (c == joint.contact || contact.crossing) continue;
-        if (contact.a == joint.mover && contact.b == joint.other) assembly.contacts.push_back({a, b, contact.normal, contact.area});
-        if (contact.b == joint.mover && contact.a == joint.other) assembly.contacts.push_back({a, b, negated(contact.normal), contact.area});
+        if (contact.a == joint.mover && contact.b == joint.other)
+          assembly.contacts.push_back({a, b, contact.normal, contact.area});
+        if (contact.b == joint.mover && contact.a == joint.other)
+          assembly.contacts.push_back({a, b, negated(contact.normal), contact.area});
       }
       if (joint.type != JointType::MortiseTenon) continue;
       const TenonSite& site = *graph.tenonSites[joint.contact];
@@ -246,13 +250,15 @@ struct JointedPlan {
 };
 
 JointedPlan cutPlan(const std::vector<Plate>& plates, const PlateGraph& graph, const std::vector<PlateJoint>& joints,
-                    const std::vector<int>& order, const PlateOptions& geometry, double clearance, const JointCutOptions& options) {
+                    const std::vector<int>& order, const PlateOptions& geometry, double clearance,
+                    const JointCutOptions& options) {
   std::vector<TenonSite> sites;
   std::vector<SlotCut> slots;
   for (const PlateJoint& joint : joints) {
     if (joint.type == JointType::MortiseTenon) sites.push_back(*graph.tenonSites[joint.contact]);
     if (joint.type == JointType::Halved) {
-      for (const SlotCut& slot : halvedSlots(plates, graph.contacts[joint.contact], joint.mover, joint.direction, clearance)) {
+      for (const SlotCut& slot :
+           halvedSlots(plates, graph.contacts[joint.contact], joint.mover, joint.direction, clearance)) {
         slots.push_back(slot);
       }
     }
@@ -284,8 +290,8 @@ std::string jointedFailure(const JointedPlan& plan, const std::vector<int>& orde
   for (size_t k = 0; k < directions.size(); ++k) {
     for (size_t j = k + 1; j < order.size(); ++j) {
       if (meshCollidesAlong(meshes[order[k]], meshes[order[j]], directions[k], tolerance)) {
-        return "plate " + std::to_string(plan.plates[order[k]].id) + " runs into plate " + std::to_string(plan.plates[order[j]].id) +
-               " when it leaves";
+        return "plate " + std::to_string(plan.plates[order[k]].id) + " runs into plate " +
+               std::to_string(plan.plates[order[j]].id) + " when it leaves";
       }
     }
   }
@@ -294,8 +300,12 @@ std::string jointedFailure(const JointedPlan& plan, const std::vector<int>& orde
 
 class PlateJointPlanner {
  public:
-  PlateJointPlanner(const std::vector<Plate>& plates, const std::vector<PlateContact>& contacts, const PlateDesignOptions& options)
-      : plates_(plates), graph_(buildPlateGraph(plates, contacts, options.joints)), options_(options), random_(options.seed * 0x9E3779B97F4A7C15ull + 1) {}
+  PlateJointPlanner(const std::vector<Plate>& plates, const std::vector<PlateContact>& contacts,
+                    const PlateDesignOptions& options)
+      : plates_(plates),
+        graph_(buildPlateGraph(plates, contacts, options.joints)),
+        options_(options),
+        random_(options.seed * 0x9E3779B97F4A7C15ull + 1) {}
 
   PlateDesignResult run();
 
@@ -303,8 +313,8 @@ class PlateJointPlanner {
   std::vector<Step> childrenOf(const std::vector<Step>& steps);
   bool acceptable(const std::vector<Step>& steps) const;
   bool acceptComplete(const std::vector<Step>& path, PlateDesignResult* result);
-  bool cutAndVerify(const std::vector<PlateJoint>& joints, const std::vector<int>& order, const std::vector<Vec3>& directions,
-                    PlateDesignResult* result);
+  bool cutAndVerify(const std::vector<PlateJoint>& joints, const std::vector<int>& order,
+                    const std::vector<Vec3>& directions, PlateDesignResult* result);
   Step makeStep(const std::vector<Step>& steps, int plate, const Vec3& d) const;
   std::vector<Vec3> candidateDirections(int plate) const;
   uint64_t nextRandom() {
@@ -425,10 +435,12 @@ std::vector<Step> PlateJointPlanner::childrenOf(const std::vector<Step>& steps) 
   };
   std::sort(ranked.begin(), ranked.end(), [&](const auto& x, const auto& y) {
     if (parallelEdges(x.second) != parallelEdges(y.second)) return parallelEdges(x.second) > parallelEdges(y.second);
-    return x.second.emptyJoints != y.second.emptyJoints ? x.second.emptyJoints < y.second.emptyJoints : x.first < y.first;
+    return x.second.emptyJoints != y.second.emptyJoints ? x.second.emptyJoints < y.second.emptyJoints
+                                                        : x.first < y.first;
   });
   std::vector<Step> children;
-  for (size_t k = 0; k < ranked.size() && static_cast<int>(k) < options_.candidates; ++k) children.push_back(ranked[k].second);
+  for (size_t k = 0; k < ranked.size() && static_cast<int>(k) < options_.candidates; ++k)
+    children.push_back(ranked[k].second);
   return children;
 }
 
@@ -443,13 +455,15 @@ PlateDesignResult PlateJointPlanner::run() {
   }());
   if (!cuts.empty()) {
     result.status = PlateDesignStatus::CutPoint;
-    result.message = "plate " + std::to_string(plates_[cuts[0]].id) +
-                     " is a cut point of the parts-graph: taking it away splits the other plates, and no joints can make such "
-                     "a structure interlocking (paper Section 5.2, Fig. 18); add a plate or bar that joins the two sides";
+    result.message =
+        "plate " + std::to_string(plates_[cuts[0]].id) +
+        " is a cut point of the parts-graph: taking it away splits the other plates, and no joints can make such "
+        "a structure interlocking (paper Section 5.2, Fig. 18); add a plate or bar that joins the two sides";
     return result;
   }
   if (graph_.plateCount < 3) {
-    result.message = "an interlocking structure needs at least three plates; this one has " + std::to_string(graph_.plateCount);
+    result.message =
+        "an interlocking structure needs at least three plates; this one has " + std::to_string(graph_.plateCount);
     return result;
   }
   // Depth-first search over the construction tree, kept on an explicit stack of ranked children.
@@ -465,11 +479,13 @@ PlateDesignResult PlateJointPlanner::run() {
       result.message = "cancelled after " + std::to_string(progress.nodes) + " nodes";
       return result;
     }
-    if ((options_.timeLimitSeconds > 0 && progress.seconds > options_.timeLimitSeconds) || progress.nodes > options_.nodeLimit) {
+    if ((options_.timeLimitSeconds > 0 && progress.seconds > options_.timeLimitSeconds) ||
+        progress.nodes > options_.nodeLimit) {
       result.status = PlateDesignStatus::LimitReached;
-      result.message = "no plan within the limits (" + std::to_string(progress.nodes) + " nodes; deepest " +
-                       std::to_string(progress.bestDepth) + " of " + std::to_string(graph_.plateCount) + " plates" +
-                       (lastRejection_.empty() ? std::string(")") : "; the last complete plan failed: " + lastRejection_ + ")");
+      result.message =
+          "no plan within the limits (" + std::to_string(progress.nodes) + " nodes; deepest " +
+          std::to_string(progress.bestDepth) + " of " + std::to_string(graph_.plateCount) + " plates" +
+          (lastRejection_.empty() ? std::string(")") : "; the last complete plan failed: " + lastRejection_ + ")");
       return result;
     }
     if (pending.back().empty()) {  // no child left here: back to the parent's next sibling
@@ -490,17 +506,21 @@ PlateDesignResult PlateJointPlanner::run() {
   }
   if (result.status != PlateDesignStatus::Success) {
     result.status = PlateDesignStatus::NotFound;
-    result.message = "no interlocking joint plan exists within the search (" + std::to_string(progress.nodes) +
-                     " nodes; deepest " + std::to_string(progress.bestDepth) + " of " + std::to_string(graph_.plateCount) + " plates" +
-                     (lastRejection_.empty() ? std::string(")") : "; the last complete plan failed on its jointed plates: " + lastRejection_ + ")") +
-                     (options_.realization == JointRealization::Cut
-                          ? " with the joints that can be cut (through and open mortise-and-tenon on square edges standing on a face "
-                            "at a right angle); joints 'planned' gives the paper's graph design alone"
-                          : "");
+    result.message =
+        "no interlocking joint plan exists within the search (" + std::to_string(progress.nodes) + " nodes; deepest " +
+        std::to_string(progress.bestDepth) + " of " + std::to_string(graph_.plateCount) + " plates" +
+        (lastRejection_.empty() ? std::string(")")
+                                : "; the last complete plan failed on its jointed plates: " + lastRejection_ + ")") +
+        (options_.realization == JointRealization::Cut
+             ? " with the joints that can be cut (through and open mortise-and-tenon on square edges standing on a "
+               "face "
+               "at a right angle); joints 'planned' gives the paper's graph design alone"
+             : "");
     return result;
   }
   progress.seconds = seconds();  // the cut and its verification included
-  result.message = "designed " + std::to_string(result.joints.size()) + " joints in " + std::to_string(progress.nodes) + " nodes";
+  result.message =
+      "designed " + std::to_string(result.joints.size()) + " joints in " + std::to_string(progress.nodes) + " nodes";
   return result;
 }
 
@@ -516,7 +536,8 @@ bool PlateJointPlanner::cutAndVerify(const std::vector<PlateJoint>& joints, cons
     result->clearance = options_.joints.clearance;
     result->fabricationPlates =
         options_.joints.clearance > 0
-            ? cutPlan(plates_, graph_, joints, order, options_.geometry, options_.joints.clearance, options_.joints).plates
+            ? cutPlan(plates_, graph_, joints, order, options_.geometry, options_.joints.clearance, options_.joints)
+                  .plates
             : result->jointedPlates;
     return true;
   } catch (const Error& error) {  // cuts that split a plate or run into each other: not this plan
@@ -560,9 +581,12 @@ bool PlateJointPlanner::acceptComplete(const std::vector<Step>& path, PlateDesig
 
 const char* jointTypeName(JointType type) {
   switch (type) {
-    case JointType::MortiseTenon: return "mortise-tenon";
-    case JointType::Halved: return "halved";
-    case JointType::Empty: return "empty";
+    case JointType::MortiseTenon:
+      return "mortise-tenon";
+    case JointType::Halved:
+      return "halved";
+    case JointType::Empty:
+      return "empty";
   }
   return "empty";
 }
@@ -570,8 +594,10 @@ const char* jointTypeName(JointType type) {
 JointRealization parseJointRealization(const std::string& name) {
   if (name == "cut") return JointRealization::Cut;
   if (name == "planned") return JointRealization::Planned;
-  throwBadInput("", "joints must be 'cut' (made in the plates and verified there) or 'planned' (the paper's graph design "
-                    "alone), got '" + name + "'");
+  throwBadInput("",
+                "joints must be 'cut' (made in the plates and verified there) or 'planned' (the paper's graph design "
+                "alone), got '" +
+                    name + "'");
 }
 
 const char* jointRealizationName(JointRealization realization) {

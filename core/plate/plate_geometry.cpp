@@ -177,9 +177,10 @@ void requirePlanar(const Plate& plate, const std::vector<Loop>& loops, const cha
     for (size_t i = 0; i < loops[l].size(); ++i) {
       const double off = std::abs(dot(minus(loops[l][i], frame.origin), frame.normal));
       if (off > tolerance) {
-        throwBadInput(source, plateName(plate) + ": its " + which + " face is not planar: vertex " + std::to_string(i + 1) +
-                                  (l ? " of hole " + std::to_string(l) : std::string()) + " is " + millimetres(off) +
-                                  " off the face's plane (tolerance " + millimetres(tolerance) + ")");
+        throwBadInput(source, plateName(plate) + ": its " + which + " face is not planar: vertex " +
+                                  std::to_string(i + 1) + (l ? " of hole " + std::to_string(l) : std::string()) +
+                                  " is " + millimetres(off) + " off the face's plane (tolerance " +
+                                  millimetres(tolerance) + ")");
       }
     }
   }
@@ -201,9 +202,10 @@ void requireSimpleLoop(const Plate& plate, const Loop& loop, size_t loopIndex, c
       if (i2 == j || j2 == i) continue;  // adjacent edges share a vertex
       const int o1 = orient(i, i2, j), o2 = orient(i, i2, j2), o3 = orient(j, j2, i), o4 = orient(j, j2, i2);
       if (o1 * o2 <= 0 && o3 * o4 <= 0 && !(o1 == 0 && o2 == 0)) {
-        throwBadInput(source, plateName(plate) + ": its " + (loopIndex ? "hole " + std::to_string(loopIndex) : std::string("outline")) +
-                                  " crosses itself: edge " + std::to_string(i + 1) + "-" + std::to_string(i2 + 1) + " meets edge " +
-                                  std::to_string(j + 1) + "-" + std::to_string(j2 + 1));
+        throwBadInput(source, plateName(plate) + ": its " +
+                                  (loopIndex ? "hole " + std::to_string(loopIndex) : std::string("outline")) +
+                                  " crosses itself: edge " + std::to_string(i + 1) + "-" + std::to_string(i2 + 1) +
+                                  " meets edge " + std::to_string(j + 1) + "-" + std::to_string(j2 + 1));
       }
     }
   }
@@ -216,8 +218,8 @@ void validatePlate(const Plate& plate, double tolerance, const std::string& sour
   for (size_t l = 0; l < plate.bottom.size(); ++l) {
     if (plate.bottom[l].size() < 3) throwBadInput(source, plateName(plate) + ": a face loop needs at least 3 vertices");
     if (plate.bottom[l].size() != plate.top[l].size()) {
-      throwBadInput(source, plateName(plate) + ": its faces do not match: " + std::to_string(plate.bottom[l].size()) + " and " +
-                                std::to_string(plate.top[l].size()) + " vertices");
+      throwBadInput(source, plateName(plate) + ": its faces do not match: " + std::to_string(plate.bottom[l].size()) +
+                                " and " + std::to_string(plate.top[l].size()) + " vertices");
     }
   }
   requirePlanar(plate, plate.bottom, "first", tolerance, source);
@@ -235,8 +237,8 @@ void validatePlate(const Plate& plate, double tolerance, const std::string& sour
     }
   }
   if (hi - lo > tolerance) {
-    throwBadInput(source, plateName(plate) + ": its faces are not parallel: the second face is " + millimetres(lo) + " to " +
-                              millimetres(hi) + " from the first");
+    throwBadInput(source, plateName(plate) + ": its faces are not parallel: the second face is " + millimetres(lo) +
+                              " to " + millimetres(hi) + " from the first");
   }
   if (std::abs(lo) <= tolerance) throwBadInput(source, plateName(plate) + ": its thickness is zero");
   // Every side face (one per edge) must be planar: the faces match vertex for vertex.
@@ -249,8 +251,9 @@ void validatePlate(const Plate& plate, double tolerance, const std::string& sour
       const Loop quad{b[k], b[next], t[next], t[k]};
       const double off = maxDistanceToPlane({quad}, PlaneFrame(centroidOf(quad), loopNormal(quad)));
       if (off > tolerance || dot(minus(t[k], b[k]), axis) <= 0) {
-        throwBadInput(source, plateName(plate) + ": its faces do not match: the side between vertices " + std::to_string(k + 1) +
-                                  " and " + std::to_string(next + 1) + " is twisted by " + millimetres(off));
+        throwBadInput(source, plateName(plate) + ": its faces do not match: the side between vertices " +
+                                  std::to_string(k + 1) + " and " + std::to_string(next + 1) + " is twisted by " +
+                                  millimetres(off));
       }
     }
   }
@@ -276,12 +279,14 @@ bool isPrismPlate(const Plate& plate, const Vec3& axis, double thickness) {
   return true;
 }
 
-double thicknessOf(const Plate& plate, const Vec3& axis) { return dot(minus(plate.top[0][0], plate.bottom[0][0]), axis); }
+double thicknessOf(const Plate& plate, const Vec3& axis) {
+  return dot(minus(plate.top[0][0], plate.bottom[0][0]), axis);
+}
 
 // The part of `plate`'s face inside the slab of `other` (between its faces), as Clipper paths in
 // `frame` (the plate's first face plane).
-ClipperLib::Paths insideSlab(const Plate& plate, const PlaneFrame& frame, const Vec3& point, const Vec3& line, const Vec3& across,
-                             double width, double reach, double tolerance) {
+ClipperLib::Paths insideSlab(const Plate& plate, const PlaneFrame& frame, const Vec3& point, const Vec3& line,
+                             const Vec3& across, double width, double reach, double tolerance) {
   // The slab's inside, a tolerance in from each face: a hole as wide as the slab (a mortise) then
   // splits the region, and a face lying on the slab's face adds nothing.
   const Vec3 low = plus(point, scaled(across, tolerance)), high = plus(point, scaled(across, width - tolerance));
@@ -303,8 +308,8 @@ double pathsArea(const ClipperLib::Paths& paths) {
 
 // Where along `line` (from `point`) the region has material: each outer path's extent (a connected
 // piece covers every position between its ends), merged.
-std::vector<std::pair<double, double>> shadowOnLine(const ClipperLib::Paths& paths, const PlaneFrame& frame, const Vec3& point,
-                                                    const Vec3& line) {
+std::vector<std::pair<double, double>> shadowOnLine(const ClipperLib::Paths& paths, const PlaneFrame& frame,
+                                                    const Vec3& point, const Vec3& line) {
   std::vector<std::pair<double, double>> spans;
   for (const ClipperLib::Path& path : paths) {
     if (!ClipperLib::Orientation(path)) continue;  // a hole: its piece's ends are its outline's
@@ -319,15 +324,18 @@ std::vector<std::pair<double, double>> shadowOnLine(const ClipperLib::Paths& pat
   std::sort(spans.begin(), spans.end());
   std::vector<std::pair<double, double>> merged;
   for (const auto& span : spans) {
-    if (!merged.empty() && span.first <= merged.back().second) merged.back().second = std::max(merged.back().second, span.second);
-    else merged.push_back(span);
+    if (!merged.empty() && span.first <= merged.back().second)
+      merged.back().second = std::max(merged.back().second, span.second);
+    else
+      merged.push_back(span);
   }
   return merged;
 }
 
 // The stretches where both shadows have material, longer than the tolerance.
 std::vector<std::pair<double, double>> commonStretches(const std::vector<std::pair<double, double>>& x,
-                                                       const std::vector<std::pair<double, double>>& y, double tolerance) {
+                                                       const std::vector<std::pair<double, double>>& y,
+                                                       double tolerance) {
   std::vector<std::pair<double, double>> common;
   for (const auto& [x0, x1] : x) {
     for (const auto& [y0, y1] : y) {
@@ -352,9 +360,11 @@ std::optional<PlateContact> plateCrossing(const std::vector<Plate>& plates, int 
   const Vec3 point = plus(scaled(ta, dot(a.bottom[0][0], ta)), scaled(tb, dot(b.bottom[0][0], tb)));
   const Box boxA = boxOf(a), boxB = boxOf(b);
   double reach = 0;
-  for (int k = 0; k < 3; ++k) reach += std::max(boxA.hi[k], boxB.hi[k]) - std::min(boxA.lo[k], boxB.lo[k]) + std::abs(point[k]);
+  for (int k = 0; k < 3; ++k)
+    reach += std::max(boxA.hi[k], boxB.hi[k]) - std::min(boxA.lo[k], boxB.lo[k]) + std::abs(point[k]);
   const PlaneFrame frameA(a.bottom[0][0], ta), frameB(b.bottom[0][0], tb);
-  const ClipperLib::Paths inA = insideSlab(a, frameA, point, line, tb, hb, reach, tolerance);  // a's material in b's slab
+  const ClipperLib::Paths inA =
+      insideSlab(a, frameA, point, line, tb, hb, reach, tolerance);  // a's material in b's slab
   const ClipperLib::Paths inB = insideSlab(b, frameB, point, line, ta, ha, reach, tolerance);
   if (pathsArea(inA) <= tolerance * tolerance || pathsArea(inB) <= tolerance * tolerance) return std::nullopt;
   // A point at `t` along the line is in both plates when each has material in the other's slab
@@ -365,15 +375,18 @@ std::optional<PlateContact> plateCrossing(const std::vector<Plate>& plates, int 
 
   if (common.empty()) return std::nullopt;
   if (common.size() > 1) {
-    throwBadInput("", plateName(a) + " and " + plateName(b) + " overlap in " + std::to_string(common.size()) +
-                      " places: make them cross through once (each filling the other's thickness) or meet face to face");
+    throwBadInput(
+        "", plateName(a) + " and " + plateName(b) + " overlap in " + std::to_string(common.size()) +
+                " places: make them cross through once (each filling the other's thickness) or meet face to face");
   }
   const double from = common[0].first, to = common[0].second;
-  const double a0 = shadowA.front().first, a1 = shadowA.back().second, b0 = shadowB.front().first, b1 = shadowB.back().second;
+  const double a0 = shadowA.front().first, a1 = shadowA.back().second, b0 = shadowB.front().first,
+               b1 = shadowB.back().second;
   // Crossing through: over [from, to] each plate's material fills the other's whole thickness.
   auto band = [&](const Vec3& across, double width) {
     const Vec3 low = plus(point, scaled(across, tolerance)), high = plus(point, scaled(across, width - tolerance));
-    return Loop{plus(low, scaled(line, from)), plus(low, scaled(line, to)), plus(high, scaled(line, to)), plus(high, scaled(line, from))};
+    return Loop{plus(low, scaled(line, from)), plus(low, scaled(line, to)), plus(high, scaled(line, to)),
+                plus(high, scaled(line, from))};
   };
   const Loop bandA = band(tb, hb), bandB = band(ta, ha);
   auto filled = [&](const Plate& plate, const PlaneFrame& frame, const Loop& band, double width) {
@@ -385,8 +398,9 @@ std::optional<PlateContact> plateCrossing(const std::vector<Plate>& plates, int 
     return std::abs(pathsArea(inside) - (width - 2 * tolerance) * (to - from)) <= tolerance * (to - from + width);
   };
   if (!filled(a, frameA, bandA, hb) || !filled(b, frameB, bandB, ha)) {
-    throwBadInput("", plateName(a) + " and " + plateName(b) + " overlap without passing through each other: make them cross "
-                      "through (each filling the other's thickness) or meet face to face");
+    throwBadInput("", plateName(a) + " and " + plateName(b) +
+                          " overlap without passing through each other: make them cross "
+                          "through (each filling the other's thickness) or meet face to face");
   }
   PlateContact crossing;
   crossing.a = p;
@@ -422,7 +436,7 @@ std::vector<PlateContact> computePlateContacts(const std::vector<Plate>& plates,
       for (const SolidFace& f : faces[p]) {
         const PlaneFrame frame(f.loops[0][0], f.normal);
         for (const SolidFace& g : faces[q]) {
-          if (dot(f.normal, g.normal) > -0.999) continue;               // not facing each other
+          if (dot(f.normal, g.normal) > -0.999) continue;                // not facing each other
           if (maxDistanceToPlane(g.loops, frame) > tolerance) continue;  // not in one plane
           ClipperLib::Clipper clipper;
           clipper.AddPaths(clipperPaths(f.loops, frame), ClipperLib::ptSubject, true);
@@ -434,7 +448,8 @@ std::vector<PlateContact> computePlateContacts(const std::vector<Plate>& plates,
           for (const ClipperLib::Path& path : overlap) {
             const double a = ClipperLib::Area(path) / (kClipperScale * kClipperScale);
             area += a;
-            if (!largest || std::abs(a) > std::abs(ClipperLib::Area(*largest)) / (kClipperScale * kClipperScale)) largest = &path;
+            if (!largest || std::abs(a) > std::abs(ClipperLib::Area(*largest)) / (kClipperScale * kClipperScale))
+              largest = &path;
           }
           if (area <= tolerance * tolerance) continue;
           PlateContact contact;
@@ -455,7 +470,8 @@ std::vector<PlateContact> computePlateContacts(const std::vector<Plate>& plates,
           contacts.push_back(contact);
         }
       }
-      if (std::optional<PlateContact> crossing = plateCrossing(plates, static_cast<int>(p), static_cast<int>(q), tolerance)) {
+      if (std::optional<PlateContact> crossing =
+              plateCrossing(plates, static_cast<int>(p), static_cast<int>(q), tolerance)) {
         contacts.push_back(*crossing);
       }
     }
@@ -479,7 +495,9 @@ void requireConnectedPlates(const std::vector<Plate>& plates, const std::vector<
     group[find(c.a)] = find(c.b);
   }
   for (int i = 0; i < n; ++i) {
-    if (!touches[i]) throwBadInput(source, plateName(plates[i]) + " touches no other plate (no face of it lies on another plate's face)");
+    if (!touches[i])
+      throwBadInput(source,
+                    plateName(plates[i]) + " touches no other plate (no face of it lies on another plate's face)");
   }
   std::vector<int> firstOfGroup;
   for (int i = 0; i < n; ++i) {

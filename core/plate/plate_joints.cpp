@@ -26,10 +26,10 @@ namespace {
 Vec3 minus(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
 Vec3 plus(const Vec3& a, const Vec3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
 
-constexpr double kSquare = 1e-6;          // |cos| below this: at a right angle
-constexpr double kTolerance = 0.05;       // mm: faces closer than this lie on one another
-constexpr double kMortiseMargin = 1.0;    // mm of material left around a mortise at least
-constexpr double kShortestJoint = 3.0;    // mm: a shorter contact gets no tenon
+constexpr double kSquare = 1e-6;        // |cos| below this: at a right angle
+constexpr double kTolerance = 0.05;     // mm: faces closer than this lie on one another
+constexpr double kMortiseMargin = 1.0;  // mm of material left around a mortise at least
+constexpr double kShortestJoint = 3.0;  // mm: a shorter contact gets no tenon
 
 std::string plateLabel(const Plate& plate) {
   return "plate " + std::to_string(plate.id) + (plate.name.empty() ? "" : " (" + plate.name + ")");
@@ -68,7 +68,8 @@ double areaOf(const ClipperLib::Paths& paths) {
 }
 
 // Area of the loops' region (non-zero) inside or outside `face` (its outline minus its holes).
-double areaAgainst(const std::vector<Loop>& loops, const std::vector<Loop>& face, const PlaneFrame& frame, bool outside) {
+double areaAgainst(const std::vector<Loop>& loops, const std::vector<Loop>& face, const PlaneFrame& frame,
+                   bool outside) {
   ClipperLib::Clipper clipper;
   clipper.AddPaths(clipperPaths(loops, frame), ClipperLib::ptSubject, true);
   clipper.AddPaths(clipperPaths(face, frame), ClipperLib::ptClip, true);
@@ -107,8 +108,8 @@ Loop tenonOf(const std::vector<Plate>& plates, const TenonSite& site, double sta
 
 // Which kind of mortise fits: through (inside the face plate with a margin all round), open at
 // one side (that side of the tenon plate flush with the face plate's edge), or none.
-std::optional<int> mortiseKind(const std::vector<Plate>& plates, TenonSite site, const std::vector<std::pair<double, double>>& spans,
-                               double clearance) {
+std::optional<int> mortiseKind(const std::vector<Plate>& plates, TenonSite site,
+                               const std::vector<std::pair<double, double>>& spans, double clearance) {
   const Plate& tenonPlate = plates[site.tenonPlate];
   const Plate& mortisePlate = plates[site.mortisePlate];
   const PlaneFrame frame(mortisePlate.bottom[0][0], plateThicknessAxis(mortisePlate));
@@ -116,7 +117,8 @@ std::optional<int> mortiseKind(const std::vector<Plate>& plates, TenonSite site,
   constexpr double kFlush = 0.01;  // mm
   auto inside = [&](double low, double high) {
     std::vector<Loop> rects;
-    for (const auto& [start, end] : spans) rects.push_back(footprint(tenonPlate, site, start - margin, end + margin, low, high));
+    for (const auto& [start, end] : spans)
+      rects.push_back(footprint(tenonPlate, site, start - margin, end + margin, low, high));
     return areaAgainst(rects, mortisePlate.bottom, frame, true) < 1e-6;
   };
   auto clearBeyond = [&](double low, double high) {
@@ -219,7 +221,8 @@ void staggerOpposingSites(const std::vector<Plate>& plates, std::vector<std::opt
   auto footprintBox = [&](const TenonSite& site) {
     const Plate& mortisePlate = plates[site.mortisePlate];
     const PlaneFrame frame(mortisePlate.bottom[0][0], plateThicknessAxis(mortisePlate));
-    const Loop rect = footprint(plates[site.tenonPlate], site, site.from, site.to, 0, plateThickness(plates[site.tenonPlate]));
+    const Loop rect =
+        footprint(plates[site.tenonPlate], site, site.from, site.to, 0, plateThickness(plates[site.tenonPlate]));
     std::array<double, 4> box{HUGE_VAL, HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
     for (const Vec3& p : rect) {
       const double x = dot(frame.offset(p), frame.u), y = dot(frame.offset(p), frame.v);
@@ -233,7 +236,9 @@ void staggerOpposingSites(const std::vector<Plate>& plates, std::vector<std::opt
       std::optional<TenonSite>& b = (*sites)[j];
       if (!a || !b || a->mortisePlate != b->mortisePlate || dot(a->intoMortise, b->intoMortise) > -0.5) continue;
       const std::array<double, 4> p = footprintBox(*a), q = footprintBox(*b);
-      if (p[2] <= q[0] + kTolerance || q[2] <= p[0] + kTolerance || p[3] <= q[1] + kTolerance || q[3] <= p[1] + kTolerance) continue;
+      if (p[2] <= q[0] + kTolerance || q[2] <= p[0] + kTolerance || p[3] <= q[1] + kTolerance ||
+          q[3] <= p[1] + kTolerance)
+        continue;
       const bool aFromBelow = dot(a->intoMortise, plateThicknessAxis(plates[a->mortisePlate])) > 0;
       a->stagger = aFromBelow ? 1 : -1;
       b->stagger = -a->stagger;
@@ -241,7 +246,8 @@ void staggerOpposingSites(const std::vector<Plate>& plates, std::vector<std::opt
   }
 }
 
-std::optional<TenonSite> tenonSiteOf(const std::vector<Plate>& plates, const PlateContact& contact, const JointCutOptions& options) {
+std::optional<TenonSite> tenonSiteOf(const std::vector<Plate>& plates, const PlateContact& contact,
+                                     const JointCutOptions& options) {
   const Vec3 axisA = plateThicknessAxis(plates[contact.a]), axisB = plateThicknessAxis(plates[contact.b]);
   const bool aOnFace = std::abs(dot(contact.normal, axisA)) > 1 - kSquare;
   const bool bOnFace = std::abs(dot(contact.normal, axisB)) > 1 - kSquare;
@@ -283,8 +289,8 @@ std::optional<TenonSite> tenonSiteOf(const std::vector<Plate>& plates, const Pla
   return std::nullopt;
 }
 
-std::vector<SlotCut> halvedSlots(const std::vector<Plate>& plates, const PlateContact& crossing, int mover, const Vec3& d,
-                                 double clearance) {
+std::vector<SlotCut> halvedSlots(const std::vector<Plate>& plates, const PlateContact& crossing, int mover,
+                                 const Vec3& d, double clearance) {
   const int other = crossing.a == mover ? crossing.b : crossing.a;
   const Vec3& line = crossing.edgeDirection;
   const double sign = dot(d, line) > 0 ? 1 : -1;
@@ -298,7 +304,9 @@ std::vector<SlotCut> halvedSlots(const std::vector<Plate>& plates, const PlateCo
     // plate's thickness (its first face is on crossingPoint's plane) plus the clearance.
     const double start = middle, end = towards > 0 ? crossing.crossingTo + out : crossing.crossingFrom - out;
     auto at = [&](double t, double w) { return plus(crossing.crossingPoint, plus(scaled(line, t), scaled(axis, w))); };
-    return SlotCut{plate, {at(start, -clearance / 2), at(end, -clearance / 2), at(end, width + clearance / 2), at(start, width + clearance / 2)}};
+    return SlotCut{plate,
+                   {at(start, -clearance / 2), at(end, -clearance / 2), at(end, width + clearance / 2),
+                    at(start, width + clearance / 2)}};
   };
   // The mover's slot opens behind it (it slides off the other plate forwards); the other's ahead.
   return {slot(mover, other, -sign), slot(other, mover, sign)};
@@ -319,7 +327,8 @@ std::vector<Plate> cutTenonJoints(const std::vector<Plate>& plates, const std::v
     for (const auto& [start, end] : tenonSpans(plates, site, options)) {
       added[site.tenonPlate].push_back(tenonOf(plates, site, start, end));
       removed[site.mortisePlate].push_back(mortiseOf(plates, site, start, end, options.clearance));
-      removedArea[site.mortisePlate] += areaAgainst({removed[site.mortisePlate].back()}, plates[site.mortisePlate].bottom, frame, false);
+      removedArea[site.mortisePlate] +=
+          areaAgainst({removed[site.mortisePlate].back()}, plates[site.mortisePlate].bottom, frame, false);
     }
   }
   std::vector<Plate> jointed = plates;

@@ -32,7 +32,8 @@ double signedArea(const std::vector<Point2>& points, const std::vector<int>& loo
 }
 
 bool onSegment(const Point2& a, const Point2& b, const Point2& p) {
-  return std::min(a[0], b[0]) <= p[0] && p[0] <= std::max(a[0], b[0]) && std::min(a[1], b[1]) <= p[1] && p[1] <= std::max(a[1], b[1]);
+  return std::min(a[0], b[0]) <= p[0] && p[0] <= std::max(a[0], b[0]) && std::min(a[1], b[1]) <= p[1] &&
+         p[1] <= std::max(a[1], b[1]);
 }
 
 // Do the closed segments ab and cd meet (touching and collinear overlaps count)?
@@ -60,7 +61,8 @@ bool insideLoops(const std::vector<Point2>& points, const std::vector<std::vecto
     for (size_t i = 0, j = loop.size() - 1; i < loop.size(); j = i++) {
       const Point2& a = points[loop[i]];
       const Point2& b = points[loop[j]];
-      if ((a[1] > q[1]) != (b[1] > q[1]) && q[0] < (b[0] - a[0]) * (q[1] - a[1]) / (b[1] - a[1]) + a[0]) inside = !inside;
+      if ((a[1] > q[1]) != (b[1] > q[1]) && q[0] < (b[0] - a[0]) * (q[1] - a[1]) / (b[1] - a[1]) + a[0])
+        inside = !inside;
     }
   }
   return inside;
@@ -68,7 +70,8 @@ bool insideLoops(const std::vector<Point2>& points, const std::vector<std::vecto
 
 // Can a bridge run from `from` to `to` without meeting any edge (other than at its own ends),
 // through the inside of the region?
-bool bridgeClear(const std::vector<Point2>& points, const std::vector<std::vector<int>>& loops, const Point2& from, const Point2& to) {
+bool bridgeClear(const std::vector<Point2>& points, const std::vector<std::vector<int>>& loops, const Point2& from,
+                 const Point2& to) {
   for (const std::vector<int>& loop : loops) {
     for (size_t e = 0; e < loop.size(); ++e) {
       const Point2& c = points[loop[e]];
@@ -83,7 +86,8 @@ bool bridgeClear(const std::vector<Point2>& points, const std::vector<std::vecto
 // Joins each hole (clockwise) to the outline (counter-clockwise) by a two-way bridge from the
 // hole's rightmost vertex to the nearest outline vertex it can see (no edge in the way, leaving
 // both vertices into the region), giving one simple-in-effect polygon that ear clipping can cut.
-std::vector<int> bridgeHoles(const std::vector<Point2>& points, std::vector<int> outer, std::vector<std::vector<int>> holes) {
+std::vector<int> bridgeHoles(const std::vector<Point2>& points, std::vector<int> outer,
+                             std::vector<std::vector<int>> holes) {
   std::sort(holes.begin(), holes.end(), [&](const std::vector<int>& a, const std::vector<int>& b) {
     auto rightmost = [&](const std::vector<int>& h) {
       double x = -HUGE_VAL;
@@ -104,12 +108,14 @@ std::vector<int> bridgeHoles(const std::vector<Point2>& points, std::vector<int>
     std::vector<size_t> candidates(outer.size());
     for (size_t o = 0; o < outer.size(); ++o) candidates[o] = o;
     auto distance = [&](size_t o) { return std::hypot(points[outer[o]][0] - from[0], points[outer[o]][1] - from[1]); };
-    std::stable_sort(candidates.begin(), candidates.end(), [&](size_t x, size_t y) { return distance(x) < distance(y); });
+    std::stable_sort(candidates.begin(), candidates.end(),
+                     [&](size_t x, size_t y) { return distance(x) < distance(y); });
     size_t best = candidates.front();
     for (size_t o : candidates) {
       const Point2& to = points[outer[o]];
       if (to == from) continue;
-      if (locallyInside(points, outer, o, from) && locallyInside(points, hole, m, to) && bridgeClear(points, loops, from, to)) {
+      if (locallyInside(points, outer, o, from) && locallyInside(points, hole, m, to) &&
+          bridgeClear(points, loops, from, to)) {
         best = o;
         break;
       }
@@ -148,7 +154,8 @@ void clipEars(const std::vector<Point2>& points, std::vector<int> polygon, std::
       size_t flattest = 0;
       double smallest = HUGE_VAL;
       for (size_t i = 0; i < n; ++i) {
-        const double area = std::abs(cross2(points[polygon[(i + n - 1) % n]], points[polygon[i]], points[polygon[(i + 1) % n]]));
+        const double area =
+            std::abs(cross2(points[polygon[(i + n - 1) % n]], points[polygon[i]], points[polygon[(i + 1) % n]]));
         if (area < smallest) {
           smallest = area;
           flattest = i;

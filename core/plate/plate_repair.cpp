@@ -17,7 +17,7 @@
 namespace desia {
 namespace {
 
-constexpr double kCoplanar = 0.05;      // mm
+constexpr double kCoplanar = 0.05;  // mm
 constexpr double kSameNormal = 1e-6;
 constexpr double kMinimumWidth = 10.0;  // mm a bar needs to be worth making
 constexpr double kWidthPerThickness = 3.0;
@@ -95,18 +95,20 @@ std::optional<Bar> barBetween(const Face& f, const Face& g, double thickness) {
   const double sharedU = std::min(a[2], b[2]) - std::max(a[0], b[0]);
   const double sharedV = std::min(a[3], b[3]) - std::max(a[1], b[1]);
   if ((sharedU > 0) == (sharedV > 0)) return std::nullopt;  // side by side along one axis only
-  const bool alongU = sharedV > 0;                           // the bar runs along u, across v's shared width
+  const bool alongU = sharedV > 0;                          // the bar runs along u, across v's shared width
   const double shared = alongU ? sharedV : sharedU;
   if (shared < kMinimumWidth) return std::nullopt;
   const double width = std::min(shared, kWidthPerThickness * thickness);
-  const double middle = alongU ? (std::max(a[1], b[1]) + std::min(a[3], b[3])) / 2 : (std::max(a[0], b[0]) + std::min(a[2], b[2])) / 2;
+  const double middle =
+      alongU ? (std::max(a[1], b[1]) + std::min(a[3], b[3])) / 2 : (std::max(a[0], b[0]) + std::min(a[2], b[2])) / 2;
   const double start = alongU ? std::min(a[0], b[0]) : std::min(a[1], b[1]);
   const double end = alongU ? std::max(a[2], b[2]) : std::max(a[3], b[3]);
   auto at = [&](double along, double across) {
     const double x = alongU ? along : across, y = alongU ? across : along;
     return plus(frame.origin, plus(scaled(frame.u, x), scaled(frame.v, y)));
   };
-  Loop bottom{at(start, middle - width / 2), at(end, middle - width / 2), at(end, middle + width / 2), at(start, middle + width / 2)};
+  Loop bottom{at(start, middle - width / 2), at(end, middle - width / 2), at(end, middle + width / 2),
+              at(start, middle + width / 2)};
   Loop top;
   for (const Vec3& p : bottom) top.push_back(plus(p, scaled(f.normal, thickness)));
   Bar bar;
@@ -162,7 +164,8 @@ std::optional<Bar> smallestBar(const std::vector<Plate>& plates, const std::vect
           if (!bar || (best && bar->area >= best->area)) continue;
           const Box3 barBox = boxOf(bar->plate);
           bool clear = true;
-          for (size_t k = 0; k < plates.size() && clear; ++k) clear = !boxesOverlap(barBox, boxes[k], options.contactTolerance);
+          for (size_t k = 0; k < plates.size() && clear; ++k)
+            clear = !boxesOverlap(barBox, boxes[k], options.contactTolerance);
           if (!clear) continue;
           bar->from = static_cast<int>(p);
           bar->to = static_cast<int>(q);
@@ -191,9 +194,11 @@ std::optional<PlateRepair> proposeCutPointRepair(const std::vector<Plate>& plate
     if (!bar) return std::nullopt;
     Plate added = bar->plate;
     added.id = ++nextId;
-    added.name = "bar joining plates " + std::to_string(repair.plates[bar->from].id) + " and " + std::to_string(repair.plates[bar->to].id);
-    message << (repair.added.empty() ? "" : "; ") << "plate " << added.id << ", a bar joining plates " << repair.plates[bar->from].id
-            << " and " << repair.plates[bar->to].id << " past cut point " << repair.plates[cuts[0]].id;
+    added.name = "bar joining plates " + std::to_string(repair.plates[bar->from].id) + " and " +
+                 std::to_string(repair.plates[bar->to].id);
+    message << (repair.added.empty() ? "" : "; ") << "plate " << added.id << ", a bar joining plates "
+            << repair.plates[bar->from].id << " and " << repair.plates[bar->to].id << " past cut point "
+            << repair.plates[cuts[0]].id;
     repair.added.push_back(static_cast<int>(repair.plates.size()));
     repair.plates.push_back(added);
   }

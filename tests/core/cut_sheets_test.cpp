@@ -141,7 +141,9 @@ TEST(CutSheets, SheetsNestAndSayWhatDoesNotFit) {
     plateCutSheets(plan, CutFileFormat::Svg, small);
     ADD_FAILURE() << "the 1050 mm top fits no 600 x 400 sheet";
   } catch (const Error& e) {
-    EXPECT_NE(std::string(e.what()).find("plate 1 (1050 x 650 mm) does not fit on a 600 x 400 mm sheet"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("plate 1 (1050 x 650 mm) does not fit on a 600 x 400 mm sheet"),
+              std::string::npos)
+        << e.what();
   }
   EXPECT_THROW(parseSheetSize("600", &small), Error);
   EXPECT_THROW(parseSheetSize("600x-4", &small), Error);
@@ -152,7 +154,8 @@ TEST(CutSheets, DxfInMillimetresWithOneLayerPerKindOfLine) {
   const AssemblyDocument plan = parseJsonDocument(designedTable(0), "table plan");
   const std::string dxf = plateCutSheets(plan, CutFileFormat::Dxf, {})[0];
   EXPECT_NE(dxf.find("$INSUNITS\n70\n4\n"), std::string::npos);
-  for (const char* layer : {"CUT_OUTER", "CUT_INNER", "ENGRAVE"}) EXPECT_NE(dxf.find(std::string("2\n") + layer + "\n"), std::string::npos);
+  for (const char* layer : {"CUT_OUTER", "CUT_INNER", "ENGRAVE"})
+    EXPECT_NE(dxf.find(std::string("2\n") + layer + "\n"), std::string::npos);
   // One closed polyline per outline and mortise: 6 outlines, 8 mortises in the top, 2 + 2 in each side.
   size_t polylines = 0;
   for (size_t at = dxf.find("POLYLINE"); at != std::string::npos; at = dxf.find("POLYLINE", at + 1)) ++polylines;

@@ -38,7 +38,8 @@ PlateDesignResult designCut(const std::vector<Plate>& plates, const JointCutOpti
 
 double meshVolume(const TriangleMesh& mesh) {
   double volume = 0;
-  for (const auto& t : mesh.triangles) volume += dot(mesh.vertices[t[0]], cross(mesh.vertices[t[1]], mesh.vertices[t[2]])) / 6.0;
+  for (const auto& t : mesh.triangles)
+    volume += dot(mesh.vertices[t[0]], cross(mesh.vertices[t[1]], mesh.vertices[t[2]])) / 6.0;
   return volume;
 }
 
@@ -54,7 +55,8 @@ TEST(PlateJoints, TheTableGetsThroughTenonsVerifiedOnTheCutPlates) {
   ASSERT_EQ(result.status, PlateDesignStatus::Success) << result.message;
   EXPECT_EQ(result.realization, JointRealization::Cut);
   ASSERT_EQ(result.joints.size(), 10u);
-  for (const PlateJoint& joint : result.joints) EXPECT_EQ(joint.type, JointType::MortiseTenon) << "every board is inset: all through";
+  for (const PlateJoint& joint : result.joints)
+    EXPECT_EQ(joint.type, JointType::MortiseTenon) << "every board is inset: all through";
   // Tenons of the four boards standing under the top: 2 + 2 (sides) + 2 + 2 (aprons) mortises in it.
   EXPECT_EQ(result.jointedPlates[0].bottom.size(), 9u);
   // The tenons fill the mortises exactly: no material comes or goes.
@@ -106,7 +108,9 @@ TEST(PlateJoints, TheClearanceGrowsEveryMortiseAndNothingElse) {
   // What is exported to make is the fabrication plates: their volume, less the play.
   const AssemblyDocument written = parseJsonDocument(text, "table result");
   const std::vector<uint8_t> stl = exportAssembly(written, ExportFormat::StlBinary, {});
-  EXPECT_NEAR(meshVolume(parseMesh(std::string(stl.begin(), stl.end()), "table.stl")), totalVolume(result.fabricationPlates), 1e-6 * totalVolume(result.fabricationPlates)) << "float32 STL";
+  EXPECT_NEAR(meshVolume(parseMesh(std::string(stl.begin(), stl.end()), "table.stl")),
+              totalVolume(result.fabricationPlates), 1e-6 * totalVolume(result.fabricationPlates))
+      << "float32 STL";
 }
 
 // An axis-aligned board; its thinnest extent is its thickness (as examples/plate/make_examples.py).
@@ -117,7 +121,8 @@ Plate board(int id, const Vec3& lo, const Vec3& hi) {
   Plate plate;
   plate.id = id;
   Loop bottom, top;
-  for (const auto& [a, b] : std::vector<std::pair<double, double>>{{lo[u], lo[w]}, {hi[u], lo[w]}, {hi[u], hi[w]}, {lo[u], hi[w]}}) {
+  for (const auto& [a, b] :
+       std::vector<std::pair<double, double>>{{lo[u], lo[w]}, {hi[u], lo[w]}, {hi[u], hi[w]}, {lo[u], hi[w]}}) {
     Vec3 p{0, 0, 0};
     p[u] = a;
     p[w] = b;
@@ -144,16 +149,20 @@ TEST(PlateJoints, SweptRemovalOfTwoBoards) {
   EXPECT_TRUE(plateCollidesAlong(upper, wall, {1, 0, 0}, tolerance));
   EXPECT_FALSE(plateCollidesAlong(upper, wall, {-1, 0, 0}, tolerance));
   const double rise = std::tan(5 * M_PI / 180);
-  EXPECT_TRUE(plateCollidesAlong(upper, wall, normalized({1, 0, rise}), tolerance)) << "rises 10.5 on the way: its lower part hits";
-  EXPECT_FALSE(plateCollidesAlong(upper, wall, normalized({1, 0, 2 * rise}), tolerance)) << "rises 21: passes over the 30 mm wall";
+  EXPECT_TRUE(plateCollidesAlong(upper, wall, normalized({1, 0, rise}), tolerance))
+      << "rises 10.5 on the way: its lower part hits";
+  EXPECT_FALSE(plateCollidesAlong(upper, wall, normalized({1, 0, 2 * rise}), tolerance))
+      << "rises 21: passes over the 30 mm wall";
 }
 
 // The independent method: a prism plate's inside as a point test (its bottom face, even-odd, and
 // its height), and a move step by step, sampling the mover's inside against the other plate.
 struct PrismInside {
   explicit PrismInside(const Plate& plate)
-      : axis(plateThicknessAxis(plate)), base(plate.bottom[0][0]),
-        u(normalized(cross(axis, std::abs(axis[0]) < 0.6 ? Vec3{1, 0, 0} : Vec3{0, 1, 0}))), v(cross(axis, u)) {
+      : axis(plateThicknessAxis(plate)),
+        base(plate.bottom[0][0]),
+        u(normalized(cross(axis, std::abs(axis[0]) < 0.6 ? Vec3{1, 0, 0} : Vec3{0, 1, 0}))),
+        v(cross(axis, u)) {
     thickness = dot(offset(plate.top[0][0]), axis);
     for (const Loop& loop : plate.bottom) {
       std::vector<std::array<double, 2>> flat;
@@ -204,7 +213,8 @@ std::vector<Vec3> insideSamples(const PrismInside& plate) {
   return samples;
 }
 
-bool sampledCollision(const PrismInside& mover, const std::vector<Vec3>& samples, const PrismInside& obstacle, const Vec3& d) {
+bool sampledCollision(const PrismInside& mover, const std::vector<Vec3>& samples, const PrismInside& obstacle,
+                      const Vec3& d) {
   // Steps shorter than the 18 mm boards, over the distances where the boxes can meet only.
   double first = 0, last = 4000;
   for (int k = 0; k < 3; ++k) {
@@ -237,10 +247,11 @@ TEST(PlateJoints, SweptRemovalAgreesWithSamplingOnTheJointedTable) {
     const std::vector<Vec3> samples = insideSamples(insides[a]);
     for (size_t b = 0; b < plates.size(); ++b) {
       if (a == b) continue;
-      for (const Vec3& d : {Vec3{1, 0, 0}, Vec3{-1, 0, 0}, Vec3{0, 1, 0}, Vec3{0, -1, 0}, Vec3{0, 0, 1}, Vec3{0, 0, -1}}) {
+      for (const Vec3& d :
+           {Vec3{1, 0, 0}, Vec3{-1, 0, 0}, Vec3{0, 1, 0}, Vec3{0, -1, 0}, Vec3{0, 0, 1}, Vec3{0, 0, -1}}) {
         const bool exact = plateCollidesAlong(plates[a], plates[b], d, 0.05);
-        EXPECT_EQ(exact, sampledCollision(insides[a], samples, insides[b], d)) << plates[a].id << " along " << d[0] << "," << d[1] << "," << d[2]
-                                                                  << " against " << plates[b].id;
+        EXPECT_EQ(exact, sampledCollision(insides[a], samples, insides[b], d))
+            << plates[a].id << " along " << d[0] << "," << d[1] << "," << d[2] << " against " << plates[b].id;
         collisions += exact ? 1 : 0;
         ++checks;
       }
@@ -271,7 +282,8 @@ TEST(PlateJoints, ATurnedTableDesignsTheSameJoints) {
   EXPECT_EQ(result.order, straight.order);
   EXPECT_EQ(result.joints.size(), straight.joints.size());
   // Clipper's 1e-4 mm grid in the turned plates' own frames: a millionth of the volume at most.
-  EXPECT_NEAR(totalVolume(result.jointedPlates), totalVolume(straight.jointedPlates), 1e-6 * totalVolume(straight.jointedPlates));
+  EXPECT_NEAR(totalVolume(result.jointedPlates), totalVolume(straight.jointedPlates),
+              1e-6 * totalVolume(straight.jointedPlates));
 }
 
 TEST(PlateJoints, FlushBoardsGetOpenMortisesAndTenonsTooWideForAJointGetNone) {
@@ -348,7 +360,8 @@ namespace {
 
 TEST(PlateRepair, TheChairGetsOneBarFromLegToBackAndNoCutPointIsLeft) {
   const AssemblyDocument chair = loadPlateExample("chair_cut_point.json");
-  ASSERT_EQ(plateCutPoints(static_cast<int>(chair.plates.size()), computePlateContacts(chair.plates, {})), std::vector<int>{4});
+  ASSERT_EQ(plateCutPoints(static_cast<int>(chair.plates.size()), computePlateContacts(chair.plates, {})),
+            std::vector<int>{4});
   const std::optional<PlateRepair> repair = proposeCutPointRepair(chair.plates);
   ASSERT_TRUE(repair.has_value());
   ASSERT_EQ(repair->added.size(), 1u) << "one part, as the paper's Fig. 18";
@@ -402,7 +415,8 @@ TEST(PlateCrossings, CrossingPlatesAreFoundAndHalvedJointsCutThem) {
   for (const PlateContact& c : after) {
     EXPECT_FALSE(c.crossing) << "the slots part them";
     const Vec3 n = c.a == 0 ? c.normal : negated(c.normal);  // from plate 1 into plate 2
-    normals.insert(std::to_string(static_cast<int>(std::lround(n[0]))) + std::to_string(static_cast<int>(std::lround(n[1]))) +
+    normals.insert(std::to_string(static_cast<int>(std::lround(n[0]))) +
+                   std::to_string(static_cast<int>(std::lround(n[1]))) +
                    std::to_string(static_cast<int>(std::lround(n[2]))));
   }
   // Slot walls across both thicknesses (+-x, +-z) and the slot bottoms (plate 1 blocked going down).
@@ -420,7 +434,9 @@ TEST(PlateCrossings, PlatesThatOverlapOnlyInPartAreRefusedWithBothNamed) {
     computePlateContacts(plates, {});
     ADD_FAILURE() << "a partial overlap was accepted";
   } catch (const Error& e) {
-    EXPECT_NE(std::string(e.what()).find("plate 1 and plate 2 overlap without passing through each other"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("plate 1 and plate 2 overlap without passing through each other"),
+              std::string::npos)
+        << e.what();
   }
 }
 

@@ -20,9 +20,9 @@ CutFileFormat parseCutFileFormat(const std::string& name);
 struct CutSheetOptions {
   // The sheet in mm; 0 x 0 = one sheet as large as the parts need.
   double sheetWidth = 0, sheetHeight = 0;
-  double kerf = 0;         // mm the beam removes: outlines move out by half of it, holes in
-  double spacing = 5;      // mm between parts and from the sheet's edges
-  bool hairline = false;   // SVG strokes 0.01 mm wide (lasers that cut hairlines only) instead of 0.1 mm
+  double kerf = 0;        // mm the beam removes: outlines move out by half of it, holes in
+  double spacing = 5;     // mm between parts and from the sheet's edges
+  bool hairline = false;  // SVG strokes 0.01 mm wide (lasers that cut hairlines only) instead of 0.1 mm
   std::string source = "<input>";
 };
 
@@ -38,6 +38,7 @@ CutSheetOptions parseCutSheetOptionsJson(const std::string& text);
 // edges: the blank holding both faces), turned to its smallest bounding box, and shelf-packed in
 // order of height. Throws BadInput for a document without plates, a sheet too small for a plate
 // (named, with its size), a kerf or spacing out of range.
-std::vector<std::string> plateCutSheets(const AssemblyDocument& document, CutFileFormat format, const CutSheetOptions& options);
+std::vector<std::string> plateCutSheets(const AssemblyDocument& document, CutFileFormat format,
+                                        const CutSheetOptions& options);
 
 }  // namespace desia

@@ -48,15 +48,15 @@ struct PlateOptions {
 // A planar contact between two plates (internal indices into the plate list).
 struct PlateContact {
   int a = 0, b = 0;
-  Vec3 normal{0, 0, 0};       // unit, pointing from plate a into plate b (the outward normal of a's face)
-  double area = 0;            // mm^2 of the overlap
+  Vec3 normal{0, 0, 0};         // unit, pointing from plate a into plate b (the outward normal of a's face)
+  double area = 0;              // mm^2 of the overlap
   Vec3 edgeDirection{0, 0, 0};  // the shared edge line's direction: where the plates' mid-planes meet
-  std::vector<Vec3> region;   // the overlap polygon (largest piece), in 3D
+  std::vector<Vec3> region;     // the overlap polygon (largest piece), in 3D
   // Two plates that cross (an X, to be joined by slots: a halved joint, paper Fig. 2) are in the
   // parts-graph with a crossing instead of a face contact: no normal, `edgeDirection` the crossing
   // line, `area` the crossing's area seen across it. See computePlateContacts.
   bool crossing = false;
-  Vec3 crossingPoint{0, 0, 0};        // on the crossing line and on both plates' first faces
+  Vec3 crossingPoint{0, 0, 0};              // on the crossing line and on both plates' first faces
   double crossingFrom = 0, crossingTo = 0;  // the crossing's extent along the line, from crossingPoint
   // Where a slot may open (the plate's outline ends at the crossing on that side): [0] towards
   // -edgeDirection, [1] towards +edgeDirection; for plate a and plate b.

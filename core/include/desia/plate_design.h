@@ -18,10 +18,10 @@
 namespace desia {
 
 enum class JointType {
-  MortiseTenon,      // tenons on one plate's edge, mortises through the other (planned: the edge
-                     // within 45..135 degrees of the direction)
-  Halved,            // planned only: the edge runs along the direction, a slot (paper Fig. 2)
-  Empty,             // the plates only touch
+  MortiseTenon,  // tenons on one plate's edge, mortises through the other (planned: the edge
+                 // within 45..135 degrees of the direction)
+  Halved,        // planned only: the edge runs along the direction, a slot (paper Fig. 2)
+  Empty,         // the plates only touch
 };
 const char* jointTypeName(JointType type);  // "mortise-tenon", "halved", "empty"
 
@@ -47,21 +47,21 @@ struct PlateJoint {
 };
 
 struct PlateDesignProgress {
-  int64_t nodes = 0;      // construction-tree nodes visited
-  int depth = 0;          // plates placed in the current node
+  int64_t nodes = 0;  // construction-tree nodes visited
+  int depth = 0;      // plates placed in the current node
   int bestDepth = 0;
-  int targetParts = 0;    // the number of plates
+  int targetParts = 0;  // the number of plates
   double seconds = 0;
 };
 
 struct PlateDesignOptions {
   uint64_t seed = 1;
-  int candidates = 30;            // children kept per node (the paper's m)
+  int candidates = 30;  // children kept per node (the paper's m)
   double timeLimitSeconds = 60;
   int64_t nodeLimit = 1'000'000;
   JointRealization realization = JointRealization::Cut;
-  JointCutOptions joints;          // tenon sizes and the clearance cut into the result
-  PlateOptions geometry;           // the contact tolerance for the jointed plates' contacts
+  JointCutOptions joints;  // tenon sizes and the clearance cut into the result
+  PlateOptions geometry;   // the contact tolerance for the jointed plates' contacts
   // Called at every node of the search; return false to cancel.
   std::function<bool(const PlateDesignProgress&)> onProgress;
 };
@@ -70,9 +70,9 @@ enum class PlateDesignStatus { Success, NotFound, LimitReached, Cancelled, CutPo
 
 struct PlateDesignResult {
   PlateDesignStatus status = PlateDesignStatus::NotFound;
-  std::string message;               // one sentence for the user
-  std::vector<int> order;            // plate indices: the key first, the last plate last
-  std::vector<Vec3> directions;      // removal direction of order[k] (none for the last plate)
+  std::string message;           // one sentence for the user
+  std::vector<int> order;        // plate indices: the key first, the last plate last
+  std::vector<Vec3> directions;  // removal direction of order[k] (none for the last plate)
   std::vector<PlateJoint> joints;
   JointRealization realization = JointRealization::Cut;
   // The plates with their joints cut (input order, no clearance): what was verified (Cut only).

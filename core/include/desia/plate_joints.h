@@ -24,9 +24,9 @@ namespace desia {
 
 // Where a through mortise-and-tenon joint can be cut for one contact (internal plate indices).
 struct TenonSite {
-  int tenonPlate = 0;    // the plate standing on its edge (S)
-  int mortisePlate = 0;  // the plate whose face it stands on (F)
-  int edge = 0;          // the side of the tenon plate's outline (between vertices edge, edge + 1)
+  int tenonPlate = 0;         // the plate standing on its edge (S)
+  int mortisePlate = 0;       // the plate whose face it stands on (F)
+  int edge = 0;               // the side of the tenon plate's outline (between vertices edge, edge + 1)
   Vec3 intoMortise{0, 0, 0};  // unit: the tenon plate's outward side normal, into the mortise plate
   Vec3 along{0, 0, 0};        // unit: along that side, from vertex edge to edge + 1
   double from = 0, to = 0;    // the part of the side on the face, as distances along it from vertex edge
@@ -77,8 +77,8 @@ struct SlotCut {
 // (along the crossing line), so its slot runs from the middle of the crossing back out of its
 // outline behind it, and the other plate's from the middle out of its outline ahead; each as wide
 // as the other plate is thick plus the clearance.
-std::vector<SlotCut> halvedSlots(const std::vector<Plate>& plates, const PlateContact& crossing, int mover, const Vec3& d,
-                                 double clearance);
+std::vector<SlotCut> halvedSlots(const std::vector<Plate>& plates, const PlateContact& crossing, int mover,
+                                 const Vec3& d, double clearance);
 
 std::vector<Plate> cutTenonJoints(const std::vector<Plate>& plates, const std::vector<TenonSite>& sites,
                                   const JointCutOptions& options, const std::vector<SlotCut>& slots = {});
