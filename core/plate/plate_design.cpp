@@ -23,6 +23,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 
 #include "analysis/part_motion.h"
 #include "analysis/vec3.h"
@@ -309,10 +310,16 @@ class PlateJointPlanner {
 
   PlateDesignResult run();
 
- private:
+  // What the search and a step-by-step session share.
+  // A structure no joints can make interlocking (a cut point, fewer than 3 plates): its result.
+  std::optional<PlateDesignResult> refusal() const;
   std::vector<Step> childrenOf(const std::vector<Step>& steps);
-  bool acceptable(const std::vector<Step>& steps) const;
   bool acceptComplete(const std::vector<Step>& path, PlateDesignResult* result);
+  int plateCount() const { return graph_.plateCount; }
+  const std::string& lastRejection() const { return lastRejection_; }
+
+ private:
+  bool acceptable(const std::vector<Step>& steps) const;
   bool cutAndVerify(const std::vector<PlateJoint>& joints, const std::vector<int>& order,
                     const std::vector<Vec3>& directions, PlateDesignResult* result);
   Step makeStep(const std::vector<Step>& steps, int plate, const Vec3& d) const;
@@ -444,10 +451,9 @@ std::vector<Step> PlateJointPlanner::childrenOf(const std::vector<Step>& steps) 
   return children;
 }
 
-PlateDesignResult PlateJointPlanner::run() {
+std::optional<PlateDesignResult> PlateJointPlanner::refusal() const {
   PlateDesignResult result;
-  PlateDesignProgress& progress = result.progress;
-  progress.targetParts = graph_.plateCount;
+  result.progress.targetParts = graph_.plateCount;
   const std::vector<int> cuts = findCutPoints(graph_.plateCount, [&] {
     std::vector<std::pair<int, int>> edges;
     for (const PlateContact& c : graph_.contacts) edges.push_back({c.a, c.b});
@@ -466,6 +472,14 @@ PlateDesignResult PlateJointPlanner::run() {
         "an interlocking structure needs at least three plates; this one has " + std::to_string(graph_.plateCount);
     return result;
   }
+  return std::nullopt;
+}
+
+PlateDesignResult PlateJointPlanner::run() {
+  if (std::optional<PlateDesignResult> refused = refusal()) return *refused;
+  PlateDesignResult result;
+  PlateDesignProgress& progress = result.progress;
+  progress.targetParts = graph_.plateCount;
   // Depth-first search over the construction tree, kept on an explicit stack of ranked children.
   std::vector<std::vector<Step>> pending{childrenOf({})};
   std::vector<Step> path;
@@ -578,6 +592,108 @@ bool PlateJointPlanner::acceptComplete(const std::vector<Step>& path, PlateDesig
 }
 
 }  // namespace
+
+// The session keeps its own copy of the plates (the planner refers to them) and a stack of the
+// ranked children of every node on its path, generated when first asked for.
+struct PlateDesignSession::State {
+  State(std::vector<Plate> plates_, std::vector<PlateContact> contacts_, const PlateDesignOptions& options)
+      : plates(std::move(plates_)), contacts(std::move(contacts_)), planner(plates, contacts, options) {}
+  std::vector<Plate> plates;
+  std::vector<PlateContact> contacts;
+  PlateJointPlanner planner;
+  std::vector<Step> path;
+  std::vector<PlateDesignStep> steps;
+  std::vector<std::optional<std::vector<Step>>> children{std::nullopt};  // per node on the path, root first
+  PlateDesignResult result;
+
+  std::vector<Step>& childrenHere() {
+    if (!children.back()) children.back() = planner.childrenOf(path);
+    return *children.back();
+  }
+  void showProgress() {
+    result.status = PlateDesignStatus::NotFound;
+    result.message = std::to_string(path.size()) + " of " + std::to_string(planner.plateCount()) +
+                     " plates taken (the last one stays): choose the next";
+  }
+};
+
+namespace {
+
+PlateDesignStep publicStep(const Step& step) { return {step.plate, step.direction, step.joints}; }
+
+}  // namespace
+
+PlateDesignSession::PlateDesignSession(std::vector<Plate> plates, std::vector<PlateContact> contacts,
+                                       const PlateDesignOptions& options) {
+  if (options.candidates < 1) throwBadInput("", "candidates must be at least 1");
+  state_ = std::make_unique<State>(std::move(plates), std::move(contacts), options);
+  if (std::optional<PlateDesignResult> refused = state_->planner.refusal()) throwBadInput("", refused->message);
+  state_->showProgress();
+}
+
+PlateDesignSession::~PlateDesignSession() = default;
+
+const std::vector<PlateDesignStep>& PlateDesignSession::steps() const { return state_->steps; }
+int PlateDesignSession::targetPlates() const { return state_->planner.plateCount(); }
+bool PlateDesignSession::complete() const { return state_->result.status == PlateDesignStatus::Success; }
+const PlateDesignResult& PlateDesignSession::result() const { return state_->result; }
+
+int PlateDesignSession::childCount() {
+  return complete() ? 0 : static_cast<int>(state_->childrenHere().size());
+}
+
+PlateDesignStep PlateDesignSession::childPreview(int n) {
+  if (n < 0 || n >= childCount()) {
+    throwBadInput("", "child " + std::to_string(n) + " does not exist: this node has " + std::to_string(childCount()));
+  }
+  return publicStep(state_->childrenHere()[static_cast<size_t>(n)]);
+}
+
+void PlateDesignSession::chooseChild(int n) {
+  const PlateDesignStep preview = childPreview(n);  // checks n
+  State& state = *state_;
+  std::vector<Step>& here = state.childrenHere();
+  state.path.push_back(here[static_cast<size_t>(n)]);
+  if (static_cast<int>(state.path.size()) + 1 == state.planner.plateCount()) {
+    // The last plate stays: this choice completes the plan, which must verify.
+    PlateDesignResult result;
+    result.progress.targetParts = state.planner.plateCount();
+    if (!state.planner.acceptComplete(state.path, &result)) {
+      state.path.pop_back();
+      here.erase(here.begin() + n);
+      throwBadInput("", "taking plate " + std::to_string(state.plates[preview.plate].id) +
+                            " completes a plan that fails: " + state.planner.lastRejection() + "; choose another");
+    }
+    result.message = "designed " + std::to_string(result.joints.size()) + " joints step by step";
+    state.result = result;
+  } else {
+    state.showProgress();
+  }
+  state.steps.push_back(preview);
+  state.children.push_back(std::nullopt);
+}
+
+bool PlateDesignSession::next() {
+  while (childCount() > 0) {
+    try {
+      chooseChild(0);
+      return true;
+    } catch (const Error&) {
+      // That child completed a plan that failed and was dropped: try the next one.
+    }
+  }
+  return false;
+}
+
+bool PlateDesignSession::back() {
+  State& state = *state_;
+  if (state.path.empty()) return false;
+  state.path.pop_back();
+  state.steps.pop_back();
+  state.children.pop_back();
+  state.showProgress();
+  return true;
+}
 
 const char* jointTypeName(JointType type) {
   switch (type) {

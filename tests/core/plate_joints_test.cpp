@@ -442,3 +442,45 @@ TEST(PlateCrossings, PlatesThatOverlapOnlyInPartAreRefusedWithBothNamed) {
 
 }  // namespace
 }  // namespace desia
+
+namespace desia {
+namespace {
+
+TEST(PlateSession, StepByStepGivesTheSearchsDesignAndGoesBack) {
+  const AssemblyDocument table = loadPlateExample("table.json");
+  const std::vector<PlateContact> contacts = computePlateContacts(table.plates, {});
+  const PlateDesignResult search = designPlateJoints(table.plates, contacts, {});
+  ASSERT_EQ(search.status, PlateDesignStatus::Success);
+  PlateDesignSession session(table.plates, contacts, {});
+  EXPECT_EQ(session.targetPlates(), 6);
+  EXPECT_FALSE(session.back()) << "at the root";
+  EXPECT_FALSE(session.complete());
+  ASSERT_GT(session.childCount(), 0);
+  EXPECT_EQ(session.childPreview(0).plate, search.order[0]) << "the best-ranked key is the search's";
+  EXPECT_THROW(session.childPreview(session.childCount()), Error);
+  // Best child each time: the search's plan (it needed no backtracking on the TABLE).
+  while (!session.complete()) ASSERT_TRUE(session.next()) << session.result().message;
+  EXPECT_EQ(session.childCount(), 0);
+  const PlateDesignResult& result = session.result();
+  EXPECT_EQ(result.order, search.order);
+  EXPECT_EQ(result.joints.size(), search.joints.size());
+  EXPECT_EQ(result.jointedPlates.size(), 6u) << "the plan was cut and verified";
+  EXPECT_EQ(session.steps().size(), 5u);
+  // Back one step and the plan is open again; choosing forward completes it again.
+  ASSERT_TRUE(session.back());
+  EXPECT_FALSE(session.complete());
+  EXPECT_EQ(session.steps().size(), 4u);
+  ASSERT_TRUE(session.next());
+  EXPECT_TRUE(session.complete());
+  // A structure with a cut point has no session.
+  const AssemblyDocument chair = loadPlateExample("chair_cut_point.json");
+  try {
+    PlateDesignSession refused(chair.plates, computePlateContacts(chair.plates, {}), {});
+    ADD_FAILURE() << "a cut point was accepted";
+  } catch (const Error& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("plate 5 is a cut point", 0), 0u) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace desia

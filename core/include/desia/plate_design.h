@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -84,6 +85,45 @@ struct PlateDesignResult {
   // contacts); part k = order[k].
   Assembly jointAssembly;
   PlateDesignProgress progress;
+};
+
+// One step of a plate design: the plate taken (an index) and the direction it leaves along, with
+// the joints it gets with the plates still in place.
+struct PlateDesignStep {
+  int plate = 0;
+  Vec3 direction{0, 0, 0};
+  std::vector<PlateJoint> joints;
+};
+
+// Step-by-step design (as the voxel session, paper Algorithm 1 by hand): the plates taken so far,
+// the ranked children of the current node, choose one, go back. A node whose choice completes the
+// plan is accepted only if the plan verifies (on its jointed plates when cut).
+class PlateDesignSession {
+ public:
+  // Throws BadInput for a structure no joints can make interlocking (a cut point, named; fewer
+  // than 3 plates).
+  PlateDesignSession(std::vector<Plate> plates, std::vector<PlateContact> contacts, const PlateDesignOptions& options);
+  ~PlateDesignSession();
+  PlateDesignSession(const PlateDesignSession&) = delete;
+  PlateDesignSession& operator=(const PlateDesignSession&) = delete;
+
+  const std::vector<PlateDesignStep>& steps() const;  // the key first
+  int targetPlates() const;
+  bool complete() const;  // every plate placed and the plan verified
+  // The verified result once complete (status Success), else NotFound saying how far it got.
+  const PlateDesignResult& result() const;
+
+  int childCount();                          // ranked children of the current node (generated on first call)
+  PlateDesignStep childPreview(int n);       // the n-th child (0 = best ranked), without moving
+  // Moves to the n-th child. Throws BadInput when n is out of range, or when that child completes
+  // a plan that fails verification (the child is dropped from the list; the message says why).
+  void chooseChild(int n);
+  bool next();  // moves to the best child that works; false when none does (then go back)
+  bool back();  // moves to the parent; false at the root
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
 };
 
 // "cut" or "planned"; BadInput naming the value else.
