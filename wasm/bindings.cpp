@@ -176,49 +176,66 @@ val parseFrame(const std::string& text, const std::string& source, double jointS
 }
 
 // The interactive design session (a long-lived handle: JS must call delete(), which the facade's
-// dispose() does). Every method returns plain data.
+// dispose() does), for a voxel shape or a plate design (the kind of the document decides). Every
+// method returns plain data.
 class DesignSession {
  public:
   DesignSession(const std::string& shapeText, const std::string& optionsJson, const std::string& source)
-      : session_(makeSession(shapeText, optionsJson, source)) {}
+      : document_(guarded([&] { return desia::parseAssemblyText(shapeText, source); })) {
+    guarded([&] {
+      if (document_.kind == desia::AssemblyKind::Plate && document_.contactsFromGeometry) {
+        plates_ = std::make_unique<desia::PlateDesignSession>(document_.plates, desia::computePlateContacts(document_.plates, document_.plateOptions),
+                                                               plateOptions(optionsJson));
+      } else if (document_.kind == desia::AssemblyKind::Voxel) {
+        voxels_ = std::make_unique<desia::VoxelDesignSession>(document_.voxels, desia::parseDesignOptionsJson(optionsJson, document_.voxels));
+      } else {
+        throw desia::Error(desia::ErrorCode::BadInput, source + ": a design session needs a voxel shape or a plate design");
+      }
+    });
+  }
 
   val state() const {
     return guarded([&] {
+      if (plates_) return parseJsonText(desia::plateSessionStateToJson(document_, *plates_));
       val result = val::object();
-      result.set("partsPlaced", session_->partsPlaced() + 1);  // parts in the current assembly
-      result.set("targetParts", session_->targetParts());
-      result.set("complete", session_->complete());
-      result.set("document", parseJsonText(desia::documentToJson(desia::documentFromVoxels(session_->current()), -1)));
+      result.set("partsPlaced", voxels_->partsPlaced() + 1);  // parts in the current assembly
+      result.set("targetParts", voxels_->targetParts());
+      result.set("complete", voxels_->complete());
+      result.set("document", parseJsonText(desia::documentToJson(desia::documentFromVoxels(voxels_->current()), -1)));
       return result;
     });
   }
-  int childCount() { return guarded([&] { return session_->childCount(); }); }
+  int childCount() { return guarded([&] { return plates_ ? plates_->childCount() : voxels_->childCount(); }); }
   val preview(int n) {
-    return guarded([&] { return parseJsonText(desia::documentToJson(desia::documentFromVoxels(session_->childPreview(n)), -1)); });
+    return guarded([&] {
+      if (plates_) return parseJsonText(desia::plateStepToJson(document_, plates_->childPreview(n)));
+      return parseJsonText(desia::documentToJson(desia::documentFromVoxels(voxels_->childPreview(n)), -1));
+    });
   }
-  void choose(int n) { guarded([&] { session_->chooseChild(n); }); }
-  bool next() { return guarded([&] { return session_->generateNextPart(); }); }
-  bool back() { return guarded([&] { return session_->goBack(); }); }
+  void choose(int n) { guarded([&] { plates_ ? plates_->chooseChild(n) : voxels_->chooseChild(n); }); }
+  bool next() { return guarded([&] { return plates_ ? plates_->next() : voxels_->generateNextPart(); }); }
+  bool back() { return guarded([&] { return plates_ ? plates_->back() : voxels_->goBack(); }); }
   val check() const {
     return guarded([&] {
-      const desia::AssemblyDocument document = desia::documentFromVoxels(session_->current());
-      return parseJsonText(desia::checkReportToJson(document, session_->check(), -1));
+      desia::CheckOptions options;
+      if (plates_) {
+        // The verified result once complete (both tests, as designPlate), else the design as given.
+        const desia::AssemblyDocument current =
+            plates_->complete() ? desia::parseJsonDocument(desia::plateDesignToJson(document_, plates_->result(), -1), "plan") : document_;
+        if (plates_->complete()) options.method = desia::CheckMethod::Both;
+        return parseJsonText(desia::checkReportToJson(current, desia::checkAssembly(current, options), -1));
+      }
+      const desia::AssemblyDocument document = desia::documentFromVoxels(voxels_->current());
+      return parseJsonText(desia::checkReportToJson(document, voxels_->check(), -1));
     });
   }
 
  private:
-  static std::unique_ptr<desia::VoxelDesignSession> makeSession(const std::string& shapeText, const std::string& optionsJson,
-                                                               const std::string& source) {
-    return guarded([&] {
-      const desia::AssemblyDocument document = desia::parseAssemblyText(shapeText, source);
-      if (document.kind != desia::AssemblyKind::Voxel) {
-        throw desia::Error(desia::ErrorCode::BadInput, source + ": a design session needs a voxel shape");
-      }
-      return std::make_unique<desia::VoxelDesignSession>(document.voxels, desia::parseDesignOptionsJson(optionsJson, document.voxels));
-    });
-  }
+  static desia::PlateDesignOptions plateOptions(const std::string& optionsJson) { return desia::parsePlateDesignOptionsJson(optionsJson); }
 
-  std::unique_ptr<desia::VoxelDesignSession> session_;
+  desia::AssemblyDocument document_;
+  std::unique_ptr<desia::VoxelDesignSession> voxels_;
+  std::unique_ptr<desia::PlateDesignSession> plates_;
 };
 
 // A voxel assembly (.puz or JSON text) as file bytes: "stl", "stl-ascii", "obj" or "xmpuzzle";

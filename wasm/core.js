@@ -343,7 +343,8 @@ function makeCore(module) {
     },
     /**
      * An interactive design session (the original tool's "Generate Next Part", "Child Index",
-     * "Go Back"). It holds WebAssembly memory: call dispose() when done.
+     * "Go Back") for a voxel shape or a plate design. It holds WebAssembly memory: call dispose()
+     * when done.
      */
     designSession(shapeText, options) {
       const { source = '<input>', ...designOptions } = requireOptions('designSession', options);
@@ -368,11 +369,11 @@ function makeCore(module) {
         }
       };
       return {
-        /** { partsPlaced, targetParts, complete, document } of the current assembly. */
+        /** { partsPlaced, targetParts, complete, document } of the current assembly (plates: also steps, message). */
         state: () => call('state'),
         /** Number of ranked children of the current node (generated on first call). */
         childCount: () => call('childCount'),
-        /** The JSON document the n-th child (0 = best) would give. */
+        /** The JSON document the n-th child (0 = best) would give (plates: the child's step). */
         preview: (n) => call('preview', requireChildIndex('preview', n)),
         /** Move to the n-th child. */
         choose: (n) => call('choose', requireChildIndex('choose', n)),

@@ -198,9 +198,21 @@ export interface DesignSessionState {
   /** Parts in the current assembly (placed parts plus the remainder). */
   partsPlaced: number;
   targetParts: number;
-  /** True when the assembly has all its parts. */
+  /** True when the assembly has all its parts (plates: every plate placed and the plan verified). */
   complete: boolean;
+  /** Voxels: the current assembly. Plates: the verified result document once complete, else the design. */
   document: AssemblyDocument;
+  /** Plates: the plates taken so far (input ids, the key first) and the direction each leaves along. */
+  steps?: { plate: number; direction: [number, number, number] }[];
+  /** Plates: how far the session got, or the result's message once complete. */
+  message?: string;
+}
+
+/** Plates: a child of a session's node, the plate it takes and the joints it gets (input ids). */
+export interface PlateSessionStep {
+  plate: number;
+  direction: [number, number, number];
+  joints: { mover: number; other: number; type: 'mortise-tenon' | 'halved' | 'empty'; direction: [number, number, number] }[];
 }
 
 /**
@@ -216,7 +228,8 @@ export interface DesignSession {
    * The assembly the n-th child (0 = best ranked) would give. `n` must be an integer from 0 to
    * 2^31 - 1 (else a DesiaError 'bad-input'); a child that does not exist is one too.
    */
-  preview(n: number): AssemblyDocument;
+  /** Voxels: the assembly the n-th child would give. Plates: the n-th child's step. */
+  preview(n: number): AssemblyDocument | PlateSessionStep;
   /** Moves to the n-th child (`n` as for preview). */
   choose(n: number): void;
   /** Moves to the best-ranked child; false when the node has none (go back). */
@@ -238,7 +251,7 @@ export interface DesignSession {
 export interface AsyncDesignSession {
   state(): Promise<DesignSessionState>;
   childCount(): Promise<number>;
-  preview(n: number): Promise<AssemblyDocument>;
+  preview(n: number): Promise<AssemblyDocument | PlateSessionStep>;
   choose(n: number): Promise<void>;
   next(): Promise<boolean>;
   back(): Promise<boolean>;
@@ -410,7 +423,12 @@ export interface DesiaCore {
    */
   designVoxel(shapeText: string, options: DesignVoxelOptions): DesignResult;
   /** An interactive design session; call dispose() when done. */
-  designSession(shapeText: string, options: Omit<DesignVoxelOptions, 'onProgress'>): DesignSession;
+  /**
+   * An interactive design session for a voxel shape (options as designVoxel's) or a plate design
+   * (options as designPlate's: a choice that completes the plan is accepted only if it verifies,
+   * else choose() throws with the reason and that child is dropped).
+   */
+  designSession(shapeText: string, options: Omit<DesignVoxelOptions, 'onProgress'> | Omit<PlateDesignOptions, 'onProgress'>): DesignSession;
   /**
    * Designs the joints of a plate design (paper Section 5.2: key, removal order and directions, a
    * joint per pair of touching plates). The result's `document` (kind 'plate', part 1 = the key)
@@ -496,7 +514,10 @@ export interface Desia {
    */
   designVoxel(shapeText: string, options: DesignVoxelOptions & CallOptions): Promise<DesignResult>;
   /** An interactive design session living in the worker; dispose() it when done. */
-  designSession(shapeText: string, options: Omit<DesignVoxelOptions, 'onProgress'> & CallOptions): Promise<AsyncDesignSession>;
+  designSession(
+    shapeText: string,
+    options: (Omit<DesignVoxelOptions, 'onProgress'> | Omit<PlateDesignOptions, 'onProgress'>) & CallOptions,
+  ): Promise<AsyncDesignSession>;
   /** {@link DesiaCore.designPlate} in the worker. */
   designPlate(input: string | AssemblyDocument, options?: PlateDesignOptions & CallOptions): Promise<DesignResult>;
   /** {@link DesiaCore.designFrame} in the worker. */

@@ -16,6 +16,7 @@
 
 import { byId } from './dom.js';
 import { readUrlState, writeUrlState } from './url-state.js';
+import { formatDirection } from './view.js';
 
 /** The fields of the form, by URL key; their values go to the core as they are. */
 const FIELDS = {
@@ -325,7 +326,7 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
   }
 
   async function startSession() {
-    if (kind !== 'voxel') return;
+    if (kind !== 'voxel' && kind !== 'plate') return;
     const request = readRequest();
     if (!request) return;
     const { shape, options } = request;
@@ -359,6 +360,12 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
     const n = Number(ui.sessionChild.value);
     const answer = await sessionCall('session-preview', '', { n }, 'Previewing…');
     if (!answer) return;
+    if (answer.value.step) {
+      // A plate session's child is a step (which plate leaves, along what, with which joints): the
+      // view keeps the design; the step is said in words.
+      setOutcome('', `Child ${answer.value.index}: ${describeStep(answer.value.step)}. Choose it to continue from there.`);
+      return;
+    }
     const { index, document: document_, surfaces, report } = answer.value;
     const { partsPlaced, targetParts } = session.snapshot;
     showSessionAssembly(`${session.base}_step${partsPlaced}of${targetParts}_child${index}`, document_, surfaces, report, answer.elapsedMs);
@@ -380,16 +387,26 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
 
   /** Session assemblies have no .puz text from the core: the page keeps them as JSON documents. */
   function showSessionAssembly(name, document_, surfaces, report, elapsedMs) {
-    const plain = { ...document_, voxel: { ...document_.voxel, labels: Array.from(document_.voxel.labels) } };
+    const plain = document_.voxel ? { ...document_, voxel: { ...document_.voxel, labels: Array.from(document_.voxel.labels) } } : document_;
     showAssembly({ name: `${name}.json`, text: JSON.stringify(plain), document: document_, surfaces, report, elapsedMs, timingLabel: 'Step time' });
+  }
+
+  /** 'plate 3 leaves along +x (2 mortise-tenon joints, 1 empty)' */
+  function describeStep(step) {
+    const counts = new Map();
+    for (const joint of step.joints) counts.set(joint.type, (counts.get(joint.type) ?? 0) + 1);
+    const joints = [...counts].map(([type, count]) => `${count} ${type}`).join(', ');
+    return `plate ${step.plate} leaves along ${formatDirection(step.direction)}${joints ? ` (${joints} joints)` : ''}`;
   }
 
   function describeSession() {
     if (!session) return 'No session.';
-    const { partsPlaced, targetParts, complete, childCount } = session.snapshot;
-    if (complete) return `Complete: ${partsPlaced} of ${targetParts} parts.`;
+    const { partsPlaced, targetParts, complete, childCount, steps } = session.snapshot;
+    const noun = steps ? 'plates' : 'parts';
+    if (complete) return `Complete: ${partsPlaced} of ${targetParts} ${noun}${steps ? ', verified' : ''}.`;
     const children = childCount === 0 ? 'no children (go back)' : `${childCount} children (0 = best ranked)`;
-    return `${partsPlaced} of ${targetParts} parts (the last is the remainder) · ${children}.`;
+    const taken = steps?.length ? ` · taken: ${steps.map((step) => `${step.plate} ${formatDirection(step.direction)}`).join(', ')}` : '';
+    return `${partsPlaced} of ${targetParts} ${noun} (the last is the remainder)${taken} · ${children}.`;
   }
 
   // -------------------------------------------------------------------------------------------
@@ -408,7 +425,7 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
     ui.plateNote.hidden = !plate;
     ui.frameHint.hidden = !frame;
     ui.frameNote.hidden = !frame;
-    ui.sessionPlateNote.hidden = !structure;
+    ui.sessionPlateNote.hidden = !frame;
     for (const field of ui.voxelOnlyFields) {
       field.hidden = structure;
       field.querySelector('input, select').disabled = structure;
@@ -419,7 +436,7 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
     }
     ui.designButton.disabled = busy;
     ui.cancelButton.disabled = !busy;
-    ui.sessionStart.disabled = busy || structure;
+    ui.sessionStart.disabled = busy || frame;
     ui.sessionStart.textContent = alive ? 'Restart' : 'Start';
     ui.sessionNext.disabled = busy || !alive || childCount === 0;
     ui.sessionBack.disabled = busy || !alive || session.snapshot.partsPlaced <= 1;

@@ -26,7 +26,7 @@
 //                                 timeLimit, jointSize, source }; result as for 'design-plate'
 //          op 'frame-document'    text = a frame as JSON, OBJ or .fpuz (by options.source);
 //                                 result = its JSON document as text (parseFrame)
-//          op 'session-open'      text = the voxel shape, options = designSession's options
+//          op 'session-open'      text = the voxel shape or plate design, options = designSession's options
 //          op 'session-next' | 'session-back' | 'session-close'
 //          op 'session-choose' | 'session-preview'   options = { n } (child index)
 //   out: { type: 'ready', version }
@@ -107,6 +107,8 @@ const OPERATIONS = {
   'session-preview': (core, text, options) => {
     const index = childIndex(options);
     const document = openSession().preview(index);
+    // A plate session's child is a step (the plate, its direction, its joints), not an assembly.
+    if (document && typeof document.plate === 'number') return [{ index, step: document }, []];
     // The core checks the previewed assembly from its own JSON document.
     const report = core.check(JSON.stringify(document), { source: `child ${index}` });
     return withSurfaces(core, { index, document, report }, `child ${index}`);
@@ -146,10 +148,10 @@ function childIndex(options) {
 /** The current node of the session, with its check report and the number of its children. */
 function sessionSnapshot(core, extra = {}) {
   const current = openSession();
-  const { partsPlaced, targetParts, complete, document } = current.state();
+  const { partsPlaced, targetParts, complete, document, steps, message } = current.state();
   // A complete puzzle has no children; asking would only generate an empty list.
   const childCount = complete ? 0 : current.childCount();
-  const snapshot = { ...extra, partsPlaced, targetParts, complete, childCount, document, report: current.check() };
+  const snapshot = { ...extra, partsPlaced, targetParts, complete, childCount, document, steps, message, report: current.check() };
   return withSurfaces(core, snapshot, 'design session');
 }
 

@@ -123,4 +123,35 @@ std::string plateDesignResultToJson(const AssemblyDocument& input, const PlateDe
   return root.dump();
 }
 
+namespace {
+
+json vectorJson(const Vec3& v) { return json::array({v[0], v[1], v[2]}); }
+
+json stepJson(const AssemblyDocument& input, const PlateDesignStep& step) {
+  json joints = json::array();
+  for (const PlateJoint& joint : step.joints) {
+    joints.push_back({{"mover", input.plates[joint.mover].id}, {"other", input.plates[joint.other].id},
+                      {"type", jointTypeName(joint.type)}, {"direction", vectorJson(joint.direction)}});
+  }
+  return {{"plate", input.plates[step.plate].id}, {"direction", vectorJson(step.direction)}, {"joints", joints}};
+}
+
+}  // namespace
+
+std::string plateSessionStateToJson(const AssemblyDocument& input, const PlateDesignSession& session) {
+  json steps = json::array();
+  for (const PlateDesignStep& step : session.steps()) {
+    steps.push_back({{"plate", input.plates[step.plate].id}, {"direction", vectorJson(step.direction)}});
+  }
+  json root = {{"partsPlaced", static_cast<int>(session.steps().size()) + 1},
+               {"targetParts", session.targetPlates()},
+               {"complete", session.complete()},
+               {"message", session.result().message},
+               {"steps", steps}};
+  root["document"] = json::parse(session.complete() ? plateDesignToJson(input, session.result(), -1) : documentToJson(input, -1));
+  return root.dump();
+}
+
+std::string plateStepToJson(const AssemblyDocument& input, const PlateDesignStep& step) { return stepJson(input, step).dump(); }
+
 }  // namespace desia

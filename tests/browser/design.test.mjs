@@ -177,7 +177,9 @@ describe('playground design panel in headless Chromium', { timeout: 100_000 }, (
     await page.goto(`${server.url}?${query}`);
     await waitForReady(page, CUBE_5_SHAPE);
     const values = await page.evaluate(() => Object.fromEntries(
-      [...document.querySelectorAll('#design-form [name]')].map((field) => [field.name, field.value]),
+      // The fields a voxel design shows (the plate-only joints and clearance are hidden).
+      [...document.querySelectorAll('#design-form [name]')].filter((field) => !field.closest('[hidden]'))
+        .map((field) => [field.name, field.value]),
     ));
     assert.deepEqual(values, { parts: '12', seed: '5', candidates: '20', timeLimit: '30', rank: '-y', mode: 'recursive' });
     assert.equal((await designState(page)).outcome, '', 'a link never starts a design');

@@ -124,10 +124,29 @@ describe('plate structures in the playground (headless Chromium)', { timeout: 12
     }
     assert.match(await page.textContent('#design-plate-note'), /N\s+does not apply/);
     assert.equal(await page.isVisible('#design-plate-note'), true);
-    // Step by step is for voxel puzzles only.
+    // Step by step designs plates too: the best key is the top, leaving upwards; stepping on to the
+    // end gives the verified plan, the same as Design's.
     await page.click('#session-details summary');
-    assert.equal(await page.isDisabled('#session-start'), true);
-    assert.match(await page.textContent('#session-plate-note'), /voxel puzzles\s+only/);
+    assert.equal(await page.isDisabled('#session-start'), false);
+    assert.equal(await page.isHidden('#session-plate-note'), true);
+    await page.click('#session-start');
+    await page.waitForFunction(() => document.querySelector('#session-state').dataset.parts === '1');
+    assert.match(await page.textContent('#session-state'), /^1 of 6 plates \(the last is the remainder\) · \d+ children/);
+    await page.click('#session-preview');
+    await page.waitForFunction(() => /^Child 0:/.test(document.querySelector('#design-message').textContent));
+    assert.match(await page.textContent('#design-message'), /^Child 0: plate 1 leaves along \+y \(4 mortise-tenon joints\)/);
+    for (let parts = 2; parts <= 6; parts += 1) {
+      await page.click('#session-next');
+      await page.waitForFunction((n) => document.querySelector('#session-state').dataset.parts === String(n), parts);
+    }
+    assert.equal(await page.getAttribute('#session-state', 'data-complete'), 'true');
+    assert.match(await page.textContent('#session-state'), /^Complete: 6 of 6 plates, verified\.$/);
+    const stepped = await pageState(page);
+    assertInterlockingWithKey(stepped, 1);
+    assert.equal((await joints(page)).length, 10);
+    await page.click('#session-close');
+    await page.selectOption('#example-select', TABLE);
+    await waitForReady(page, TABLE);
     await page.click('#session-details summary');
     // .puz and .xmpuzzle are voxel formats; plates export as SVG or DXF cut sheets (offered
     // first, with a sheet size and kerf), STL, OBJ or their JSON document.

@@ -412,3 +412,33 @@ test('partSurfaces gives every part the triangles of its STL export, the same in
     contacts: [{ a: 1, b: 2, normal: [1, 0, 0] }] });
   await rejectsWith(desia.partSurfaces(contacts, { source: 'c.json' }), 'bad-input', /^c\.json: export needs a voxel assembly, this is a contacts document$/);
 });
+
+test('a plate design session steps to the verified plan designPlate finds, in the worker too', async () => {
+  const table = fs.readFileSync(path.join(root, 'examples/plate/table.json'), 'utf8');
+  const expected = core.designPlate(table, { seed: 1 });
+  for (const session of [core.designSession(table, { seed: 1 }), await desia.designSession(table, { seed: 1 })]) {
+    try {
+      const first = await session.state();
+      assert.deepEqual([first.partsPlaced, first.targetParts, first.complete], [1, 6, false]);
+      assert.equal(first.document.kind, 'plate');
+      assert.ok(await session.childCount() > 0);
+      const preview = await session.preview(0);
+      assert.equal(preview.plate, 1, 'the top is the best key');
+      assert.deepEqual(preview.direction, [0, 1, 0]);
+      assert.ok(preview.joints.every((joint) => joint.type === 'mortise-tenon'));
+      while (!(await session.state()).complete) assert.equal(await session.next(), true);
+      const done = await session.state();
+      assert.equal(done.steps.length, 5);
+      assert.deepEqual(done.document, expected.document, 'the same verified result as designPlate');
+      const report = await session.check();
+      assert.equal(report.verdict, 'interlocking');
+      assert.equal(report.key, 1);
+      assert.equal(await session.back(), true);
+      assert.equal((await session.state()).complete, false);
+    } finally {
+      await session.dispose();
+    }
+  }
+  const chair = fs.readFileSync(path.join(root, 'examples/plate/chair_cut_point.json'), 'utf8');
+  assert.throws(() => core.designSession(chair, {}), (error) => error.code === 'bad-input' && /^plate 5 is a cut point/.test(error.message));
+});

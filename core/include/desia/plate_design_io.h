@@ -24,4 +24,11 @@ std::string plateDesignProgressToJson(const PlateDesignProgress& progress);
 // proposeCutPointRepair adds, or null}, the shape of the voxel designer's result.
 std::string plateDesignResultToJson(const AssemblyDocument& input, const PlateDesignResult& result);
 
+// A plate design session's current node for the package: {partsPlaced (plates taken + the rest),
+// targetParts, complete, steps: [{plate, direction}] (input ids), document: the verified result
+// document once complete, else the input design}.
+std::string plateSessionStateToJson(const AssemblyDocument& input, const PlateDesignSession& session);
+// One child of a session's node: {plate, direction, joints: [{mover, other, type, direction}]} (input ids).
+std::string plateStepToJson(const AssemblyDocument& input, const PlateDesignStep& step);
+
 }  // namespace desia
