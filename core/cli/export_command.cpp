@@ -20,7 +20,7 @@ namespace {
 constexpr int kExitBadInput = 2;
 
 const char* kExportUsage =
-    "usage: desia export FILE --format stl|stl-ascii|obj|xmpuzzle|svg|dxf|fpuz|csv [--part N] [--voxel-size S]\n"
+    "usage: desia export FILE --format stl|stl-ascii|obj|xmpuzzle|svg|dxf|fpuz|csv|puz|voxel-json [--part N] [--voxel-size S]\n"
     "             [--sheet WxH] [--kerf MM] [--spacing MM] [--hairline] --output OUT\n";
 
 using desia::cli::UsageError;
@@ -95,13 +95,16 @@ int exportFile(const std::vector<std::string>& args) {
     cut.source = input;
     return exportCutSheets(desia::parseAssemblyText(desia::cli::readInputFile(input), input), input, format, cut, output);
   }
-  const bool frameOnlyFormat = format == "fpuz" || format == "csv";
+  // .fpuz and the cut list are for frames only; so are puz and voxel-json here: a frame on a voxel
+  // grid as the voxel assembly it is (core/frame/frame_voxels.cpp).
+  const bool frameOnlyFormat = format == "fpuz" || format == "csv" || format == "puz" || format == "voxel-json";
   const desia::ExportFormat exportFormat = frameOnlyFormat ? desia::ExportFormat::StlBinary : desia::parseExportFormat(format);
 
   options.source = input;
   const desia::AssemblyDocument document = desia::parseAssemblyText(desia::cli::readInputFile(input), input);
   if (document.kind == desia::AssemblyKind::Frame && document.contactsFromGeometry) {
-    // Frames (paper Section 5.3): part meshes, .fpuz or the cut list (core/io/frame_export.cpp).
+    // Frames (paper Section 5.3): part meshes, .fpuz, the cut list, or (axis-aligned on a voxel grid)
+    // .puz, voxel JSON, .xmpuzzle (core/io/frame_export.cpp).
     const std::vector<uint8_t> bytes = desia::exportFrame(desia::frameFromAssemblyDocument(document, input), format, options.part, input);
     desia::cli::writeOutputFile(output, std::string(bytes.begin(), bytes.end()));
     std::cout << input << ": frame of " << document.assembly.partCount() << " beams as " << format << ", " << bytes.size() << " bytes; wrote " << output << "\n";

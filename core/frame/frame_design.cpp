@@ -25,9 +25,17 @@
 //   (A_1 = [P_1, R_1], Section 4.2) it is kept when P_1 is free along d_1 and blocked along the
 //   five other axis directions.
 // Children are ranked: beams with the fewest neighbours in R first (the original code's order),
-// then the highest, then a seeded random order; the voxel sets of a beam smallest first. The
-// search is depth first with backtracking over an explicit stack, and every complete design is
-// verified (frameDesignFailure) before it is reported.
+// then the highest, then a seeded random order; the voxel sets of a beam smallest first. A look-
+// ahead keeps R_i from collapsing onto one joint: a beam is not taken when the three or more
+// beams left in R_i would all meet at one joint (a star). The last splits of such an R_i are
+// almost never interlocking (each of its beams owns every free voxel at its outer joint, so the
+// earlier parts there decide alone whether it is blocked), and the depth-first search would then
+// backtrack through every ordering of the star (thousands of dead nodes on SCAFFOLD).
+// The search is depth first with backtracking over an explicit stack, restarted with a seed
+// derived from the user's seed when a search tree spends its node budget (budgets follow the
+// Luby sequence, so the heavy tail of a bad early choice is cut while no budget is too short
+// for long); every complete design is verified (frameDesignFailure) before it is reported. All
+// of it counts nodes, never time: the same seed gives the same bytes.
 #include "desia/frame_design.h"
 
 #include <algorithm>
@@ -44,6 +52,43 @@ namespace desia {
 namespace {
 
 using Mask = uint32_t;  // a set of the 27 voxels of a joint cube
+
+// The random state of restart `attempt` for the user's seed: attempt 0 is the seed's own state
+// (as before restarts existed); later attempts mix the attempt in (splitmix64), so their orders
+// differ from every other seed's.
+uint64_t attemptSeed(uint64_t seed, int64_t attempt) {
+  if (attempt == 0) return seed * 0x9E3779B97F4A7C15ull + 7;
+  uint64_t z = seed + 0x9E3779B97F4A7C15ull * static_cast<uint64_t>(attempt + 1);
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  return z ^ (z >> 31);
+}
+
+// The Luby sequence 1, 1, 2, 1, 1, 2, 4, 1, ... at 0-based index `index` (Luby, Sinclair and
+// Zuckerman 1993: within a constant factor of the best fixed restart budget for any runtime
+// distribution).
+int64_t lubyTerm(int64_t index) {
+  int64_t size = 1;
+  int seq = 0;
+  while (size < index + 1) {
+    ++seq;
+    size = 2 * size + 1;
+  }
+  while (size - 1 != index) {
+    size = (size - 1) >> 1;
+    --seq;
+    index %= size;
+  }
+  return int64_t(1) << seq;
+}
+
+// The budget unit of a search tree, in work (beam-direction corridors and voxel-set pairs tried,
+// so a tree of slow nodes is cut as soon as one of many fast ones): a node tries about as many
+// pairs as R has beams next to taken ones, and a design of n beams takes n nodes, hence n^2. On
+// SCAFFOLD (92 beams) seeds that succeed mostly do within this; the failing ones would thrash for
+// tens of thousands of nodes. The floor lets small frames of slow curved beams (FLOWER) finish
+// their first tree as before.
+int64_t restartUnit(int beams) { return std::max<int64_t>(int64_t(1) << 16, 3 * int64_t(beams) * beams); }
 
 constexpr int kFree = -1;
 constexpr int kOptionsPerJoint = 20;
@@ -151,7 +196,7 @@ struct Obstacle {
 class FrameDesigner {
  public:
   FrameDesigner(const FrameLayout& layout, const FrameDesignOptions& options)
-      : layout_(layout), frame_(layout.frame), options_(options), random_(options.seed * 0x9E3779B97F4A7C15ull + 7) {
+      : layout_(layout), frame_(layout.frame), options_(options), random_(attemptSeed(options.seed, 0)) {
     const int beams = static_cast<int>(frame_.beams.size());
     for (int b = 0; b < beams; ++b) {
       bodies_.push_back(beamBodyBoxes(layout_, b));
@@ -189,7 +234,8 @@ class FrameDesigner {
   double seconds() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
   int endOf(int beam, int joint) const { return frame_.beams[beam].joints[0] == joint ? 0 : 1; }
   bool inRest(int beam) const { return stepOf_[beam] < 0; }
-  int width_ = 1;  // children kept per node in the current search
+  int width_ = 1;     // children kept per node in the current search
+  int64_t work_ = 0;  // beam-direction corridors and voxel-set pairs tried: the restart budget's unit
 
   const FrameLayout& layout_;
   const Frame& frame_;
@@ -479,6 +525,7 @@ bool FrameDesigner::acceptable(const Step& step) {
 // Up to `wanted` children for taking `beam` along `direction`: pairs of voxel sets at its two
 // joints, smallest first, kept when the beam sweeps clear and A_i passes.
 void FrameDesigner::childrenOfBeam(int beam, int direction, int wanted, std::vector<Step>& children) {
+  ++work_;
   const std::vector<Obstacle> obstacles = corridorObstacles(beam, direction);
   // The body alone against everything that will not join the beam.
   {
@@ -501,6 +548,7 @@ void FrameDesigner::childrenOfBeam(int beam, int direction, int wanted, std::vec
   int tried = 0, found = 0;
   for (const auto& [rank, taken] : pairs) {
     if (++tried > kPairsPerDirection || found >= wanted) break;
+    ++work_;
     const Step step{beam, direction, taken};
     if (!sweepClear(beam, direction, taken, obstacles)) continue;
     if (!acceptable(step)) continue;
@@ -544,9 +592,27 @@ std::vector<Step> FrameDesigner::childrenOfCurrent() {
     double height;
     uint64_t tie;
   };
+  // The look-ahead (see the top): joints holding all but one of R's beams; taking a beam of R
+  // that is not at such a joint would leave R_i a star there.
+  const int restCount = static_cast<int>(rest.size());
+  std::vector<int> restAtJoint(frame_.joints.size(), 0);
+  for (int b : rest) {
+    for (int joint : frame_.beams[b].joints) ++restAtJoint[joint];
+  }
+  std::vector<int> crowded;  // joints where R_i would be a star of restCount - 1 >= 3 beams
+  for (size_t j = 0; j < restAtJoint.size(); ++j) {
+    if (restCount - 1 >= 3 && restAtJoint[j] >= restCount - 1) crowded.push_back(static_cast<int>(j));
+  }
+  auto leavesStar = [&](int beam) {
+    for (int joint : crowded) {
+      const bool here = frame_.beams[beam].joints[0] == joint || frame_.beams[beam].joints[1] == joint;
+      if (restAtJoint[joint] - (here ? 1 : 0) == restCount - 1) return true;
+    }
+    return false;
+  };
   std::vector<Candidate> candidates;
   for (int b : rest) {
-    if (isCut[b] || (!path_.empty() && !touchesTaken[b])) continue;
+    if (isCut[b] || (!path_.empty() && !touchesTaken[b]) || leavesStar(b)) continue;
     const double height =
         frame_.joints[frame_.beams[b].joints[0]].position[1] + frame_.joints[frame_.beams[b].joints[1]].position[1];
     candidates.push_back({b, path_.empty() ? 0 : restNeighbours[b], height, nextRandom()});
@@ -593,13 +659,30 @@ FrameDesignResult FrameDesigner::run() {
     result.message = "an interlocking frame needs at least three beams; this one has " + std::to_string(beams);
     return result;
   }
-  // Iterative widening: a tree searched to the end with m children per node is searched again
-  // with 2m (up to 32), so a narrow first search costs little and never ends the design early.
-  bool complete = false;
-  for (width_ = options_.candidates; !complete; width_ *= 2) {
-    if (width_ > std::max(32, options_.candidates)) break;
+  // Restarts (see the top): attempt k searches with the random state attemptSeed(seed, k) for at
+  // most restartUnit * luby(k) work (and 12 nodes per beam times luby(k)). Within an attempt, iterative widening: a tree searched to
+  // the end with m children per node is searched again with 2m (up to 32), so a narrow first
+  // search costs little; a tree exhausted at the widest means no design (not a budget out).
+  bool complete = false, exhausted = false;
+  for (int64_t attempt = 0; !complete && !exhausted; ++attempt) {
+    random_ = attemptSeed(options_.seed, attempt);
+    const int64_t budget = restartUnit(beams) * lubyTerm(attempt);
+    // Nodes too: dead ends near the last beam are cheap, and thousands of them there mean a choice
+    // far above went wrong.
+    const int64_t nodeBudget = std::max<int64_t>(1000, 12 * int64_t(beams)) * lubyTerm(attempt);
+    const int64_t attemptStart = work_, attemptNodes = progress.nodes;
+    bool outOfBudget = false;
+  for (width_ = options_.candidates; !complete && !outOfBudget; width_ *= 2) {
+    if (width_ > std::max(32, options_.candidates)) {
+      exhausted = true;
+      break;
+    }
     std::vector<std::vector<Step>> pending{childrenOfCurrent()};
     while (!pending.empty()) {
+      if (work_ - attemptStart >= budget || progress.nodes - attemptNodes >= nodeBudget) {
+        outOfBudget = true;
+        break;
+      }
       ++progress.nodes;
       progress.depth = static_cast<int>(path_.size());
       progress.seconds = seconds();
@@ -650,6 +733,7 @@ FrameDesignResult FrameDesigner::run() {
       pending.push_back(childrenOfCurrent());
     }
     while (!path_.empty() && !complete) undo(path_.back());
+  }
   }
   if (!complete) {
     result.status = FrameDesignStatus::NotFound;

@@ -5,6 +5,7 @@
 
 #include "desia/error.h"
 #include "desia/frame_format.h"
+#include "desia/puz_format.h"
 #include "io/export_internals.h"
 
 namespace desia {
@@ -113,9 +114,18 @@ std::vector<uint8_t> exportFrame(const FrameDocument& document, const std::strin
     }
     return bytesOf(formatFpuz(document));
   }
+  if (format == "puz" || format == "voxel-json" || format == "xmpuzzle") {
+    // Axis-aligned frames on a common voxel grid, as the voxel puzzle they are (frame_voxels.cpp).
+    if (part != 0)
+      throwBadInput(source, "a voxel export holds the whole frame, so it cannot hold only part " + std::to_string(part));
+    const AssemblyDocument voxels = frameVoxelDocument(document, source);
+    if (format == "puz") return bytesOf(formatPuz(voxels.voxels));
+    if (format == "voxel-json") return bytesOf(documentToJson(voxels) + "\n");
+    return xmpuzzleFile(voxels, source);
+  }
   if (format != "stl" && format != "stl-ascii" && format != "obj") {
-    throwBadInput(source,
-                  "unknown export format '" + format + "' for a frame (expected stl, stl-ascii, obj, fpuz or csv)");
+    throwBadInput(source, "unknown export format '" + format +
+                              "' for a frame (expected stl, stl-ascii, obj, fpuz, csv, puz, voxel-json or xmpuzzle)");
   }
   const std::vector<NamedMesh> meshes = partMeshes(document, part, source);
   const std::string what = part == 0 ? std::to_string(frame.beams.size()) + " beams" : "part " + std::to_string(part);

@@ -2,8 +2,10 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 """Writes the frame examples of examples/frame/ (input frames in millimetres, modelled after the
 paper's Fig. 19, Fig. 20, the SCAFFOLD inset and the FLOWER of Fig. 1, Section 5.3).
-Run from anywhere: python3 examples/frame/make_examples.py"""
-import json, math, os
+Run from anywhere: python3 examples/frame/make_examples.py [--results]
+With --results it also designs the stored results (*_result.json: seed 1, the default) with the
+native CLI (build/native/core/cli/desia; scripts/build.sh native first)."""
+import json, math, os, subprocess, sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 
@@ -159,6 +161,11 @@ def main():
     write("scaffold_92.json", scaffold())
     write("scaffold_300.json", scaffold_300())
     write("flower.json", flower())
+    if "--results" in sys.argv[1:]:
+        cli = os.path.join(HERE, "..", "..", "build", "native", "core", "cli", "desia")
+        for name in ("frame_cube", "frame_chair", "flower", "scaffold_92"):
+            subprocess.run([cli, "design", "frame", "--input", os.path.join(HERE, name + ".json"), "--output",
+                            os.path.join(HERE, name + "_result.json"), "--seed", "1", "--quiet"], check=True)
 
 
 if __name__ == "__main__":

@@ -51,8 +51,19 @@ std::string formatFpuz(const FrameDocument& document);
 // each end with their cells, removal direction).
 std::string frameCutListCsv(const FrameDocument& document);
 
+// A designed frame whose beams are straight along the axes and whose joint cubes sit on one grid
+// of the joint voxel size, as a voxel assembly (core/frame/frame_voxels.cpp): each beam a rod of
+// voxels through the centre voxels of the faces it enters, plus its voxels in its two joint
+// cubes; voxel label = part id (beam id of the result document, 1 = the key). Throws BadInput
+// naming the first beam (by id) that is off the grid (curved, not along an axis, or a joint not a
+// whole number of voxels from the first joint), or for a frame without designed joints.
+VoxelGrid frameVoxelGrid(const FrameDocument& document, const std::string& source = "<input>");
+// The same as a voxel assembly document (the name kept): .puz, voxel JSON, .xmpuzzle, desia check.
+AssemblyDocument frameVoxelDocument(const FrameDocument& document, const std::string& source = "<input>");
+
 // "stl", "stl-ascii", "obj" (one closed mesh per part: its body boxes and voxel groups, each a
-// closed shell), "fpuz", "csv". `part` 0 = all parts (meshes only). Throws BadInput for an unknown
+// closed shell), "fpuz", "csv", and the voxel assembly of frameVoxelDocument as "puz",
+// "voxel-json" or "xmpuzzle". `part` 0 = all parts (meshes only). Throws BadInput for an unknown
 // format, an unknown part, a frame without designed joints (fpuz, csv need them; meshes draw the
 // beams and bare cubes), curved beams in .fpuz.
 std::vector<uint8_t> exportFrame(const FrameDocument& document, const std::string& format, int part = 0,
