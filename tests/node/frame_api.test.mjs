@@ -170,7 +170,9 @@ test('FrameApi.PartSurfacesAndExportsComeFromTheCore', async () => {
   const part = await desia.exportAssembly(result, { format: 'stl', part: 1 });
   assert.ok(part.byteLength > 84);
   await assert.rejects(desia.exportAssembly(cube, { format: 'csv' }), badInput(/no designed joints yet/));
-  await assert.rejects(desia.exportAssembly(result, { format: 'xmpuzzle' }), badInput(/unknown export format 'xmpuzzle' for a frame/));
+  // An axis-aligned frame on one grid exports as a voxel puzzle (BurrTools), the CLI's bytes.
+  assert.deepEqual(await desia.exportAssembly(cli.text, { format: 'xmpuzzle' }), cliExport(cli.file, 'xmpuzzle'));
+  await assert.rejects(desia.exportAssembly(result, { format: 'svg' }), badInput(/cut files are made of plate structures/));
   await assert.rejects(desia.exportAssembly(result, { format: 'stl', part: 13 }), badInput(/part 13 is not a beam of this frame/));
   // The check reads a frame document like the CLI does.
   assert.equal((await desia.check(cli.text)).key, 1);
