@@ -417,6 +417,71 @@ std::optional<PlateContact> plateCrossing(const std::vector<Plate>& plates, int 
   return crossing;
 }
 
+// Two prism plates that are neither parallel-and-apart nor perpendicular (those are crossings) must
+// not share volume: sliced by planes parallel to the first plate's faces (a quarter, half and three
+// quarters of the way through it), the second plate's section must not overlap the first's face by
+// more than a sliver of the tolerance's width. A refusal is always a real overlap; an overlap thinner
+// than a quarter of the first plate's thickness between the slices can pass (the design's swept
+// check still finds it).
+void requireNoSlantedOverlap(const Plate& a, const Plate& b, double tolerance) {
+  const Vec3 ta = plateThicknessAxis(a), tb = plateThicknessAxis(b);
+  const double cosine = dot(ta, tb);
+  if (std::abs(cosine) < 1e-6) return;  // perpendicular: computePlateContacts' crossings
+  const double ha = thicknessOf(a, ta), hb = thicknessOf(b, tb);
+  if (!isPrismPlate(a, ta, ha) || !isPrismPlate(b, tb, hb)) return;
+  const Box boxA = boxOf(a), boxB = boxOf(b);
+  double reach = 0;
+  for (int k = 0; k < 3; ++k) reach += std::max(boxA.hi[k], boxB.hi[k]) - std::min(boxA.lo[k], boxB.lo[k]);
+  const bool parallel = std::abs(cosine) > 1 - 1e-9;
+  const Vec3 along = parallel ? Vec3{0, 0, 0} : normalized(cross(ta, tb));       // in the slice, across tb
+  const Vec3 towards = parallel ? Vec3{0, 0, 0} : normalized(cross(along, ta));  // in the slice, along tb's shadow
+  for (double fraction : {0.25, 0.5, 0.75}) {
+    const Vec3 origin = plus(a.bottom[0][0], scaled(ta, fraction * ha));
+    const PlaneFrame frame(origin, ta);
+    const double level = dot(minus(origin, b.bottom[0][0]), tb);  // b's height at the slice's origin
+    ClipperLib::Paths section;  // b's section by the slice, in the slice's frame
+    for (const Loop& loop : b.bottom) {
+      // A point v of b's first face rises along tb to the slice at s = dot(origin - v, ta) / cosine.
+      ClipperLib::Path path;
+      for (const Vec3& v : loop) path.push_back(frame.toClipper(plus(v, scaled(tb, dot(minus(origin, v), ta) / cosine))));
+      section.push_back(path);
+    }
+    ClipperLib::Clipper clipper;
+    clipper.AddPaths(clipperPaths(a.bottom, frame), ClipperLib::ptSubject, true);
+    clipper.AddPaths(section, ClipperLib::ptClip, true);
+    ClipperLib::Paths shared;
+    clipper.Execute(ClipperLib::ctIntersection, shared, ClipperLib::pftEvenOdd, ClipperLib::pftEvenOdd);
+    if (parallel) {
+      if (level <= tolerance || level >= hb - tolerance) continue;  // the slice misses b's inside
+    } else {
+      // Only where the slice is inside b's slab, a tolerance in from its faces.
+      const double rise = dot(towards, tb);  // b's height gained per mm along `towards`
+      const double low = (tolerance - level) / rise, high = (hb - tolerance - level) / rise;
+      const Loop strip{plus(origin, plus(scaled(along, -reach), scaled(towards, low))), plus(origin, plus(scaled(along, reach), scaled(towards, low))),
+                       plus(origin, plus(scaled(along, reach), scaled(towards, high))), plus(origin, plus(scaled(along, -reach), scaled(towards, high)))};
+      ClipperLib::Clipper inSlab;
+      inSlab.AddPaths(shared, ClipperLib::ptSubject, true);
+      inSlab.AddPaths(clipperPaths({strip}, frame), ClipperLib::ptClip, true);
+      ClipperLib::Paths inside;
+      inSlab.Execute(ClipperLib::ctIntersection, inside, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+      shared = inside;
+    }
+    for (const ClipperLib::Path& piece : shared) {
+      double perimeter = 0;
+      for (size_t i = 0; i < piece.size(); ++i) {
+        const ClipperLib::IntPoint& u = piece[i];
+        const ClipperLib::IntPoint& w = piece[(i + 1) % piece.size()];
+        perimeter += std::hypot(static_cast<double>(w.X - u.X), static_cast<double>(w.Y - u.Y)) / kClipperScale;
+      }
+      const double area = std::abs(ClipperLib::Area(piece)) / (kClipperScale * kClipperScale);
+      if (perimeter > 0 && 2 * area / perimeter > tolerance) {
+        throwBadInput("", plateName(a) + " and " + plateName(b) + " overlap (their solids share " + millimetres(2 * area / perimeter) +
+                              " wide and more) where no contact or crossing explains it: move them apart until they touch");
+      }
+    }
+  }
+}
+
 }  // namespace
 
 std::vector<PlateContact> computePlateContacts(const std::vector<Plate>& plates, const PlateOptions& options) {
@@ -474,6 +539,7 @@ std::vector<PlateContact> computePlateContacts(const std::vector<Plate>& plates,
               plateCrossing(plates, static_cast<int>(p), static_cast<int>(q), tolerance)) {
         contacts.push_back(*crossing);
       }
+      requireNoSlantedOverlap(plates[p], plates[q], tolerance);
     }
   }
   return contacts;

@@ -484,3 +484,37 @@ TEST(PlateSession, StepByStepGivesTheSearchsDesignAndGoesBack) {
 
 }  // namespace
 }  // namespace desia
+
+namespace desia {
+namespace {
+
+TEST(PlateOverlaps, SolidsThatShareVolumeAreRefusedAndTouchingOnesAreNot) {
+  auto expectRefused = [](const std::vector<Plate>& plates, const std::string& what) {
+    try {
+      computePlateContacts(plates, {});
+      ADD_FAILURE() << what << " was accepted";
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find("plate 1 and plate 2 overlap"), std::string::npos) << what << ": " << e.what();
+    }
+  };
+  // Two boards stacked 8 mm into each other.
+  expectRefused({board(1, {0, 0, 0}, {200, 200, 18}), board(2, {50, 50, 10}, {150, 150, 28})}, "stacked boards");
+  // A board tilted 45 degrees through the middle of another.
+  Plate tilted;
+  tilted.id = 2;
+  const double s = std::sqrt(0.5) * 10;  // 10 mm thick along (0, 1, -1) / sqrt 2
+  tilted.bottom = {{{50, -50, -50}, {150, -50, -50}, {150, 50, 50}, {50, 50, 50}}};
+  tilted.top = {{{50, -50 + s, -50 - s}, {150, -50 + s, -50 - s}, {150, 50 + s, 50 - s}, {50, 50 + s, 50 - s}}};
+  validatePlates({tilted}, {}, "tilted");
+  expectRefused({board(1, {0, -100, 0}, {200, 100, 18}), tilted}, "a slanted board through another");
+  // Face on face, and the slanted board lifted just clear: no overlap.
+  EXPECT_NO_THROW(computePlateContacts({board(1, {0, 0, 0}, {200, 200, 18}), board(2, {50, 50, 18}, {150, 150, 36})}, {}));
+  Plate leaning = tilted;
+  for (auto* face : {&leaning.bottom, &leaning.top}) {
+    for (Vec3& p : (*face)[0]) p[2] += 76;  // its lowest edge (second face, y = -42.9) at z = 18.9
+  }
+  EXPECT_NO_THROW(computePlateContacts({board(1, {0, -100, 0}, {200, 100, 18}), leaning}, {}));
+}
+
+}  // namespace
+}  // namespace desia
