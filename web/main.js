@@ -42,6 +42,7 @@ const EXAMPLES = [
   { file: 'bunny_origin.puz', label: 'Bunny', shape: true },
   { file: 'dog_origin.puz', label: 'Dog', shape: true },
   { file: 'table.json', label: 'Table, 6 plates', plate: true },
+  { file: 'table_divider.json', label: 'Table with a divider, 7 plates (halved joint)', plate: true },
   { file: 'bench_2_bays.json', label: 'Table of 2 bays, 10 plates', plate: true },
   { file: 'long_table_102.json', label: 'Long table, 102 plates', plate: true },
   { file: 'chair_cut_point.json', label: 'Chair with a cut point, 8 plates', plate: true },

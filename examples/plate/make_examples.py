@@ -46,6 +46,16 @@ def table():
     ])
 
 
+def table_with_divider():
+    # The TABLE with a divider standing through a slot in its shelf (the two boards cross): a halved
+    # joint (paper Fig. 2) beside the mortise-and-tenon joints.
+    doc = table()
+    t = 18
+    doc["plates"].append(box(7, "divider", [491, 100, 40], [491 + t, 700, 560]))
+    doc["name"] = "TABLE with a divider crossing its shelf (7 plates): mortise-and-tenon and halved joints"
+    return doc
+
+
 def long_table(bays, bay=600.0, t=18.0, depth=600.0, height=700.0):
     """A long table of `bays` bays, 4 bays + 2 plates: a top over a row of side panels, a front and
     a back apron and a shelf in each bay. The middle panels carry aprons and shelves from both
@@ -170,6 +180,7 @@ def main():
         "bookshelf.json": shelf(3, 3, "BOOKSHELF (after Fig. 1): 3 x 3 cells, two sides, 4 shelves and 6 uprights (12 plates)"),
         "bookcase_123.json": shelf(10, 12, "BOOKCASE of 10 x 12 cells: two sides, 11 shelves and 110 uprights (123 plates)"),
         "table.json": table(),
+        "table_divider.json": table_with_divider(),
         "bench_2_bays.json": long_table(2),
         "long_table_102.json": long_table(25),
         "chair_cut_point.json": chair(False),

@@ -22,6 +22,7 @@ const runs = runsArgument > 0 ? Number(process.argv[runsArgument + 1]) : 5;
 const CASES = [
   ['table.json', 'TABLE, 6 plates (Fig. 17)', '0.02 s', 'cut'],
   ['table.json', 'TABLE, 6 plates (Fig. 17)', '0.02 s', 'planned'],
+  ['table_divider.json', 'TABLE with a divider through its shelf, 7 plates', null, 'cut'],
   ['bench_2_bays.json', 'TABLE of 2 bays, 10 plates', null, 'cut'],
   ['long_table_102.json', 'LONG TABLE, 25 bays, 102 plates', '— (largest: 33)', 'cut'],
   ['cabinet.json', 'CABINET, 7 plates, gable roof (Fig. 13)', '0.09 s', 'planned'],

@@ -427,6 +427,21 @@ TEST(PlateCrossings, CrossingPlatesAreFoundAndHalvedJointsCutThem) {
   EXPECT_TRUE(plateCollidesAlong(cut[0], cut[1], {0, 0, 1}, 0.05));
 }
 
+TEST(PlateCrossings, TheTableWithADividerGetsAHalvedJointCutAndVerified) {
+  const AssemblyDocument table = loadPlateExample("table_divider.json");
+  int crossings = 0;
+  for (const PlateContact& contact : computePlateContacts(table.plates, {})) crossings += contact.crossing ? 1 : 0;
+  EXPECT_EQ(crossings, 1) << "the divider passes through the shelf";
+  const PlateDesignResult result = designCut(table.plates);
+  ASSERT_EQ(result.status, PlateDesignStatus::Success) << result.message;
+  int halved = 0;
+  for (const PlateJoint& joint : result.joints) halved += joint.type == JointType::Halved ? 1 : 0;
+  EXPECT_EQ(halved, 1);
+  // The slots take the crossing's overlap (18 x 18 x 520 mm) out once; the tenons fill their mortises.
+  EXPECT_NEAR(totalVolume(result.jointedPlates), totalVolume(table.plates) - 18.0 * 18.0 * 520.0, 1e-2);
+  for (const PlateContact& contact : computePlateContacts(result.jointedPlates, {})) EXPECT_FALSE(contact.crossing);
+}
+
 TEST(PlateCrossings, PlatesThatOverlapOnlyInPartAreRefusedWithBothNamed) {
   // B reaches 8 mm past A's end: it would overlap A's corner without passing through it.
   const std::vector<Plate> plates{board(1, {0, 0, 40}, {100, 100, 58}), board(2, {90, 0, 0}, {108, 100, 100})};
