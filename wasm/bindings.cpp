@@ -176,26 +176,33 @@ val parseFrame(const std::string& text, const std::string& source, double jointS
 }
 
 // The interactive design session (a long-lived handle: JS must call delete(), which the facade's
-// dispose() does), for a voxel shape or a plate design (the kind of the document decides). Every
-// method returns plain data.
+// dispose() does), for a voxel shape, a plate design or a frame (JSON, .fpuz, or OBJ by the
+// extension of `source`; the kind of the document decides). Every method returns plain data.
 class DesignSession {
  public:
-  DesignSession(const std::string& shapeText, const std::string& optionsJson, const std::string& source)
-      : document_(guarded([&] { return desia::parseAssemblyText(shapeText, source); })) {
+  DesignSession(const std::string& shapeText, const std::string& optionsJson, const std::string& source) {
     guarded([&] {
-      if (document_.kind == desia::AssemblyKind::Plate && document_.contactsFromGeometry) {
+      const bool obj = source.size() >= 4 && (source.compare(source.size() - 4, 4, ".obj") == 0 ||
+                                              source.compare(source.size() - 4, 4, ".OBJ") == 0);
+      if (!obj) document_ = desia::parseAssemblyText(shapeText, source);
+      if (obj || desia::isFrameDocument(document_)) {
+        const desia::FramePackageOptions options = desia::parseFrameDesignOptionsJson(optionsJson);
+        frame_ = desia::parseFrameText(shapeText, source, options.jointSize);
+        frames_ = std::make_unique<desia::FrameDesignSession>(frame_.layout, options.design);
+      } else if (document_.kind == desia::AssemblyKind::Plate && document_.contactsFromGeometry) {
         plates_ = std::make_unique<desia::PlateDesignSession>(document_.plates, desia::computePlateContacts(document_.plates, document_.plateOptions),
                                                                plateOptions(optionsJson));
       } else if (document_.kind == desia::AssemblyKind::Voxel) {
         voxels_ = std::make_unique<desia::VoxelDesignSession>(document_.voxels, desia::parseDesignOptionsJson(optionsJson, document_.voxels));
       } else {
-        throw desia::Error(desia::ErrorCode::BadInput, source + ": a design session needs a voxel shape or a plate design");
+        throw desia::Error(desia::ErrorCode::BadInput, source + ": a design session needs a voxel shape, a plate design or a frame");
       }
     });
   }
 
   val state() const {
     return guarded([&] {
+      if (frames_) return parseJsonText(desia::frameSessionStateToJson(frame_, *frames_));
       if (plates_) return parseJsonText(desia::plateSessionStateToJson(document_, *plates_));
       val result = val::object();
       result.set("partsPlaced", voxels_->partsPlaced() + 1);  // parts in the current assembly
@@ -205,19 +212,32 @@ class DesignSession {
       return result;
     });
   }
-  int childCount() { return guarded([&] { return plates_ ? plates_->childCount() : voxels_->childCount(); }); }
+  int childCount() {
+    return guarded([&] { return frames_ ? frames_->childCount() : plates_ ? plates_->childCount() : voxels_->childCount(); });
+  }
   val preview(int n) {
     return guarded([&] {
+      if (frames_) return parseJsonText(desia::frameStepToJson(frame_, frames_->childPreview(n)));
       if (plates_) return parseJsonText(desia::plateStepToJson(document_, plates_->childPreview(n)));
       return parseJsonText(desia::documentToJson(desia::documentFromVoxels(voxels_->childPreview(n)), -1));
     });
   }
-  void choose(int n) { guarded([&] { plates_ ? plates_->chooseChild(n) : voxels_->chooseChild(n); }); }
-  bool next() { return guarded([&] { return plates_ ? plates_->next() : voxels_->generateNextPart(); }); }
-  bool back() { return guarded([&] { return plates_ ? plates_->back() : voxels_->goBack(); }); }
+  void choose(int n) {
+    guarded([&] { frames_ ? frames_->chooseChild(n) : plates_ ? plates_->chooseChild(n) : voxels_->chooseChild(n); });
+  }
+  bool next() { return guarded([&] { return frames_ ? frames_->next() : plates_ ? plates_->next() : voxels_->generateNextPart(); }); }
+  bool back() { return guarded([&] { return frames_ ? frames_->back() : plates_ ? plates_->back() : voxels_->goBack(); }); }
   val check() const {
     return guarded([&] {
       desia::CheckOptions options;
+      if (frames_) {
+        // The verified result once complete (as designFrame's verification), else the frame as given.
+        const desia::AssemblyDocument current = desia::parseAssemblyText(
+            frames_->complete() ? desia::frameResultToJson(frame_.layout, frames_->result(), frame_.name, -1)
+                                : desia::frameDocumentToJson(frame_, -1),
+            "result");
+        return parseJsonText(desia::checkReportToJson(current, desia::checkAssembly(current, options), -1));
+      }
       if (plates_) {
         // The verified result once complete (both tests, as designPlate), else the design as given.
         const desia::AssemblyDocument current =
@@ -234,8 +254,10 @@ class DesignSession {
   static desia::PlateDesignOptions plateOptions(const std::string& optionsJson) { return desia::parsePlateDesignOptionsJson(optionsJson); }
 
   desia::AssemblyDocument document_;
+  desia::FrameDocument frame_;
   std::unique_ptr<desia::VoxelDesignSession> voxels_;
   std::unique_ptr<desia::PlateDesignSession> plates_;
+  std::unique_ptr<desia::FrameDesignSession> frames_;
 };
 
 // A voxel assembly (.puz or JSON text) as file bytes: "stl", "stl-ascii", "obj" or "xmpuzzle";

@@ -369,11 +369,11 @@ function makeCore(module) {
         }
       };
       return {
-        /** { partsPlaced, targetParts, complete, document } of the current assembly (plates: also steps, message). */
+        /** { partsPlaced, targetParts, complete, document } of the current assembly (plates, frames: also steps, message). */
         state: () => call('state'),
         /** Number of ranked children of the current node (generated on first call). */
         childCount: () => call('childCount'),
-        /** The JSON document the n-th child (0 = best) would give (plates: the child's step). */
+        /** The JSON document the n-th child (0 = best) would give (plates, frames: the child's step). */
         preview: (n) => call('preview', requireChildIndex('preview', n)),
         /** Move to the n-th child. */
         choose: (n) => call('choose', requireChildIndex('choose', n)),

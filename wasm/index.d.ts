@@ -198,13 +198,22 @@ export interface DesignSessionState {
   /** Parts in the current assembly (placed parts plus the remainder). */
   partsPlaced: number;
   targetParts: number;
-  /** True when the assembly has all its parts (plates: every plate placed and the plan verified). */
+  /**
+   * True when the assembly has all its parts (plates, frames: every part placed and the design
+   * verified).
+   */
   complete: boolean;
-  /** Voxels: the current assembly. Plates: the verified result document once complete, else the design. */
+  /**
+   * Voxels: the current assembly. Plates, frames: the verified result document once complete, else
+   * the input design or frame.
+   */
   document: AssemblyDocument;
-  /** Plates: the plates taken so far (input ids, the key first) and the direction each leaves along. */
-  steps?: { plate: number; direction: [number, number, number] }[];
-  /** Plates: how far the session got, or the result's message once complete. */
+  /**
+   * Plates: the plates taken so far (input ids, the key first) and the direction each leaves along.
+   * Frames: the same with `beam` for the beams taken.
+   */
+  steps?: ({ plate: number; direction: [number, number, number] } | { beam: number; direction: [number, number, number] })[];
+  /** Plates, frames: how far the session got, or the result's message once complete. */
   message?: string;
 }
 
@@ -213,6 +222,16 @@ export interface PlateSessionStep {
   plate: number;
   direction: [number, number, number];
   joints: { mover: number; other: number; type: 'mortise-tenon' | 'halved' | 'empty'; direction: [number, number, number] }[];
+}
+
+/**
+ * Frames: a child of a session's node, the beam it takes, the axis it leaves along and the free
+ * voxels it takes in the joint cubes at its two ends (input ids; voxels 0..26, x fastest).
+ */
+export interface FrameSessionStep {
+  beam: number;
+  direction: [number, number, number];
+  joints: { joint: number; voxels: number[] }[];
 }
 
 /**
@@ -228,8 +247,8 @@ export interface DesignSession {
    * The assembly the n-th child (0 = best ranked) would give. `n` must be an integer from 0 to
    * 2^31 - 1 (else a DesiaError 'bad-input'); a child that does not exist is one too.
    */
-  /** Voxels: the assembly the n-th child would give. Plates: the n-th child's step. */
-  preview(n: number): AssemblyDocument | PlateSessionStep;
+  /** Voxels: the assembly the n-th child would give. Plates, frames: the n-th child's step. */
+  preview(n: number): AssemblyDocument | PlateSessionStep | FrameSessionStep;
   /** Moves to the n-th child (`n` as for preview). */
   choose(n: number): void;
   /** Moves to the best-ranked child; false when the node has none (go back). */
@@ -251,7 +270,7 @@ export interface DesignSession {
 export interface AsyncDesignSession {
   state(): Promise<DesignSessionState>;
   childCount(): Promise<number>;
-  preview(n: number): Promise<AssemblyDocument | PlateSessionStep>;
+  preview(n: number): Promise<AssemblyDocument | PlateSessionStep | FrameSessionStep>;
   choose(n: number): Promise<void>;
   next(): Promise<boolean>;
   back(): Promise<boolean>;
@@ -426,9 +445,14 @@ export interface DesiaCore {
   /**
    * An interactive design session for a voxel shape (options as designVoxel's) or a plate design
    * (options as designPlate's: a choice that completes the plan is accepted only if it verifies,
-   * else choose() throws with the reason and that child is dropped).
+   * else choose() throws with the reason and that child is dropped) or a frame (JSON, or .fpuz /
+   * OBJ text with `source` naming the extension; options as designFrame's, verified the same way;
+   * a frame with a cut-point beam throws naming it).
    */
-  designSession(shapeText: string, options: Omit<DesignVoxelOptions, 'onProgress'> | Omit<PlateDesignOptions, 'onProgress'>): DesignSession;
+  designSession(
+    shapeText: string,
+    options: Omit<DesignVoxelOptions, 'onProgress'> | Omit<PlateDesignOptions, 'onProgress'> | Omit<FrameDesignOptions, 'onProgress'>,
+  ): DesignSession;
   /**
    * Designs the joints of a plate design (paper Section 5.2: key, removal order and directions, a
    * joint per pair of touching plates). The result's `document` (kind 'plate', part 1 = the key)
@@ -516,7 +540,7 @@ export interface Desia {
   /** An interactive design session living in the worker; dispose() it when done. */
   designSession(
     shapeText: string,
-    options: (Omit<DesignVoxelOptions, 'onProgress'> | Omit<PlateDesignOptions, 'onProgress'>) & CallOptions,
+    options: (Omit<DesignVoxelOptions, 'onProgress'> | Omit<PlateDesignOptions, 'onProgress'> | Omit<FrameDesignOptions, 'onProgress'>) & CallOptions,
   ): Promise<AsyncDesignSession>;
   /** {@link DesiaCore.designPlate} in the worker. */
   designPlate(input: string | AssemblyDocument, options?: PlateDesignOptions & CallOptions): Promise<DesignResult>;

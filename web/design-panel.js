@@ -3,8 +3,9 @@
 // The Design panel: designs an N-part interlocking voxel puzzle from the assembly on screen
 // (all its voxels are the shape), automatically (designVoxel, with live progress) or step by
 // step (a design session); for a plate design it plans the joints (designPlate: seed,
-// candidates, time limit; N, ranking, mode and step by step do not apply), for a frame it designs
-// the 3x3x3 voxel joints (designFrame: seed, candidates, time limit). Everything runs in the worker; the panel only collects parameters,
+// candidates, time limit; N, ranking and mode do not apply), for a frame it designs the 3x3x3
+// voxel joints (designFrame: seed, candidates, time limit); plates and frames also step by step
+// (a session whose children are steps: the part taken, its direction, its joints). Everything runs in the worker; the panel only collects parameters,
 // shows progress and hands finished assemblies to the page. Cancel terminates the worker (a
 // busy WebAssembly worker cannot read a message), so the page keeps what it showed before.
 //
@@ -326,7 +327,7 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
   }
 
   async function startSession() {
-    if (kind !== 'voxel' && kind !== 'plate') return;
+    if (kind !== 'voxel' && kind !== 'plate' && kind !== 'frame') return;
     const request = readRequest();
     if (!request) return;
     const { shape, options } = request;
@@ -361,8 +362,8 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
     const answer = await sessionCall('session-preview', '', { n }, 'Previewing…');
     if (!answer) return;
     if (answer.value.step) {
-      // A plate session's child is a step (which plate leaves, along what, with which joints): the
-      // view keeps the design; the step is said in words.
+      // A plate or frame session's child is a step (which plate or beam leaves, along what, with
+      // which joints): the view keeps the design; the step is said in words.
       setOutcome('', `Child ${answer.value.index}: ${describeStep(answer.value.step)}. Choose it to continue from there.`);
       return;
     }
@@ -391,8 +392,15 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
     showAssembly({ name: `${name}.json`, text: JSON.stringify(plain), document: document_, surfaces, report, elapsedMs, timingLabel: 'Step time' });
   }
 
-  /** 'plate 3 leaves along +x (2 mortise-tenon joints, 1 empty)' */
+  /**
+   * 'plate 3 leaves along +x (2 mortise-tenon joints, 1 empty)', or for a frame 'beam 4 leaves
+   * along +y (free voxels taken: 2 at joint 1, 0 at joint 5)'
+   */
   function describeStep(step) {
+    if (typeof step.beam === 'number') {
+      const voxels = step.joints.map((joint) => `${joint.voxels.length} at joint ${joint.joint}`).join(', ');
+      return `beam ${step.beam} leaves along ${formatDirection(step.direction)} (free voxels taken: ${voxels})`;
+    }
     const counts = new Map();
     for (const joint of step.joints) counts.set(joint.type, (counts.get(joint.type) ?? 0) + 1);
     const joints = [...counts].map(([type, count]) => `${count} ${type}`).join(', ');
@@ -402,10 +410,10 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
   function describeSession() {
     if (!session) return 'No session.';
     const { partsPlaced, targetParts, complete, childCount, steps } = session.snapshot;
-    const noun = steps ? 'plates' : 'parts';
+    const noun = !steps ? 'parts' : kind === 'frame' ? 'beams' : 'plates';
     if (complete) return `Complete: ${partsPlaced} of ${targetParts} ${noun}${steps ? ', verified' : ''}.`;
     const children = childCount === 0 ? 'no children (go back)' : `${childCount} children (0 = best ranked)`;
-    const taken = steps?.length ? ` · taken: ${steps.map((step) => `${step.plate} ${formatDirection(step.direction)}`).join(', ')}` : '';
+    const taken = steps?.length ? ` · taken: ${steps.map((step) => `${step.plate ?? step.beam} ${formatDirection(step.direction)}`).join(', ')}` : '';
     return `${partsPlaced} of ${targetParts} ${noun} (the last is the remainder)${taken} · ${children}.`;
   }
 
@@ -436,7 +444,7 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
     }
     ui.designButton.disabled = busy;
     ui.cancelButton.disabled = !busy;
-    ui.sessionStart.disabled = busy || frame;
+    ui.sessionStart.disabled = busy;
     ui.sessionStart.textContent = alive ? 'Restart' : 'Start';
     ui.sessionNext.disabled = busy || !alive || childCount === 0;
     ui.sessionBack.disabled = busy || !alive || session.snapshot.partsPlaced <= 1;

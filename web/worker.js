@@ -26,7 +26,7 @@
 //                                 timeLimit, jointSize, source }; result as for 'design-plate'
 //          op 'frame-document'    text = a frame as JSON, OBJ or .fpuz (by options.source);
 //                                 result = its JSON document as text (parseFrame)
-//          op 'session-open'      text = the voxel shape or plate design, options = designSession's options
+//          op 'session-open'      text = the voxel shape, plate design or frame, options = designSession's options
 //          op 'session-next' | 'session-back' | 'session-close'
 //          op 'session-choose' | 'session-preview'   options = { n } (child index)
 //   out: { type: 'ready', version }
@@ -107,8 +107,9 @@ const OPERATIONS = {
   'session-preview': (core, text, options) => {
     const index = childIndex(options);
     const document = openSession().preview(index);
-    // A plate session's child is a step (the plate, its direction, its joints), not an assembly.
-    if (document && typeof document.plate === 'number') return [{ index, step: document }, []];
+    // A plate or frame session's child is a step (the plate or beam, its direction, its joints),
+    // not an assembly.
+    if (document && (typeof document.plate === 'number' || typeof document.beam === 'number')) return [{ index, step: document }, []];
     // The core checks the previewed assembly from its own JSON document.
     const report = core.check(JSON.stringify(document), { source: `child ${index}` });
     return withSurfaces(core, { index, document, report }, `child ${index}`);

@@ -39,9 +39,11 @@
 #include "desia/frame_design.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "analysis/vec3.h"
 #include "desia/cut_points.h"
@@ -215,6 +217,20 @@ class FrameDesigner {
 
   FrameDesignResult run();
 
+  // For the session (FrameDesignSession): why no design can exist (a cut point, too few beams);
+  // the ranked children of the current node; moving down and up the tree; and a complete design
+  // from the current node (every beam but one taken), verified.
+  std::optional<FrameDesignResult> refusal() const;
+  std::vector<Step> sessionChildren() {
+    width_ = options_.candidates;
+    return childrenOfCurrent();
+  }
+  void take(const Step& step) { apply(step); }
+  void untake() { undo(path_.back()); }
+  bool completeHere(FrameDesignResult* result);
+  int beamCount() const { return static_cast<int>(frame_.beams.size()); }
+  const std::string& lastRejection() const { return lastRejection_; }
+
  private:
   std::vector<Step> childrenOfCurrent();
   void childrenOfBeam(int beam, int direction, int wanted, std::vector<Step>& children);
@@ -247,6 +263,7 @@ class FrameDesigner {
   std::vector<int> stepOf_;  // per beam: its step in path_, or -1 while in R
   std::vector<Step> path_;
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+  std::string lastRejection_;  // why the last complete design failed verification
   // Scratch for the graph test.
   std::vector<std::pair<int, int>> edges_;
   std::vector<int> offsets_, targets_, reverseOffsets_, reverseTargets_, partOfBeam_;
@@ -641,11 +658,10 @@ std::vector<Step> FrameDesigner::childrenOfCurrent() {
   return children;
 }
 
-FrameDesignResult FrameDesigner::run() {
+std::optional<FrameDesignResult> FrameDesigner::refusal() const {
   FrameDesignResult result;
-  FrameDesignProgress& progress = result.progress;
   const int beams = static_cast<int>(frame_.beams.size());
-  progress.targetParts = beams;
+  result.progress.targetParts = beams;
   const std::vector<int> cuts = frameCutBeams(layout_);
   if (!cuts.empty()) {
     result.status = FrameDesignStatus::CutPoint;
@@ -659,6 +675,39 @@ FrameDesignResult FrameDesigner::run() {
     result.message = "an interlocking frame needs at least three beams; this one has " + std::to_string(beams);
     return result;
   }
+  return std::nullopt;
+}
+
+// Every beam but one taken: the last owns every voxel still free. Verified (frameDesignFailure);
+// on success the result holds the order, directions, labels and assembly (status Success).
+bool FrameDesigner::completeHere(FrameDesignResult* result) {
+  int last = 0;
+  while (!inRest(last)) ++last;
+  std::vector<JointLabels> labels = labels_;
+  for (JointLabels& joint : labels) std::replace(joint.begin(), joint.end(), kFree, last);
+  std::vector<int> order;
+  std::vector<Vec3> directions;
+  for (const Step& s : path_) {
+    order.push_back(s.beam);
+    directions.push_back(cubeFaceNormal(s.direction));
+  }
+  order.push_back(last);
+  lastRejection_ = frameDesignFailure(layout_, labels, order, directions);
+  if (!lastRejection_.empty()) return false;
+  result->order = order;
+  result->directions = directions;
+  result->labels = labels;
+  result->assembly = frameAssembly(layout_, result->labels, result->order);
+  result->status = FrameDesignStatus::Success;
+  return true;
+}
+
+FrameDesignResult FrameDesigner::run() {
+  if (std::optional<FrameDesignResult> refused = refusal()) return *refused;
+  FrameDesignResult result;
+  FrameDesignProgress& progress = result.progress;
+  const int beams = static_cast<int>(frame_.beams.size());
+  progress.targetParts = beams;
   // Restarts (see the top): attempt k searches with the random state attemptSeed(seed, k) for at
   // most restartUnit * luby(k) work (and 12 nodes per beam times luby(k)). Within an attempt, iterative widening: a tree searched to
   // the end with m children per node is searched again with 2m (up to 32), so a narrow first
@@ -709,21 +758,7 @@ FrameDesignResult FrameDesigner::run() {
       progress.bestDepth = std::max(progress.bestDepth, static_cast<int>(path_.size()) + 1);
       if (static_cast<int>(path_.size()) + 1 == beams) {
         // R is the last beam: it owns every voxel still free. Accepted only if it verifies.
-        int last = 0;
-        while (!inRest(last)) ++last;
-        std::vector<JointLabels> labels = labels_;
-        for (JointLabels& joint : labels) std::replace(joint.begin(), joint.end(), kFree, last);
-        std::vector<int> order;
-        std::vector<Vec3> directions;
-        for (const Step& s : path_) {
-          order.push_back(s.beam);
-          directions.push_back(cubeFaceNormal(s.direction));
-        }
-        order.push_back(last);
-        if (frameDesignFailure(layout_, labels, order, directions).empty()) {
-          result.order = order;
-          result.directions = directions;
-          result.labels = labels;
+        if (completeHere(&result)) {
           complete = true;
           break;
         }
@@ -742,8 +777,6 @@ FrameDesignResult FrameDesigner::run() {
                      " beams)";
     return result;
   }
-  result.assembly = frameAssembly(layout_, result.labels, result.order);
-  result.status = FrameDesignStatus::Success;
   result.message = "designed the joints of " + std::to_string(beams) + " beams (key: beam " +
                    std::to_string(frame_.beams[result.order[0]].id) + ") in " + std::to_string(progress.nodes) +
                    " nodes";
@@ -751,6 +784,114 @@ FrameDesignResult FrameDesigner::run() {
 }
 
 }  // namespace
+
+// The session keeps its own copy of the layout (the designer refers to it) and a stack of the
+// ranked children of every node on its path, generated when first asked for. The designer's
+// labels and path follow the session's path (take / untake).
+struct FrameDesignSession::State {
+  State(FrameLayout layout_, const FrameDesignOptions& options)
+      : layout(std::move(layout_)), designer(layout, options) {}
+  FrameLayout layout;
+  FrameDesigner designer;
+  std::vector<Step> path;
+  std::vector<FrameDesignStep> steps;
+  std::vector<std::optional<std::vector<Step>>> children{std::nullopt};  // per node on the path, root first
+  FrameDesignResult result;
+
+  std::vector<Step>& childrenHere() {
+    if (!children.back()) children.back() = designer.sessionChildren();
+    return *children.back();
+  }
+  void showProgress() {
+    result = FrameDesignResult{};
+    result.status = FrameDesignStatus::NotFound;
+    result.progress.targetParts = designer.beamCount();
+    result.message = std::to_string(path.size()) + " of " + std::to_string(designer.beamCount()) +
+                     " beams taken (the last one stays): choose the next";
+  }
+  FrameDesignStep publicStep(const Step& step) const {
+    FrameDesignStep result{step.beam, cubeFaceNormal(step.direction), {}};
+    for (int end = 0; end < 2; ++end) {
+      for (Mask m = step.taken[end]; m; m &= m - 1) result.voxels[end].push_back(__builtin_ctz(m));
+    }
+    return result;
+  }
+};
+
+FrameDesignSession::FrameDesignSession(FrameLayout layout, const FrameDesignOptions& options) {
+  if (options.candidates < 1) throwBadInput("", "candidates must be at least 1");
+  state_ = std::make_unique<State>(std::move(layout), options);
+  if (std::optional<FrameDesignResult> refused = state_->designer.refusal()) throwBadInput("", refused->message);
+  state_->showProgress();
+}
+
+FrameDesignSession::~FrameDesignSession() = default;
+
+const std::vector<FrameDesignStep>& FrameDesignSession::steps() const { return state_->steps; }
+int FrameDesignSession::targetBeams() const { return state_->designer.beamCount(); }
+bool FrameDesignSession::complete() const { return state_->result.status == FrameDesignStatus::Success; }
+const FrameDesignResult& FrameDesignSession::result() const { return state_->result; }
+
+int FrameDesignSession::childCount() { return complete() ? 0 : static_cast<int>(state_->childrenHere().size()); }
+
+FrameDesignStep FrameDesignSession::childPreview(int n) {
+  if (n < 0 || n >= childCount()) {
+    throwBadInput("", "child " + std::to_string(n) + " does not exist: this node has " + std::to_string(childCount()));
+  }
+  return state_->publicStep(state_->childrenHere()[static_cast<size_t>(n)]);
+}
+
+void FrameDesignSession::chooseChild(int n) {
+  const FrameDesignStep preview = childPreview(n);  // checks n
+  State& state = *state_;
+  std::vector<Step>& here = state.childrenHere();
+  const Step step = here[static_cast<size_t>(n)];
+  state.designer.take(step);
+  state.path.push_back(step);
+  if (static_cast<int>(state.path.size()) + 1 == state.designer.beamCount()) {
+    // The last beam stays with every free voxel: this choice completes the design, which must verify.
+    FrameDesignResult result;
+    result.progress.targetParts = state.designer.beamCount();
+    if (!state.designer.completeHere(&result)) {
+      state.designer.untake();
+      state.path.pop_back();
+      here.erase(here.begin() + n);
+      throwBadInput("", "taking beam " + std::to_string(state.layout.frame.beams[preview.beam].id) +
+                            " completes a design that fails: " + state.designer.lastRejection() + "; choose another");
+    }
+    const int key = state.layout.frame.beams[result.order[0]].id;
+    result.message = "designed the joints of " + std::to_string(state.designer.beamCount()) +
+                     " beams step by step (key: beam " + std::to_string(key) + ")";
+    state.result = result;
+  } else {
+    state.showProgress();
+  }
+  state.steps.push_back(preview);
+  state.children.push_back(std::nullopt);
+}
+
+bool FrameDesignSession::next() {
+  while (childCount() > 0) {
+    try {
+      chooseChild(0);
+      return true;
+    } catch (const Error&) {
+      // That child completed a design that failed and was dropped: try the next one.
+    }
+  }
+  return false;
+}
+
+bool FrameDesignSession::back() {
+  State& state = *state_;
+  if (state.path.empty()) return false;
+  state.designer.untake();
+  state.path.pop_back();
+  state.steps.pop_back();
+  state.children.pop_back();
+  state.showProgress();
+  return true;
+}
 
 const char* frameDesignStatusName(FrameDesignStatus status) {
   switch (status) {

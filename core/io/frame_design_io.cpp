@@ -94,6 +94,38 @@ std::string frameDesignResultToJson(const FrameDocument& input, const FrameDesig
   return root.dump();
 }
 
+namespace {
+
+json vectorJson(const Vec3& v) { return json::array({v[0], v[1], v[2]}); }
+
+}  // namespace
+
+std::string frameSessionStateToJson(const FrameDocument& input, const FrameDesignSession& session) {
+  const Frame& frame = input.layout.frame;
+  json steps = json::array();
+  for (const FrameDesignStep& step : session.steps()) {
+    steps.push_back({{"beam", frame.beams[step.beam].id}, {"direction", vectorJson(step.direction)}});
+  }
+  json root = {{"partsPlaced", static_cast<int>(session.steps().size()) + 1},
+               {"targetParts", session.targetBeams()},
+               {"complete", session.complete()},
+               {"message", session.result().message},
+               {"steps", steps}};
+  root["document"] = json::parse(session.complete() ? frameResultToJson(input.layout, session.result(), input.name, -1)
+                                                    : frameDocumentToJson(input, -1));
+  return root.dump();
+}
+
+std::string frameStepToJson(const FrameDocument& input, const FrameDesignStep& step) {
+  const Frame& frame = input.layout.frame;
+  json joints = json::array();
+  for (int end = 0; end < 2; ++end) {
+    joints.push_back({{"joint", frame.joints[frame.beams[step.beam].joints[end]].id}, {"voxels", step.voxels[end]}});
+  }
+  return json{{"beam", frame.beams[step.beam].id}, {"direction", vectorJson(step.direction)}, {"joints", joints}}
+      .dump();
+}
+
 bool isFrameDocument(const AssemblyDocument& document) {
   return document.kind == AssemblyKind::Frame && document.contactsFromGeometry;
 }

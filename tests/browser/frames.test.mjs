@@ -3,7 +3,7 @@
 // Frame structures in the playground (issue 9), in headless Chromium: the FRAME CUBE example is
 // drawn (its 12 beams and the bare joint cubes, framed in mm) and checked; Design makes its
 // 3x3x3 voxel joints in the worker with progress (interlocking, key 1, the CLI's result document
-// for the same seed); the disassembly plays each beam along its axis; the result downloads as an
+// for the same seed) and step by step (Next until complete, verified); the disassembly plays each beam along its axis; the result downloads as an
 // STL equal to the CLI's export and as .fpuz and CSV; the cut-point frame shows the core's
 // message; a bad frame file shows the core's error; an OBJ of lines opens as a frame; the
 // 300-beam scaffold shows progress and is cancelled.
@@ -125,13 +125,38 @@ describe('frame structures in the playground (headless Chromium)', { timeout: 18
     assert.equal(await page.isVisible('#design-frame-note'), true);
     assert.equal(await page.isVisible('#design-frame-hint'), true);
     assert.equal(await page.inputValue('#design-candidates'), '2');
-    assert.equal(await page.isDisabled('#session-start'), true);
+    assert.equal(await page.isDisabled('#session-start'), false, 'frames design step by step too');
     // Frame formats: .fpuz and CSV need designed joints but are offered for frames; .puz is voxel-only.
     assert.equal(await page.locator('#export-format option[value="puz"]').isDisabled(), true);
     assert.equal(await page.locator('#export-format option[value="svg"]').isDisabled(), true);
     assert.equal(await page.locator('#export-format option[value="fpuz"]').isDisabled(), false);
     assert.equal(await page.locator('#export-format option[value="stl"]').isDisabled(), false);
     await screenshot(page, 'frames-cube-1400');
+  });
+
+  it('designs the FRAME CUBE step by step: the key leaves upwards, Next until complete gives a verified design', async () => {
+    await page.$eval('#session-details', (details) => { details.open = true; });
+    assert.equal(await page.isVisible('#session-plate-note'), true);
+    await page.click('#session-start');
+    await page.waitForFunction(() => document.querySelector('#session-state').dataset.parts === '1');
+    assert.match(await page.textContent('#session-state'), /^1 of 12 beams \(the last is the remainder\) · \d+ children/);
+    await page.click('#session-preview');
+    await page.waitForFunction(() => /^Child 0:/.test(document.querySelector('#design-message').textContent));
+    assert.match(await page.textContent('#design-message'),
+      /^Child 0: beam \d+ leaves along \+y \(free voxels taken: \d+ at joint \d+, \d+ at joint \d+\)\. Choose it/);
+    for (let parts = 2; parts <= 12; parts += 1) {
+      await page.click('#session-next');
+      await page.waitForFunction((n) => document.querySelector('#session-state').dataset.parts === String(n), parts);
+    }
+    assert.equal(await page.getAttribute('#session-state', 'data-complete'), 'true');
+    assert.match(await page.textContent('#session-state'), /^Complete: 12 of 12 beams, verified\.$/);
+    const stepped = await pageState(page);
+    assertInterlockingWithKey(stepped, 1);
+    assert.equal(stepped.parts, '12');
+    await screenshot(page, 'frames-cube-stepped-1400');
+    await page.click('#session-close');
+    await page.selectOption('#example-select', CUBE);
+    await waitForReady(page, CUBE);
   });
 
   it('designs the FRAME CUBE in the worker: interlocking with key 1, the CLI\'s document, the disassembly along each beam\'s axis', async () => {

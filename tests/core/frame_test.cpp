@@ -346,5 +346,44 @@ TEST(FrameGeometry, SweptBoxesCollideOnlyWhenMovingInto) {
   EXPECT_FALSE(sweptBoxesCollide(a, {1, 0, 0}, b));
 }
 
+TEST(FrameSession, StepByStepGivesAVerifiedDesignAndGoesBack) {
+  const FrameDocument cube = loadFrameExample("frame_cube.json");
+  FrameDesignSession session(cube.layout, {});
+  EXPECT_EQ(session.targetBeams(), 12);
+  EXPECT_FALSE(session.back()) << "at the root";
+  EXPECT_FALSE(session.complete());
+  ASSERT_GT(session.childCount(), 0);
+  const FrameDesignStep key = session.childPreview(0);
+  EXPECT_EQ(key.direction, cubeFaceNormal(2)) << "the key leaves upwards when it can";
+  EXPECT_THROW(session.childPreview(session.childCount()), Error);
+  // Best child each time, until the design is complete and verified.
+  while (!session.complete()) ASSERT_TRUE(session.next()) << session.result().message;
+  EXPECT_EQ(session.childCount(), 0);
+  EXPECT_EQ(session.steps().size(), 11u);
+  EXPECT_EQ(session.steps()[0].beam, key.beam);
+  const FrameDesignResult result = session.result();
+  ExpectVerifiedResult(cube, result, 12);
+  EXPECT_EQ(result.order[0], key.beam);
+  // Back one step and the design is open again; choosing forward completes it again.
+  ASSERT_TRUE(session.back());
+  EXPECT_FALSE(session.complete());
+  EXPECT_EQ(session.steps().size(), 10u);
+  ASSERT_TRUE(session.next());
+  EXPECT_TRUE(session.complete());
+  EXPECT_EQ(session.result().labels, result.labels);
+  // The same seed and calls, the same design.
+  FrameDesignSession again(cube.layout, {});
+  while (!again.complete()) ASSERT_TRUE(again.next());
+  EXPECT_EQ(frameResultToJson(cube.layout, again.result()), frameResultToJson(cube.layout, result));
+  // A frame with a cut-point beam has no session.
+  const FrameDocument cut = loadFrameExample("cut_point.json");
+  try {
+    FrameDesignSession refused(cut.layout, {});
+    ADD_FAILURE() << "a cut point was accepted";
+  } catch (const Error& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("beam 9 is a cut point", 0), 0u) << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace desia

@@ -442,3 +442,40 @@ test('a plate design session steps to the verified plan designPlate finds, in th
   const chair = fs.readFileSync(path.join(root, 'examples/plate/chair_cut_point.json'), 'utf8');
   assert.throws(() => core.designSession(chair, {}), (error) => error.code === 'bad-input' && /^plate 5 is a cut point/.test(error.message));
 });
+
+test('a frame design session steps FRAME CUBE to a verified design, in the worker too', async () => {
+  const cube = fs.readFileSync(path.join(root, 'examples/frame/frame_cube.json'), 'utf8');
+  const expected = core.designFrame(cube, { seed: 1 });
+  for (const session of [core.designSession(cube, { seed: 1, source: 'frame_cube.json' }),
+    await desia.designSession(cube, { seed: 1, source: 'frame_cube.json' })]) {
+    try {
+      const first = await session.state();
+      assert.deepEqual([first.partsPlaced, first.targetParts, first.complete, first.steps], [1, 12, false, []]);
+      assert.equal(first.document.kind, 'frame');
+      assert.ok(await session.childCount() > 0);
+      const preview = await session.preview(0);
+      assert.equal(typeof preview.beam, 'number');
+      assert.deepEqual(preview.direction, [0, 1, 0], 'the key leaves upwards');
+      assert.equal(preview.joints.length, 2);
+      assert.ok(preview.joints.every((joint) => typeof joint.joint === 'number' && Array.isArray(joint.voxels)));
+      while (!(await session.state()).complete) assert.equal(await session.next(), true);
+      const done = await session.state();
+      assert.equal(done.steps.length, 11);
+      assert.equal(done.steps[0].beam, preview.beam);
+      assert.equal(done.document.kind, 'frame');
+      assert.ok(Array.isArray(done.document.jointVoxels), 'the result document, with its joint voxels');
+      assert.deepEqual(done.document, expected.document, 'the same verified result as designFrame');
+      const report = await session.check();
+      assert.equal(report.verdict, 'interlocking');
+      assert.equal(report.key, 1);
+      assert.equal(await session.back(), true);
+      assert.equal((await session.state()).complete, false);
+      assert.equal(await session.next(), true);
+      assert.equal((await session.state()).complete, true);
+    } finally {
+      await session.dispose();
+    }
+  }
+  const cut = fs.readFileSync(path.join(root, 'examples/frame/cut_point.json'), 'utf8');
+  assert.throws(() => core.designSession(cut, {}), (error) => error.code === 'bad-input' && /^beam 9 is a cut point/.test(error.message));
+});

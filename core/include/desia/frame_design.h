@@ -4,8 +4,10 @@
 // owns each voxel of each joint cube. Same shape as the plate planner (plate_design.h).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -42,6 +44,47 @@ struct FrameDesignResult {
   std::vector<JointLabels> labels;  // per joint, the owning beam of each voxel (internal indices)
   Assembly assembly;                // parts = beams in `order` (part 1 = key), voxel contacts
   FrameDesignProgress progress;
+};
+
+// One step of a frame design: the beam taken (an index), the axis direction it leaves along, and
+// the free voxels it takes at its two joints (frame.beams[beam].joints[0] and [1]; voxel indices
+// 0..26, x fastest) besides the face voxels it owns from the start.
+struct FrameDesignStep {
+  int beam = 0;
+  Vec3 direction{0, 0, 0};
+  std::array<std::vector<int>, 2> voxels;
+};
+
+// Step-by-step design (as the voxel and plate sessions, paper Algorithm 1 by hand): the beams
+// taken so far, the ranked children of the current node (the designer's, options.candidates per
+// node, more for the key), choose one, go back. A choice that completes the design is accepted
+// only if it verifies (frameDesignFailure). Deterministic for a seed and a sequence of calls.
+class FrameDesignSession {
+ public:
+  // Throws BadInput for a frame no joints can make interlocking (a cut-point beam, named; fewer
+  // than 3 beams).
+  FrameDesignSession(FrameLayout layout, const FrameDesignOptions& options);
+  ~FrameDesignSession();
+  FrameDesignSession(const FrameDesignSession&) = delete;
+  FrameDesignSession& operator=(const FrameDesignSession&) = delete;
+
+  const std::vector<FrameDesignStep>& steps() const;  // the key first
+  int targetBeams() const;
+  bool complete() const;  // every beam placed and the design verified
+  // The verified result once complete (status Success), else NotFound saying how far it got.
+  const FrameDesignResult& result() const;
+
+  int childCount();                     // ranked children of the current node (generated on first call)
+  FrameDesignStep childPreview(int n);  // the n-th child (0 = best ranked), without moving
+  // Moves to the n-th child. Throws BadInput when n is out of range, or when that child completes
+  // a design that fails verification (the child is dropped from the list; the message says why).
+  void chooseChild(int n);
+  bool next();  // moves to the best child that works; false when none does (then go back)
+  bool back();  // moves to the parent; false at the root
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
 };
 
 // Designs the joints of a frame whose parts-graph has no cut point (otherwise: status CutPoint,

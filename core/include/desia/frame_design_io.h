@@ -26,6 +26,14 @@ std::string frameDesignProgressToJson(const FrameDesignProgress& progress);
 // null, verification: its DBG check report (what `desia check RESULT.json` prints) or null}.
 std::string frameDesignResultToJson(const FrameDocument& input, const FrameDesignResult& result);
 
+// A frame design session's current node for the package: {partsPlaced (beams taken + the rest),
+// targetParts, complete, message, steps: [{beam, direction}] (input ids), document: the verified
+// result document once complete (frameResultToJson), else the input frame document}.
+std::string frameSessionStateToJson(const FrameDocument& input, const FrameDesignSession& session);
+// One child of a session's node: {beam, direction, joints: [{joint, voxels}]} (input ids; the
+// free voxels the beam takes at each of its two joints, 0..26, x fastest).
+std::string frameStepToJson(const FrameDocument& input, const FrameDesignStep& step);
+
 // Is this assembly document a frame given by its geometry (a frame, or a designed one)?
 bool isFrameDocument(const AssemblyDocument& document);
 
