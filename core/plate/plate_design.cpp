@@ -306,7 +306,11 @@ class PlateJointPlanner {
       : plates_(plates),
         graph_(buildPlateGraph(plates, contacts, options.joints)),
         options_(options),
-        random_(options.seed * 0x9E3779B97F4A7C15ull + 1) {}
+        random_(options.seed * 0x9E3779B97F4A7C15ull + 1) {
+    if (options.realization == JointRealization::Cut) {
+      for (const Plate& plate : plates) meshes_.push_back(plateMesh(plate));
+    }
+  }
 
   PlateDesignResult run();
 
@@ -320,6 +324,7 @@ class PlateJointPlanner {
 
  private:
   bool acceptable(const std::vector<Step>& steps) const;
+  bool runsIntoAStranger(int plate, const Vec3& d, const std::vector<int>& rest) const;
   bool cutAndVerify(const std::vector<PlateJoint>& joints, const std::vector<int>& order,
                     const std::vector<Vec3>& directions, PlateDesignResult* result);
   Step makeStep(const std::vector<Step>& steps, int plate, const Vec3& d) const;
@@ -335,6 +340,7 @@ class PlateJointPlanner {
   PlateDesignOptions options_;
   uint64_t random_;
   std::string lastRejection_;  // why the last complete plan failed
+  std::vector<TriangleMesh> meshes_;  // the plates as given (cut joints: for the sweep of each step)
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
@@ -397,6 +403,18 @@ bool PlateJointPlanner::acceptable(const std::vector<Step>& steps) const {
   return result.verdict == Verdict::Interlocking && result.key == 0;
 }
 
+// Would the plate, leaving along d, run into a plate of R it does not touch? No joint between
+// them can make room, so the step cannot be part of a plan that verifies: skip it now rather than
+// when a complete plan's sweep fails (the TABLE's divider would hit the back apron).
+bool PlateJointPlanner::runsIntoAStranger(int plate, const Vec3& d, const std::vector<int>& rest) const {
+  const std::vector<int>& touching = graph_.neighbours[plate];
+  for (int q : rest) {
+    if (q == plate || std::binary_search(touching.begin(), touching.end(), q)) continue;
+    if (meshCollidesAlong(meshes_[plate], meshes_[q], d, options_.geometry.contactTolerance)) return true;
+  }
+  return false;
+}
+
 // The ranked children of a node: every plate of R that is not a cut point of R's parts-graph,
 // with every direction it may leave in, kept if A_i passes; fewest empty joints first, ties in a
 // seeded random order; at most `candidates` of them.
@@ -426,6 +444,7 @@ std::vector<Step> PlateJointPlanner::childrenOf(const std::vector<Step>& steps) 
     for (int q : rest) others[q] = q != plate;
     for (const Vec3& d : candidateDirections(plate)) {
       if (!leavesWithoutPushing(graph_, plate, others, d)) continue;
+      if (options_.realization == JointRealization::Cut && runsIntoAStranger(plate, d, rest)) continue;
       std::vector<Step> next = steps;
       next.push_back(makeStep(steps, plate, d));
       if (next.back().blocked || !acceptable(next)) continue;
