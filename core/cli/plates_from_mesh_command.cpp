@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <iostream>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -27,18 +28,9 @@ const char* kPlatesFromMeshUsage =
 using desia::cli::UsageError;
 
 // A finite number, the whole text; BadInput naming the flag otherwise (exit 2 like any bad value).
+// The core checks the ranges (a thickness the mesh allows, say) and names them.
 double numberOption(const std::string& flag, const std::string& text) {
-  size_t used = 0;
-  double value = 0;
-  try {
-    value = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (text.empty() || used != text.size() || !std::isfinite(value)) {
-    throw desia::Error(desia::ErrorCode::BadInput, flag + " expects a number, got '" + text + "'");
-  }
-  return value;
+  return desia::cli::numberOption(flag, text, -std::numeric_limits<double>::max(), std::numeric_limits<double>::max());
 }
 
 std::string shortNumber(double value) {

@@ -47,21 +47,11 @@ Point2 toPoint(const ClipperLib::IntPoint& p) {
   return {static_cast<double>(p.X) / kScale, static_cast<double>(p.Y) / kScale};
 }
 
-ClipperLib::Paths facePaths(const std::vector<Loop>& loops, const PlaneFrame& frame) {
-  ClipperLib::Paths paths;
-  for (const Loop& loop : loops) {
-    ClipperLib::Path path;
-    for (const Vec3& p : loop) path.push_back(frame.toClipper(p));
-    paths.push_back(path);
-  }
-  return paths;
-}
-
 // The region to cut: both faces' regions united (the first face alone for a prism plate).
 ClipperLib::Paths blankOf(const Plate& plate, const PlaneFrame& frame) {
   ClipperLib::Clipper clipper;
-  clipper.AddPaths(facePaths(plate.bottom, frame), ClipperLib::ptSubject, true);
-  clipper.AddPaths(facePaths(plate.top, frame), ClipperLib::ptClip, true);
+  clipper.AddPaths(clipperPaths(plate.bottom, frame), ClipperLib::ptSubject, true);
+  clipper.AddPaths(clipperPaths(plate.top, frame), ClipperLib::ptClip, true);
   ClipperLib::Paths blank;
   clipper.Execute(ClipperLib::ctUnion, blank, ClipperLib::pftEvenOdd, ClipperLib::pftEvenOdd);
   return blank;

@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "analysis/vec3.h"
+#include "desia/plate.h"
 
 namespace desia {
 
@@ -33,5 +34,18 @@ struct PlaneFrame {
     return {origin[0] + u[0] * x + v[0] * y, origin[1] + u[1] * x + v[1] * y, origin[2] + u[2] * x + v[2] * y};
   }
 };
+
+// A loop, or loops, in a frame's integer coordinates (their offsets along the normal dropped).
+inline ClipperLib::Path clipperPath(const Loop& loop, const PlaneFrame& frame) {
+  ClipperLib::Path path;
+  for (const Vec3& p : loop) path.push_back(frame.toClipper(p));
+  return path;
+}
+
+inline ClipperLib::Paths clipperPaths(const std::vector<Loop>& loops, const PlaneFrame& frame) {
+  ClipperLib::Paths paths;
+  for (const Loop& loop : loops) paths.push_back(clipperPath(loop, frame));
+  return paths;
+}
 
 }  // namespace desia

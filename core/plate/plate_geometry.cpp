@@ -122,16 +122,6 @@ std::vector<SolidFace> solidFaces(const Plate& plate) {
   return faces;
 }
 
-ClipperLib::Paths clipperPaths(const std::vector<Loop>& loops, const PlaneFrame& frame) {
-  ClipperLib::Paths paths;
-  for (const Loop& loop : loops) {
-    ClipperLib::Path path;
-    for (const Vec3& p : loop) path.push_back(frame.toClipper(p));
-    paths.push_back(path);
-  }
-  return paths;
-}
-
 double maxDistanceToPlane(const std::vector<Loop>& loops, const PlaneFrame& frame) {
   double worst = 0;
   for (const Loop& loop : loops) {

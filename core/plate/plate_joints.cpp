@@ -49,18 +49,6 @@ bool isPrism(const Plate& plate) {
   return true;
 }
 
-ClipperLib::Path clipperPath(const Loop& loop, const PlaneFrame& frame) {
-  ClipperLib::Path path;
-  for (const Vec3& p : loop) path.push_back(frame.toClipper(p));
-  return path;
-}
-
-ClipperLib::Paths clipperPaths(const std::vector<Loop>& loops, const PlaneFrame& frame) {
-  ClipperLib::Paths paths;
-  for (const Loop& loop : loops) paths.push_back(clipperPath(loop, frame));
-  return paths;
-}
-
 double areaOf(const ClipperLib::Paths& paths) {
   double area = 0;
   for (const ClipperLib::Path& path : paths) area += ClipperLib::Area(path);
