@@ -20,7 +20,11 @@
 #include "desia/document.h"
 #include "desia/error.h"
 #include "desia/mesh.h"
+#include "desia/cut_sheets.h"
+#include "desia/frame_format.h"
+#include "desia/mitred_plates.h"
 #include "desia/plate.h"
+#include "desia/plate_design_io.h"
 #include "desia/voxel_design.h"
 #include "desia/voxelize.h"
 
@@ -181,6 +185,49 @@ inline void designTarget(const uint8_t* data, size_t size) {
   });
 }
 
+// Frames as the CLI reads them: FrameInterlock .fpuz, OBJ lines and faces, and the JSON frame
+// document (the reader is chosen by the extension). A frame that was read must write a JSON
+// document that reads back with as many beams.
+inline void frameTextTarget(const uint8_t* data, size_t size) {
+  if (size > 8192) return;  // frames of a few dozen beams walk every path; layout checks are quadratic
+  const std::string text = detail::textOf(data, size);
+  for (const char* source : {"fuzz.fpuz", "fuzz.obj", "fuzz.json"}) {
+    detail::refusalsAllowed([&] {
+      const FrameDocument frame = parseFrameText(text, source);
+      try {
+        const FrameDocument again = parseFrameText(frameDocumentToJson(frame, -1), "fuzz-roundtrip.json");
+        if (again.layout.frame.beams.size() != frame.layout.frame.beams.size()) detail::broken("beam count changed in a round trip");
+      } catch (const desia::Error& e) {
+        detail::broken(std::string("a written frame was refused: ") + e.what());
+      }
+    });
+  }
+}
+
+// The plate readers that are not assembly documents: plates from a low-poly mesh (plates-from-mesh),
+// the designer's and the cut sheets' options; and the cut sheets of a small plate document.
+inline void plateInputTarget(const uint8_t* data, size_t size) {
+  const std::string text = detail::textOf(data, size);
+  detail::refusalsAllowed([&] {
+    const TriangleMesh mesh = parseObj(text, "fuzz.obj");
+    if (mesh.triangles.size() > 500) return;
+    MitredPlateOptions options;
+    options.thickness = 2;
+    const MitredPlates plates = mitredPlatesFromMesh(mesh, options, "fuzz.obj");
+    documentFromPlates(plates.plates, {}, "fuzz.obj");
+  });
+  detail::refusalsAllowed([&] { parsePlateDesignOptionsJson(text); });
+  detail::refusalsAllowed([&] { parseCutSheetOptionsJson(text); });
+  detail::refusalsAllowed([&] {
+    if (size > 8192) return;
+    const AssemblyDocument document = parseAssemblyText(text, "fuzz.json");
+    if (document.kind != AssemblyKind::Plate || document.plates.size() > 16) return;
+    CutSheetOptions options;
+    options.source = "fuzz";
+    plateCutSheets(document, CutFileFormat::Svg, options);
+  });
+}
+
 inline const std::vector<Target>& targets() {
   static const std::vector<Target> kTargets = {
       {"assembly_text", assemblyTextTarget},
@@ -188,6 +235,8 @@ inline const std::vector<Target>& targets() {
       {"design_options", designOptionsTarget},
       {"check", checkTarget},
       {"design", designTarget},
+      {"frame_text", frameTextTarget},
+      {"plate_input", plateInputTarget},
   };
   return kTargets;
 }
