@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "desia/check.h"
+#include "desia/document_check.h"
 #include "desia/cut_sheets.h"
 #include "desia/plate_design.h"
 #include "desia/plate_design_io.h"
@@ -65,7 +66,7 @@ val check(const std::string& text, const std::string& method, const std::string&
     options.method = desia::parseCheckMethod(method);
     options.allGraphs = allGraphs;
     const desia::AssemblyDocument document = desia::parseAssemblyText(text, source);
-    return parseJsonText(desia::checkReportToJson(document, desia::checkAssembly(document, options), -1));
+    return parseJsonText(desia::checkReportToJson(document, desia::checkDocument(document, options), -1));
   });
 }
 
@@ -236,14 +237,14 @@ class DesignSession {
             frames_->complete() ? desia::frameResultToJson(frame_.layout, frames_->result(), frame_.name, -1)
                                 : desia::frameDocumentToJson(frame_, -1),
             "result");
-        return parseJsonText(desia::checkReportToJson(current, desia::checkAssembly(current, options), -1));
+        return parseJsonText(desia::checkReportToJson(current, desia::checkDocument(current, options), -1));
       }
       if (plates_) {
         // The verified result once complete (both tests, as designPlate), else the design as given.
         const desia::AssemblyDocument current =
             plates_->complete() ? desia::parseJsonDocument(desia::plateDesignToJson(document_, plates_->result(), -1), "plan") : document_;
         if (plates_->complete()) options.method = desia::CheckMethod::Both;
-        return parseJsonText(desia::checkReportToJson(current, desia::checkAssembly(current, options), -1));
+        return parseJsonText(desia::checkReportToJson(current, desia::checkDocument(current, options), -1));
       }
       const desia::AssemblyDocument document = desia::documentFromVoxels(voxels_->current());
       return parseJsonText(desia::checkReportToJson(document, voxels_->check(), -1));

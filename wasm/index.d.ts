@@ -93,6 +93,13 @@ export interface CheckReport extends Verdict {
    * whether a path search stopped at its work limit (then "stuck" is not proven).
    */
   disassemblyFailure?: { removed: number[]; stuck: number[]; searchLimitReached: boolean };
+  /**
+   * Plate results with cut joints and frame results: their removal plan replayed on the real
+   * shapes (plates: contacts recomputed from the jointed plates and each plate swept; frames:
+   * each beam and its joint voxels swept along its axis). `failure` names the part that cannot
+   * leave; absent for other documents.
+   */
+  shapeRemoval?: { checked: string; clear: boolean; failure: string };
 }
 
 /** The JSON assembly document (see docs/json-schema.md). */
@@ -283,7 +290,12 @@ export interface AsyncDesignSession {
  * Export formats: 'stl' (binary STL), 'stl-ascii', 'obj' (Wavefront OBJ, one object per part) and
  * 'xmpuzzle' (BurrTools, voxel puzzles only).
  */
-export type ExportFormat = 'stl' | 'stl-ascii' | 'obj' | 'xmpuzzle' | 'svg' | 'dxf' | 'fpuz' | 'csv';
+export type ExportFormat =
+  | 'stl' | 'stl-ascii' | 'obj' | 'xmpuzzle' | 'svg' | 'dxf' | 'fpuz' | 'csv'
+  /** Frames: every beam body and glued joint piece its own OBJ object, in place. */
+  | 'pieces-obj'
+  /** Frames: the joint pieces alone, laid out on z = 0 to print and glue. */
+  | 'joint-pieces-stl';
 
 export interface ExportOptions {
   /** The file format (default 'stl'). */

@@ -18,11 +18,15 @@ const FORMATS = {
   json: { op: 'document-json', extension: 'json', type: 'application/json', perPart: false, kinds: ALL },
   // The core's mesh export writes voxel parts, plates and frames (contact graphs have no shapes).
   stl: { op: 'export', extension: 'stl', type: 'model/stl', perPart: true, kinds: ['voxel', 'plate', 'frame'] },
-  'stl-ascii': { op: 'export', extension: 'stl', type: 'model/stl', perPart: true, kinds: ['voxel', 'plate', 'frame'] },
+  'stl-ascii': { op: 'export', extension: 'stl', suffix: '-ascii', type: 'model/stl', perPart: true, kinds: ['voxel', 'plate', 'frame'] },
   obj: { op: 'export', extension: 'obj', type: 'model/obj', perPart: true, kinds: ['voxel', 'plate', 'frame'] },
   // A designed frame as FrameInterlock's .fpuz and as its cut list (beam lengths, joint voxels).
   fpuz: { op: 'export', extension: 'fpuz', type: 'text/plain', perPart: false, kinds: ['frame'] },
   csv: { op: 'export', extension: 'csv', type: 'text/csv', perPart: false, kinds: ['frame'] },
+  // A designed frame as what a maker cuts and glues: every beam body and glued joint piece its own
+  // object (OBJ, in place), and the joint pieces alone laid out on a build plate (STL).
+  'pieces-obj': { op: 'export', extension: 'obj', suffix: '-pieces', type: 'model/obj', perPart: false, kinds: ['frame'] },
+  'joint-pieces-stl': { op: 'export', extension: 'stl', suffix: '-joint-pieces', type: 'model/stl', perPart: false, kinds: ['frame'] },
   xmpuzzle: { op: 'export', extension: 'xmpuzzle', type: 'application/octet-stream', perPart: false, kinds: ['voxel'] },
   svg: { op: 'cut-sheets', extension: 'svg', type: 'image/svg+xml', perPart: false, kinds: ['plate'], cut: true },
   dxf: { op: 'cut-sheets', extension: 'dxf', type: 'application/dxf', perPart: false, kinds: ['plate'], cut: true },
@@ -37,8 +41,8 @@ function baseName(name) {
 
 /** `<name>.ext` for the whole assembly, `<name>-part3.ext` for part 3, `<name>-sheet2.svg` for sheet 2 of several. */
 export function exportFileName(name, format, part, sheet = 0) {
-  const { extension } = FORMATS[format];
-  return `${baseName(name)}${part > 0 ? `-part${part}` : ''}${sheet > 0 ? `-sheet${sheet}` : ''}.${extension}`;
+  const { extension, suffix = '' } = FORMATS[format];
+  return `${baseName(name)}${suffix}${part > 0 ? `-part${part}` : ''}${sheet > 0 ? `-sheet${sheet}` : ''}.${extension}`;
 }
 
 function saveBlob(fileName, blob) {

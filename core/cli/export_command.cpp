@@ -20,7 +20,8 @@ namespace {
 constexpr int kExitBadInput = 2;
 
 const char* kExportUsage =
-    "usage: desia export FILE --format stl|stl-ascii|obj|xmpuzzle|svg|dxf|fpuz|csv|puz|voxel-json [--part N] [--voxel-size S]\n"
+    "usage: desia export FILE --format stl|stl-ascii|obj|xmpuzzle|svg|dxf|fpuz|csv|puz|voxel-json|pieces-obj|joint-pieces-stl\n"
+    "             [--part N] [--voxel-size S]\n"
     "             [--sheet WxH] [--kerf MM] [--spacing MM] [--hairline] --output OUT\n";
 
 using desia::cli::UsageError;
@@ -97,7 +98,8 @@ int exportFile(const std::vector<std::string>& args) {
   }
   // .fpuz and the cut list are for frames only; so are puz and voxel-json here: a frame on a voxel
   // grid as the voxel assembly it is (core/frame/frame_voxels.cpp).
-  const bool frameOnlyFormat = format == "fpuz" || format == "csv" || format == "puz" || format == "voxel-json";
+  const bool frameOnlyFormat = format == "fpuz" || format == "csv" || format == "puz" || format == "voxel-json" ||
+                               format == "pieces-obj" || format == "joint-pieces-stl";
   const desia::ExportFormat exportFormat = frameOnlyFormat ? desia::ExportFormat::StlBinary : desia::parseExportFormat(format);
 
   options.source = input;

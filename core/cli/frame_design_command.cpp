@@ -10,6 +10,7 @@
 #include "cli_files.h"
 #include "commands.h"
 #include "desia/check.h"
+#include "desia/document_check.h"
 #include "desia/document.h"
 #include "desia/error.h"
 #include "desia/frame_design.h"
@@ -94,12 +95,8 @@ int runFrameDesignCommand(const std::vector<std::string>& args) {
   // What the user gets is checked again as written: the DBG test on its voxel contacts, and the
   // swept removal of every beam in order.
   const desia::AssemblyDocument written = desia::parseAssemblyText(text, output);
-  const desia::CheckReport report = desia::checkAssembly(written);
-  const desia::FrameDocument reread = desia::frameFromAssemblyDocument(written, output);
-  const std::string sweep = desia::frameDesignFailure(reread.layout, reread.labels, reread.order, reread.directions);
+  const desia::CheckReport report = desia::checkDocument(written);
   std::cout << result.message << " in " << result.progress.seconds << " s\n"
-            << "verified: " << desia::checkReportToText(written, report)
-            << "removal in id order, swept: " << (sweep.empty() ? "clear" : sweep) << "\n"
-            << "written: " << output << "\n";
-  return report.result.verdict == desia::Verdict::Interlocking && sweep.empty() ? 0 : 3;
+            << "verified: " << desia::checkReportToText(written, report) << "written: " << output << "\n";
+  return desia::checkPassed(report) && report.shapeRemoval ? 0 : 3;
 }

@@ -10,6 +10,7 @@
 #include "cli_files.h"
 #include "commands.h"
 #include "desia/check.h"
+#include "desia/document_check.h"
 #include "desia/error.h"
 #include "desia/version.h"
 
@@ -35,7 +36,9 @@ const char* kUsage =
     "       desia --version | --help\n"
     "\n"
     "check   tests whether the assembly in FILE (.puz voxel puzzle or JSON assembly document)\n"
-    "        is interlocking and plans its disassembly.\n"
+    "        is interlocking and plans its disassembly. A plate or frame design result's removal plan\n"
+    "        is also replayed on the real shapes (cut plates: contacts recomputed, each plate swept;\n"
+    "        frames: each beam and its joint voxels swept along its axis).\n"
     "        --method dbg   directional blocking graphs (default; exact for voxel puzzles)\n"
     "        --method lp    linear program (exact for any contact normals; needs GLPK)\n"
     "        --method both  run both and compare\n"
@@ -63,8 +66,11 @@ const char* kUsage =
     "export  writes a voxel assembly as closed part meshes (binary or ASCII STL, OBJ with one object\n"
     "        per part; --part N for one part, --voxel-size S scales voxel units) or as a BurrTools\n"
     "        .xmpuzzle (gzip XML; the whole puzzle); exit 0 when written. A frame result exports as stl,\n"
-    "        stl-ascii, obj (each beam with its joint voxels), fpuz (FrameInterlock) or csv (the cut list)\n"
-    "exit    0 interlocking, 1 not interlocking (or deadlocked), 2 bad input or usage\n";
+    "        stl-ascii, obj (each beam with its joint voxels), fpuz (FrameInterlock), csv (the cut list),\n"
+    "        pieces-obj (each beam body and each glued joint piece its own named object, in place) or\n"
+    "        joint-pieces-stl (the joint pieces alone, laid out on z = 0 to print and glue)\n"
+    "exit    0 interlocking, 1 not interlocking (or deadlocked, or a plate or frame result whose parts\n"
+    "        cannot leave their real shapes in the planned order), 2 bad input or usage\n";
 
 struct UsageError {
   std::string message;
@@ -96,9 +102,9 @@ int runCheck(const std::vector<std::string>& args) {
   options.method = desia::parseCheckMethod(method);
   options.allGraphs = allGraphs;
   const desia::AssemblyDocument document = desia::parseAssemblyText(desia::cli::readInputFile(file), file);
-  const desia::CheckReport report = desia::checkAssembly(document, options);
+  const desia::CheckReport report = desia::checkDocument(document, options);
   std::cout << (json ? desia::checkReportToJson(document, report) + "\n" : desia::checkReportToText(document, report));
-  return report.result.verdict == desia::Verdict::Interlocking ? 0 : kExitNegative;
+  return desia::checkPassed(report) ? 0 : kExitNegative;
 }
 
 }  // namespace

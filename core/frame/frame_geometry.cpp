@@ -643,27 +643,36 @@ void appendBox(TriangleMesh& mesh, const OrientedBox& box) {
 
 }  // namespace
 
+TriangleMesh beamJointPieceMesh(const FrameLayout& layout, const std::vector<JointLabels>& labels, int beam,
+                                int joint) {
+  TriangleMesh mesh;
+  VoxelGrid grid(3, 3, 3);
+  bool any = false;
+  for (int v = 0; v < kJointVoxelCount; ++v) {
+    if (labels[joint][v] == beam) {
+      grid.setLabelAt(v, 1);
+      any = true;
+    }
+  }
+  if (!any) return mesh;
+  const TriangleMesh voxels = partSurfaceMesh(grid, 1, layout.voxelSize);
+  const Vec3& p = layout.frame.joints[joint].position;
+  for (const auto& v : voxels.vertices) {
+    mesh.vertices.push_back({v[0] + p[0] - 1.5 * layout.voxelSize, v[1] + p[1] - 1.5 * layout.voxelSize,
+                             v[2] + p[2] - 1.5 * layout.voxelSize});
+  }
+  mesh.triangles = voxels.triangles;
+  return mesh;
+}
+
 TriangleMesh beamPartMesh(const FrameLayout& layout, const std::vector<JointLabels>& labels, int beam) {
   TriangleMesh mesh;
   for (const OrientedBox& box : beamBodyBoxes(layout, beam)) appendBox(mesh, box);
   for (int joint : layout.frame.beams[beam].joints) {
-    VoxelGrid grid(3, 3, 3);
-    bool any = false;
-    for (int v = 0; v < kJointVoxelCount; ++v) {
-      if (labels[joint][v] == beam) {
-        grid.setLabelAt(v, 1);
-        any = true;
-      }
-    }
-    if (!any) continue;
-    const TriangleMesh voxels = partSurfaceMesh(grid, 1, layout.voxelSize);
-    const Vec3& p = layout.frame.joints[joint].position;
+    const TriangleMesh piece = beamJointPieceMesh(layout, labels, beam, joint);
     const int first = static_cast<int>(mesh.vertices.size());
-    for (const auto& v : voxels.vertices) {
-      mesh.vertices.push_back({v[0] + p[0] - 1.5 * layout.voxelSize, v[1] + p[1] - 1.5 * layout.voxelSize,
-                               v[2] + p[2] - 1.5 * layout.voxelSize});
-    }
-    for (const auto& t : voxels.triangles) mesh.triangles.push_back({t[0] + first, t[1] + first, t[2] + first});
+    mesh.vertices.insert(mesh.vertices.end(), piece.vertices.begin(), piece.vertices.end());
+    for (const auto& t : piece.triangles) mesh.triangles.push_back({t[0] + first, t[1] + first, t[2] + first});
   }
   return mesh;
 }

@@ -128,6 +128,11 @@ std::string checkReportToJson(const AssemblyDocument& document, const CheckRepor
   } else {
     root["disassembly"] = nullptr;
   }
+  if (report.shapeRemoval) {
+    root["shapeRemoval"] = {{"checked", report.shapeRemoval->checked},
+                            {"clear", report.shapeRemoval->failure.empty()},
+                            {"failure", report.shapeRemoval->failure}};
+  }
   return root.dump(indent);
 }
 
@@ -179,6 +184,11 @@ std::string checkReportToText(const AssemblyDocument& document, const CheckRepor
       if (plan.searchLimitReached) out << "\n  (the path search stopped at its work limit: these parts are not proven stuck)";
     }
     out << "\n";
+  }
+  if (report.shapeRemoval) {
+    out << "removal on the shapes: "
+        << (report.shapeRemoval->failure.empty() ? "clear" : "FAILS: " + report.shapeRemoval->failure) << " ("
+        << report.shapeRemoval->checked << ")\n";
   }
   return out.str();
 }

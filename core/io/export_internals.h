@@ -25,6 +25,7 @@ TriangleMesh surfaceOfVoxels(const VoxelGrid& grid, int partId, const std::vecto
 struct NamedMesh {
   int partId = 0;
   TriangleMesh mesh;
+  std::string name;  // the OBJ object's name; "" = "part<partId>"
 };
 
 // Mesh writers. `title` goes into the binary STL header and the OBJ comment (plain ASCII).

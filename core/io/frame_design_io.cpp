@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "desia/check.h"
+#include "desia/document_check.h"
 #include "desia/error.h"
 #include "io/json_input.h"
 
@@ -86,7 +87,7 @@ std::string frameDesignResultToJson(const FrameDocument& input, const FrameDesig
     const std::string text = frameResultToJson(input.layout, result, input.name);
     const AssemblyDocument written = parseAssemblyText(text, "result");
     root["document"] = json::parse(text);
-    root["verification"] = json::parse(checkReportToJson(written, checkAssembly(written), -1));
+    root["verification"] = json::parse(checkReportToJson(written, checkDocument(written), -1));
   } else {
     root["document"] = nullptr;
     root["verification"] = nullptr;

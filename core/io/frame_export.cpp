@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Exports of frame structures: part meshes (STL, OBJ), FrameInterlock's .fpuz, the cut list (CSV),
 // and the surfaces a viewer draws.
+#include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "desia/error.h"
@@ -57,6 +59,51 @@ std::vector<NamedMesh> partMeshes(const FrameDocument& document, int part, const
     throwBadInput(source, "part " + std::to_string(part) + " is not a beam of this frame (0 = all parts)");
   if (document.labels.empty() && part == 0) meshes.push_back({0, cubesMesh(layout)});
   return meshes;
+}
+
+// What a maker cuts and glues: each beam's body (a stick cut to length) and, on their own, the
+// joint pieces glued to its ends (the voxels it owns in each joint cube), in removal order.
+std::vector<NamedMesh> pieceMeshes(const FrameDocument& document, const std::string& source) {
+  if (document.labels.empty()) throwBadInput(source, "this frame has no designed joints yet: run desia design frame first");
+  const FrameLayout& layout = document.layout;
+  std::vector<NamedMesh> meshes;
+  for (int beam : document.order) {
+    const int id = layout.frame.beams[beam].id;
+    meshes.push_back({id, bodyMesh(layout, beam), "beam" + std::to_string(id)});
+    for (int joint : layout.frame.beams[beam].joints) {
+      TriangleMesh piece = beamJointPieceMesh(layout, document.labels, beam, joint);
+      if (piece.triangles.empty()) continue;
+      meshes.push_back({id, std::move(piece),
+                        "beam" + std::to_string(id) + "_joint" + std::to_string(layout.frame.joints[joint].id)});
+    }
+  }
+  return meshes;
+}
+
+// The joint pieces alone, each moved onto the plane z = 0 at its own place of a square grid (one
+// voxel apart), to print in one go; the beam bodies are sticks and stay out.
+std::vector<NamedMesh> jointPiecesOnAPlate(std::vector<NamedMesh> pieces, double voxelSize) {
+  std::vector<NamedMesh> joints;
+  for (NamedMesh& piece : pieces) {
+    if (piece.name.find("_joint") != std::string::npos) joints.push_back(std::move(piece));
+  }
+  const int columns = std::max(1, static_cast<int>(std::ceil(std::sqrt(static_cast<double>(joints.size())))));
+  const double pitch = 4 * voxelSize;
+  for (size_t k = 0; k < joints.size(); ++k) {
+    auto& vertices = joints[k].mesh.vertices;
+    std::array<double, 3> lowest{vertices[0][0], vertices[0][1], vertices[0][2]};
+    for (const auto& v : vertices) {
+      for (int axis = 0; axis < 3; ++axis) lowest[axis] = std::min(lowest[axis], static_cast<double>(v[axis]));
+    }
+    const double x = pitch * static_cast<double>(static_cast<int>(k) % columns);
+    const double y = pitch * static_cast<double>(static_cast<int>(k) / columns);
+    for (auto& v : vertices) {
+      v[0] = v[0] - lowest[0] + x;
+      v[1] = v[1] - lowest[1] + y;
+      v[2] = v[2] - lowest[2];
+    }
+  }
+  return joints;
 }
 
 std::vector<uint8_t> bytesOf(const std::string& text) { return std::vector<uint8_t>(text.begin(), text.end()); }
@@ -123,9 +170,21 @@ std::vector<uint8_t> exportFrame(const FrameDocument& document, const std::strin
     if (format == "voxel-json") return bytesOf(documentToJson(voxels) + "\n");
     return xmpuzzleFile(voxels, source);
   }
+  if (format == "pieces-obj" || format == "joint-pieces-stl") {
+    if (part != 0) throwBadInput(source, "a pieces export holds the whole frame, so it cannot hold only part " + std::to_string(part));
+    std::vector<NamedMesh> pieces = pieceMeshes(document, source);
+    const size_t jointPieces = pieces.size() - frame.beams.size();
+    if (format == "pieces-obj") {
+      return bytesOf(wavefrontObj(pieces, "frame pieces in place, " + std::to_string(frame.beams.size()) +
+                                              " beam bodies and " + std::to_string(jointPieces) + " glued joint pieces"));
+    }
+    return bytesOf(binaryStl(jointPiecesOnAPlate(std::move(pieces), document.layout.voxelSize),
+                             std::to_string(jointPieces) + " joint pieces to print and glue, laid out"));
+  }
   if (format != "stl" && format != "stl-ascii" && format != "obj") {
     throwBadInput(source, "unknown export format '" + format +
-                              "' for a frame (expected stl, stl-ascii, obj, fpuz, csv, puz, voxel-json or xmpuzzle)");
+                              "' for a frame (expected stl, stl-ascii, obj, pieces-stl, pieces-obj, fpuz, csv, puz, "
+                              "voxel-json or xmpuzzle)");
   }
   const std::vector<NamedMesh> meshes = partMeshes(document, part, source);
   const std::string what = part == 0 ? std::to_string(frame.beams.size()) + " beams" : "part " + std::to_string(part);

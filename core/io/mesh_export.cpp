@@ -95,7 +95,7 @@ std::string wavefrontObj(const std::vector<NamedMesh>& parts, const std::string&
   std::string out = "# desia " + title + "\n";
   int64_t firstVertex = 1;
   for (const NamedMesh& part : parts) {
-    out += "o part" + std::to_string(part.partId) + "\n";
+    out += "o " + (part.name.empty() ? "part" + std::to_string(part.partId) : part.name) + "\n";
     for (const Vec& v : part.mesh.vertices) {
       out += "v " + formatNumber(v[0]) + " " + formatNumber(v[1]) + " " + formatNumber(v[2]) + "\n";
     }

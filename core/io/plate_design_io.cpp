@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "desia/check.h"
+#include "desia/document_check.h"
 #include "desia/error.h"
 #include "desia/plate_design_io.h"
 #include "desia/plate_repair.h"
@@ -106,7 +107,7 @@ std::string plateDesignResultToJson(const AssemblyDocument& input, const PlateDe
     CheckOptions options;
     options.method = CheckMethod::Both;
     root["document"] = json::parse(planText);
-    root["verification"] = json::parse(checkReportToJson(plan, checkAssembly(plan, options), -1));
+    root["verification"] = json::parse(checkReportToJson(plan, checkDocument(plan, options), -1));
   } else {
     root["document"] = nullptr;
     root["verification"] = nullptr;

@@ -280,23 +280,30 @@ JointedPlan cutPlan(const std::vector<Plate>& plates, const PlateGraph& graph, c
   return plan;
 }
 
+// The first plate that, swept along its direction, runs into a plate still in place, as a
+// sentence, or "" (plates[order[k]] leaves k-th along directions[k]).
+std::string sweepFailure(const std::vector<Plate>& plates, const std::vector<int>& order,
+                         const std::vector<Vec3>& directions, double tolerance) {
+  std::vector<TriangleMesh> meshes;
+  for (const Plate& plate : plates) meshes.push_back(plateMesh(plate));
+  for (size_t k = 0; k < directions.size(); ++k) {
+    for (size_t j = k + 1; j < order.size(); ++j) {
+      if (meshCollidesAlong(meshes[order[k]], meshes[order[j]], directions[k], tolerance)) {
+        return "plate " + std::to_string(plates[order[k]].id) + " runs into plate " +
+               std::to_string(plates[order[j]].id) + " when it leaves";
+      }
+    }
+  }
+  return "";
+}
+
 // Why the jointed plates fail, or "": both interlocking tests on their computed contacts, and
 // each plate swept along its direction past every plate still in place.
 std::string jointedFailure(const JointedPlan& plan, const std::vector<int>& order, const std::vector<Vec3>& directions,
                            double tolerance) {
   const std::string failure = planFailure(plan.assembly, directions);
   if (!failure.empty()) return failure;
-  std::vector<TriangleMesh> meshes;
-  for (const Plate& plate : plan.plates) meshes.push_back(plateMesh(plate));
-  for (size_t k = 0; k < directions.size(); ++k) {
-    for (size_t j = k + 1; j < order.size(); ++j) {
-      if (meshCollidesAlong(meshes[order[k]], meshes[order[j]], directions[k], tolerance)) {
-        return "plate " + std::to_string(plan.plates[order[k]].id) + " runs into plate " +
-               std::to_string(plan.plates[order[j]].id) + " when it leaves";
-      }
-    }
-  }
-  return "";
+  return sweepFailure(plan.plates, order, directions, tolerance);
 }
 
 class PlateJointPlanner {
@@ -750,6 +757,23 @@ PlateDesignResult designPlateJoints(const std::vector<Plate>& plates, const std:
     if (!failure.empty()) throw Error(ErrorCode::Internal, "the jointed plates did not verify: " + failure);
   }
   return result;
+}
+
+std::string jointedPlatesFailure(const std::vector<Plate>& plates, const std::vector<Vec3>& directions,
+                                 const PlateOptions& geometry) {
+  if (plates.size() < 2 || directions.size() + 1 != plates.size()) {
+    return "every plate but the last needs a removal direction";
+  }
+  Assembly assembly;
+  for (const Plate& plate : plates) assembly.parts.push_back({plate.id, plate.name});
+  for (const PlateContact& contact : computePlateContacts(plates, geometry)) {
+    assembly.contacts.push_back({contact.a, contact.b, contact.normal, contact.area});
+  }
+  const std::string failure = planFailure(assembly, directions);
+  if (!failure.empty()) return failure;
+  std::vector<int> order(plates.size());
+  for (size_t k = 0; k < order.size(); ++k) order[k] = static_cast<int>(k);
+  return sweepFailure(plates, order, directions, geometry.contactTolerance);
 }
 
 }  // namespace desia

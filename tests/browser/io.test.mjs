@@ -373,7 +373,7 @@ describe('playground mesh input and exports in headless Chromium', { timeout: 12
 
     // STL, ASCII: as many facets as the binary file of the same part.
     const ascii = await exportAs(page, 'stl-ascii', '3');
-    assert.equal(ascii.name, 'torus_r16_N7_seed1-part3.stl');
+    assert.equal(ascii.name, 'torus_r16_N7_seed1-ascii-part3.stl', 'not the name of the binary STL');
     const asciiText = ascii.bytes.toString('utf8');
     assert.match(asciiText, /^solid\b/);
     assert.equal((asciiText.match(/^\s*facet normal\b/gm) ?? []).length, partTriangles);

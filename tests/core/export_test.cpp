@@ -12,6 +12,7 @@
 #include <cstring>
 #include <map>
 #include <regex>
+#include <set>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -19,6 +20,8 @@
 
 #include "desia/error.h"
 #include "desia/export.h"
+#include "desia/frame.h"
+#include "desia/frame_format.h"
 #include "desia/mesh.h"
 #include "desia/voxelize.h"
 #include "test_support.h"
@@ -718,6 +721,102 @@ TEST(PartSurfaces, BadDocumentsGiveTheExportErrors) {
   empty.voxels.setLabelAt(0, 1);
   empty.voxels.setLabelAt(7, 3);
   EXPECT_EQ(errorOf([&] { partSurfaces(empty, "gap.puz"); }), "gap.puz: part 2 has no voxels");
+}
+
+
+// ---- frame pieces: what a maker cuts, prints and glues (issue 9) -----------------------------
+
+// The triangles of each named OBJ object as a mesh of its own.
+std::map<std::string, TriangleMesh> objectsOf(const TriangleMesh& mesh) {
+  std::map<std::string, TriangleMesh> objects;
+  for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+    TriangleMesh& object = objects[mesh.groupNames.at(static_cast<size_t>(mesh.triangleGroup.at(t)))];
+    const int first = static_cast<int>(object.vertices.size());
+    for (int corner : mesh.triangles[t]) object.vertices.push_back(mesh.vertices[static_cast<size_t>(corner)]);
+    object.triangles.push_back({first, first + 1, first + 2});
+  }
+  // Weld equal vertices so each object's closedness can be judged edge by edge.
+  for (auto& [name, object] : objects) {
+    std::map<std::array<double, 3>, int> index;
+    TriangleMesh welded;
+    for (const auto& t : object.triangles) {
+      std::array<int, 3> corners{};
+      for (int k = 0; k < 3; ++k) {
+        const auto& v = object.vertices[static_cast<size_t>(t[k])];
+        auto [it, added] = index.emplace(v, static_cast<int>(welded.vertices.size()));
+        if (added) welded.vertices.push_back(v);
+        corners[k] = it->second;
+      }
+      welded.triangles.push_back(corners);
+    }
+    object = welded;
+  }
+  return objects;
+}
+
+TEST(FramePieces, EveryBodyAndGluedJointPieceIsItsOwnClosedObjectAddingUpToTheBeam) {
+  const std::string path = "examples/frame/frame_chair_result.json";
+  const FrameDocument frame = parseFrameText(testing::readFileText(testing::projectPath(path)), path);
+  const std::vector<uint8_t> bytes = exportFrame(frame, "pieces-obj", 0, path);
+  const std::map<std::string, TriangleMesh> objects = objectsOf(parseObj(std::string(bytes.begin(), bytes.end()), path));
+  size_t jointPieces = 0;
+  for (const FrameBeam& beam : frame.layout.frame.beams) {
+    const int internal = static_cast<int>(&beam - frame.layout.frame.beams.data());
+    const std::string name = "beam" + std::to_string(beam.id);
+    ASSERT_TRUE(objects.count(name)) << name;
+    double pieces = enclosedVolume(objects.at(name));
+    EXPECT_NO_THROW(checkClosedMesh(objects.at(name), name));
+    for (int joint : beam.joints) {
+      const std::string piece = name + "_joint" + std::to_string(frame.layout.frame.joints[joint].id);
+      int owned = 0;
+      for (int label : frame.labels[joint]) owned += label == internal ? 1 : 0;
+      ASSERT_EQ(objects.count(piece), owned > 0 ? 1u : 0u) << piece;
+      if (owned == 0) continue;
+      ++jointPieces;
+      EXPECT_NO_THROW(checkClosedMesh(objects.at(piece), piece));  // volumes below show the orientation
+      const double voxel = std::pow(frame.layout.voxelSize, 3);
+      EXPECT_NEAR(enclosedVolume(objects.at(piece)), owned * voxel, 1e-6 * owned * voxel) << piece;
+      pieces += enclosedVolume(objects.at(piece));
+    }
+    // Body and glued pieces together are the beam as the assembly draws it.
+    const double whole = enclosedVolume(beamPartMesh(frame.layout, frame.labels, internal));
+    EXPECT_NEAR(pieces, whole, 1e-6 * whole) << name;
+  }
+  EXPECT_EQ(objects.size(), frame.layout.frame.beams.size() + jointPieces);
+}
+
+TEST(FramePieces, JointPiecesLieApartOnTheBuildPlate) {
+  const std::string path = "examples/frame/frame_cube_result.json";
+  const FrameDocument frame = parseFrameText(testing::readFileText(testing::projectPath(path)), path);
+  const std::vector<uint8_t> objBytes = exportFrame(frame, "pieces-obj", 0, path);
+  const std::map<std::string, TriangleMesh> objects = objectsOf(parseObj(std::string(objBytes.begin(), objBytes.end()), path));
+  double jointVolume = 0;
+  size_t jointPieces = 0;
+  for (const auto& [name, object] : objects) {
+    if (name.find("_joint") == std::string::npos) continue;
+    jointVolume += enclosedVolume(object);
+    ++jointPieces;
+  }
+  const std::vector<uint8_t> stlBytes = exportFrame(frame, "joint-pieces-stl", 0, path);
+  const TriangleMesh plate = parseStl(std::string(stlBytes.begin(), stlBytes.end()), path);
+  // Closed (a piece's voxels may touch along an edge only: four triangles there, as STL readers merge).
+  EXPECT_NO_THROW(checkClosedMesh(plate, path));
+  EXPECT_NEAR(enclosedVolume(plate), jointVolume, 1e-6 * jointVolume);
+  double lowest = 1e300, highest = -1e300;
+  for (const auto& v : plate.vertices) {
+    lowest = std::min(lowest, v[2]);
+    highest = std::max(highest, v[2]);
+  }
+  EXPECT_NEAR(lowest, 0.0, 1e-9);
+  EXPECT_LE(highest, 3 * frame.layout.voxelSize + 1e-9);
+  // Each piece in its own cell of the grid: the cells' count is at least the pieces'.
+  std::set<std::pair<long, long>> cells;
+  for (const auto& v : plate.vertices) {
+    cells.insert({std::lround(std::floor(v[0] / (4 * frame.layout.voxelSize) + 1e-9)),
+                  std::lround(std::floor(v[1] / (4 * frame.layout.voxelSize) + 1e-9))});
+  }
+  EXPECT_EQ(cells.size(), jointPieces);
+  EXPECT_THROW(exportFrame(frame, "joint-pieces-stl", 2, path), Error);
 }
 
 }  // namespace

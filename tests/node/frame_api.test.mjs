@@ -163,7 +163,7 @@ test('FrameApi.PartSurfacesAndExportsComeFromTheCore', async () => {
   const bare = core.partSurfaces(cube);
   assert.deepEqual(bare.map((s) => s.partId), [1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 0]);
   // Exports: the CLI's bytes.
-  for (const format of ['stl', 'obj', 'fpuz', 'csv', 'stl-ascii']) {
+  for (const format of ['stl', 'obj', 'fpuz', 'csv', 'stl-ascii', 'pieces-obj', 'joint-pieces-stl']) {
     const bytes = await desia.exportAssembly(cli.text, { format });
     assert.deepEqual(bytes, cliExport(cli.file, format), format);
   }
@@ -174,8 +174,11 @@ test('FrameApi.PartSurfacesAndExportsComeFromTheCore', async () => {
   assert.deepEqual(await desia.exportAssembly(cli.text, { format: 'xmpuzzle' }), cliExport(cli.file, 'xmpuzzle'));
   await assert.rejects(desia.exportAssembly(result, { format: 'svg' }), badInput(/cut files are made of plate structures/));
   await assert.rejects(desia.exportAssembly(result, { format: 'stl', part: 13 }), badInput(/part 13 is not a beam of this frame/));
-  // The check reads a frame document like the CLI does.
-  assert.equal((await desia.check(cli.text)).key, 1);
+  await assert.rejects(desia.exportAssembly(cube, { format: 'pieces-obj' }), badInput(/no designed joints yet/));
+  // The check reads a frame document like the CLI does, and sweeps each beam out in the plan.
+  const checked = await desia.check(cli.text);
+  assert.equal(checked.key, 1);
+  assert.deepEqual(checked.shapeRemoval, { checked: 'each beam, its body and joint voxels, swept along its axis in the planned order', clear: true, failure: '' });
 });
 
 test('FrameApi.AbortStopsALongFrameDesign', async () => {

@@ -29,6 +29,13 @@ struct CheckOptions {
   bool allGraphs = false;  // keep every base DBG in the report, however many
 };
 
+// Plate and frame results carry their removal plan; the contacts alone cannot tell whether the
+// real shapes let each part out, so checkDocument (document_check.h) moves them.
+struct ShapeRemovalCheck {
+  std::string checked;  // what was moved, e.g. "each plate swept along its direction, in the planned order"
+  std::string failure;  // why a part cannot leave ("" = every part left)
+};
+
 struct CheckReport {
   CheckMethod method = CheckMethod::Graphs;
   InterlockingResult result;                          // the combined verdict
@@ -38,6 +45,7 @@ struct CheckReport {
   std::vector<DirectionalBlockingGraph> graphs;       // base DBGs of the full assembly, or none
                                                       // when over kReportedGraphLimit
   std::optional<DisassemblyPlan> disassembly;         // absent when not planned
+  std::optional<ShapeRemovalCheck> shapeRemoval;      // plate and frame results (checkDocument)
 };
 
 CheckReport checkAssembly(const AssemblyDocument& document, const CheckOptions& options = {});

@@ -123,5 +123,9 @@ std::string frameSweepObstacle(const FrameLayout& layout, const std::vector<Join
 // Closed meshes (in the frame's units) of one beam: its body boxes and its voxel groups, one
 // closed shell each (every edge in two triangles).
 TriangleMesh beamPartMesh(const FrameLayout& layout, const std::vector<JointLabels>& labels, int beam);
+// The joint piece glued to a beam's end at `joint`: the voxels it owns there (face voxel
+// included), one closed shell; empty when it owns none there.
+TriangleMesh beamJointPieceMesh(const FrameLayout& layout, const std::vector<JointLabels>& labels, int beam,
+                                int joint);
 
 }  // namespace desia

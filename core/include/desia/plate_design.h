@@ -137,4 +137,11 @@ const char* jointRealizationName(JointRealization realization);
 PlateDesignResult designPlateJoints(const std::vector<Plate>& plates, const std::vector<PlateContact>& contacts,
                                     const PlateDesignOptions& options = {});
 
+// Why jointed plates (a design result's, in removal order: plates[0] is the key) fail, or "":
+// their contacts, computed from the geometry, must be interlocking with the key as the only
+// movable part by both the DBG and the LP test, and each plate, swept along directions[k], must
+// miss every plate after it. The same verification the designer applies, for `desia check`.
+std::string jointedPlatesFailure(const std::vector<Plate>& plates, const std::vector<Vec3>& directions,
+                                 const PlateOptions& geometry = {});
+
 }  // namespace desia
