@@ -102,7 +102,8 @@ export function renderReport(report, elapsedMs, timingLabel = 'Check time') {
   ui.verdict.textContent = verdict === 'interlocking' && hasKey ? `${title}, key: part ${report.key}` : title;
   ui.verdict.dataset.verdict = verdict;
   ui.verdict.dataset.key = hasKey ? String(report.key) : '';
-  ui.reason.textContent = [report.reason, formatMethods(report.methods)].filter(Boolean).join('. ');
+  ui.reason.textContent = [report.reason, formatMethods(report.methods), formatShapeRemoval(report.shapeRemoval)]
+    .filter(Boolean).join('. ');
   ui.method.textContent = METHOD_NAMES[report.method] ?? report.method ?? '—';
   ui.partsCount.textContent = String(report.parts ?? report.partIds?.length ?? '—');
   ui.key.textContent = hasKey ? `part ${report.key}` : 'none';
@@ -118,6 +119,13 @@ export function renderReport(report, elapsedMs, timingLabel = 'Check time') {
   renderGraphs(report.graphs);
   renderBlockingGraphs(ui.dbgPanel, report);
   renderCutPoints(report.cutPoints);
+}
+
+/** A plate or frame result's removal plan replayed on its real shapes by the core (checkDocument). */
+function formatShapeRemoval(shapeRemoval) {
+  if (!shapeRemoval) return '';
+  return shapeRemoval.clear ? 'Removal plan replayed on the real shapes: every part leaves'
+    : `Removal plan FAILS on the real shapes: ${shapeRemoval.failure}`;
 }
 
 /** A plate whose removal splits the parts-graph: no joints can make the design interlocking. */
