@@ -24,9 +24,18 @@
 //   axis DBG, the parts other than the key are strongly connected (Section 3.2). For the key
 //   (A_1 = [P_1, R_1], Section 4.2) it is kept when P_1 is free along d_1 and blocked along the
 //   five other axis directions.
-// Children are ranked: beams with the fewest neighbours in R first (the original code's order),
-// then the highest, then a seeded random order; the voxel sets of a beam smallest first. A look-
-// ahead keeps R_i from collapsing onto one joint: a beam is not taken when the three or more
+// Children are ranked as a sweep (Section 4.1 ranks by the compactness of R_{i+1}, Fig. 15 by a
+// coordinate): beams farthest along the diagonal x + y + z first, within a diagonal layer the
+// highest, then a seeded random order; the voxel sets of a beam smallest first. The taken beams
+// then grow from the key's corner as one front, and R_i stays the compact block behind it,
+// shrinking onto the opposite corner, where joints hold the fewest beams (3 on a lattice) and
+// their cubes keep free voxels for the last splits (Section 5.3: R's beams there share what the
+// earlier parts left). Peeling the beams with the fewest neighbours in R first (the order
+// before) ate R from every side at once and left it a path through joints of valence 6 whose
+// cubes earlier beams had filled: each end of the path had one voxel set left and split an axis
+// DBG, a dead end decided some 50 steps above, so SCAFFOLD 300 (71,103 nodes in 120 s, deepest
+// 299 of 300) and every lattice of 3 x 3 x 3 cells or more never finished.
+// A look-ahead keeps R_i from collapsing onto one joint: a beam is not taken when the three or more
 // beams left in R_i would all meet at one joint (a star). The last splits of such an R_i are
 // almost never interlocking (each of its beams owns every free voxel at its outer joint, so the
 // earlier parts there decide alone whether it is blocked), and the depth-first search would then
@@ -585,7 +594,6 @@ std::vector<Step> FrameDesigner::childrenOfCurrent() {
     }
   }
   std::vector<std::pair<int, int>> edges;
-  std::vector<int> restNeighbours(beams, 0);
   std::vector<bool> touchesTaken(beams, false);
   for (const std::vector<int>& atJoint : layout_.beamsAtJoint) {
     bool taken = false;
@@ -596,8 +604,6 @@ std::vector<Step> FrameDesigner::childrenOfCurrent() {
       for (size_t y = x + 1; y < atJoint.size(); ++y) {
         if (!inRest(atJoint[y])) continue;
         edges.push_back({index[atJoint[x]], index[atJoint[y]]});
-        ++restNeighbours[atJoint[x]];
-        ++restNeighbours[atJoint[y]];
       }
     }
   }
@@ -605,8 +611,8 @@ std::vector<Step> FrameDesigner::childrenOfCurrent() {
   for (int i : findCutPoints(static_cast<int>(rest.size()), edges)) isCut[rest[i]] = true;
   struct Candidate {
     int beam;
-    int neighbours;
-    double height;
+    double sweep;   // x + y + z of its two joints
+    double height;  // y of its two joints
     uint64_t tie;
   };
   // The look-ahead (see the top): joints holding all but one of R's beams; taking a beam of R
@@ -630,12 +636,16 @@ std::vector<Step> FrameDesigner::childrenOfCurrent() {
   std::vector<Candidate> candidates;
   for (int b : rest) {
     if (isCut[b] || (!path_.empty() && !touchesTaken[b]) || leavesStar(b)) continue;
-    const double height =
-        frame_.joints[frame_.beams[b].joints[0]].position[1] + frame_.joints[frame_.beams[b].joints[1]].position[1];
-    candidates.push_back({b, path_.empty() ? 0 : restNeighbours[b], height, nextRandom()});
+    const Vec3& p = frame_.joints[frame_.beams[b].joints[0]].position;
+    const Vec3& q = frame_.joints[frame_.beams[b].joints[1]].position;
+    candidates.push_back({b, (p[0] + q[0]) + (p[1] + q[1]) + (p[2] + q[2]), p[1] + q[1], nextRandom()});
   }
+  // The sweep (see the top): the front of taken beams moves along the diagonal, so R_i stays a
+  // compact corner block (Section 4.1's compactness of R) and ends at the corner of fewest beams
+  // per joint, not as a path through crowded joints; the key, the first of the sweep, is at the
+  // top (Section 4.2: it leaves upwards).
   std::sort(candidates.begin(), candidates.end(), [](const Candidate& x, const Candidate& y) {
-    if (x.neighbours != y.neighbours) return x.neighbours < y.neighbours;
+    if (x.sweep != y.sweep) return x.sweep > y.sweep;
     if (x.height != y.height) return x.height > y.height;
     return x.tie < y.tie;
   });

@@ -93,6 +93,76 @@ TEST(FrameDesign, ScaffoldOf92BeamsDesignsForSeedsOneToThree) {
   }
 }
 
+// A lattice of cells x cells x cells cubes of 1 m, every joint where its beams meet (valence up
+// to 6), as examples/frame/make_examples.py writes SCAFFOLD 300.
+FrameDocument latticeFrame(int cells) {
+  std::string joints, beams;
+  auto id = [&](int x, int y, int z) { return 1 + x + (cells + 1) * (z + (cells + 1) * y); };
+  int beam = 0;
+  for (int y = 0; y <= cells; ++y) {
+    for (int z = 0; z <= cells; ++z) {
+      for (int x = 0; x <= cells; ++x) {
+        joints += std::string(joints.empty() ? "" : ",") + "{\"id\":" + std::to_string(id(x, y, z)) +
+                  ",\"position\":[" + std::to_string(1000 * x) + "," + std::to_string(1000 * y) + "," +
+                  std::to_string(1000 * z) + "]}";
+        const int ends[3] = {x < cells ? id(x + 1, y, z) : 0, y < cells ? id(x, y + 1, z) : 0,
+                             z < cells ? id(x, y, z + 1) : 0};
+        for (int end : ends) {
+          if (end == 0) continue;
+          beams += std::string(beams.empty() ? "" : ",") + "{\"id\":" + std::to_string(++beam) + ",\"joints\":[" +
+                   std::to_string(id(x, y, z)) + "," + std::to_string(end) + "]}";
+        }
+      }
+    }
+  }
+  return parseFrameText("{\"format\":\"desia-assembly\",\"version\":1,\"kind\":\"frame\",\"joints\":[" + joints +
+                            "],\"beams\":[" + beams + "]}",
+                        "lattice.json");
+}
+
+// The sweep ranking (frame_design.cpp, top): the taken beams grow from the key's corner along the
+// diagonal, so R ends at the opposite corner, where joints hold 3 beams and their cubes still have
+// free voxels. Peeling the beams with the fewest neighbours in R first left R a path through
+// joints of valence 6 whose ends were never interlocking: a lattice of 3 x 3 x 3 cells (144
+// beams) ran out of time at 143 beams for every seed. Now one descent, almost without
+// backtracking, ending at the corner (0, 0, 0).
+TEST(FrameDesign, LatticeOfThreeCellsCubedEndsAtTheFarCornerInOneDescent) {
+  const FrameDocument lattice = latticeFrame(3);
+  ASSERT_EQ(lattice.layout.frame.beams.size(), 144u);
+  FrameDesignOptions options;
+  options.timeLimitSeconds = 0;  // the node limit alone: the same outcome on every machine
+  options.nodeLimit = 2 * 144;
+  const FrameDesignResult result = designFrame(lattice.layout, options);
+  ASSERT_EQ(result.status, FrameDesignStatus::Success) << result.message;
+  EXPECT_EQ(frameDesignFailure(lattice.layout, result.labels, result.order, result.directions), "");
+  const FrameBeam& last = lattice.layout.frame.beams[result.order.back()];
+  const Vec3& a = lattice.layout.frame.joints[last.joints[0]].position;
+  const Vec3& b = lattice.layout.frame.joints[last.joints[1]].position;
+  EXPECT_EQ(std::min(a[0] + a[1] + a[2], b[0] + b[1] + b[2]), 0.0) << "the last beam meets the corner (0, 0, 0)";
+  const FrameBeam& key = lattice.layout.frame.beams[result.order.front()];
+  EXPECT_EQ(std::max(lattice.layout.frame.joints[key.joints[0]].position[1],
+                     lattice.layout.frame.joints[key.joints[1]].position[1]),
+            3000.0)
+      << "the key is at the top";
+}
+
+// SCAFFOLD 300 (4 x 4 x 4 cells), which never finished before the sweep (71,103 nodes in 120 s,
+// deepest 299 of 300): seeds 1 to 3 within a node limit of about one descent and a few steps back.
+TEST(FrameDesign, Scaffold300DesignsForSeedsOneToThree) {
+  const FrameDocument scaffold = loadFrameExample("scaffold_300.json");
+  for (uint64_t seed = 1; seed <= 3; ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    FrameDesignOptions options;
+    options.seed = seed;
+    options.timeLimitSeconds = 0;
+    options.nodeLimit = 400;
+    const FrameDesignResult result = designFrame(scaffold.layout, options);
+    ASSERT_EQ(result.status, FrameDesignStatus::Success) << result.message;
+    EXPECT_EQ(result.order.size(), 300u);
+    EXPECT_EQ(frameDesignFailure(scaffold.layout, result.labels, result.order, result.directions), "");
+  }
+}
+
 TEST(FrameDesign, FlowerOfCurvedBeamsIsInterlocking) {
   const FrameDocument flower = loadFrameExample("flower.json");
   int curved = 0;
