@@ -497,6 +497,14 @@ std::vector<std::string> plateCutSheets(const AssemblyDocument& document, CutFil
   if ((options.sheetWidth > 0) != (options.sheetHeight > 0))
     throwBadInput(options.source, "a sheet needs a width and a height");
   const std::vector<Plate>& plates = document.fabricationPlates.empty() ? document.plates : document.fabricationPlates;
+  for (const Plate& plate : plates) {
+    if (!plate.attached.empty()) {
+      // Milled joints (sliding dovetails): the tongue and the housing are not 2D cuts.
+      throwBadInput(options.source, "plate " + std::to_string(plate.id) +
+                                        " has milled joints (a sliding dovetail), which cut sheets cannot hold: export "
+                                        "stl or obj for the CNC, or design with joints 'cut'");
+    }
+  }
   const std::vector<PlateContact> contacts = computePlateContacts(document.plates, document.plateOptions);
   std::vector<FlatPlate> flats;
   for (size_t k = 0; k < plates.size(); ++k) flats.push_back(flatten(plates, k, contacts, options.kerf));

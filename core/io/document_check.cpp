@@ -43,7 +43,8 @@ std::vector<Vec3> plateRemovalDirections(const json& removal, size_t plates) {
 }
 
 std::optional<ShapeRemovalCheck> plateShapeRemoval(const AssemblyDocument& document, const json& geometry) {
-  if (!geometry.contains("removal") || geometry.value("jointGeometry", "") != "cut") return std::nullopt;
+  const std::string realization = geometry.value("jointGeometry", "");
+  if (!geometry.contains("removal") || (realization != "cut" && realization != "milled")) return std::nullopt;
   std::vector<Plate> inOrder;  // plates by part id = removal order
   for (const Part& part : document.assembly.parts) {
     for (const Plate& plate : document.plates) {

@@ -44,6 +44,27 @@ Loop loopAt(const json& value, const std::string& source, const std::string& pat
 // The right-hand unit normal of a loop, or zero for a degenerate one.
 Vec3 rightHandNormal(const Loop& loop) { return normalized(loopNormal(loop)); }
 
+Plate plateAt(const json& entry, const std::string& source, const std::string& path);
+
+// A plate's attached solids (milled joint pieces): each { faces: [first, second], holes? }, a
+// prism read as a plate is (without id or name).
+std::vector<Plate> attachedAt(const json& list, const std::string& source, const std::string& path) {
+  if (!list.is_array()) fail(source, path, "expected a list of solids, each { \"faces\": [firstFace, secondFace] }");
+  std::vector<Plate> solids;
+  for (size_t k = 0; k < list.size(); ++k) {
+    const std::string where = path + "[" + std::to_string(k) + "]";
+    const json& entry = list[k];
+    if (!entry.is_object() || !entry.contains("faces") || entry.contains("attached") || entry.contains("id")) {
+      fail(source, where, "expected { \"faces\": [firstFace, secondFace], \"holes\": [...] }");
+    }
+    json solid = entry;
+    solid["id"] = 1;
+    solids.push_back(plateAt(solid, source, where));
+    solids.back().id = 0;
+  }
+  return solids;
+}
+
 Plate plateAt(const json& entry, const std::string& source, const std::string& path) {
   if (!entry.is_object()) fail(source, path, "expected an object with 'id' and 'outline' and 'thickness', or 'id' and 'faces'");
   Plate plate;
@@ -77,9 +98,11 @@ Plate plateAt(const json& entry, const std::string& source, const std::string& p
         plate.top.push_back(loopAt(holes[h][1], source, where + "[1]"));
       }
     }
+    if (entry.contains("attached")) plate.attached = attachedAt(entry["attached"], source, who + ".attached");
     return plate;
   }
   if (!entry.contains("outline")) fail(source, who, "missing 'outline' (or 'faces')");
+  if (entry.contains("attached")) fail(source, who + ".attached", "attached solids go with the 'faces' form");
   plate.bottom.push_back(loopAt(entry["outline"], source, who + ".outline"));
   const auto thickness = entry.find("thickness");
   if (thickness == entry.end() || !thickness->is_number()) fail(source, who + ".thickness", "expected a number of millimetres");
@@ -142,6 +165,11 @@ json platesToJson(const std::vector<Plate>& plates) {
       for (size_t l = 1; l < plate.bottom.size(); ++l) holes.push_back({loopJson(plate.bottom[l]), loopJson(plate.top[l])});
       entry["holes"] = holes;
     }
+    if (!plate.attached.empty()) {
+      json solids = platesToJson(plate.attached);
+      for (json& solid : solids) solid.erase("id");
+      entry["attached"] = solids;
+    }
     list.push_back(entry);
   }
   return list;
@@ -157,7 +185,7 @@ std::string plateDesignToJson(const AssemblyDocument& input, const PlateDesignRe
   root["version"] = 1;
   root["kind"] = "plate";
   root["name"] = (input.name.empty() ? std::string("plate structure") : input.name) + " - joint plan";
-  const bool cut = result.realization == JointRealization::Cut;
+  const bool cut = result.realization != JointRealization::Planned;  // cut or milled: the jointed plates
   json parts = json::array(), platesJson = json::array();
   std::vector<Plate> ordered, fabrication;
   for (int index : result.order) {
@@ -194,7 +222,8 @@ std::string plateDesignToJson(const AssemblyDocument& input, const PlateDesignRe
   }
   root["removal"] = removal;
   root["plates"] = platesJson;
-  // "cut": the plates carry their tenons and mortises and the contacts are theirs; "planned": the
+  // "cut" / "milled": the plates carry their tenons and mortises (milled: dovetail solids in
+  // `attached`) and the contacts are theirs; "planned": the
   // paper's graph design alone, the plates as given and the contacts those of the joint model.
   root["jointGeometry"] = jointRealizationName(result.realization);
   if (cut && result.clearance > 0) {

@@ -49,10 +49,14 @@ struct PlateGraph {
   std::vector<PlateContact> contacts;
   std::vector<Vec3> thicknessAxis;
   std::vector<std::optional<TenonSite>> tenonSites;  // per contact
+  std::vector<std::optional<DovetailSite>> dovetailSites;  // per contact (milled joints only)
 };
 
+// Joints made in the plates (cut or milled), not the planned model alone.
+bool makesJoints(JointRealization realization) { return realization != JointRealization::Planned; }
+
 PlateGraph buildPlateGraph(const std::vector<Plate>& plates, const std::vector<PlateContact>& contacts,
-                           const JointCutOptions& jointOptions) {
+                           const JointCutOptions& jointOptions, JointRealization realization) {
   PlateGraph graph;
   graph.plateCount = static_cast<int>(plates.size());
   graph.contacts = contacts;
@@ -80,7 +84,11 @@ PlateGraph buildPlateGraph(const std::vector<Plate>& plates, const std::vector<P
     }
   }
   for (const Plate& plate : plates) graph.thicknessAxis.push_back(plateThicknessAxis(plate));
-  for (const PlateContact& contact : contacts) graph.tenonSites.push_back(tenonSiteOf(plates, contact, jointOptions));
+  for (const PlateContact& contact : contacts) {
+    graph.tenonSites.push_back(tenonSiteOf(plates, contact, jointOptions));
+    graph.dovetailSites.push_back(realization == JointRealization::Milled ? dovetailSiteOf(plates, contact)
+                                                                           : std::nullopt);
+  }
   staggerOpposingSites(plates, &graph.tenonSites);
   return graph;
 }
@@ -97,11 +105,16 @@ bool leavesWithoutPushing(const PlateGraph& graph, int plate, const std::vector<
   return true;
 }
 
+const TenonSite& edgeOf(const TenonSite& site) { return site; }
+const TenonSite& edgeOf(const DovetailSite& site) { return site.edge; }
+
 // Does the site's joint let `mover` leave along d (the tenon plate along an exit, the mortise
 // plate against one)?
-bool jointLets(const TenonSite& site, int mover, const Vec3& d) {
+template <typename Site>
+bool jointLets(const Site& site, int mover, const Vec3& d) {
+  const int tenonPlate = edgeOf(site).tenonPlate;
   for (const Vec3& exit : site.exits()) {
-    if (dot(site.tenonPlate == mover ? exit : negated(exit), d) > 1 - 1e-9) return true;
+    if (dot(tenonPlate == mover ? exit : negated(exit), d) > 1 - 1e-9) return true;
   }
   return false;
 }
@@ -132,13 +145,13 @@ std::optional<PlateJoint> halvedJointFor(const PlateGraph& graph, int crossing, 
                                          JointRealization realization) {
   const PlateContact& contact = graph.contacts[crossing];
   if (!parallel(contact.edgeDirection, d)) return std::nullopt;
-  if (realization == JointRealization::Cut) {
+  if (makesJoints(realization)) {
     const bool ahead = dot(d, contact.edgeDirection) > 0;  // which end of the line d points to
     const std::array<bool, 2>& moverOpens = contact.a == mover ? contact.aOpens : contact.bOpens;
     const std::array<bool, 2>& otherOpens = contact.a == mover ? contact.bOpens : contact.aOpens;
     if (!moverOpens[ahead ? 0 : 1] || !otherOpens[ahead ? 1 : 0]) return std::nullopt;
   }
-  return PlateJoint{mover, other, d, JointType::Halved, realization == JointRealization::Cut ? crossing : -1};
+  return PlateJoint{mover, other, d, JointType::Halved, makesJoints(realization) ? crossing : -1};
 }
 
 // The joint `mover` gets with `other` when it leaves along d, or nothing when they cross and
@@ -166,7 +179,28 @@ std::optional<PlateJoint> jointFor(const PlateGraph& graph, int mover, int other
       joint.contact = c;
     }
   }
+  if (joint.type != JointType::Empty) return joint;
+  // Milled: a sliding dovetail where no tenons let the plate out (the largest such contact).
+  for (int c : graph.contactsOf[mover]) {
+    const PlateContact& contact = graph.contacts[c];
+    if (contact.a != other && contact.b != other) continue;
+    const std::optional<DovetailSite>& site = graph.dovetailSites[c];
+    if (!site || !jointLets(*site, mover, d)) continue;
+    if (joint.contact < 0 || contact.area > graph.contacts[joint.contact].area) {
+      joint.type = JointType::Dovetail;
+      joint.contact = c;
+    }
+  }
   return joint;
+}
+
+// The dovetail to mill for a planned dovetail joint: its housing opens where the tongue plate leaves.
+DovetailCut dovetailCutFor(const PlateGraph& graph, const PlateJoint& joint) {
+  DovetailCut cut;
+  cut.site = *graph.dovetailSites[joint.contact];
+  const Vec3 exit = cut.site.edge.tenonPlate == joint.mover ? joint.direction : negated(joint.direction);
+  cut.openEnd = dot(exit, cut.site.edge.along) > 0 ? 1 : 0;
+  return cut;
 }
 
 // One planned step: plate P_i leaves along d_i; its joints with the plates of R'_i.
@@ -175,7 +209,8 @@ struct Step {
   Vec3 direction{0, 0, 0};
   std::vector<PlateJoint> joints;
   int emptyJoints = 0;
-  bool blocked = false;  // a crossing plate cannot part along the direction
+  bool blocked = false;  // a crossing plate cannot part along the direction, or the joints' cuts collide
+  std::vector<CutFootprint> cuts;  // where the joints cut into the plates (joints made only)
 };
 
 // The assembly of A_i: parts 0..i-1 are the steps' plates, part i (when any plate is left) is R_i.
@@ -210,6 +245,14 @@ Assembly modelAssembly(const PlateGraph& graph, const std::vector<Step>& steps, 
           assembly.contacts.push_back({a, b, contact.normal, contact.area});
         if (contact.b == joint.mover && contact.a == joint.other)
           assembly.contacts.push_back({a, b, negated(contact.normal), contact.area});
+      }
+      if (joint.type == JointType::Dovetail) {
+        // The tongue's faces: shoulder and floor, the leaning flanks, the stop (plate_joints.h).
+        const DovetailCut cut = dovetailCutFor(graph, joint);
+        const double sign = cut.site.edge.tenonPlate == joint.mover ? 1 : -1;
+        for (const Vec3& n : dovetailFaceNormals(plates, cut))
+          assembly.contacts.push_back({a, b, *cleanedNormal(scaled(n, sign)), 1.0});
+        continue;
       }
       if (joint.type != JointType::MortiseTenon) continue;
       const TenonSite& site = *graph.tenonSites[joint.contact];
@@ -255,8 +298,10 @@ JointedPlan cutPlan(const std::vector<Plate>& plates, const PlateGraph& graph, c
                     const JointCutOptions& options) {
   std::vector<TenonSite> sites;
   std::vector<SlotCut> slots;
+  std::vector<DovetailCut> dovetails;
   for (const PlateJoint& joint : joints) {
     if (joint.type == JointType::MortiseTenon) sites.push_back(*graph.tenonSites[joint.contact]);
+    if (joint.type == JointType::Dovetail) dovetails.push_back(dovetailCutFor(graph, joint));
     if (joint.type == JointType::Halved) {
       for (const SlotCut& slot :
            halvedSlots(plates, graph.contacts[joint.contact], joint.mover, joint.direction, clearance)) {
@@ -267,7 +312,7 @@ JointedPlan cutPlan(const std::vector<Plate>& plates, const PlateGraph& graph, c
   JointCutOptions cut = options;
   cut.clearance = clearance;
   JointedPlan plan;
-  plan.plates = cutTenonJoints(plates, sites, cut, slots);
+  plan.plates = cutTenonJoints(plates, sites, cut, slots, dovetails);
   validatePlates(plan.plates, geometry, "the jointed plates");
   std::vector<int> position(plates.size(), 0);
   for (size_t k = 0; k < order.size(); ++k) {
@@ -311,10 +356,10 @@ class PlateJointPlanner {
   PlateJointPlanner(const std::vector<Plate>& plates, const std::vector<PlateContact>& contacts,
                     const PlateDesignOptions& options)
       : plates_(plates),
-        graph_(buildPlateGraph(plates, contacts, options.joints)),
+        graph_(buildPlateGraph(plates, contacts, options.joints, options.realization)),
         options_(options),
         random_(options.seed * 0x9E3779B97F4A7C15ull + 1) {
-    if (options.realization == JointRealization::Cut) {
+    if (makesJoints(options.realization)) {
       for (const Plate& plate : plates) meshes_.push_back(plateMesh(plate));
     }
   }
@@ -335,6 +380,8 @@ class PlateJointPlanner {
   bool cutAndVerify(const std::vector<PlateJoint>& joints, const std::vector<int>& order,
                     const std::vector<Vec3>& directions, PlateDesignResult* result);
   Step makeStep(const std::vector<Step>& steps, int plate, const Vec3& d) const;
+  std::vector<CutFootprint> cutsOf(const std::vector<PlateJoint>& joints) const;
+  bool cutsCollide(const std::vector<Step>& steps, const std::vector<CutFootprint>& cuts) const;
   std::vector<Vec3> candidateDirections(int plate) const;
   uint64_t nextRandom() {
     random_ = random_ * 6364136223846793005ull + 1442695040888963407ull;
@@ -389,7 +436,46 @@ Step PlateJointPlanner::makeStep(const std::vector<Step>& steps, int plate, cons
     step.joints.push_back(*joint);
     step.emptyJoints += joint->type == JointType::Empty ? 1 : 0;
   }
+  if (makesJoints(options_.realization) && !step.blocked) {
+    step.cuts = cutsOf(step.joints);
+    step.blocked = cutsCollide(steps, step.cuts);
+  }
   return step;
+}
+
+// Where the joints cut into the plates (without the clearance, as cutPlan verifies them).
+std::vector<CutFootprint> PlateJointPlanner::cutsOf(const std::vector<PlateJoint>& joints) const {
+  std::vector<CutFootprint> cuts;
+  for (const PlateJoint& joint : joints) {
+    if (joint.type == JointType::MortiseTenon) {
+      for (CutFootprint& cut : tenonFootprints(plates_, *graph_.tenonSites[joint.contact], options_.joints))
+        cuts.push_back(std::move(cut));
+    } else if (joint.type == JointType::Dovetail) {
+      cuts.push_back(dovetailFootprint(plates_, dovetailCutFor(graph_, joint)));
+    } else if (joint.type == JointType::Halved) {
+      for (const SlotCut& slot : halvedSlots(plates_, graph_.contacts[joint.contact], joint.mover, joint.direction, 0))
+        cuts.push_back(slotFootprint(slot));
+    }
+  }
+  return cuts;
+}
+
+// Would the new cuts run into each other or into the cuts of the steps before? Then no plan
+// through this step can be cut (cutTenonJoints refuses it): drop the step now, not after every
+// ordering of the plates after it has been tried (BOOKSHELF: a mortise from below and a dovetail
+// housing from above at the same place in a shelf).
+bool PlateJointPlanner::cutsCollide(const std::vector<Step>& steps, const std::vector<CutFootprint>& cuts) const {
+  for (size_t i = 0; i < cuts.size(); ++i) {
+    for (size_t j = 0; j < i; ++j) {
+      if (footprintsOverlap(plates_, cuts[i], cuts[j])) return true;
+    }
+    for (const Step& step : steps) {
+      for (const CutFootprint& earlier : step.cuts) {
+        if (footprintsOverlap(plates_, cuts[i], earlier)) return true;
+      }
+    }
+  }
+  return false;
 }
 
 // A_1: the key is free along d_1 and along no other base direction of its joints. A_i (i >= 2):
@@ -451,7 +537,7 @@ std::vector<Step> PlateJointPlanner::childrenOf(const std::vector<Step>& steps) 
     for (int q : rest) others[q] = q != plate;
     for (const Vec3& d : candidateDirections(plate)) {
       if (!leavesWithoutPushing(graph_, plate, others, d)) continue;
-      if (options_.realization == JointRealization::Cut && runsIntoAStranger(plate, d, rest)) continue;
+      if (makesJoints(options_.realization) && runsIntoAStranger(plate, d, rest)) continue;
       std::vector<Step> next = steps;
       next.push_back(makeStep(steps, plate, d));
       if (next.back().blocked || !acceptable(next)) continue;
@@ -553,9 +639,12 @@ PlateDesignResult PlateJointPlanner::run() {
                                 : "; the last complete plan failed on its jointed plates: " + lastRejection_ + ")") +
         (options_.realization == JointRealization::Cut
              ? " with the joints that can be cut (through and open mortise-and-tenon on square edges standing on a "
-               "face "
-               "at a right angle); joints 'planned' gives the paper's graph design alone"
-             : "");
+               "face at a right angle, halved joints where plates cross); joints 'milled' adds sliding dovetails "
+               "(CNC), joints 'planned' gives the paper's graph design alone"
+             : options_.realization == JointRealization::Milled
+                   ? " with the joints that can be cut or milled (mortise-and-tenon, halved and sliding dovetail "
+                     "joints on square edges at right angles); joints 'planned' gives the paper's graph design alone"
+                   : "");
     return result;
   }
   progress.seconds = seconds();  // the cut and its verification included
@@ -727,6 +816,8 @@ const char* jointTypeName(JointType type) {
       return "mortise-tenon";
     case JointType::Halved:
       return "halved";
+    case JointType::Dovetail:
+      return "dovetail";
     case JointType::Empty:
       return "empty";
   }
@@ -735,15 +826,21 @@ const char* jointTypeName(JointType type) {
 
 JointRealization parseJointRealization(const std::string& name) {
   if (name == "cut") return JointRealization::Cut;
+  if (name == "milled") return JointRealization::Milled;
   if (name == "planned") return JointRealization::Planned;
   throwBadInput("",
-                "joints must be 'cut' (made in the plates and verified there) or 'planned' (the paper's graph design "
-                "alone), got '" +
+                "joints must be 'cut' (laser or router cuts through the plates, verified there), 'milled' (also "
+                "sliding dovetails) or 'planned' (the paper's graph design alone), got '" +
                     name + "'");
 }
 
 const char* jointRealizationName(JointRealization realization) {
-  return realization == JointRealization::Cut ? "cut" : "planned";
+  switch (realization) {
+    case JointRealization::Cut: return "cut";
+    case JointRealization::Milled: return "milled";
+    case JointRealization::Planned: return "planned";
+  }
+  return "cut";
 }
 
 PlateDesignResult designPlateJoints(const std::vector<Plate>& plates, const std::vector<PlateContact>& contacts,

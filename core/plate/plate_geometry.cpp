@@ -255,7 +255,16 @@ void validatePlates(const std::vector<Plate>& plates, const PlateOptions& option
   if (!(options.contactTolerance > 0) || !std::isfinite(options.contactTolerance)) {
     throwBadInput(source, "the contact tolerance must be a positive number of millimetres");
   }
-  for (const Plate& plate : plates) validatePlate(plate, options.contactTolerance, source);
+  for (const Plate& plate : plates) {
+    validatePlate(plate, options.contactTolerance, source);
+    for (const Plate& solid : plate.attached) {
+      if (!solid.attached.empty()) throwBadInput(source, plateName(plate) + ": an attached solid has attachments of its own");
+      Plate named = solid;
+      named.id = plate.id;
+      named.name = (plate.name.empty() ? "" : plate.name + ", ") + "attached solid";
+      validatePlate(named, options.contactTolerance, source);
+    }
+  }
 }
 
 namespace {
@@ -474,7 +483,51 @@ void requireNoSlantedOverlap(const Plate& a, const Plate& b, double tolerance) {
 
 }  // namespace
 
+namespace {
+std::vector<PlateContact> contactsOfSolids(const std::vector<Plate>& plates, const std::vector<int>& owner,
+                                           const PlateOptions& options);
+}  // namespace
+
+// Plates with attached solids (milled joints): every solid on its own, solids of one plate never
+// in contact with each other, each contact then given to the solids' plates.
 std::vector<PlateContact> computePlateContacts(const std::vector<Plate>& plates, const PlateOptions& options) {
+  std::vector<Plate> solids;
+  std::vector<int> owner;
+  for (size_t p = 0; p < plates.size(); ++p) {
+    solids.push_back(plates[p]);
+    solids.back().attached.clear();
+    owner.push_back(static_cast<int>(p));
+  }
+  for (size_t p = 0; p < plates.size(); ++p) {
+    for (const Plate& solid : plates[p].attached) {
+      solids.push_back(solid);
+      solids.back().id = plates[p].id;
+      solids.back().name = plates[p].name;
+      owner.push_back(static_cast<int>(p));
+    }
+  }
+  std::vector<PlateContact> contacts = contactsOfSolids(solids, owner, options);
+  if (solids.size() == plates.size()) return contacts;
+  for (PlateContact& contact : contacts) {
+    contact.a = owner[contact.a];
+    contact.b = owner[contact.b];
+    if (contact.a > contact.b) {  // pairs in plate order, the normal from a into b
+      std::swap(contact.a, contact.b);
+      contact.normal = negated(contact.normal);
+      std::swap(contact.aOpens, contact.bOpens);
+    }
+  }
+  // In a fixed order: by plate pair, then as found.
+  std::stable_sort(contacts.begin(), contacts.end(), [](const PlateContact& x, const PlateContact& y) {
+    return std::make_pair(x.a, x.b) < std::make_pair(y.a, y.b);
+  });
+  return contacts;
+}
+
+namespace {
+
+std::vector<PlateContact> contactsOfSolids(const std::vector<Plate>& plates, const std::vector<int>& owner,
+                                           const PlateOptions& options) {
   const double tolerance = options.contactTolerance;
   std::vector<std::vector<SolidFace>> faces;
   std::vector<Box> boxes;
@@ -487,7 +540,7 @@ std::vector<PlateContact> computePlateContacts(const std::vector<Plate>& plates,
   std::vector<PlateContact> contacts;
   for (size_t p = 0; p < plates.size(); ++p) {
     for (size_t q = p + 1; q < plates.size(); ++q) {
-      if (!boxes[p].touches(boxes[q], tolerance)) continue;
+      if (owner[p] == owner[q] || !boxes[p].touches(boxes[q], tolerance)) continue;
       for (const SolidFace& f : faces[p]) {
         const PlaneFrame frame(f.loops[0][0], f.normal);
         for (const SolidFace& g : faces[q]) {
@@ -534,6 +587,8 @@ std::vector<PlateContact> computePlateContacts(const std::vector<Plate>& plates,
   }
   return contacts;
 }
+
+}  // namespace
 
 void requireConnectedPlates(const std::vector<Plate>& plates, const std::vector<PlateContact>& contacts,
                             const std::string& source) {

@@ -234,8 +234,11 @@ void staggerOpposingSites(const std::vector<Plate>& plates, std::vector<std::opt
   }
 }
 
-std::optional<TenonSite> tenonSiteOf(const std::vector<Plate>& plates, const PlateContact& contact,
-                                     const JointCutOptions& options) {
+namespace {
+
+// A square side of one prismatic plate standing on a face of another at a right angle, its whole
+// thickness on the face: the geometry every edge joint needs (no tenons or housing chosen yet).
+std::optional<TenonSite> squareEdgeSite(const std::vector<Plate>& plates, const PlateContact& contact) {
   const Vec3 axisA = plateThicknessAxis(plates[contact.a]), axisB = plateThicknessAxis(plates[contact.b]);
   const bool aOnFace = std::abs(dot(contact.normal, axisA)) > 1 - kSquare;
   const bool bOnFace = std::abs(dot(contact.normal, axisB)) > 1 - kSquare;
@@ -267,14 +270,123 @@ std::optional<TenonSite> tenonSiteOf(const std::vector<Plate>& plates, const Pla
     const auto [acrossStart, acrossEnd] = extentAlong(contact.region, bottom[k], site.across);
     if (acrossStart > kTolerance || acrossEnd < plateThickness(tenonPlate) - kTolerance) return std::nullopt;
     if (site.to - site.from < kShortestJoint) return std::nullopt;
-    const std::vector<std::pair<double, double>> spans = tenonSpans(plates, site, options);
-    if (spans.empty()) return std::nullopt;
-    const std::optional<int> kind = mortiseKind(plates, site, spans, options.clearance);
-    if (!kind) return std::nullopt;
-    site.openSide = *kind;
     return site;
   }
   return std::nullopt;
+}
+
+// A sliding dovetail's section (paper Fig. 2, right), across the edge plate's thickness `across`
+// (c, from its first face) and into the face plate (n, from its face): the tongue is `wide` at
+// the housing's floor, n = depth, and narrower by the lean on each side at the face, n = 0, so it
+// cannot be pulled out. The lean is 1 in 6 (a common dovetail slope); the floor a third of the way
+// through the face plate (two housings from opposite faces leave a third between them), the
+// tongue two thirds of the edge plate's thickness, centred.
+struct DovetailSection {
+  double centre = 0, wide = 0, narrow = 0, depth = 0;
+};
+
+constexpr double kDovetailSlope = 1.0 / 6;
+// The housing stops this far (at least) before the contact's closed end: material for the stop.
+constexpr double kDovetailStop = 10.0;
+
+DovetailSection dovetailSection(const std::vector<Plate>& plates, const TenonSite& edge) {
+  DovetailSection section;
+  const double thickness = plateThickness(plates[edge.tenonPlate]);
+  section.centre = thickness / 2;
+  section.depth = plateThickness(plates[edge.mortisePlate]) / 3;  // housings from both faces fit
+  section.wide = 2 * thickness / 3;
+  section.narrow = section.wide - 2 * kDovetailSlope * section.depth;
+  return section;
+}
+
+// The housing's extent along the edge: from the stop to the open end.
+std::pair<double, double> housingSpan(const std::vector<Plate>& plates, const DovetailCut& cut) {
+  const TenonSite& edge = cut.site.edge;
+  const double stop = std::max(kDovetailStop, plateThickness(plates[edge.mortisePlate]));
+  return cut.openEnd == 1 ? std::make_pair(edge.from + stop, edge.to) : std::make_pair(edge.from, edge.to - stop);
+}
+
+// A point of the joint: `s` along the edge, `c` across the edge plate, `n` into the face plate.
+Vec3 jointPoint(const std::vector<Plate>& plates, const TenonSite& edge, double s, double c, double n) {
+  const Vec3 base = plates[edge.tenonPlate].bottom[0][edge.edge];
+  return plus(base, plus(scaled(edge.along, s), plus(scaled(edge.across, c), scaled(edge.intoMortise, n))));
+}
+
+// A prism along the edge from s0 to s1 with the given section corners (c, n): a Plate whose two
+// faces are its ends.
+Plate prismAlongEdge(const std::vector<Plate>& plates, const TenonSite& edge, double s0, double s1,
+                     const std::vector<std::array<double, 2>>& section) {
+  Plate prism;
+  Loop first, second;
+  for (const auto& [c, n] : section) {
+    first.push_back(jointPoint(plates, edge, s0, c, n));
+    second.push_back(jointPoint(plates, edge, s1, c, n));
+  }
+  prism.bottom.push_back(first);
+  prism.top.push_back(second);
+  return prism;
+}
+
+}  // namespace
+
+std::optional<TenonSite> tenonSiteOf(const std::vector<Plate>& plates, const PlateContact& contact,
+                                     const JointCutOptions& options) {
+  std::optional<TenonSite> site = squareEdgeSite(plates, contact);
+  if (!site) return std::nullopt;
+  const std::vector<std::pair<double, double>> spans = tenonSpans(plates, *site, options);
+  if (spans.empty()) return std::nullopt;
+  const std::optional<int> kind = mortiseKind(plates, *site, spans, options.clearance);
+  if (!kind) return std::nullopt;
+  site->openSide = *kind;
+  return site;
+}
+
+std::vector<Vec3> DovetailSite::exits() const {
+  std::vector<Vec3> ways;
+  if (opens[0]) ways.push_back(negated(edge.along));
+  if (opens[1]) ways.push_back(edge.along);
+  return ways;
+}
+
+std::optional<DovetailSite> dovetailSiteOf(const std::vector<Plate>& plates, const PlateContact& contact) {
+  const std::optional<TenonSite> edge = squareEdgeSite(plates, contact);
+  if (!edge) return std::nullopt;
+  DovetailSite site;
+  site.edge = *edge;
+  const Plate& housingPlate = plates[edge->mortisePlate];
+  const DovetailSection section = dovetailSection(plates, *edge);
+  if (section.narrow < 2) return std::nullopt;  // mm: too thin a neck to mill
+  const double stop = std::max(kDovetailStop, plateThickness(housingPlate));
+  if (edge->to - edge->from < stop + kShortestJoint) return std::nullopt;
+  const PlaneFrame frame(housingPlate.bottom[0][0], plateThicknessAxis(housingPlate));
+  const double low = section.centre - section.wide / 2, high = section.centre + section.wide / 2;
+  auto rectangle = [&](double s0, double s1) {
+    return Loop{jointPoint(plates, *edge, s0, low, 0), jointPoint(plates, *edge, s1, low, 0),
+                jointPoint(plates, *edge, s1, high, 0), jointPoint(plates, *edge, s0, high, 0)};
+  };
+  constexpr double kFlush = 0.01;  // mm
+  // Open at an end: the face plate's material ends there (nothing of it just beyond), and the
+  // housing from the stop to that end lies inside it.
+  for (int end = 0; end < 2; ++end) {
+    const double at = end == 1 ? edge->to : edge->from, sign = end == 1 ? 1 : -1;
+    const Loop beyond = rectangle(std::min(at + sign * kFlush, at + sign * kMortiseMargin),
+                                  std::max(at + sign * kFlush, at + sign * kMortiseMargin));
+    const Loop housing = end == 1 ? rectangle(edge->from + stop, edge->to - kFlush) : rectangle(edge->from + kFlush, edge->to - stop);
+    site.opens[end] = areaAgainst({beyond}, housingPlate.bottom, frame, false) < 1e-6 &&
+                      areaAgainst({housing}, housingPlate.bottom, frame, true) < 1e-6;
+  }
+  if (!site.opens[0] && !site.opens[1]) return std::nullopt;
+  return site;
+}
+
+std::vector<Vec3> dovetailFaceNormals(const std::vector<Plate>& plates, const DovetailCut& cut) {
+  const TenonSite& edge = cut.site.edge;
+  const DovetailSection section = dovetailSection(plates, edge);
+  const double lean = (section.wide - section.narrow) / 2;
+  const Vec3 exit = cut.openEnd == 1 ? edge.along : negated(edge.along);
+  return {edge.intoMortise,
+          normalized(minus(scaled(edge.across, -section.depth), scaled(edge.intoMortise, lean))),
+          normalized(minus(scaled(edge.across, section.depth), scaled(edge.intoMortise, lean))), negated(exit)};
 }
 
 std::vector<SlotCut> halvedSlots(const std::vector<Plate>& plates, const PlateContact& crossing, int mover,
@@ -300,52 +412,170 @@ std::vector<SlotCut> halvedSlots(const std::vector<Plate>& plates, const PlateCo
   return {slot(mover, other, -sign), slot(other, mover, sign)};
 }
 
-std::vector<Plate> cutTenonJoints(const std::vector<Plate>& plates, const std::vector<TenonSite>& sites,
-                                  const JointCutOptions& options, const std::vector<SlotCut>& slots) {
-  std::vector<std::vector<Loop>> added(plates.size()), removed(plates.size());
-  std::vector<double> removedArea(plates.size(), 0);
-  for (const SlotCut& slot : slots) {
-    const PlaneFrame frame(plates[slot.plate].bottom[0][0], plateThicknessAxis(plates[slot.plate]));
-    removed[slot.plate].push_back(slot.rectangle);
-    // Only the part inside the plate counts against the overlap check below.
-    removedArea[slot.plate] += areaAgainst({slot.rectangle}, plates[slot.plate].bottom, frame, false);
+namespace {
+
+// A sliding dovetail made real: the housing, a rectangle on the face plate's face cut through the
+// face layer it enters (as deep as the dovetail, run out past the open end), the two lips that
+// overhang the tongue there, and the tongue on the edge plate. The clearance narrows and shortens
+// the tongue (the housing keeps its size, so the verified plates and the made ones share it).
+struct DovetailPieces {
+  Loop housing;
+  bool fromFirstFace = true;  // the housing enters the face plate from its first face
+  Plate tongue;
+  std::vector<Plate> lips;
+};
+
+DovetailPieces dovetailPieces(const std::vector<Plate>& plates, const DovetailCut& cut, double clearance) {
+  const TenonSite& edge = cut.site.edge;
+  const DovetailSection d = dovetailSection(plates, edge);
+  const auto [s0, s1] = housingSpan(plates, cut);
+  const double runOut = kMortiseMargin + plateThickness(plates[edge.mortisePlate]);
+  const double cut0 = cut.openEnd == 0 ? s0 - runOut : s0, cut1 = cut.openEnd == 1 ? s1 + runOut : s1;
+  const double low = d.centre - d.wide / 2, high = d.centre + d.wide / 2;
+  const double narrowLow = d.centre - d.narrow / 2, narrowHigh = d.centre + d.narrow / 2;
+  DovetailPieces pieces;
+  pieces.housing = {jointPoint(plates, edge, cut0, low, 0), jointPoint(plates, edge, cut1, low, 0),
+                    jointPoint(plates, edge, cut1, high, 0), jointPoint(plates, edge, cut0, high, 0)};
+  pieces.fromFirstFace = dot(edge.intoMortise, plateThicknessAxis(plates[edge.mortisePlate])) > 0;
+  pieces.lips = {prismAlongEdge(plates, edge, s0, s1, {{low, 0}, {narrowLow, 0}, {low, d.depth}}),
+                 prismAlongEdge(plates, edge, s0, s1, {{narrowHigh, 0}, {high, 0}, {high, d.depth}})};
+  const double play = clearance / 2;
+  const double t0 = cut.openEnd == 1 ? s0 + play : s0, t1 = cut.openEnd == 0 ? s1 - play : s1;
+  pieces.tongue = prismAlongEdge(plates, edge, t0, t1,
+                                 {{narrowLow + play, 0}, {narrowHigh - play, 0}, {high - play, d.depth - play},
+                                  {low + play, d.depth - play}});
+  return pieces;
+}
+
+// Cut loops (2D, any plane: projected onto the plate's) united, as loops in the plate's frame.
+std::vector<Loop> unitedLoops(const std::vector<Loop>& loops, const PlaneFrame& frame) {
+  ClipperLib::Clipper unite;
+  unite.AddPaths(clipperPaths(loops, frame), ClipperLib::ptSubject, true);
+  ClipperLib::Paths united;
+  unite.Execute(ClipperLib::ctUnion, united, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+  std::vector<Loop> result;
+  for (const ClipperLib::Path& path : united) {
+    Loop loop;
+    for (const ClipperLib::IntPoint& point : path) loop.push_back(frame.fromClipper(point));
+    result.push_back(loop);
   }
+  return result;
+}
+
+// Cuts of different joints must not run into each other: the area they remove from the plate
+// together is the sum of what each removes.
+void requireApart(const Plate& plate, const std::vector<Loop>& cuts, const PlaneFrame& frame) {
+  double apart = 0;
+  for (const Loop& loop : cuts) apart += areaAgainst({loop}, plate.bottom, frame, false);
+  if (areaAgainst(unitedLoops(cuts, frame), plate.bottom, frame, false) < apart - 1e-3) {
+    throwBadInput("", "the mortises and slots cut into " + plateLabel(plate) + " run into each other");
+  }
+}
+
+// The plate's solid between levels [from, to] along its thickness axis (0 = its first face), its
+// face cut by `added` and `removed`: a prism.
+Plate layerOf(const Plate& plate, const std::vector<Loop>& added, const std::vector<Loop>& removed, double from,
+              double to) {
+  const Vec3 axis = plateThicknessAxis(plate);
+  Plate layer;
+  layer.id = plate.id;
+  layer.name = plate.name;
+  for (const Loop& loop : cutFace(plate, added, removed)) {
+    Loop bottom, top;
+    for (const Vec3& point : loop) {
+      bottom.push_back(plus(point, scaled(axis, from)));
+      top.push_back(plus(point, scaled(axis, to)));
+    }
+    layer.bottom.push_back(bottom);
+    layer.top.push_back(top);
+  }
+  return layer;
+}
+
+}  // namespace
+
+std::vector<CutFootprint> tenonFootprints(const std::vector<Plate>& plates, const TenonSite& site,
+                                          const JointCutOptions& options) {
+  std::vector<CutFootprint> footprints;
+  for (const auto& [start, end] : tenonSpans(plates, site, options)) {
+    footprints.push_back({site.mortisePlate, 3, mortiseOf(plates, site, start, end, options.clearance)});
+  }
+  return footprints;
+}
+
+CutFootprint dovetailFootprint(const std::vector<Plate>& plates, const DovetailCut& cut) {
+  const DovetailPieces pieces = dovetailPieces(plates, cut, 0);
+  return {cut.site.edge.mortisePlate, pieces.fromFirstFace ? 1 : 2, pieces.housing};
+}
+
+CutFootprint slotFootprint(const SlotCut& slot) { return {slot.plate, 3, slot.rectangle}; }
+
+bool footprintsOverlap(const std::vector<Plate>& plates, const CutFootprint& a, const CutFootprint& b) {
+  if (a.plate != b.plate || (a.faces & b.faces) == 0) return false;
+  const Plate& plate = plates[a.plate];
+  const PlaneFrame frame(plate.bottom[0][0], plateThicknessAxis(plate));
+  ClipperLib::Clipper clipper;
+  clipper.AddPaths(clipperPaths({a.region}, frame), ClipperLib::ptSubject, true);
+  clipper.AddPaths(clipperPaths({b.region}, frame), ClipperLib::ptClip, true);
+  ClipperLib::Paths shared;
+  clipper.Execute(ClipperLib::ctIntersection, shared, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+  std::vector<Loop> loops;
+  for (const ClipperLib::Path& path : shared) {
+    Loop loop;
+    for (const ClipperLib::IntPoint& point : path) loop.push_back(frame.fromClipper(point));
+    loops.push_back(loop);
+  }
+  return !loops.empty() && areaAgainst(loops, plate.bottom, frame, false) > 1e-3;
+}
+
+std::vector<Plate> cutTenonJoints(const std::vector<Plate>& plates, const std::vector<TenonSite>& sites,
+                                  const JointCutOptions& options, const std::vector<SlotCut>& slots,
+                                  const std::vector<DovetailCut>& dovetails) {
+  std::vector<std::vector<Loop>> added(plates.size()), removed(plates.size());
+  // Dovetail housings per plate and face (0: first face, 1: second), and the solids they attach.
+  std::vector<std::array<std::vector<Loop>, 2>> housings(plates.size());
+  std::vector<std::array<double, 2>> housingDepth(plates.size(), {0.0, 0.0});
+  std::vector<std::vector<Plate>> attached(plates.size());
+  for (const DovetailCut& cut : dovetails) {
+    const int housingPlate = cut.site.edge.mortisePlate;
+    DovetailPieces pieces = dovetailPieces(plates, cut, options.clearance);
+    const int face = pieces.fromFirstFace ? 0 : 1;
+    housings[housingPlate][face].push_back(pieces.housing);
+    housingDepth[housingPlate][face] = dovetailSection(plates, cut.site.edge).depth;
+    for (Plate& lip : pieces.lips) attached[housingPlate].push_back(std::move(lip));
+    attached[cut.site.edge.tenonPlate].push_back(std::move(pieces.tongue));
+  }
+  for (const SlotCut& slot : slots) removed[slot.plate].push_back(slot.rectangle);
   for (const TenonSite& site : sites) {
-    const PlaneFrame frame(plates[site.mortisePlate].bottom[0][0], plateThicknessAxis(plates[site.mortisePlate]));
     for (const auto& [start, end] : tenonSpans(plates, site, options)) {
       added[site.tenonPlate].push_back(tenonOf(plates, site, start, end));
       removed[site.mortisePlate].push_back(mortiseOf(plates, site, start, end, options.clearance));
-      removedArea[site.mortisePlate] +=
-          areaAgainst({removed[site.mortisePlate].back()}, plates[site.mortisePlate].bottom, frame, false);
     }
   }
   std::vector<Plate> jointed = plates;
   for (size_t p = 0; p < plates.size(); ++p) {
-    if (added[p].empty() && removed[p].empty()) continue;
     const Plate& plate = plates[p];
-    // Mortises of different joints must not run into each other.
+    const bool housed = !housings[p][0].empty() || !housings[p][1].empty();
+    if (added[p].empty() && removed[p].empty() && !housed) {
+      jointed[p].attached = std::move(attached[p]);
+      continue;
+    }
     const PlaneFrame frame(plate.bottom[0][0], plateThicknessAxis(plate));
-    ClipperLib::Clipper unite;
-    unite.AddPaths(clipperPaths(removed[p], frame), ClipperLib::ptSubject, true);
-    ClipperLib::Paths united;
-    unite.Execute(ClipperLib::ctUnion, united, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
-    std::vector<Loop> unitedLoops;
-    for (const ClipperLib::Path& path : united) {
-      Loop loop;
-      for (const ClipperLib::IntPoint& point : path) loop.push_back(frame.fromClipper(point));
-      unitedLoops.push_back(loop);
+    requireApart(plate, removed[p], frame);
+    const double thickness = plateThickness(plate);
+    // A plate with dovetail housings is its middle layer, with the layers at its faces that the
+    // housings are cut through (their floor is the middle layer) attached, and the lips.
+    const double first = housingDepth[p][0], second = thickness - housingDepth[p][1];
+    jointed[p] = layerOf(plate, added[p], removed[p], first, second);
+    for (int face = 0; face < 2; ++face) {
+      if (housings[p][face].empty()) continue;
+      std::vector<Loop> cuts = removed[p];
+      cuts.insert(cuts.end(), housings[p][face].begin(), housings[p][face].end());
+      requireApart(plate, cuts, frame);
+      jointed[p].attached.push_back(face == 0 ? layerOf(plate, added[p], cuts, 0, first)
+                                              : layerOf(plate, added[p], cuts, second, thickness));
     }
-    if (areaAgainst(unitedLoops, plate.bottom, frame, false) < removedArea[p] - 1e-3) {
-      throwBadInput("", "the mortises and slots cut into " + plateLabel(plate) + " run into each other");
-    }
-    const Vec3 lift = scaled(plateThicknessAxis(plate), plateThickness(plate));
-    jointed[p].bottom = cutFace(plate, added[p], removed[p]);
-    jointed[p].top.clear();
-    for (const Loop& loop : jointed[p].bottom) {
-      Loop top;
-      for (const Vec3& point : loop) top.push_back(plus(point, lift));
-      jointed[p].top.push_back(top);
-    }
+    for (Plate& solid : attached[p]) jointed[p].attached.push_back(std::move(solid));
   }
   return jointed;
 }

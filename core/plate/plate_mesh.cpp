@@ -238,6 +238,13 @@ TriangleMesh plateMesh(const Plate& plate) {
       }
     }
   }
+  // Attached solids (milled joints): closed shells of their own, in the same mesh.
+  for (const Plate& solid : plate.attached) {
+    const TriangleMesh piece = plateMesh(solid);
+    const int first = static_cast<int>(mesh.vertices.size());
+    mesh.vertices.insert(mesh.vertices.end(), piece.vertices.begin(), piece.vertices.end());
+    for (const auto& t : piece.triangles) mesh.triangles.push_back({t[0] + first, t[1] + first, t[2] + first});
+  }
   return mesh;
 }
 

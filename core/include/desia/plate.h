@@ -25,6 +25,11 @@ struct Plate {
   // outline, the others are holes. The plate is the solid between them.
   std::vector<Loop> bottom;
   std::vector<Loop> top;
+  // Solids milled as part of this plate where its faces alone cannot hold a joint (a sliding
+  // dovetail's tongue on its edge; the floor and overhanging lips of its housing): each a prism
+  // of its own, described like a plate (its two end faces), without attachments of its own. The
+  // plate is the union of its prism and these; they touch it but are not in contact with it.
+  std::vector<Plate> attached;
 };
 
 // Newell's normal of a loop: right-handed about the vertex order, its length twice the loop's

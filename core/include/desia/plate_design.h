@@ -21,16 +21,22 @@ namespace desia {
 enum class JointType {
   MortiseTenon,  // tenons on one plate's edge, mortises through the other (planned: the edge
                  // within 45..135 degrees of the direction)
-  Halved,        // planned only: the edge runs along the direction, a slot (paper Fig. 2)
+  Halved,        // the edge runs along the direction: slots where two plates cross (paper Fig. 2)
+  Dovetail,      // milled: a sliding dovetail along the edge, out through the housing's open end
   Empty,         // the plates only touch
 };
-const char* jointTypeName(JointType type);  // "mortise-tenon", "halved", "empty"
+const char* jointTypeName(JointType type);  // "mortise-tenon", "halved", "dovetail", "empty"
 
 // What a design makes of its joints.
 enum class JointRealization {
   // Joints cut into the plates (plate_joints.h: through and open mortise-and-tenon joints), each
   // pair's joint chosen among those the geometry allows, the result verified on the jointed plates.
   Cut,
+  // As Cut, and where no such joint lets a plate out, sliding dovetails milled along square edges
+  // (a CNC router with a dovetail bit; the tongue and housing are not 2D cuts): the plate leaves
+  // along the edge. What furniture whose boards end flush (BOOKSHELF, CHAIR) needs. Exports: STL
+  // and OBJ (cut sheets hold 2D cuts only).
+  Milled,
   // The paper's graph design stage alone (Section 5.2): halved, mortise-and-tenon or empty by the
   // angle between the shared edge and the direction, each joint modelled by the faces every such
   // joint has; verified on that model. Nothing to cut yet: halved joints need plates that cross,
@@ -44,7 +50,7 @@ struct PlateJoint {
   int mover = 0, other = 0;
   Vec3 direction{0, 0, 0};
   JointType type = JointType::Empty;
-  int contact = -1;  // the contact the tenons are cut in (mortise-tenon), an index into the contacts
+  int contact = -1;  // the contact the tenons, slots or dovetail are cut in, an index into the contacts
 };
 
 struct PlateDesignProgress {
@@ -126,7 +132,7 @@ class PlateDesignSession {
   std::unique_ptr<State> state_;
 };
 
-// "cut" or "planned"; BadInput naming the value else.
+// "cut", "milled" or "planned"; BadInput naming the value else.
 JointRealization parseJointRealization(const std::string& name);
 const char* jointRealizationName(JointRealization realization);
 

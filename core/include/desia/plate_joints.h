@@ -10,9 +10,16 @@
 // - open mortise-and-tenon (a bridle or finger joint): where the edge plate's outer face is flush
 //   with the other plate's edge, the mortises are notches open at that edge, so the edge plate can
 //   also slide out through the open side.
+// - sliding dovetail (milled, JointRealization::Milled; paper Fig. 2, right): where the edge's
+//   contact runs out of the face plate at an end, a tongue of dovetail section on the edge slides
+//   in a housing half as deep as the face plate, open at that end and stopped before the other,
+//   so the edge plate can leave only along the edge, out through the open end. The tongue, and
+//   the housing's floor and overhanging lips, are prisms along the edge attached to the plates
+//   (Plate::attached); the housing is cut through the face plate beneath them.
 // Every other contact stays an empty joint: the faces only touch.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -43,6 +50,22 @@ struct TenonSite {
   int stagger = 0;
 };
 
+// Where a sliding dovetail can be milled for one contact: a square edge standing on a face (the
+// tenon site's geometry, `edge`) whose contact runs out of the face plate at one end or both.
+struct DovetailSite {
+  TenonSite edge;  // tenonPlate: the tongue's plate, mortisePlate: the housing's
+  // The housing may open at [0] the contact's start (`from`, towards -along), [1] its end (`to`).
+  std::array<bool, 2> opens{false, false};
+  // The directions the tongue plate may leave in: along the edge towards an open end.
+  std::vector<Vec3> exits() const;
+};
+
+// One dovetail to cut: the site and the end its housing opens at (0: from, 1: to).
+struct DovetailCut {
+  DovetailSite site;
+  int openEnd = 1;
+};
+
 struct JointCutOptions {
   double tenonWidth = 0;  // mm along the edge; 0 = from the edge's length (a third, or a fifth for two tenons)
   int tenonCount = 0;     // tenons per joint; 0 = one, or two on edges longer than 8 plate thicknesses
@@ -55,6 +78,16 @@ struct JointCutOptions {
 // plate is flush with it (open); nothing otherwise.
 std::optional<TenonSite> tenonSiteOf(const std::vector<Plate>& plates, const PlateContact& contact,
                                      const JointCutOptions& options = {});
+
+// The site of a sliding dovetail on `contact`: a square side of one prismatic plate on a face of
+// another at right angles, long enough for a stopped housing, the contact running out of the
+// face plate at an end; nothing otherwise.
+std::optional<DovetailSite> dovetailSiteOf(const std::vector<Plate>& plates, const PlateContact& contact);
+
+// The normals of a dovetail's faces, pointing from the tongue plate into the housing plate: the
+// shoulder and the housing's floor, the two flanks (leaning back towards the tongue plate, so it
+// cannot be pulled out), and the stop at the closed end (against the exit).
+std::vector<Vec3> dovetailFaceNormals(const std::vector<Plate>& plates, const DovetailCut& cut);
 
 // Where two sites' plates stand on opposite faces of one mortise plate over the same region,
 // gives them opposite staggers (see TenonSite::stagger). Sites are per contact, some empty.
@@ -81,7 +114,25 @@ std::vector<SlotCut> halvedSlots(const std::vector<Plate>& plates, const PlateCo
                                  const Vec3& d, double clearance);
 
 std::vector<Plate> cutTenonJoints(const std::vector<Plate>& plates, const std::vector<TenonSite>& sites,
-                                  const JointCutOptions& options, const std::vector<SlotCut>& slots = {});
+                                  const JointCutOptions& options, const std::vector<SlotCut>& slots = {},
+                                  const std::vector<DovetailCut>& dovetails = {});
+
+// Where a joint's cut lies in a plate: a region of its face (a loop on or parallel to it), through
+// the plate (faces = 3) or into it from its first (1) or second (2) face only. Cuts of different
+// joints in one plate must not overlap where they share a face: the designer drops a step whose
+// joints would (rather than find it when the whole plan is cut).
+struct CutFootprint {
+  int plate = 0;
+  int faces = 3;
+  Loop region;
+};
+std::vector<CutFootprint> tenonFootprints(const std::vector<Plate>& plates, const TenonSite& site,
+                                          const JointCutOptions& options);
+CutFootprint dovetailFootprint(const std::vector<Plate>& plates, const DovetailCut& cut);
+CutFootprint slotFootprint(const SlotCut& slot);
+// Both in one plate, sharing a face, their regions overlapping inside the plate (more than a
+// thousandth of a square millimetre).
+bool footprintsOverlap(const std::vector<Plate>& plates, const CutFootprint& a, const CutFootprint& b);
 
 // True when `mover`, moved along the unit direction d by any distance, would pass through
 // `obstacle` (their interiors meet). Exact for the plates' polyhedra: two surface triangles whose
