@@ -11,6 +11,7 @@
 #include <set>
 #include <string>
 
+#include "analysis/part_motion.h"
 #include "analysis/vec3.h"
 #include "desia/check.h"
 #include "desia/error.h"
@@ -529,6 +530,142 @@ TEST(PlateOverlaps, SolidsThatShareVolumeAreRefusedAndTouchingOnesAreNot) {
     for (Vec3& p : (*face)[0]) p[2] += 76;  // its lowest edge (second face, y = -42.9) at z = 18.9
   }
   EXPECT_NO_THROW(computePlateContacts({board(1, {0, -100, 0}, {200, 100, 18}), leaning}, {}));
+}
+
+}  // namespace
+}  // namespace desia
+
+// ---- sliding dovetails (milled joints) -----------------------------------------------------------
+
+namespace desia {
+namespace {
+
+// A board standing on a base's top face, flush with it at both ends of their contact (z = 0 and
+// z = 200): the contact runs out of the base at both ends, so a housing can open at either.
+std::vector<Plate> boardOnBase() {
+  return {board(1, {0, 0, 0}, {300, 18, 200}), board(2, {100, 18, 0}, {118, 218, 200})};
+}
+
+// Is the point inside the plate or one of its attached solids (all prisms)?
+bool solidContains(const Plate& plate, const Vec3& p) {
+  if (PrismInside(Plate{plate.id, plate.name, plate.bottom, plate.top, {}}).contains(p)) return true;
+  for (const Plate& solid : plate.attached) {
+    if (PrismInside(solid).contains(p)) return true;
+  }
+  return false;
+}
+
+TEST(PlateDovetails, AFlushEdgeGetsASiteOpenAtBothEnds) {
+  const std::vector<Plate> plates = boardOnBase();
+  const std::vector<PlateContact> contacts = computePlateContacts(plates, {});
+  ASSERT_EQ(contacts.size(), 1u);
+  const std::optional<DovetailSite> site = dovetailSiteOf(plates, contacts[0]);
+  ASSERT_TRUE(site.has_value());
+  EXPECT_EQ(site->edge.tenonPlate, 1);
+  EXPECT_EQ(site->edge.mortisePlate, 0);
+  EXPECT_TRUE(site->opens[0] && site->opens[1]);
+  // The board stopping 20 mm short of the base's end at z = 200: only z = 0 stays open.
+  std::vector<Plate> shorter = plates;
+  shorter[1] = board(2, {100, 18, 0}, {118, 218, 180});
+  const std::optional<DovetailSite> one = dovetailSiteOf(shorter, computePlateContacts(shorter, {})[0]);
+  ASSERT_TRUE(one.has_value());
+  ASSERT_EQ(one->exits().size(), 1u);
+  EXPECT_NEAR(one->exits()[0][2], -1.0, 1e-12);  // out through z = 0
+  // Standing in the middle of a larger base: no end runs out, no dovetail.
+  std::vector<Plate> inside = plates;
+  inside[0] = board(1, {0, 0, -50}, {300, 18, 250});
+  EXPECT_FALSE(dovetailSiteOf(inside, computePlateContacts(inside, {})[0]).has_value());
+}
+
+TEST(PlateDovetails, TheTongueFillsItsHousingAndLeavesOnlyThroughTheOpenEnd) {
+  const std::vector<Plate> plates = boardOnBase();
+  const DovetailSite site = *dovetailSiteOf(plates, computePlateContacts(plates, {})[0]);
+  const DovetailCut cut{site, site.edge.along[2] > 0 ? 1 : 0};  // open at z = 200: out along +z
+  const std::vector<Plate> jointed = cutTenonJoints(plates, {}, {}, {}, {cut});
+  // Section: 12 mm wide at the floor (2/3 of 18), 6 mm deep (1/3 of 18), 1 in 6 lean: 10 mm at
+  // the face; the housing stops 18 mm before the closed end: 182 mm long.
+  const double tongue = (12.0 + 10.0) / 2 * 6 * 182;
+  for (const Plate& plate : jointed) EXPECT_NO_THROW(checkClosedMesh(plateMesh(plate), "jointed"));
+  EXPECT_NEAR(meshVolume(plateMesh(jointed[1])), 18.0 * 200 * 200 + tongue, 1e-6 * tongue);
+  EXPECT_NEAR(meshVolume(plateMesh(jointed[0])), 300.0 * 18 * 200 - tongue, 1e-6 * tongue);
+  // The contacts of the jointed boards let the board out along +z and in no other axis direction
+  // (the flanks hold it down against +y, the stop against -z).
+  Assembly pair;
+  pair.parts = {{1, "base"}, {2, "board"}};
+  for (const PlateContact& contact : computePlateContacts(jointed, {}))
+    pair.contacts.push_back({contact.a, contact.b, contact.normal, contact.area});
+  const std::vector<Vec3> axes{{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+  for (const Vec3& d : axes) {
+    EXPECT_EQ(isPartFreeAlong(pair, nullptr, 1, d), d[2] > 0) << d[0] << "," << d[1] << "," << d[2];
+    // The exact sweep says the same, and so does moving the tongue's inside in 0.25 mm steps.
+    EXPECT_EQ(plateCollidesAlong(jointed[1], jointed[0], d, 0.05), d[2] <= 0) << d[0] << "," << d[1] << "," << d[2];
+  }
+  const Plate& tongue3d = jointed[1].attached.at(0);
+  const PrismInside inside(tongue3d);
+  for (const Vec3& d : axes) {
+    bool hit = false;
+    for (double t = 0.25; t <= 8 && !hit; t += 0.25) {
+      for (double x = inside.lo[0] + 0.13; x < inside.hi[0] && !hit; x += 0.5) {
+        for (double y = inside.lo[1] + 0.11; y < inside.hi[1] && !hit; y += 0.5) {
+          for (double z = inside.lo[2] + 0.7; z < inside.hi[2] && !hit; z += 20) {
+            if (inside.contains({x, y, z}) && solidContains(jointed[0], {x + t * d[0], y + t * d[1], z + t * d[2]}))
+              hit = true;
+          }
+        }
+      }
+    }
+    EXPECT_EQ(hit, d[2] <= 0) << "sampled " << d[0] << "," << d[1] << "," << d[2];
+  }
+}
+
+TEST(PlateDovetails, TheBookshelfDesignsWithMilledJointsOnlyAndReadsBack) {
+  const AssemblyDocument shelf = loadPlateExample("bookshelf.json");
+  EXPECT_EQ(designCut(shelf.plates).status, PlateDesignStatus::NotFound);
+  PlateDesignOptions options;
+  options.realization = JointRealization::Milled;
+  options.joints.clearance = 0.2;
+  const PlateDesignResult result = designPlateJoints(shelf.plates, computePlateContacts(shelf.plates, {}), options);
+  ASSERT_EQ(result.status, PlateDesignStatus::Success) << result.message;
+  int dovetails = 0;
+  for (const PlateJoint& joint : result.joints) dovetails += joint.type == JointType::Dovetail ? 1 : 0;
+  EXPECT_GT(dovetails, 0);
+  // Every jointed plate closed, the result verified again in removal order from its own plates.
+  std::vector<Plate> inOrder;
+  for (int index : result.order) inOrder.push_back(result.jointedPlates[static_cast<size_t>(index)]);
+  for (const Plate& plate : inOrder) EXPECT_NO_THROW(checkClosedMesh(plateMesh(plate), plate.name));
+  EXPECT_EQ(jointedPlatesFailure(inOrder, result.directions), "");
+  // Clearance narrows the tongues only: the made plates hold less wood than the verified ones.
+  EXPECT_LT(totalVolume(result.fabricationPlates), totalVolume(result.jointedPlates));
+  // The document keeps the attached solids: read back, the same plates.
+  const std::string text = plateDesignToJson(shelf, result);
+  const AssemblyDocument reread = parseAssemblyText(text, "bookshelf-milled.json");
+  size_t attached = 0;
+  for (const Plate& plate : reread.plates) attached += plate.attached.size();
+  size_t made = 0;
+  for (const Plate& plate : result.jointedPlates) made += plate.attached.size();
+  EXPECT_EQ(attached, made);
+  EXPECT_NEAR(totalVolume(reread.plates), totalVolume(result.jointedPlates), 1e-6 * totalVolume(result.jointedPlates));
+  // Each plate pulled the wrong way along its dovetail hits something: the order matters.
+  std::vector<Vec3> reversed = result.directions;
+  for (size_t k = 1; k < reversed.size(); ++k) {
+    const JointType first = [&] {
+      for (const PlateJoint& joint : result.joints)
+        if (joint.mover == result.order[k]) return joint.type;
+      return JointType::Empty;
+    }();
+    if (first != JointType::Dovetail) continue;
+    reversed[k] = negated(reversed[k]);
+    EXPECT_NE(jointedPlatesFailure(inOrder, reversed), "") << "plate " << inOrder[k].id;
+    reversed[k] = result.directions[k];
+  }
+}
+
+TEST(PlateDovetails, MilledIsAJointRealization) {
+  EXPECT_EQ(parseJointRealization("milled"), JointRealization::Milled);
+  EXPECT_STREQ(jointRealizationName(JointRealization::Milled), "milled");
+  EXPECT_STREQ(jointTypeName(JointType::Dovetail), "dovetail");
+  const AssemblyDocument shelf = loadPlateExample("bookshelf.json");
+  EXPECT_NE(designCut(shelf.plates).message.find("joints 'milled'"), std::string::npos);
 }
 
 }  // namespace
