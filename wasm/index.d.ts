@@ -94,8 +94,8 @@ export interface CheckReport extends Verdict {
    */
   disassemblyFailure?: { removed: number[]; stuck: number[]; searchLimitReached: boolean };
   /**
-   * Plate results with cut joints and frame results: their removal plan replayed on the real
-   * shapes (plates: contacts recomputed from the jointed plates and each plate swept; frames:
+   * Plate results with cut or milled joints and frame results: their removal plan replayed on the
+   * real shapes (plates: contacts recomputed from the jointed plates and each plate swept; frames:
    * each beam and its joint voxels swept along its axis). `failure` names the part that cannot
    * leave; absent for other documents.
    */
@@ -111,6 +111,10 @@ export interface AssemblyDocument {
   voxel?: { size: [number, number, number]; labels: number[] };
   parts: { id: number; name?: string; voxelCount?: number }[];
   contacts?: { a: number; b: number; normal: [number, number, number]; area?: number }[];
+  /** Plate design results: how the joints were made. */
+  jointGeometry?: PlateJointGeometry;
+  /** Plate design results: a joint per pair of touching plates (part ids). */
+  joints?: { mover: number; other: number; type: PlateJointType; direction: [number, number, number] }[];
   [section: string]: unknown;
 }
 
@@ -224,11 +228,17 @@ export interface DesignSessionState {
   message?: string;
 }
 
+/** The joint between two plates ('dovetail': a sliding dovetail, made with joints 'milled'). */
+export type PlateJointType = 'mortise-tenon' | 'halved' | 'dovetail' | 'empty';
+
+/** How a plate design result's joints were made: its `jointGeometry` (see {@link PlateDesignOptions.joints}). */
+export type PlateJointGeometry = 'cut' | 'milled' | 'planned';
+
 /** Plates: a child of a session's node, the plate it takes and the joints it gets (input ids). */
 export interface PlateSessionStep {
   plate: number;
   direction: [number, number, number];
-  joints: { mover: number; other: number; type: 'mortise-tenon' | 'halved' | 'empty'; direction: [number, number, number] }[];
+  joints: { mover: number; other: number; type: PlateJointType; direction: [number, number, number] }[];
 }
 
 /**
@@ -357,9 +367,14 @@ export interface PlateDesignOptions {
    * 'cut' (default): joints cut into the plates (through and open mortise-and-tenon joints where a
    * square edge stands on a face at a right angle), verified on the jointed plates. 'planned': the
    * paper's graph design alone (halved, mortise-and-tenon or empty joints by angle), verified on
-   * the joints' model contacts; nothing to cut.
+   * the joints' model contacts; nothing to cut. 'milled': as 'cut', and where no mortise-and-tenon
+   * lets a plate out, a sliding dovetail along its square edge (paper Fig. 2, right; joint type
+   * 'dovetail'), for a CNC: the jointed plates carry `attached` solids (the tongue, the housing's
+   * lips), drawn by partSurfaces and written by the STL and OBJ exports, verified on those shapes
+   * (`jointGeometry: 'milled'`). Cut sheets (SVG, DXF) cannot hold a dovetail and refuse such a
+   * result.
    */
-  joints?: 'cut' | 'planned';
+  joints?: 'cut' | 'milled' | 'planned';
   /** mm of play between a tenon and its mortise, cut into `fabricationPlates` (0 to 10, default 0). */
   clearance?: number;
   /** mm along the edge (default: from the edge's length). */
@@ -436,7 +451,9 @@ export interface DesiaCore {
   /**
    * The cut files of a plate structure (a design result: its `fabricationPlates` when it has a
    * clearance, else its `plates`): one SVG or DXF text per sheet, the plates laid flat, turned to
-   * their smallest box and nested. Throws a DesiaError naming a plate that fits no sheet.
+   * their smallest box and nested. Throws a DesiaError naming a plate that fits no sheet, or a
+   * plate with milled joints (`jointGeometry: 'milled'`: a sliding dovetail is no 2D cut; export
+   * STL or OBJ for the CNC instead).
    */
   cutSheets(assembly: string | AssemblyDocument, options?: CutSheetOptions): string[];
   /**
@@ -469,8 +486,11 @@ export interface DesiaCore {
    * Designs the joints of a plate design (paper Section 5.2: key, removal order and directions, a
    * joint per pair of touching plates). The result's `document` (kind 'plate', part 1 = the key)
    * holds the plates with their tenons and mortises cut (`jointGeometry: 'cut'`; with
-   * `joints: 'planned'`, the plates as given and `jointGeometry: 'planned'`), verified by both
-   * tests and, when cut, by sweeping each plate out past the ones still in place.
+   * `joints: 'milled'`, also sliding dovetails whose solids are the plates' `attached`, and
+   * `jointGeometry: 'milled'`; with `joints: 'planned'`, the plates as given and
+   * `jointGeometry: 'planned'`), verified by both tests and, when cut or milled, by sweeping each
+   * plate out past the ones still in place. Its `joints` list `{ mover, other, type, direction }`
+   * with `type` a {@link PlateJointType}.
    */
   designPlate(input: string | AssemblyDocument, options?: PlateDesignOptions): DesignResult;
   /**

@@ -279,6 +279,59 @@ test('designPlate plans the CLI\'s joints in the worker, with progress; bad opti
     && /sheetIndex 3 is out of range/.test(error.message));
 });
 
+test('designPlate with joints \'milled\' gives the CLI\'s BOOKSHELF: sliding dovetails, replayed on the shapes, STL not cut sheets', async () => {
+  const input = path.join(root, 'examples/plate/bookshelf.json');
+  const bookshelf = fs.readFileSync(input, 'utf8');
+  const cliFile = path.join(tmp, 'bookshelf-milled.json');
+  const cli = runCli(['design', 'plate', '--input', input, '--joints', 'milled', '--output', cliFile]);
+  assert.equal(cli.status, 0, cli.stderr);
+  const cliText = fs.readFileSync(cliFile, 'utf8');
+  const result = await desia.designPlate(bookshelf, { joints: 'milled' });
+  assert.equal(result.status, 'success', result.message);
+  assert.equal(result.verification.verdict, 'interlocking');
+  assert.equal(result.verification.key, 1);
+  // Byte for byte the CLI's file (JSON.stringify of the parsed file: the same keys in the same
+  // order and the same values; nlohmann writes -0.0 and 120.0 where JavaScript writes 0 and 120).
+  assert.equal(JSON.stringify(result.document), JSON.stringify(JSON.parse(cliText)));
+  assert.equal(JSON.stringify(core.designPlate(bookshelf, { joints: 'milled' }).document), JSON.stringify(result.document), 'the synchronous core too');
+  const { document } = result;
+  assert.equal(document.jointGeometry, 'milled');
+  assert.equal(document.plates.length, 12);
+  const types = document.joints.map((joint) => joint.type);
+  assert.ok(types.includes('dovetail'), JSON.stringify(types));
+  assert.ok(types.every((type) => type === 'dovetail' || type === 'mortise-tenon'), JSON.stringify(types));
+  assert.ok(document.plates.some((plate) => Array.isArray(plate.attached) && plate.attached.length > 0), 'the dovetails\' solids are attached to their plates');
+  // The check replays the removal plan on the milled plates.
+  const report = await desia.check(JSON.stringify(document));
+  assert.equal(report.verdict, 'interlocking');
+  assert.equal(report.shapeRemoval.clear, true, report.shapeRemoval.failure);
+  assert.equal(report.shapeRemoval.failure, '');
+  // Cut sheets cannot hold a dovetail: the core's message, in the worker and the sync core.
+  const milledMessage = /plate \d+ has milled joints \(a sliding dovetail\), which cut sheets cannot hold: export stl or obj for the CNC, or design with joints 'cut'/;
+  await assert.rejects(desia.cutSheets(document), (error) => error instanceof DesiaError && error.code === 'bad-input' && milledMessage.test(error.message));
+  await assert.rejects(desia.exportAssembly(document, { format: 'dxf' }), (error) => error.code === 'bad-input' && milledMessage.test(error.message));
+  assert.throws(() => core.cutSheets(cliText), (error) => error.code === 'bad-input' && milledMessage.test(error.message));
+  // STL and OBJ hold the dovetails: the CLI's bytes; the surfaces the viewer draws are the STL's triangles.
+  for (const format of ['stl', 'obj']) {
+    const output = path.join(tmp, `bookshelf-milled.${format}`);
+    const exported = runCli(['export', cliFile, '--format', format, '--output', output]);
+    assert.equal(exported.status, 0, exported.stderr);
+    assert.deepEqual(await desia.exportAssembly(document, { format }), new Uint8Array(fs.readFileSync(output)), format);
+  }
+  const stl = binaryStlSummary(await desia.exportAssembly(document, { format: 'stl' }));
+  const surfaces = await desia.partSurfaces(document);
+  assert.deepEqual(surfaces.map((surface) => surface.partId), [1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12]);
+  assert.equal(surfaces.reduce((sum, surface) => sum + surface.positions.length / 9, 0), stl.triangles);
+  // A step-by-step session takes joints 'milled' too; its children's joints are of the declared types.
+  const session = core.designSession(bookshelf, { joints: 'milled' });
+  try {
+    assert.ok(session.childCount() > 0);
+    for (const joint of session.preview(0).joints) assert.ok(['mortise-tenon', 'halved', 'dovetail', 'empty'].includes(joint.type), joint.type);
+  } finally {
+    session.dispose();
+  }
+});
+
 test('a design session in the worker steps like the synchronous one', async () => {
   const options = { parts: 6, seed: 2 };
   const local = core.designSession(cubeShape, options);
