@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "desia/check.h"
+#include "desia/document_check.h"
 #include "desia/design_io.h"
 #include "desia/document.h"
 #include "desia/error.h"
@@ -125,7 +126,9 @@ inline void checkTarget(const uint8_t* data, size_t size) {
     for (const CheckMethod method : {CheckMethod::Graphs, CheckMethod::Inequalities, CheckMethod::Both}) {
       CheckOptions options;
       options.method = method;
-      const CheckReport report = checkAssembly(document, options);
+      // As `desia check`: the tests on the contacts and, for plate and frame results, the removal
+      // plan replayed on the shapes.
+      const CheckReport report = checkDocument(document, options);
       checkReportToJson(document, report, -1);
       checkReportToText(document, report);
     }
