@@ -14,6 +14,7 @@
 // Design will do), #design-message (the core's message),
 // #design-progress-box[data-updates] (progress messages seen in the current run),
 // #session-state[data-parts, data-children, data-complete] (the open session's node).
+// #design-joints holds the joints an example needs once it is loaded (main.js EXAMPLES).
 
 import { byId } from './dom.js';
 import { readUrlState, writeUrlState } from './url-state.js';
@@ -110,6 +111,8 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
   let run = null;
   /** The kind of assembly on screen: 'plate' and 'frame' design joints, anything else voxels. */
   let kind = 'voxel';
+  /** True while the Joints choice is one an example set (not the user's): another file resets it. */
+  let jointsFromExample = false;
 
   // -------------------------------------------------------------------------------------------
   // Parameters
@@ -466,6 +469,7 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
     });
     ui.cancelButton.addEventListener('click', cancel);
     FIELDS.parts.addEventListener('input', () => { partsTouched = true; });
+    FIELDS.joints.addEventListener('change', () => { jointsFromExample = false; });
     ui.form.addEventListener('input', syncUrl);
     ui.form.addEventListener('change', syncUrl);
     ui.sessionStart.addEventListener('click', startSession);
@@ -496,6 +500,24 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
       if (FIELDS.candidates.value === DEFAULT_CANDIDATES[kind]) FIELDS.candidates.value = DEFAULT_CANDIDATES[resolved];
       kind = resolved;
       refreshControls();
+    },
+    /**
+     * An example that needs its own joints ('milled': the Bookshelf's dovetails; 'planned': the
+     * mitred and flush designs) was loaded: Joints is set to them. null (an example without, or
+     * the user's own file): Joints goes back to 'cut' if an example had set it; the user's own
+     * choice stays.
+     */
+    setExampleJoints(joints) {
+      if (joints && [...FIELDS.joints.options].some((option) => option.value === joints)) {
+        FIELDS.joints.value = joints;
+        jointsFromExample = true;
+      } else if (jointsFromExample) {
+        FIELDS.joints.value = 'cut';
+        jointsFromExample = false;
+      } else {
+        return;
+      }
+      syncUrl();
     },
     /** A new shape is on screen: N follows its size until the user sets N. */
     shapeLoaded(voxelCount) {

@@ -2,7 +2,9 @@
 //
 // The Export panel: saves the assembly on screen as .puz, as the JSON document, as STL or OBJ
 // meshes (3D printing; one part or all), as a BurrTools .xmpuzzle, for plate structures as
-// SVG or DXF cut sheets (one download per sheet), for frames as .fpuz and a CSV cut list. Every byte comes from the core in the worker
+// SVG or DXF cut sheets (one download per sheet; not for a result with milled joints, whose
+// sliding dovetails are no 2D cuts: STL or OBJ for the CNC instead), for frames as .fpuz and a
+// CSV cut list. Every byte comes from the core in the worker
 // (toPuz, parseDocument, exportAssembly, cutSheets); the panel only picks the format, part, sheet
 // size and kerf and hands the result to the browser as downloads.
 //
@@ -68,7 +70,7 @@ export function createExportPanel({ core }) {
     button: byId('export-button'),
     message: byId('export-message'),
   };
-  /** { name, text, kind, partIds } of the assembly on screen, or null. */
+  /** { name, text, kind, partIds, milled } of the assembly on screen, or null. */
   let assembly = null;
   let busy = false; // The worker designs for the Design panel.
   let exporting = false;
@@ -80,12 +82,16 @@ export function createExportPanel({ core }) {
   }
 
   function refresh() {
+    const milled = Boolean(assembly?.milled);
     for (const option of ui.format.options) {
       const known = FORMATS[option.value];
-      // Each format holds the kinds it can (.puz and .xmpuzzle voxels, SVG and DXF plates, .fpuz and CSV frames).
-      if (known) option.disabled = assembly !== null && !known.kinds.includes(assembly.kind);
+      // Each format holds the kinds it can (.puz and .xmpuzzle voxels, SVG and DXF plates, .fpuz
+      // and CSV frames); cut sheets cannot hold milled dovetails (the core would say so too).
+      if (!known) continue;
+      option.disabled = assembly !== null && (!known.kinds.includes(assembly.kind) || (known.cut === true && milled));
+      option.title = known.cut && milled ? 'Milled joints (sliding dovetails) are no 2D cuts: export STL or OBJ for the CNC' : '';
     }
-    if (assembly && ui.format.selectedOptions[0]?.disabled) ui.format.value = assembly.kind === 'plate' ? 'svg' : 'json';
+    if (assembly && ui.format.selectedOptions[0]?.disabled) ui.format.value = assembly.kind === 'plate' ? (milled ? 'stl' : 'svg') : 'json';
     const format = FORMATS[ui.format.value];
     ui.part.disabled = !assembly || !format?.perPart;
     ui.part.hidden = Boolean(format?.cut);
@@ -160,10 +166,15 @@ export function createExportPanel({ core }) {
   return {
     /**
      * The assembly on screen changed: `current` is `{ name, text }` or null, `report` its check
-     * report (part ids and kind).
+     * report (part ids and kind), `document_` its document (a plate result's jointGeometry).
      */
-    setAssembly(current, report) {
-      assembly = current ? { ...current, kind: report?.kind ?? null, partIds: report?.partIds ?? [] } : null;
+    setAssembly(current, report, document_ = null) {
+      assembly = current ? {
+        ...current,
+        kind: report?.kind ?? null,
+        partIds: report?.partIds ?? [],
+        milled: report?.kind === 'plate' && document_?.jointGeometry === 'milled',
+      } : null;
       fillParts(assembly?.partIds ?? [], report?.key ?? null);
       if (ui.panel.dataset.state !== 'working') setMessage('', '');
       refresh();

@@ -27,7 +27,8 @@ import { keepForOffline, registerServiceWorker } from './offline.js';
 /**
  * Bundled voxel files (copies of the original authors' results and input shapes) and plate
  * designs (examples/plate/, in mm), served from this origin. Shapes are one-part assemblies to
- * design from; plate designs have no joints yet (Design plans them).
+ * design from; plate designs have no joints yet (Design plans them). `joints`: the Joints choice
+ * a plate design needs ('milled', 'planned'; else the default 'cut'), set when it is loaded.
  */
 const EXAMPLES = [
   { file: 'Cube_4x4x4_K9.puz', label: 'Cube 4×4×4, 9 parts' },
@@ -47,13 +48,14 @@ const EXAMPLES = [
   { file: 'long_table_102.json', label: 'Long table, 102 plates', plate: true },
   { file: 'chair_cut_point.json', label: 'Chair with a cut point, 8 plates', plate: true },
   // Mitred, non-orthogonal or flush boards: designed with Joints "planned only".
-  { file: 'chair_repaired.json', label: 'Chair repaired, 10 plates (planned)', plate: true },
-  { file: 'cabinet.json', label: 'Cabinet under a gable roof, 7 plates (planned)', plate: true },
-  { file: 'mitred_box.json', label: 'Mitred box, 6 plates (planned)', plate: true },
-  { file: 'dodecahedron.json', label: 'Dodecahedron, 12 mitred plates (planned)', plate: true },
-  { file: 'lizard.json', label: 'Lizard, 38 mitred plates (planned)', plate: true },
-  { file: 'bookshelf.json', label: 'Bookshelf, 12 plates (planned)', plate: true },
-  { file: 'bookcase_123.json', label: 'Bookcase, 123 plates (planned)', plate: true },
+  { file: 'chair_repaired.json', label: 'Chair repaired, 10 plates (planned)', plate: true, joints: 'planned' },
+  { file: 'cabinet.json', label: 'Cabinet under a gable roof, 7 plates (planned)', plate: true, joints: 'planned' },
+  { file: 'mitred_box.json', label: 'Mitred box, 6 plates (planned)', plate: true, joints: 'planned' },
+  { file: 'dodecahedron.json', label: 'Dodecahedron, 12 mitred plates (planned)', plate: true, joints: 'planned' },
+  { file: 'lizard.json', label: 'Lizard, 38 mitred plates (planned)', plate: true, joints: 'planned' },
+  // Flush boards that no mortise-and-tenon lets out: sliding dovetails, milled on a CNC.
+  { file: 'bookshelf.json', label: 'Bookshelf, 12 plates (milled dovetails)', plate: true, joints: 'milled' },
+  { file: 'bookcase_123.json', label: 'Bookcase, 123 plates (planned)', plate: true, joints: 'planned' },
   // Frames (examples/frame/, in mm): beams joined by 3x3x3 voxel joints; Design makes the joints.
   { file: 'frame_cube.json', label: 'Frame cube, 12 beams', frame: true },
   { file: 'frame_chair.json', label: 'Frame chair, 11 beams', frame: true },
@@ -156,9 +158,12 @@ let current = null;
 let loadGeneration = 0; // Only the newest load may touch the page.
 let lastUserFile = null; // The user's last file, so its select entry can load it again.
 
-/** `assembly` = { name, text } (null: nothing on screen); it keeps the report's kind. */
-function setCurrent(assembly, report = null) {
-  exportPanel.setAssembly(assembly, report);
+/**
+ * `assembly` = { name, text } (null: nothing on screen); it keeps the report's kind. `document_`
+ * (its parsed document) tells the export panel how a plate result's joints were made.
+ */
+function setCurrent(assembly, report = null, document_ = null) {
+  exportPanel.setAssembly(assembly, report, document_);
   current = assembly ? { ...assembly, kind: report?.kind ?? null } : null;
   if (current) designPanel.setKind(current.kind);
   ui.downloadButton.disabled = !current;
@@ -186,7 +191,7 @@ function showAssembly({ name, text, document: document_, surfaces, report, elaps
   ui.sourceName.textContent = name;
   hideError();
   view.show(document_, surfaces);
-  setCurrent({ name, text }, report);
+  setCurrent({ name, text }, report, document_);
   // A plate plan is played along its own planned removal directions.
   const shown = withPlannedRemoval(report, document_);
   renderReport(shown, elapsedMs, timingLabel);
@@ -221,7 +226,7 @@ async function loadAssembly(name, readText, { origin = name } = {}) {
     view.show(document_, surfaces);
     const { value: report, elapsedMs } = await core.run('check', text, { method: ui.methodSelect.value, source: name });
     if (!isCurrent()) return;
-    setCurrent({ name, text }, report);
+    setCurrent({ name, text }, report, document_);
     // A plate plan opened from a file plays its own removal, as it did when it was designed.
     const shown = withPlannedRemoval(report, document_);
     renderReport(shown, elapsedMs);
@@ -251,7 +256,12 @@ async function fetchExampleText(file) {
   return response.text();
 }
 
-function loadExample(file) {
+/**
+ * Loads a bundled example; it brings the Joints choice it needs (`joints` in EXAMPLES), unless
+ * `keepJoints` (the first load of a shared link that says which joints).
+ */
+function loadExample(file, { keepJoints = false } = {}) {
+  if (!keepJoints) designPanel.setExampleJoints(EXAMPLES.find((example) => example.file === file)?.joints ?? null);
   if (meshInput.isExample(file)) return meshInput.openExample(file);
   meshInput.forget();
   return loadAssembly(file, () => fetchExampleText(file));
@@ -259,6 +269,7 @@ function loadExample(file) {
 
 function loadUserFile(file) {
   lastUserFile = file;
+  designPanel.setExampleJoints(null); // the user's own design: 'cut' unless the user chose otherwise
   const option = ui.exampleSelect.querySelector(`option[value="${USER_FILE_OPTION}"]`);
   option.textContent = `Your file: ${file.name}`;
   option.hidden = false;
@@ -476,7 +487,7 @@ function main() {
   ui.exampleSelect.value = file;
   registerServiceWorker();
   // Once the first assembly is on screen, keep the playground's files for offline use.
-  loadExample(file).finally(() => keepForOffline([
+  loadExample(file, { keepJoints: readUrlState().joints !== undefined }).finally(() => keepForOffline([
     ...EXAMPLES.map((example) => exampleUrl(example.file).href),
     ...meshInput.exampleUrls,
   ]));

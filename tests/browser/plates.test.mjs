@@ -4,14 +4,17 @@
 // per plate, framed in mm) and checked; Design cuts its joints in the worker (interlocking, key
 // 1, ten mortise-and-tenon joints listed, the disassembly moves each plate along its direction);
 // the result downloads as JSON that the native CLI verifies and as SVG cut sheets equal to the
-// CLI's; the CHAIR with a cut point shows the core's
+// CLI's; the BOOKSHELF brings Joints 'milled' and designs with sliding dovetails (listed, drawn,
+// replayed on the shapes), its SVG and DXF are disabled and its STL is the CLI's; the CHAIR with
+// a cut point shows the core's
 // cut-point message; the voxel-only controls are hidden or disabled for plates; a long plan (the
 // 123-plate BOOKCASE) shows progress and is cancelled.
 //
 //   node --test tests/browser/plates.test.mjs
 //
 // Needs what playground.test.mjs needs, plus the native CLI (build/native/core/cli/desia; bash
-// scripts/build.sh native). Screenshots go to test-artifacts/plates-*.png.
+// scripts/build.sh native). Screenshots go to test-artifacts/plates-*.png (the milled BOOKSHELF:
+// plates-bookshelf-milled-1400.png and -390.png).
 
 import { after, before, describe, it } from 'node:test';
 import assert from 'node:assert/strict';
@@ -27,6 +30,9 @@ import {
 const TABLE = 'table.json';
 const CHAIR = 'chair_cut_point.json';
 const BOOKCASE = 'bookcase_123.json';
+const BOOKSHELF = 'bookshelf.json';
+/** The name the page gives the BOOKSHELF's milled plan with seed 1. */
+const BOOKSHELF_PLAN = 'bookshelf_plan_seed1.json';
 /** The name the page gives the TABLE's plan with seed 1. */
 const TABLE_PLAN = 'table_plan_seed1.json';
 const CLI = path.join(REPO_ROOT, 'build/native/core/cli/desia');
@@ -75,7 +81,7 @@ describe('plate structures in the playground (headless Chromium)', { timeout: 12
 
   before(async () => {
     checkPrerequisites();
-    for (const file of [TABLE, CHAIR, BOOKCASE]) {
+    for (const file of [TABLE, CHAIR, BOOKCASE, BOOKSHELF]) {
       if (!existsSync(path.join(REPO_ROOT, 'examples/plate', file))) throw new Error(`examples/plate/${file} is missing`);
     }
     if (!existsSync(CLI)) throw new Error(`the native CLI is missing: run bash scripts/build.sh native (${CLI} not found)`);
@@ -309,8 +315,9 @@ describe('plate structures in the playground (headless Chromium)', { timeout: 12
     assert.equal(state.parts, '123');
     if (state.webgl === 'on') assert.equal(state.meshes, '123');
     await screenshot(page, 'plates-bookcase-1400');
-    // Its boards meet flush: cut joints cannot lock it, the paper's plan alone can (and takes a while).
-    await page.selectOption('#design-joints', 'planned');
+    // Its boards meet flush: cut joints cannot lock it, the paper's plan alone can (and takes a
+    // while); the example brings Joints 'planned' with it.
+    assert.equal(await page.inputValue('#design-joints'), 'planned');
     await page.click('#design-button');
     await page.waitForFunction(() => Number(document.querySelector('#design-progress-box').dataset.updates) >= 2);
     const running = await designState(page);
@@ -320,6 +327,75 @@ describe('plate structures in the playground (headless Chromium)', { timeout: 12
     await page.waitForFunction(() => document.body.dataset.design === 'cancelled' && document.body.dataset.core === 'ready');
     assert.match((await designState(page)).message, /^Cancelled after \d+\.\d s: the deepest node had \d+ of 123 plates/);
     assert.equal((await pageState(page)).source, BOOKCASE);
+  });
+
+  it('designs the BOOKSHELF with milled dovetails: Joints follows the example, STL instead of cut sheets', async () => {
+    await page.selectOption('#example-select', BOOKSHELF);
+    const loaded = await waitForReady(page, BOOKSHELF);
+    assert.equal(loaded.parts, '12');
+    assert.match(await page.textContent(`#example-select option[value="${BOOKSHELF}"]`), /^Bookshelf, 12 plates \(milled dovetails\)/);
+    assert.equal(await page.inputValue('#design-joints'), 'milled', 'the example brings its joints');
+    assert.match(await page.getAttribute('#design-joints', 'title'), /milled: also sliding dovetails .*CNC/);
+    const outcome = await design(page, { seed: 1, candidates: 30, timeLimit: 60 });
+    assert.equal(outcome.outcome, 'success', `design failed: ${outcome.message}`);
+    assert.match(outcome.message, /^designed 20 joints in \d+ nodes/);
+
+    const state = await waitForReady(page, BOOKSHELF_PLAN);
+    assertInterlockingWithKey(state, 1);
+    assert.equal(state.parts, '12');
+    assert.equal(await page.textContent('#method'), 'graphs and linear program', 'the plan is verified by both tests');
+    assert.match(await page.textContent('#reason'), /Removal plan replayed on the real shapes: every part leaves/);
+    const list = await joints(page);
+    assert.equal(list.length, 20);
+    const dovetails = list.filter((joint) => joint.type === 'dovetail');
+    assert.ok(dovetails.length > 0, JSON.stringify(list));
+    assert.ok(list.every((joint) => joint.type === 'dovetail' || joint.type === 'mortise-tenon'), JSON.stringify(list));
+    assert.match(dovetails[0].text, /^plates \d+ .*– \d+ .*: sliding dovetail, \d+ slides along [+-][xyz]$/);
+    if (state.webgl === 'on') assert.equal(state.meshes, '12', 'one mesh per plate, its dovetail solids included');
+
+    // Cut sheets cannot hold a dovetail: SVG and DXF are disabled, STL is offered instead.
+    assert.equal(await page.inputValue('#export-format'), 'stl');
+    for (const format of ['svg', 'dxf']) {
+      assert.equal(await page.locator(`#export-format option[value="${format}"]`).isDisabled(), true, `${format} is disabled`);
+    }
+    for (const format of ['stl', 'obj', 'json']) {
+      assert.equal(await page.locator(`#export-format option[value="${format}"]`).isDisabled(), false, `${format} is enabled`);
+    }
+    assert.equal(await page.isVisible('#export-sheet'), false);
+    await screenshot(page, 'plates-bookshelf-milled-1400');
+
+    // The plan downloads as JSON that the CLI verifies on its milled shapes...
+    const [json] = await Promise.all([page.waitForEvent('download'), page.click('#download-button')]);
+    assert.equal(json.suggestedFilename(), BOOKSHELF_PLAN);
+    const text = await readFile(await json.path(), 'utf8');
+    assert.equal(JSON.parse(text).jointGeometry, 'milled');
+    const file = path.join(ARTIFACTS_DIR, BOOKSHELF_PLAN);
+    await writeFile(file, text);
+    const check = spawnSync(CLI, ['check', file], { encoding: 'utf8' });
+    assert.equal(check.status, 0, `desia check exit ${check.status}: ${check.stdout}${check.stderr}`);
+    assert.match(check.stdout, /verdict: interlocking/);
+    assert.match(check.stdout, /removal on the shapes: clear/);
+    // ...and its STL is the CLI's, byte for byte.
+    const [stl] = await Promise.all([page.waitForEvent('download'), page.click('#export-button')]);
+    assert.equal(stl.suggestedFilename(), 'bookshelf_plan_seed1.stl');
+    const bytes = await readFile(await stl.path());
+    const cliStl = path.join(ARTIFACTS_DIR, 'bookshelf_plan_seed1-cli.stl');
+    const exported = spawnSync(CLI, ['export', file, '--format', 'stl', '--output', cliStl], { encoding: 'utf8' });
+    assert.equal(exported.status, 0, exported.stderr);
+    assert.ok(bytes.equals(await readFile(cliStl)), 'the STL download is the CLI\'s export');
+    assert.match(await page.textContent('#export-message'), /^Saved bookshelf_plan_seed1\.stl \([\d,]+ bytes\)\.$/);
+
+    // On a phone the designed bookshelf and its report fit too.
+    await page.setViewportSize({ width: 390, height: 844 });
+    await page.waitForTimeout(300);
+    await screenshot(page, 'plates-bookshelf-milled-390');
+    await page.setViewportSize({ width: 1400, height: 900 });
+
+    // The TABLE needs no dovetails: loading it puts Joints back to 'cut', and its sheets are offered again.
+    await page.selectOption('#example-select', TABLE);
+    await waitForReady(page, TABLE);
+    assert.equal(await page.inputValue('#design-joints'), 'cut');
+    assert.equal(await page.locator('#export-format option[value="svg"]').isDisabled(), false);
   });
 
   it('switches back to voxels: N, ranking, mode and step by step return', async () => {
