@@ -18,7 +18,7 @@ test('design frame: the FRAME CUBE designed (exit 0), same seed same bytes, re-v
   const designed = runCli(['design', 'frame', '--input', path.join(examples, 'frame_cube.json'), '--output', result, '--seed', '3']);
   assert.equal(designed.status, 0, designed.stderr);
   assert.match(designed.stdout, /^verdict: interlocking \(method dbg\)$/m);
-  assert.match(designed.stdout, /^removal in id order, swept: clear$/m);
+  assert.match(designed.stdout, /^removal on the shapes: clear \(each beam, its body and joint voxels, swept along its axis in the planned order\)$/m);
   const document = JSON.parse(fs.readFileSync(result, 'utf8'));
   assert.equal(document.kind, 'frame');
   assert.equal(document.beams.length, 12);
