@@ -49,6 +49,35 @@ bool isPrism(const Plate& plate) {
   return true;
 }
 
+// Side k of the outline is square: its face stands at a right angle on the plate's faces (a
+// plate given by its two faces may have mitred sides elsewhere).
+bool sideIsSquare(const Plate& plate, size_t k) {
+  const Vec3 lift = scaled(plateThicknessAxis(plate), plateThickness(plate));
+  const size_t next = (k + 1) % plate.bottom[0].size();
+  return norm(minus(plate.top[0][k], plus(plate.bottom[0][k], lift))) < 1e-6 &&
+         norm(minus(plate.top[0][next], plus(plate.bottom[0][next], lift))) < 1e-6;
+}
+
+// Where the plate is its whole thickness (both faces, seen along its axis) or any of it: for a
+// prism both are its face; a plate with mitred sides is thinner near them, and a cut through it
+// must stay where it is whole.
+std::vector<Loop> faceRegion(const Plate& plate, ClipperLib::ClipType operation) {
+  if (isPrism(plate)) return plate.bottom;
+  const PlaneFrame frame(plate.bottom[0][0], plateThicknessAxis(plate));
+  ClipperLib::Clipper clipper;
+  clipper.AddPaths(clipperPaths(plate.bottom, frame), ClipperLib::ptSubject, true);
+  clipper.AddPaths(clipperPaths(plate.top, frame), ClipperLib::ptClip, true);
+  ClipperLib::Paths region;
+  clipper.Execute(operation, region, ClipperLib::pftEvenOdd, ClipperLib::pftEvenOdd);
+  std::vector<Loop> loops;
+  for (const ClipperLib::Path& path : region) {
+    Loop loop;
+    for (const ClipperLib::IntPoint& point : path) loop.push_back(frame.fromClipper(point));
+    loops.push_back(loop);
+  }
+  return loops;
+}
+
 double areaOf(const ClipperLib::Paths& paths) {
   double area = 0;
   for (const ClipperLib::Path& path : paths) area += ClipperLib::Area(path);
@@ -103,16 +132,18 @@ std::optional<int> mortiseKind(const std::vector<Plate>& plates, TenonSite site,
   const PlaneFrame frame(mortisePlate.bottom[0][0], plateThicknessAxis(mortisePlate));
   const double width = plateThickness(tenonPlate), margin = kMortiseMargin + clearance / 2;
   constexpr double kFlush = 0.01;  // mm
+  const std::vector<Loop> whole = faceRegion(mortisePlate, ClipperLib::ctIntersection);
+  const std::vector<Loop> any = faceRegion(mortisePlate, ClipperLib::ctUnion);
   auto inside = [&](double low, double high) {
     std::vector<Loop> rects;
     for (const auto& [start, end] : spans)
       rects.push_back(footprint(tenonPlate, site, start - margin, end + margin, low, high));
-    return areaAgainst(rects, mortisePlate.bottom, frame, true) < 1e-6;
+    return areaAgainst(rects, whole, frame, true) < 1e-6;
   };
   auto clearBeyond = [&](double low, double high) {
     std::vector<Loop> rects;
     for (const auto& [start, end] : spans) rects.push_back(footprint(tenonPlate, site, start, end, low, high));
-    return areaAgainst(rects, mortisePlate.bottom, frame, false) < 1e-6;
+    return areaAgainst(rects, any, frame, false) < 1e-6;
   };
   if (inside(-margin, width + margin)) return 0;
   if (inside(-margin, width - kFlush) && clearBeyond(width + kFlush, width + kMortiseMargin)) return 1;
@@ -243,7 +274,8 @@ std::optional<TenonSite> squareEdgeSite(const std::vector<Plate>& plates, const 
   const bool aOnFace = std::abs(dot(contact.normal, axisA)) > 1 - kSquare;
   const bool bOnFace = std::abs(dot(contact.normal, axisB)) > 1 - kSquare;
   if (aOnFace == bOnFace || std::abs(dot(axisA, axisB)) > kSquare) return std::nullopt;
-  if (!isPrism(plates[contact.a]) || !isPrism(plates[contact.b])) return std::nullopt;
+  // Plates given by two faces may have mitred sides: the edge itself must be square (below), and
+  // the other plate is cut only where it is whole (mortiseKind).
   TenonSite site;
   site.tenonPlate = aOnFace ? contact.b : contact.a;
   site.mortisePlate = aOnFace ? contact.a : contact.b;
@@ -261,6 +293,7 @@ std::optional<TenonSite> squareEdgeSite(const std::vector<Plate>& plates, const 
     const size_t next = (k + 1) % bottom.size();
     if (dot(sideNormals[k], site.intoMortise) < 1 - kSquare) continue;
     if (std::abs(dot(minus(middle, bottom[k]), site.intoMortise)) > kTolerance) continue;
+    if (!sideIsSquare(tenonPlate, k)) return std::nullopt;
     site.edge = static_cast<int>(k);
     site.along = normalized(minus(bottom[next], bottom[k]));
     const auto [regionStart, regionEnd] = extentAlong(contact.region, bottom[k], site.along);
@@ -350,7 +383,7 @@ std::vector<Vec3> DovetailSite::exits() const {
 
 std::optional<DovetailSite> dovetailSiteOf(const std::vector<Plate>& plates, const PlateContact& contact) {
   const std::optional<TenonSite> edge = squareEdgeSite(plates, contact);
-  if (!edge) return std::nullopt;
+  if (!edge || !isPrism(plates[edge->tenonPlate]) || !isPrism(plates[edge->mortisePlate])) return std::nullopt;
   DovetailSite site;
   site.edge = *edge;
   const Plate& housingPlate = plates[edge->mortisePlate];
@@ -480,11 +513,20 @@ Plate layerOf(const Plate& plate, const std::vector<Loop>& added, const std::vec
   Plate layer;
   layer.id = plate.id;
   layer.name = plate.name;
+  const bool prism = isPrism(plate);
   for (const Loop& loop : cutFace(plate, added, removed)) {
     Loop bottom, top;
     for (const Vec3& point : loop) {
       bottom.push_back(plus(point, scaled(axis, from)));
       top.push_back(plus(point, scaled(axis, to)));
+      if (prism) continue;
+      // Mitred sides keep their second face: a vertex of the plate as given keeps its partner;
+      // the cuts' new vertices lie where the plate is whole (mortiseKind), straight across.
+      for (size_t l = 0; l < plate.bottom.size(); ++l) {
+        for (size_t k = 0; k < plate.bottom[l].size(); ++k) {
+          if (norm(minus(plate.bottom[l][k], point)) < 1e-3) top.back() = plate.top[l][k];
+        }
+      }
     }
     layer.bottom.push_back(bottom);
     layer.top.push_back(top);

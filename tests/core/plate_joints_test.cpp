@@ -670,3 +670,39 @@ TEST(PlateDovetails, MilledIsAJointRealization) {
 
 }  // namespace
 }  // namespace desia
+
+namespace desia {
+namespace {
+
+TEST(PlateJoints, AMitredPlateTakesTenonsWhereItIsWholeAndKeepsItsMitre) {
+  // A base 300 x 18 x 200 whose side at x = 300 is mitred at 45 degrees (its second face 18 mm
+  // shorter there), and a board standing on its first face away from the mitre.
+  Plate base;
+  base.id = 1;
+  base.bottom = {{{0, 18, 0}, {0, 18, 200}, {300, 18, 200}, {300, 18, 0}}};
+  base.top = {{{0, 0, 0}, {0, 0, 200}, {282, 0, 200}, {282, 0, 0}}};
+  const std::vector<Plate> plates{base, board(2, {100, 18, 20}, {118, 218, 180})};
+  validatePlates(plates, {}, "mitred");
+  const std::vector<PlateContact> contacts = computePlateContacts(plates, {});
+  ASSERT_EQ(contacts.size(), 1u);
+  const std::optional<TenonSite> site = tenonSiteOf(plates, contacts[0]);
+  ASSERT_TRUE(site.has_value());
+  EXPECT_EQ(site->openSide, 0);  // a through mortise: the board stands inside the base's whole part
+  const std::vector<Plate> jointed = cutTenonJoints(plates, {*site}, {});
+  validatePlates(jointed, {}, "jointed");
+  EXPECT_NO_THROW(checkClosedMesh(plateMesh(jointed[0]), "base"));
+  // The mitre is kept: the base lost exactly the tenons' volume (18 deep, as thick as the board).
+  const double mitred = meshVolume(plateMesh(base));
+  EXPECT_NEAR(mitred, (300.0 + 282.0) / 2 * 18 * 200, 1e-6 * mitred);
+  const double tenons = meshVolume(plateMesh(jointed[1])) - meshVolume(plateMesh(plates[1]));
+  EXPECT_GT(tenons, 0);
+  EXPECT_NEAR(meshVolume(plateMesh(jointed[0])), mitred - tenons, 1e-6 * mitred);
+  // The board on the mitre itself (where the base thins) gets no joint there.
+  const std::vector<Plate> onTheMitre{base, board(2, {285, 18, 20}, {303, 218, 180})};
+  const std::vector<PlateContact> thin = computePlateContacts(onTheMitre, {});
+  ASSERT_EQ(thin.size(), 1u);
+  EXPECT_FALSE(tenonSiteOf(onTheMitre, thin[0]).has_value());
+}
+
+}  // namespace
+}  // namespace desia
