@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Builds desia. `build.sh native` (CLI, tests, benchmarks in build/native), `build.sh wasm` (the
-# embind module in dist/ and the WebAssembly test suite in build/wasm), `build.sh` (both).
+# embind module in dist/ and the WebAssembly test suite in build/wasm), `build.sh` (both),
+# `build.sh site` (the WebAssembly module, then the playground as a self-contained static site in
+# dist/site/, relative URLs only: scripts/build-site.mjs; README "Publishing the playground").
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$root"
@@ -24,6 +26,7 @@ build_wasm() {
 case "$what" in
   native) build_native ;;
   wasm) build_wasm ;;
+  site) build_wasm; node scripts/build-site.mjs ;;
   all) build_native; build_wasm ;;
-  *) echo "usage: scripts/build.sh [native|wasm|all]" >&2; exit 2 ;;
+  *) echo "usage: scripts/build.sh [native|wasm|site|all]" >&2; exit 2 ;;
 esac

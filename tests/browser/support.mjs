@@ -20,7 +20,7 @@ export const SETTLE_TIMEOUT_MS = 30_000;
 
 // Flags from shared/toolchain.md (no background traffic on a closed network), plus SwiftShader:
 // with --disable-gpu, current Chromium only offers software WebGL when explicitly allowed.
-const CHROMIUM_ARGS = [
+export const CHROMIUM_ARGS = [
   '--headless',
   '--no-sandbox',
   '--disable-gpu',
