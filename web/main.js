@@ -62,6 +62,7 @@ const EXAMPLES = [
   { file: 'flower.json', label: 'Flower, 23 curved beams', frame: true },
   { file: 'scaffold_92.json', label: 'Scaffold, 92 beams', frame: true },
   { file: 'scaffold_300.json', label: 'Scaffold 4×4×4 cells, 300 beams', frame: true },
+  { file: 'scaffold_882.json', label: 'Scaffold 6×6×6 cells, 882 beams', frame: true },
   { file: 'cut_point.json', label: 'Two squares with a cut-point beam', frame: true },
   { file: 'frame_cube_result.json', label: 'Frame cube, designed', frame: true },
   { file: 'frame_chair_result.json', label: 'Frame chair, designed', frame: true },

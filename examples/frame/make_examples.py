@@ -106,6 +106,13 @@ def scaffold_300():
     return doc
 
 
+def scaffold_882():
+    # A 6 x 6 x 6-cell lattice: a long design (seconds), for progress and cancellation.
+    doc = lattice("SCAFFOLD 6 x 6 x 6 cells, 882 beams", (6, 6, 6), 1000)
+    assert len(doc["beams"]) == 882, len(doc["beams"])
+    return doc
+
+
 def flower():
     # After the FLOWER of Fig. 1: 23 curved beams. The topology of a 2 x 1 x 1-cell lattice (20
     # beams) with a stem loop below its middle (3 beams); the upper joints spread out and up like
@@ -160,6 +167,7 @@ def main():
     write("cut_point.json", cut_point())
     write("scaffold_92.json", scaffold())
     write("scaffold_300.json", scaffold_300())
+    write("scaffold_882.json", scaffold_882())
     write("flower.json", flower())
     if "--results" in sys.argv[1:]:
         cli = os.path.join(HERE, "..", "..", "build", "native", "core", "cli", "desia")

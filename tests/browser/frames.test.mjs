@@ -6,7 +6,7 @@
 // for the same seed) and step by step (Next until complete, verified); the disassembly plays each beam along its axis; the result downloads as an
 // STL equal to the CLI's export and as .fpuz and CSV; the cut-point frame shows the core's
 // message; a bad frame file shows the core's error; an OBJ of lines opens as a frame; the
-// 300-beam scaffold shows progress and is cancelled.
+// 300-beam scaffold designs, and the 882-beam one shows progress and is cancelled.
 //
 //   node --test tests/browser/frames.test.mjs
 //
@@ -27,6 +27,7 @@ import {
 const CUBE = 'frame_cube.json';
 const CUT_POINT = 'cut_point.json';
 const SCAFFOLD = 'scaffold_300.json';
+const LARGE_SCAFFOLD = 'scaffold_882.json';
 /** The name the page gives the FRAME CUBE's result with seed 1. */
 const CUBE_RESULT = 'frame_cube_frame_seed1.json';
 const CLI = path.join(REPO_ROOT, 'build/native/core/cli/desia');
@@ -102,7 +103,7 @@ describe('frame structures in the playground (headless Chromium)', { timeout: 18
     })));
     const frames = groups.find((group) => group.label === 'Frame structures');
     assert.ok(frames, `no "Frame structures" group: ${JSON.stringify(groups.map((group) => group.label))}`);
-    assert.deepEqual(frames.files.slice(0, 6), [CUBE, 'frame_chair.json', 'flower.json', 'scaffold_92.json', SCAFFOLD, CUT_POINT]);
+    assert.deepEqual(frames.files.slice(0, 7), [CUBE, 'frame_chair.json', 'flower.json', 'scaffold_92.json', SCAFFOLD, LARGE_SCAFFOLD, CUT_POINT]);
 
     await page.selectOption('#example-select', CUBE);
     const state = await waitForReady(page, CUBE);
@@ -278,19 +279,31 @@ describe('frame structures in the playground (headless Chromium)', { timeout: 18
     assertInterlockingWithKey(await waitForReady(page, 'box_frame_seed1.json'), 1);
   });
 
-  it('shows progress for the 300-beam scaffold and cancels it', async () => {
+  it('designs the 300-beam scaffold', async () => {
     await page.selectOption('#example-select', SCAFFOLD);
     const state = await waitForReady(page, SCAFFOLD);
     assert.equal(state.parts, '300');
+    const outcome = await design(page, { seed: 1 });
+    assert.equal(outcome.outcome, 'success', `design failed: ${outcome.message}`);
+    assert.match(outcome.message, /^designed the joints of 300 beams \(key: beam \d+\) in \d+ nodes$/);
+    const result = await waitForReady(page, 'scaffold_300_frame_seed1.json');
+    assertInterlockingWithKey(result, 1);
+    assert.equal(result.parts, '300');
+  });
+
+  it('shows progress for the 882-beam scaffold and cancels it', async () => {
+    await page.selectOption('#example-select', LARGE_SCAFFOLD);
+    const state = await waitForReady(page, LARGE_SCAFFOLD);
+    assert.equal(state.parts, '882');
     await page.click('#design-button');
     await page.waitForFunction(() => Number(document.querySelector('#design-progress-box').dataset.updates) >= 2, null, { timeout: 20_000 });
     const running = await designState(page);
     assert.equal(running.outcome, 'running');
-    assert.match(running.progressText, /^\d+ of 300 beams placed · \d+ nodes visited/);
+    assert.match(running.progressText, /^\d+ of 882 beams placed · \d+ nodes visited/);
     await page.click('#design-cancel');
     await page.waitForFunction(() => document.body.dataset.design === 'cancelled' && document.body.dataset.core === 'ready');
-    assert.match((await designState(page)).message, /^Cancelled after \d+\.\d s: the deepest node had \d+ of 300 beams/);
-    assert.equal((await pageState(page)).source, SCAFFOLD);
+    assert.match((await designState(page)).message, /^Cancelled after \d+\.\d s: the deepest node had \d+ of 882 beams/);
+    assert.equal((await pageState(page)).source, LARGE_SCAFFOLD);
   });
 
   it('switches back to voxels with the voxel designer\'s candidates', async () => {
