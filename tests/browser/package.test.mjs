@@ -132,7 +132,9 @@ describe('the npm package installed from its tarball, in a page', { timeout: 180
     checkPrerequisites();
     assert.ok(fs.existsSync(CLI), 'the native CLI is missing: run bash scripts/build.sh native');
     tmp = fs.mkdtempSync(path.join(os.tmpdir(), 'desia-browser-package-'));
-    const { site } = buildSite(tmp);
+    const { site, files } = buildSite(tmp);
+    assert.ok(files.includes('dist/desia_wasm.wasm'), 'the packed tarball lacks the WebAssembly module');
+    assert.ok(fs.existsSync(path.join(site, 'node_modules/desia/dist/desia_wasm.wasm')), 'the installed package lacks the WebAssembly module');
     for (const [name, file] of [['k9', K9_FILE], ['cube', CUBE_FILE], ['bunny', BUNNY_FILE]]) texts[name] = fs.readFileSync(file, 'utf8');
     siteServer = await startServer({ port: 0, root: site });
     browser = await openBrowser();

@@ -2,6 +2,7 @@
 // `npm pack` smoke test: the tarball holds what the package needs and nothing big or private,
 // installs into an empty folder with no network (no hard dependencies), and works there when
 // imported by name: a check and a seeded design equal to the native CLI's, and a failing input.
+// In a checkout without the WebAssembly module, npm pack stops (prepack: scripts/prepack.mjs).
 import assert from 'node:assert/strict';
 import { spawnSync } from 'node:child_process';
 import fs from 'node:fs';
@@ -51,6 +52,9 @@ test('the tarball holds the package and nothing else', () => {
   }
   // The WebAssembly binary is by far the biggest file; the whole package stays small.
   const sizes = Object.fromEntries(packed.files.map((file) => [file.path, file.size]));
+  // The module itself, not an empty or stale stand-in: the one dist/ holds.
+  assert.equal(sizes['dist/desia_wasm.wasm'], fs.statSync(path.join(root, 'dist/desia_wasm.wasm')).size, 'the packed .wasm is the built one');
+  assert.ok(sizes['dist/desia_wasm.wasm'] > 100 * 1024, `the packed .wasm has ${sizes['dist/desia_wasm.wasm']} bytes`);
   assert.ok(packed.unpackedSize < 3 * 1024 * 1024, `unpacked size ${packed.unpackedSize}`);
   for (const [file, size] of Object.entries(sizes)) {
     if (file !== 'dist/desia_wasm.wasm') assert.ok(size < 256 * 1024, `${file}: ${size} bytes`);
@@ -60,6 +64,34 @@ test('the tarball holds the package and nothing else', () => {
   assert.equal(manifest.peerDependenciesMeta?.three?.optional, true, 'three is an optional peer (the viewer only)');
   assert.deepEqual(manifest.exports['./viewer'], { types: './web/viewer.d.ts', default: './web/viewer.js' });
   assert.ok(shipped.includes('web/viewer.d.ts'), 'the viewer\'s types are shipped');
+});
+
+test('npm pack in a checkout without the WebAssembly module packs nothing and says how to build it', () => {
+  // A checkout that was never built and cannot build (no scripts/build.sh): prepack must stop npm.
+  const checkout = path.join(tmp, 'unbuilt');
+  for (const file of [...shipped.filter((name) => !name.startsWith('dist/')), 'scripts/prepack.mjs']) {
+    fs.mkdirSync(path.dirname(path.join(checkout, file)), { recursive: true });
+    fs.copyFileSync(path.join(root, file), path.join(checkout, file));
+  }
+  const destination = path.join(tmp, 'unbuilt-packs');
+  fs.mkdirSync(destination);
+  const pack = () => spawnSync('npm', ['pack', '--json', '--pack-destination', destination], {
+    cwd: checkout, encoding: 'utf8', env: { ...process.env, npm_config_cache: path.join(tmp, 'npm-cache'), npm_config_update_notifier: 'false' },
+  });
+  const missing = pack();
+  assert.notEqual(missing.status, 0, 'npm pack succeeded without the module');
+  assert.match(missing.stderr, /dist\/desia_wasm\.wasm \(missing\)/);
+  assert.match(missing.stderr, /bash scripts\/build\.sh wasm/);
+  // A file in its place that is not WebAssembly is no better.
+  fs.mkdirSync(path.join(checkout, 'dist'));
+  fs.writeFileSync(path.join(checkout, 'dist/desia_wasm.js'), '// not built\n');
+  fs.writeFileSync(path.join(checkout, 'dist/desia_wasm.wasm'), 'not a module');
+  const bogus = pack();
+  assert.notEqual(bogus.status, 0, 'npm pack succeeded with a bogus module');
+  assert.match(bogus.stderr, /dist\/desia_wasm\.wasm \(not a WebAssembly binary\)/);
+  assert.deepEqual(fs.readdirSync(destination), [], 'a tarball was written');
+  // In this (built) checkout the same step is silent: npm pack --json above printed only JSON.
+  assert.equal(JSON.parse(fs.readFileSync(path.join(root, 'package.json'), 'utf8')).scripts.prepack, 'node scripts/prepack.mjs');
 });
 
 test("the viewer's declarations match what viewer.js exports and what mountViewer returns", () => {
