@@ -6,7 +6,8 @@
 // sliding dovetails are no 2D cuts: STL or OBJ for the CNC instead), for frames as .fpuz and a
 // CSV cut list. Every byte comes from the core in the worker
 // (toPuz, parseDocument, exportAssembly, cutSheets); the panel only picks the format, part, sheet
-// size and kerf and hands the result to the browser as downloads.
+// size and kerf and hands the result to the browser as downloads, or shows the cut sheets' SVG
+// in the panel (Preview sheets).
 //
 // For tests: #export-panel[data-state] = '' | working | done | error, #export-message (what was
 // saved, or the core's message), #export-part (options: 0 = all parts, else a part id).
@@ -68,8 +69,11 @@ export function createExportPanel({ core }) {
     sheet: byId('export-sheet'),
     kerf: byId('export-kerf'),
     button: byId('export-button'),
+    preview: byId('export-preview'),
+    sheets: byId('sheet-preview'),
     message: byId('export-message'),
   };
+
   /** { name, text, kind, partIds, milled } of the assembly on screen, or null. */
   let assembly = null;
   let busy = false; // The worker designs for the Design panel.
@@ -95,8 +99,9 @@ export function createExportPanel({ core }) {
     const format = FORMATS[ui.format.value];
     ui.part.disabled = !assembly || !format?.perPart;
     ui.part.hidden = Boolean(format?.cut);
-    ui.sheet.hidden = ui.kerf.hidden = !format?.cut;
+    ui.sheet.hidden = ui.kerf.hidden = ui.preview.hidden = !format?.cut;
     ui.button.disabled = !assembly || busy || exporting || !format || ui.format.selectedOptions[0]?.disabled;
+    ui.preview.disabled = ui.button.disabled;
   }
 
   function fillParts(partIds, key) {
@@ -145,11 +150,69 @@ export function createExportPanel({ core }) {
     }
   }
 
-  /** The cut sheets of a plate structure, one download per sheet. */
-  async function exportCutSheets(formatName, format, name, text) {
+  /** The cut-sheet options of the panel's fields. */
+  function cutOptions(formatName, name) {
     const options = { format: formatName, source: name };
     if (ui.sheet.value.trim()) options.sheet = ui.sheet.value.trim();
     if (ui.kerf.value !== '') options.kerf = Number(ui.kerf.value);
+    return options;
+  }
+
+  function clearPreview() {
+    ui.sheets.replaceChildren();
+    ui.sheets.hidden = true;
+    delete ui.sheets.dataset.sheets;
+  }
+
+  /**
+   * The cut sheets drawn in the panel, one image per sheet with its size in mm: the same SVG text
+   * the download saves (the core writes it; the page only shows it).
+   */
+  async function previewCutSheets() {
+    if (!assembly || exporting) return;
+    const { name, text } = assembly;
+    exporting = true;
+    setMessage('working', 'Laying out the cut sheets…');
+    refresh();
+    try {
+      const { value: sheets } = await core.run('cut-sheets', text, cutOptions('svg', name));
+      clearPreview();
+      const figures = sheets.map((svg, k) => {
+        // Drawn inline so that the page's stylesheet can keep the cuts one pixel wide at any zoom
+        // (the file's own 0.1 mm strokes vanish at this scale); its <style> is dropped, the page's
+        // CSP allows none, and the colours are in the paths' attributes too.
+        const parsed = new DOMParser().parseFromString(svg, 'image/svg+xml').documentElement;
+        if (parsed.nodeName !== 'svg') throw new Error('the core returned a cut sheet that is not SVG');
+        for (const style of parsed.querySelectorAll('style, script')) style.remove();
+        const drawing = document.importNode(parsed, true);
+        drawing.removeAttribute('width');
+        drawing.removeAttribute('height');
+        drawing.setAttribute('role', 'img');
+        drawing.setAttribute('aria-label', `Cut sheet ${k + 1} of ${sheets.length}`);
+        const size = /<svg[^>]*\bwidth="([0-9.]+)mm"[^>]*\bheight="([0-9.]+)mm"/.exec(svg);
+        const figure = element('figure');
+        figure.dataset.bytes = String(new TextEncoder().encode(svg).length);
+        figure.append(drawing, element('figcaption',
+          `Sheet ${k + 1} of ${sheets.length}${size ? ` · ${size[1]} × ${size[2]} mm` : ''}`
+          + ' · red: outer cuts, blue: inner cuts, black: engraving'));
+        return figure;
+      });
+      ui.sheets.append(...figures);
+      ui.sheets.dataset.sheets = String(sheets.length);
+      ui.sheets.hidden = false;
+      setMessage('done', `${sheets.length} ${sheets.length === 1 ? 'sheet' : 'sheets'} shown below.`);
+    } catch (error) {
+      clearPreview();
+      setMessage('error', error.cancelled ? 'Preview cancelled.' : error.message);
+    } finally {
+      exporting = false;
+      refresh();
+    }
+  }
+
+  /** The cut sheets of a plate structure, one download per sheet. */
+  async function exportCutSheets(formatName, format, name, text) {
+    const options = cutOptions(formatName, name);
     const { value: sheets } = await core.run('cut-sheets', text, options);
     const names = sheets.map((_, k) => exportFileName(name, formatName, 0, sheets.length > 1 ? k + 1 : 0));
     sheets.forEach((sheet, k) => saveBlob(names[k], new Blob([sheet], { type: format.type })));
@@ -160,6 +223,7 @@ export function createExportPanel({ core }) {
 
   ui.format.addEventListener('change', refresh);
   ui.button.addEventListener('click', exportCurrent);
+  ui.preview.addEventListener('click', previewCutSheets);
   fillParts([]);
   refresh();
 
@@ -176,6 +240,7 @@ export function createExportPanel({ core }) {
         milled: report?.kind === 'plate' && document_?.jointGeometry === 'milled',
       } : null;
       fillParts(assembly?.partIds ?? [], report?.key ?? null);
+      clearPreview();  // the sheets of the assembly that was on screen
       if (ui.panel.dataset.state !== 'working') setMessage('', '');
       refresh();
     },

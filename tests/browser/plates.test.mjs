@@ -273,11 +273,31 @@ describe('plate structures in the playground (headless Chromium)', { timeout: 12
     const cli = spawnSync(CLI, ['export', file, '--format', 'svg', '--kerf', '0.1', '--output', cliSvg], { encoding: 'utf8' });
     assert.equal(cli.status, 0, cli.stderr);
     assert.equal(svg, await readFile(cliSvg, 'utf8'));
+    // Preview sheets: the same sheet drawn in the panel, with its size in mm.
+    await page.click('#export-preview');
+    await page.waitForFunction(() => document.querySelector('#sheet-preview').dataset.sheets === '1');
+    const preview = await page.evaluate(() => {
+      const figure = document.querySelector('#sheet-preview figure');
+      const drawing = figure.querySelector('svg');
+      return {
+        bytes: Number(figure.dataset.bytes), width: drawing.getBoundingClientRect().width,
+        plates: drawing.querySelectorAll('g[id^="plate-"]').length, caption: figure.querySelector('figcaption').textContent,
+      };
+    });
+    assert.equal(preview.bytes, Buffer.byteLength(svg), 'the previewed sheet is the saved one');
+    assert.equal(preview.plates, 6);
+    assert.ok(preview.width > 100, 'the sheet is drawn across the panel');
+    assert.match(preview.caption, /^Sheet 1 of 1 · [0-9.]+ × [0-9.]+ mm · red: outer cuts/);
+    await page.locator('#sheet-preview').scrollIntoViewIfNeeded();
+    await screenshot(page, 'plates-table-sheet-preview');
     // A sheet too small is the core's message, named.
     await page.fill('#export-sheet', '600x400');
     await page.click('#export-button');
     await page.waitForFunction(() => document.querySelector('#export-panel').dataset.state === 'error');
     assert.match(await page.textContent('#export-message'), /plate 1 \(1050\.1 x 650\.1 mm\) does not fit on a 600 x 400 mm sheet/, 'its size with the kerf');
+    await page.click('#export-preview');
+    await page.waitForFunction(() => document.querySelector('#export-panel').dataset.state === 'error');
+    assert.equal(await page.locator('#sheet-preview').isHidden(), true, 'no stale sheets beside the error');
     await page.fill('#export-sheet', '');
   });
 
