@@ -2,7 +2,6 @@
 // Geometry shared by the voxel designer's steps (paper Section 4.3, "geometry realization").
 #include <algorithm>
 #include <cmath>
-#include <deque>
 #include <limits>
 
 #include "voxel/design_internals.h"
@@ -147,16 +146,28 @@ bool PartBuilder::addToPart(int64_t voxel) {
 }
 
 bool PartBuilder::forcePart(int64_t voxel) {
+  const size_t first = part_.size();
   if (!addToPart(voxel)) return false;
   forcedPart_.push_back(voxel);
-  return true;
+  // Propagation (see the header): the runs in front of the new part voxels join the part now.
+  return !propagate_ || clearPathFrom(first, removal_);
 }
 
 bool PartBuilder::forceRemainder(int64_t voxel) {
+  const Int3 back{-removal_.x, -removal_.y, -removal_.z};
   auto forceOne = [&](int64_t v) {
     if (state_[v] == kForcedRemainder) return true;
     if (state_[v] != kFree) return false;
     setState(v, kForcedRemainder);
+    if (!propagate_) return true;
+    // Propagation (see the header): a part voxel behind v in its remainder run would have v in
+    // its way out, so the run behind v stays in the remainder. A forced voxel already had its
+    // own run settled, so the walk stops there.
+    for (int64_t w = neighbourIndex(grid_, v, back); w >= 0 && state_[w] != kOther; w = neighbourIndex(grid_, w, back)) {
+      if (state_[w] == kPart) return false;
+      if (state_[w] == kForcedRemainder) break;
+      setState(w, kForcedRemainder);
+    }
     return true;
   };
   const int group = context_.groupOf.empty() ? -1 : context_.groupOf[voxel];
@@ -190,28 +201,28 @@ bool PartBuilder::connect() {
   // Breadth-first from the whole component: the first time the target is reached, the path back
   // is a shortest connection through voxels the part may take.
   auto reach = [&](int64_t target) {
-    std::vector<int64_t> touched(component.begin(), component.end());
-    std::deque<int64_t> queue(component.begin(), component.end());
+    // The queue is a vector read from `head` on; it also lists every voxel whose cameFrom_ entry
+    // was set, for the clean-up.
+    std::vector<int64_t> queue(component.begin(), component.end());
+    size_t head = 0;
     for (int64_t v : component) cameFrom_[v] = -1;
     bool reached = false;
-    while (!queue.empty() && !reached) {
-      const int64_t v = queue.front();
-      queue.pop_front();
+    while (head < queue.size() && !reached) {
+      const int64_t v = queue[head++];
       for (const Int3& step : kAxisSteps) {
         const int64_t w = neighbourIndex(grid_, v, step);
         if (w < 0 || cameFrom_[w] != -2 || (state_[w] != kFree && state_[w] != kPart)) continue;
         cameFrom_[w] = v;
-        touched.push_back(w);
+        queue.push_back(w);
         if (w == target) {
           reached = true;
           break;
         }
-        queue.push_back(w);
       }
     }
     bool added = reached;
     for (int64_t v = target; reached && cameFrom_[v] >= 0; v = cameFrom_[v]) added = added && addToPart(v);
-    for (int64_t v : touched) cameFrom_[v] = -2;
+    for (int64_t v : queue) cameFrom_[v] = -2;
     return added;
   };
   bool ok = true;
@@ -228,6 +239,44 @@ bool PartBuilder::connect() {
   return ok;
 }
 
+bool PartBuilder::forcedPartConnectable() {
+  if (forcedPart_.empty()) return false;
+  // Distinct forced voxels still to reach (a voxel can be forced twice).
+  int64_t toReach = 0;
+  for (int64_t v : forcedPart_) {
+    if (!connected_[v]) {
+      connected_[v] = true;
+      ++toReach;
+    }
+  }
+  for (int64_t v : forcedPart_) connected_[v] = false;
+  // Breadth-first over part and free voxels from the first forced voxel; cameFrom_ marks the
+  // visited ones (-3) and `queue` lists them for the clean-up.
+  std::vector<int64_t> queue{forcedPart_[0]};
+  cameFrom_[forcedPart_[0]] = -3;
+  std::vector<int64_t> forced;  // forced voxels reached, to count each once
+  auto reachedForced = [&](int64_t v) {
+    if (!connected_[v] && std::find(forcedPart_.begin(), forcedPart_.end(), v) != forcedPart_.end()) {
+      connected_[v] = true;
+      forced.push_back(v);
+    }
+  };
+  reachedForced(forcedPart_[0]);
+  for (size_t head = 0; head < queue.size() && static_cast<int64_t>(forced.size()) < toReach; ++head) {
+    for (const Int3& step : kAxisSteps) {
+      const int64_t w = neighbourIndex(grid_, queue[head], step);
+      if (w < 0 || cameFrom_[w] != -2 || (state_[w] != kFree && state_[w] != kPart)) continue;
+      cameFrom_[w] = -3;
+      queue.push_back(w);
+      reachedForced(w);
+    }
+  }
+  const bool ok = static_cast<int64_t>(forced.size()) == toReach;
+  for (int64_t v : queue) cameFrom_[v] = -2;
+  for (int64_t v : forced) connected_[v] = false;
+  return ok;
+}
+
 std::vector<int64_t> PartBuilder::columnFrom(int64_t voxel, const Int3& direction) const {
   std::vector<int64_t> column;
   for (int64_t v = neighbourIndex(grid_, voxel, direction); v >= 0 && (state_[v] == kFree || state_[v] == kForcedRemainder);
@@ -237,9 +286,11 @@ std::vector<int64_t> PartBuilder::columnFrom(int64_t voxel, const Int3& directio
   return column;
 }
 
-bool PartBuilder::clearPathAlong(const Int3& direction) {
+bool PartBuilder::clearPathAlong(const Int3& direction) { return clearPathFrom(0, direction); }
+
+bool PartBuilder::clearPathFrom(size_t first, const Int3& direction) {
   // Groups can add voxels whose own columns need clearing: repeat until nothing changes.
-  for (size_t done = 0; done < part_.size();) {
+  for (size_t done = first; done < part_.size();) {
     const size_t end = part_.size();
     for (size_t k = done; k < end; ++k) {
       for (int64_t v : columnFrom(part_[k], direction)) {

@@ -19,10 +19,14 @@ inline Int3 minus(const Int3& a, const Int3& b) { return {a.x - b.x, a.y - b.y, 
 inline int manhattan(const Int3& a, const Int3& b) { return std::abs(a.x - b.x) + std::abs(a.y - b.y) + std::abs(a.z - b.z); }
 inline Int3 axisStep(int axis) { return kAxisSteps[2 * axis]; }  // +x, +y, +z
 
-// The voxel at `index + step`, or -1 outside the grid.
+// The voxel at `index + step`, or -1 outside the grid. Inline arithmetic (not
+// VoxelGrid::coordinates, out of line): this is the designer's innermost call, in every
+// path search, column walk and frontier of part generation.
 inline int64_t neighbourIndex(const VoxelGrid& grid, int64_t index, const Int3& step) {
-  const Int3 c = plus(grid.coordinates(index), step);
-  return grid.inside(c.x, c.y, c.z) ? grid.index(c.x, c.y, c.z) : -1;
+  const int64_t nx = grid.nx(), ny = grid.ny();
+  const int64_t x = index % nx + step.x, y = (index / nx) % ny + step.y, z = index / (nx * ny) + step.z;
+  if (x < 0 || y < 0 || z < 0 || x >= nx || y >= ny || z >= grid.nz()) return -1;
+  return x + nx * (y + ny * z);
 }
 
 // A candidate child of a construction-tree node: the voxels that leave R_i to form the new part.
@@ -65,10 +69,26 @@ class PartBuilder {
 
   // Forces a voxel (and its appearance group) into the part / into the remainder. False on a
   // conflict (the voxel is outside the remainder, or already forced the other way).
+  // With a removal direction set (propagateAlong), each force also settles what it implies: the
+  // part must leave along it with nothing of the remainder right in front (Section 4.3 iv), so
+  // forcing a part voxel takes the remainder run in front of it into the part, and forcing a
+  // remainder voxel keeps the remainder run behind it in the remainder. A conflict then shows at
+  // the force that causes it (false), not later when the path is cleared.
   bool forcePart(int64_t voxel);
   bool forceRemainder(int64_t voxel);
+  // Sets the removal direction whose consequences forcePart / forceRemainder propagate (see
+  // above); in effect until reset() or the next call. Not journaled: set it right after reset().
+  void propagateAlong(const Int3& direction) {
+    propagate_ = true;
+    removal_ = direction;
+  }
   // Connects all forced part voxels by shortest paths through unforced remainder voxels.
   bool connect();
+  // Look-ahead for connect(): can the forced part voxels still be joined, i.e. do they lie in one
+  // face-connected piece of the voxels that may still go to the part? connect() succeeds exactly
+  // then (its paths only turn such voxels into part voxels), so a design that fails here is dead
+  // and the next one can be tried at once. Stops as soon as all are reached.
+  bool forcedPartConnectable();
   // Absorbs, from every part voxel, the remainder voxels along `direction` up to the first voxel
   // that is not in the remainder, so no remainder voxel sits right in front of the part. False
   // when that would take a voxel forced into the remainder.
@@ -90,7 +110,10 @@ class PartBuilder {
   Snapshot snapshot() const { return {journal_.size(), part_.size(), forcedPart_.size()}; }
   void restore(const Snapshot& snapshot);
   // Back to the state right after construction (for the next attempt at the same node).
-  void reset() { restore(Snapshot{}); }
+  void reset() {
+    restore(Snapshot{});
+    propagate_ = false;
+  }
 
   const std::vector<int64_t>& partVoxels() const { return part_; }
   std::vector<int64_t> sortedPartVoxels() const;
@@ -104,6 +127,9 @@ class PartBuilder {
     state_[voxel] = state;
   }
   std::vector<int64_t> columnFrom(int64_t voxel, const Int3& direction) const;
+  // Absorbs the remainder runs in front of part_[first..] along `direction` (and of what that
+  // adds); false when one holds a forced-remainder voxel.
+  bool clearPathFrom(size_t first, const Int3& direction);
 
   const VoxelGrid& grid_;
   const DesignContext& context_;
@@ -112,6 +138,8 @@ class PartBuilder {
   std::vector<int64_t> part_;
   std::vector<int64_t> forcedPart_;
   std::vector<std::pair<int64_t, uint8_t>> journal_;  // (voxel, previous state), in order
+  bool propagate_ = false;
+  Int3 removal_{0, 0, 0};
   // Scratch buffers of connect(), grid-sized once; entries used are cleared after each use.
   std::vector<int64_t> cameFrom_;
   std::vector<bool> connected_;

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <random>
 #include <set>
+#include <type_traits>
 
 #include "desia/blocking_graph.h"
 #include "voxel/candidate_checks.h"
@@ -87,10 +88,22 @@ void forEachAtDistance(const VoxelGrid& grid, const Int3& center, int r, Visit v
   }
 }
 
+template <typename T>
+int64_t entryVoxel(const T& entry) {
+  if constexpr (std::is_same_v<T, ExternalContact>) {
+    return entry.voxel;
+  } else {
+    return entry;
+  }
+}
+
 // One of the `spread` entries of `list` nearest to `seed` among those `usable` accepts, chosen at
 // random (ties by voxel index); null if there is none. Searches shells of growing Manhattan
 // distance around the seed, so the cost follows the neighbourhood, not the list (a 35^3 cube has
-// lists of tens of thousands of voxels).
+// lists of tens of thousands of voxels). Once the shells have visited more voxels than the list
+// holds (few or no usable entries near the seed: a small remainder late in the search, or a pick
+// that no entry satisfies), the list itself is scanned instead: the three nearest are the same
+// either way, so both give the same pick, but a failed pick then costs the list, not the grid.
 template <typename T, typename Usable>
 const T* nearestPick(const std::vector<T>& list, const std::vector<int32_t>& indexOf, const VoxelGrid& grid,
                      const Int3& seed, Usable usable, std::mt19937_64& random) {
@@ -98,15 +111,31 @@ const T* nearestPick(const std::vector<T>& list, const std::vector<int32_t>& ind
   if (list.empty()) return nullptr;
   std::vector<std::pair<int, int64_t>> found;  // (distance, voxel)
   const int maxRadius = grid.nx() + grid.ny() + grid.nz();
+  size_t visited = 0;
+  bool scanList = false;
   for (int r = 0; r <= maxRadius && found.size() < kSpread; ++r) {
+    if (visited > list.size()) {
+      scanList = true;
+      break;
+    }
     forEachAtDistance(grid, seed, r, [&](int64_t v) {
+      ++visited;
       const int32_t k = indexOf[v];
       if (k >= 0 && usable(list[k])) found.push_back({r, v});
     });
   }
+  if (scanList) {
+    found.clear();
+    for (const T& entry : list) {
+      if (usable(entry)) {
+        const int64_t v = entryVoxel(entry);
+        found.push_back({manhattan(grid.coordinates(v), seed), v});
+      }
+    }
+  }
   if (found.empty()) return nullptr;
-  std::sort(found.begin(), found.end());
   const size_t keep = std::min(kSpread, found.size());
+  std::partial_sort(found.begin(), found.begin() + static_cast<std::ptrdiff_t>(keep), found.end());
   return &list[indexOf[found[random() % keep].second]];
 }
 
@@ -256,6 +285,10 @@ std::vector<Candidate> generatePartCandidates(const VoxelGrid& grid, int remaind
     const Int3 seed = grid.coordinates(seedVoxel);
     const Int3 removal = removalDirectionFor(grid, remainder, seedVoxel, context.random);
     builder.reset();
+    // Every force settles what P_i's removal along `removal` implies (PartBuilder::propagateAlong):
+    // picks then skip voxels the removal already decided, instead of failing when the path is
+    // cleared after the whole design was built.
+    builder.propagateAlong(removal);
     bool ok = builder.forcePart(seedVoxel);
     bool someAxisFreeOfPairs = false;
     for (int axis = 0; axis < 3 && ok; ++axis) {
@@ -266,7 +299,11 @@ std::vector<Candidate> generatePartCandidates(const VoxelGrid& grid, int remaind
       ok = false;
       for (AxisDesign design : allowed) {
         const PartBuilder::Snapshot before = builder.snapshot();
-        if (realizeAxis(design, axis, axes[axis], grid, seed, context.random, builder)) {
+        // Look-ahead: a design whose forced voxels can no longer be joined into one part is
+        // dead (PartBuilder::forcedPartConnectable); try the next one instead of the attempt
+        // failing in connect() after all three axes.
+        if (realizeAxis(design, axis, axes[axis], grid, seed, context.random, builder) &&
+            builder.forcedPartConnectable()) {
           someAxisFreeOfPairs = someAxisFreeOfPairs || design != AxisDesign::TwoInternal;
           ok = true;
           break;

@@ -93,6 +93,67 @@ TEST_F(PartBuilderTest, ClearingAPathAbsorbsTheColumnInFront) {
   EXPECT_FALSE(blocked.clearPathAlong({0, 1, 0}));
 }
 
+// Look-ahead in P_i's realization (Section 4.3 iv): with the removal direction known, a force
+// settles at once what the removal implies, so the dead design is refused at the force that
+// kills it instead of after connection, when the path is cleared.
+TEST_F(PartBuilderTest, ForcingARemainderVoxelKeepsTheRunBehindItInTheRemainder) {
+  const Int3 up{0, 1, 0};
+  // Without propagation the dead branch is only seen at clearPathAlong: (1,0) in the part has
+  // the forced remainder voxel (1,2) in its way out.
+  design::PartBuilder late(grid_, 1, context_, access_);
+  ASSERT_TRUE(late.forceRemainder(grid_.index(1, 2, 0)));
+  ASSERT_TRUE(late.forcePart(grid_.index(1, 0, 0)));
+  ASSERT_TRUE(late.connect());
+  EXPECT_FALSE(late.clearPathAlong(up));
+  // With it the run behind (1,2) is kept in the remainder: (1,0) and (1,1) cannot join the part.
+  design::PartBuilder early(grid_, 1, context_, access_);
+  early.propagateAlong(up);
+  ASSERT_TRUE(early.forceRemainder(grid_.index(1, 2, 0)));
+  EXPECT_FALSE(early.canBePart(grid_.index(1, 1, 0)));
+  EXPECT_FALSE(early.canBePart(grid_.index(1, 0, 0)));
+  EXPECT_FALSE(early.forcePart(grid_.index(1, 0, 0)));
+  EXPECT_TRUE(early.canBePart(grid_.index(0, 0, 0)));
+  // reset() ends the propagation and undoes its forces.
+  early.reset();
+  EXPECT_TRUE(early.forcePart(grid_.index(1, 0, 0)));
+  EXPECT_EQ(early.size(), 1);
+}
+
+TEST_F(PartBuilderTest, ForcingAPartVoxelTakesTheRunInFrontOfIt) {
+  design::PartBuilder builder(grid_, 1, context_, access_);
+  builder.propagateAlong({0, 1, 0});
+  ASSERT_TRUE(builder.forcePart(grid_.index(2, 0, 0)));
+  EXPECT_EQ(builder.sortedPartVoxels(), (std::vector<int64_t>{grid_.index(2, 0, 0), grid_.index(2, 1, 0), grid_.index(2, 2, 0)}));
+  // The voxels in front can no longer be chosen for the remainder (a pick skips them).
+  EXPECT_FALSE(builder.canBeRemainder(grid_.index(2, 2, 0)));
+  EXPECT_FALSE(builder.forceRemainder(grid_.index(2, 2, 0)));
+  // A part voxel under a forced remainder voxel is refused at the force.
+  design::PartBuilder blocked(grid_, 1, context_, access_);
+  blocked.propagateAlong({0, 1, 0});
+  ASSERT_TRUE(blocked.forceRemainder(grid_.index(3, 1, 0)));
+  EXPECT_FALSE(blocked.forcePart(grid_.index(3, 0, 0)));
+}
+
+// Look-ahead for connect(): forced part voxels walled off from each other by forced remainder
+// voxels can never form one part; the design is dropped before the other axes are realized.
+TEST_F(PartBuilderTest, ForcedVoxelsWalledOffFromEachOtherAreSeenAtOnce) {
+  design::PartBuilder builder(grid_, 1, context_, access_);
+  ASSERT_TRUE(builder.forcePart(grid_.index(0, 0, 0)));
+  ASSERT_TRUE(builder.forcePart(grid_.index(3, 2, 0)));
+  EXPECT_TRUE(builder.forcedPartConnectable());
+  // A wall across x = 2 (every row) separates them.
+  const design::PartBuilder::Snapshot before = builder.snapshot();
+  for (int y = 0; y < 3; ++y) ASSERT_TRUE(builder.forceRemainder(grid_.index(2, y, 0)));
+  EXPECT_FALSE(builder.forcedPartConnectable());
+  EXPECT_FALSE(builder.connect());  // the look-ahead agrees with connect()
+  // A wall with a gap does not.
+  builder.restore(before);
+  ASSERT_TRUE(builder.forceRemainder(grid_.index(2, 0, 0)));
+  ASSERT_TRUE(builder.forceRemainder(grid_.index(2, 1, 0)));
+  EXPECT_TRUE(builder.forcedPartConnectable());
+  EXPECT_TRUE(builder.connect());
+}
+
 TEST(KeyGeneration, EveryCandidateMovesOnlyUpAndLeavesOnePiece) {
   const VoxelGrid cube = shape("Cube_4x4x4_origin.puz");
   const VoxelDesignOptions options = optionsFor(7, 3);
@@ -167,6 +228,18 @@ TEST(VoxelDesign, SameSeedSameResultOtherSeedOtherResult) {
   const VoxelDesignResult other = designVoxelPuzzle(cube, optionsFor(7, 12));
   ASSERT_EQ(other.status, DesignStatus::Success);
   EXPECT_NE(first.puzzle.labels(), other.puzzle.labels());
+}
+
+// Restarts (Luby budgets in nodes): the hollow cube's first tree for seed 1 spends its budget,
+// and the search goes on in a tree of a derived seed. The result is verified and reproducible.
+TEST(VoxelDesign, RestartsGiveVerifiedReproduciblePuzzles) {
+  const VoxelGrid hollow = shape("Cube_hollow_4x4x4_origin.puz");
+  const VoxelDesignResult first = designVoxelPuzzle(hollow, optionsFor(7, 1));
+  ExpectVerifiedPuzzle(hollow, first, 7);
+  EXPECT_NE(first.message.find(", 1 restarts)"), std::string::npos) << first.message;
+  const VoxelDesignResult again = designVoxelPuzzle(hollow, optionsFor(7, 1));
+  EXPECT_EQ(first.puzzle.labels(), again.puzzle.labels());
+  EXPECT_EQ(first.progress.nodesVisited, again.progress.nodesVisited);
 }
 
 TEST(VoxelDesign, RecursiveModeGivesVerifiedPuzzles) {
