@@ -170,6 +170,14 @@ class ConstructionTree {
     return true;
   }
 
+  // Back to the root with a new seed for it: a new tree (restarts, see Search).
+  void restart(uint64_t rootSeed) {
+    while (ascend()) {
+    }
+    levels_[0] = Level{};
+    levels_[0].seed = rootSeed;
+  }
+
   // Back to the parent (its remaining children stay available); false at the root.
   bool ascend() {
     if (levels_.size() == 1) return false;
@@ -211,6 +219,35 @@ class ConstructionTree {
   std::vector<Level> levels_;
 };
 
+// The root seed of restart `attempt` for the user's seed: attempt 0 is the seed itself (the tree
+// searched before restarts existed); later attempts mix the attempt in (SplitMix64), so their
+// trees differ from every other seed's first tree.
+uint64_t attemptSeed(uint64_t seed, int64_t attempt) {
+  if (attempt == 0) return seed;
+  uint64_t z = seed + 0x9E3779B97F4A7C15ull * static_cast<uint64_t>(attempt + 1) + 0x5851F42D4C957F2Dull;
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  return z ^ (z >> 31);
+}
+
+// The Luby sequence 1, 1, 2, 1, 1, 2, 4, 1, ... at 0-based index `index` (Luby, Sinclair and
+// Zuckerman 1993: within a constant factor of the best fixed restart budget for any runtime
+// distribution; the frame designer restarts the same way).
+int64_t lubyTerm(int64_t index) {
+  int64_t size = 1;
+  int seq = 0;
+  while (size < index + 1) {
+    ++seq;
+    size = 2 * size + 1;
+  }
+  while (size - 1 != index) {
+    size = (size - 1) >> 1;
+    --seq;
+    index %= size;
+  }
+  return int64_t(1) << seq;
+}
+
 class Search {
  public:
   Search(VoxelGrid grid, const VoxelDesignOptions& options, DesignContext& context)
@@ -218,10 +255,23 @@ class Search {
 
   VoxelDesignResult run() {
     VoxelDesignResult result;
+    int64_t attempt = 0, attemptStart = 0;
     while (true) {
       if (const auto stop = stopReason()) return finish(*stop, result);
+      if (progress_.nodesVisited - attemptStart >= attemptBudget(attempt)) {
+        // Restarts: the depth-first search is heavy tailed (a poor choice high in the tree is
+        // paid for with thousands of dead ends near the last parts, which chronological
+        // backtracking explores before it gets back up there), so a tree that spends its node
+        // budget is abandoned for a new one from another seed derived from the user's.
+        tree_.restart(attemptSeed(options_.seed, ++attempt));
+        attemptStart = progress_.nodesVisited;
+        ++restarts_;
+        continue;
+      }
       if (!tree_.descendToNextUntriedChild()) {
         // Algorithm 1 lines 18-29: siblings first, then the nearest ancestor's next sibling.
+        // A tree searched to the end within its budget: no puzzle in it. (Luby budgets grow
+        // without bound, so some tree is always searched to the end: the search terminates.)
         if (!tree_.ascend()) return finish(DesignStatus::NotFound, result);
         ++backtracks_;
         continue;
@@ -242,6 +292,14 @@ class Search {
  private:
   double elapsed() const {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  }
+
+  // Nodes restart `attempt` may visit: the path to a complete puzzle (N - 1 nodes) plus room to
+  // backtrack that grows with N, times the Luby term. Counted in nodes, never time, so the same
+  // seed gives the same puzzle on every machine and in WebAssembly.
+  int64_t attemptBudget(int64_t attempt) const {
+    const int64_t n = options_.parts;
+    return (n - 1) + kRestartUnitPerPart * n * lubyTerm(attempt);
   }
 
   std::optional<DesignStatus> stopReason() const {
@@ -268,11 +326,13 @@ class Search {
     std::ostringstream message;
     const std::string reached = "the deepest node had " + std::to_string(progress_.bestDepth + 1) + " of " +
                                 std::to_string(options_.parts) + " parts (" + std::to_string(progress_.nodesVisited) +
-                                " nodes visited, " + std::to_string(backtracks_) + " backtracks)";
+                                " nodes visited, " + std::to_string(backtracks_) + " backtracks, " +
+                                std::to_string(restarts_) + " restarts)";
     switch (status) {
       case DesignStatus::Success:
         message << "designed and verified a " << options_.parts << "-part interlocking puzzle (" << progress_.nodesVisited
-                << " nodes visited, " << backtracks_ << " backtracks)";
+                << " nodes visited, " << backtracks_ << " backtracks, " << restarts_
+                << " restarts)";
         break;
       case DesignStatus::NotFound:
         message << "no " << options_.parts << "-part interlocking puzzle exists in the explored space (m = "
@@ -291,10 +351,13 @@ class Search {
     return result;
   }
 
+  static constexpr int64_t kRestartUnitPerPart = 8;
+
   ConstructionTree tree_;
   const VoxelDesignOptions& options_;
   std::chrono::steady_clock::time_point start_;
   int64_t backtracks_ = 0;
+  int64_t restarts_ = 0;
   int64_t verificationFailures_ = 0;
   DesignProgress progress_;
 };
