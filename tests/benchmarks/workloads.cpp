@@ -189,7 +189,7 @@ const std::vector<WorkloadSpec>& workloadSpecs() {
       {Workload::CubeDbgFullWork, "cube35-1500 dbg (full work)", kPaperCubeDbgMs,
        "assemblyFromVoxels + buildBaseBlockingGraphs + Tarjan (and component degrees) on every base DBG", false},
       {Workload::CubeLpFullWork, "cube35-1500 lp (full work)", kPaperCubeLpMs,
-       "assemblyFromVoxels + one LP per part + one LP with two parts fixed", true},
+       "assemblyFromVoxels + one LP per part + one LP with two parts fixed", false},
       {Workload::CubeDbgCheck, "cube35-1500 dbg (check)", kNoPaperFigure,
        "testInterlockingByGraphs as it runs on the cube (exits at the first failing DBG)", false},
       {Workload::CubeContacts, "cube35-1500 contacts only", kNoPaperFigure,
