@@ -47,11 +47,11 @@ const EXAMPLES = [
   { file: 'bench_2_bays.json', label: 'Table of 2 bays, 10 plates', plate: true },
   { file: 'long_table_102.json', label: 'Long table, 102 plates', plate: true },
   { file: 'chair_cut_point.json', label: 'Chair with a cut point, 8 plates', plate: true },
-  // Mitred, non-orthogonal or flush boards: designed with Joints "planned only".
+  // Boards whose joints need milling (Joints "milled") or that only the paper's plan joins ("planned only").
   { file: 'chair_repaired.json', label: 'Chair repaired, 10 plates (planned)', plate: true, joints: 'planned' },
   { file: 'cabinet.json', label: 'Cabinet under a gable roof, 7 plates (planned)', plate: true, joints: 'planned' },
-  { file: 'mitred_box.json', label: 'Mitred box, 6 plates (planned)', plate: true, joints: 'planned' },
-  { file: 'dodecahedron.json', label: 'Dodecahedron, 12 mitred plates (planned)', plate: true, joints: 'planned' },
+  { file: 'mitred_box.json', label: 'Mitred box, 6 plates (milled mitre tenons)', plate: true, joints: 'milled' },
+  { file: 'dodecahedron.json', label: 'Dodecahedron, 12 mitred plates (milled mitre tenons)', plate: true, joints: 'milled' },
   { file: 'lizard.json', label: 'Lizard, 38 mitred plates (planned)', plate: true, joints: 'planned' },
   // Flush boards that no mortise-and-tenon lets out: sliding dovetails, milled on a CNC.
   { file: 'bookshelf.json', label: 'Bookshelf, 12 plates (milled dovetails)', plate: true, joints: 'milled' },

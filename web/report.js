@@ -138,7 +138,10 @@ function renderCutPoints(cutPoints) {
       + `interlocking; add a part that bypasses ${plates.length === 1 ? 'it' : 'them'}.`;
 }
 
-const JOINT_TYPES = { halved: 'halved', 'mortise-tenon': 'mortise and tenon', dovetail: 'sliding dovetail', empty: 'no joint (empty)' };
+const JOINT_TYPES = {
+  halved: 'halved', 'mortise-tenon': 'mortise and tenon', dovetail: 'sliding dovetail', 'mitre-tenon': 'tenon across the mitre',
+  empty: 'no joint (empty)',
+};
 
 /**
  * The joints of a plate plan (document.joints: [{ mover, other, type, direction }]): which two

@@ -50,6 +50,7 @@ struct PlateGraph {
   std::vector<Vec3> thicknessAxis;
   std::vector<std::optional<TenonSite>> tenonSites;  // per contact
   std::vector<std::optional<DovetailSite>> dovetailSites;  // per contact (milled joints only)
+  std::vector<Plate> plates;  // the plates as given (mitre tenons are fitted per direction)
 };
 
 // Joints made in the plates (cut or milled), not the planned model alone.
@@ -84,6 +85,7 @@ PlateGraph buildPlateGraph(const std::vector<Plate>& plates, const std::vector<P
     }
   }
   for (const Plate& plate : plates) graph.thicknessAxis.push_back(plateThicknessAxis(plate));
+  graph.plates = plates;
   for (const PlateContact& contact : contacts) {
     graph.tenonSites.push_back(tenonSiteOf(plates, contact, jointOptions));
     graph.dovetailSites.push_back(realization == JointRealization::Milled ? dovetailSiteOf(plates, contact)
@@ -180,6 +182,20 @@ std::optional<PlateJoint> jointFor(const PlateGraph& graph, int mover, int other
     }
   }
   if (joint.type != JointType::Empty) return joint;
+  if (realization == JointRealization::Milled) {
+    // Plates meeting edge to edge at an angle: a tenon across the mitre, straight out along d.
+    for (int c : graph.contactsOf[mover]) {
+      const PlateContact& contact = graph.contacts[c];
+      if (contact.a != other && contact.b != other) continue;
+      if (mitreTenonOf(graph.plates, contact, mover, negated(d))) {
+        if (joint.contact < 0 || contact.area > graph.contacts[joint.contact].area) {
+          joint.type = JointType::MitreTenon;
+          joint.contact = c;
+        }
+      }
+    }
+    if (joint.type != JointType::Empty) return joint;
+  }
   // Milled: a sliding dovetail where no tenons let the plate out (the largest such contact).
   for (int c : graph.contactsOf[mover]) {
     const PlateContact& contact = graph.contacts[c];
@@ -192,6 +208,11 @@ std::optional<PlateJoint> jointFor(const PlateGraph& graph, int mover, int other
     }
   }
   return joint;
+}
+
+// The tenon to mill for a planned mitre-tenon joint: on the mover, into the other plate, against d.
+MitreTenon mitreTenonFor(const PlateGraph& graph, const PlateJoint& joint) {
+  return *mitreTenonOf(graph.plates, graph.contacts[joint.contact], joint.mover, negated(joint.direction));
 }
 
 // The dovetail to mill for a planned dovetail joint: its housing opens where the tongue plate leaves.
@@ -246,6 +267,12 @@ Assembly modelAssembly(const PlateGraph& graph, const std::vector<Step>& steps, 
         if (contact.b == joint.mover && contact.a == joint.other)
           assembly.contacts.push_back({a, b, negated(contact.normal), contact.area});
       }
+      if (joint.type == JointType::MitreTenon) {
+        // The tenon's faces in its pocket: its tip and the mitre, its sides and its ends.
+        for (const Vec3& n : mitreTenonFaceNormals(mitreTenonFor(graph, joint)))
+          assembly.contacts.push_back({a, b, *cleanedNormal(n), 1.0});
+        continue;
+      }
       if (joint.type == JointType::Dovetail) {
         // The tongue's faces: shoulder and floor, the leaning flanks, the stop (plate_joints.h).
         const DovetailCut cut = dovetailCutFor(graph, joint);
@@ -299,9 +326,11 @@ JointedPlan cutPlan(const std::vector<Plate>& plates, const PlateGraph& graph, c
   std::vector<TenonSite> sites;
   std::vector<SlotCut> slots;
   std::vector<DovetailCut> dovetails;
+  std::vector<MitreTenon> mitreTenons;
   for (const PlateJoint& joint : joints) {
     if (joint.type == JointType::MortiseTenon) sites.push_back(*graph.tenonSites[joint.contact]);
     if (joint.type == JointType::Dovetail) dovetails.push_back(dovetailCutFor(graph, joint));
+    if (joint.type == JointType::MitreTenon) mitreTenons.push_back(mitreTenonFor(graph, joint));
     if (joint.type == JointType::Halved) {
       for (const SlotCut& slot :
            halvedSlots(plates, graph.contacts[joint.contact], joint.mover, joint.direction, clearance)) {
@@ -312,7 +341,7 @@ JointedPlan cutPlan(const std::vector<Plate>& plates, const PlateGraph& graph, c
   JointCutOptions cut = options;
   cut.clearance = clearance;
   JointedPlan plan;
-  plan.plates = cutTenonJoints(plates, sites, cut, slots, dovetails);
+  plan.plates = cutTenonJoints(plates, sites, cut, slots, dovetails, mitreTenons);
   validatePlates(plan.plates, geometry, "the jointed plates");
   std::vector<int> position(plates.size(), 0);
   for (size_t k = 0; k < order.size(); ++k) {
@@ -409,6 +438,9 @@ std::vector<Vec3> PlateJointPlanner::candidateDirections(int plate) const {
     if (graph_.tenonSites[c]) {
       for (const Vec3& exit : graph_.tenonSites[c]->exits()) lines.push_back(exit);
     }
+    // Milled: straight away from a plate it meets at a mitre (a mitre tenon's way out).
+    const PlateContact& contact = graph_.contacts[c];
+    if (options_.realization == JointRealization::Milled && !contact.crossing) lines.push_back(contact.normal);
   }
   for (const Vec3& edge : lines) {
     for (const Vec3& d : {edge, negated(edge)}) {
@@ -452,6 +484,8 @@ std::vector<CutFootprint> PlateJointPlanner::cutsOf(const std::vector<PlateJoint
         cuts.push_back(std::move(cut));
     } else if (joint.type == JointType::Dovetail) {
       cuts.push_back(dovetailFootprint(plates_, dovetailCutFor(graph_, joint)));
+    } else if (joint.type == JointType::MitreTenon) {
+      cuts.push_back(mitreTenonFootprint(plates_, mitreTenonFor(graph_, joint)));
     } else if (joint.type == JointType::Halved) {
       for (const SlotCut& slot : halvedSlots(plates_, graph_.contacts[joint.contact], joint.mover, joint.direction, 0))
         cuts.push_back(slotFootprint(slot));
@@ -818,6 +852,8 @@ const char* jointTypeName(JointType type) {
       return "halved";
     case JointType::Dovetail:
       return "dovetail";
+    case JointType::MitreTenon:
+      return "mitre-tenon";
     case JointType::Empty:
       return "empty";
   }

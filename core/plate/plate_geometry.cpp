@@ -485,7 +485,7 @@ void requireNoSlantedOverlap(const Plate& a, const Plate& b, double tolerance) {
 
 namespace {
 std::vector<PlateContact> contactsOfSolids(const std::vector<Plate>& plates, const std::vector<int>& owner,
-                                           const PlateOptions& options);
+                                           size_t firstAttached, const PlateOptions& options);
 }  // namespace
 
 // Plates with attached solids (milled joints): every solid on its own, solids of one plate never
@@ -506,7 +506,7 @@ std::vector<PlateContact> computePlateContacts(const std::vector<Plate>& plates,
       owner.push_back(static_cast<int>(p));
     }
   }
-  std::vector<PlateContact> contacts = contactsOfSolids(solids, owner, options);
+  std::vector<PlateContact> contacts = contactsOfSolids(solids, owner, plates.size(), options);
   if (solids.size() == plates.size()) return contacts;
   for (PlateContact& contact : contacts) {
     contact.a = owner[contact.a];
@@ -526,8 +526,12 @@ std::vector<PlateContact> computePlateContacts(const std::vector<Plate>& plates,
 
 namespace {
 
+// Solids from `firstAttached` on are attached solids (milled joint pieces, built from the joint's
+// exact directions); a cut plate's faces come from a 2D boolean on a 1e-4 mm grid. Where the two
+// meet, the attached solid's face gives the contact's normal: a wall the grid turned by 1e-5 rad
+// would otherwise block a tenon sliding along it (a mitre tenon leaving its pocket).
 std::vector<PlateContact> contactsOfSolids(const std::vector<Plate>& plates, const std::vector<int>& owner,
-                                           const PlateOptions& options) {
+                                           size_t firstAttached, const PlateOptions& options) {
   const double tolerance = options.contactTolerance;
   std::vector<std::vector<SolidFace>> faces;
   std::vector<Box> boxes;
@@ -563,7 +567,8 @@ std::vector<PlateContact> contactsOfSolids(const std::vector<Plate>& plates, con
           PlateContact contact;
           contact.a = static_cast<int>(p);
           contact.b = static_cast<int>(q);
-          contact.normal = *cleanedNormal(f.normal);
+          const bool otherIsExact = p < firstAttached && q >= firstAttached;
+          contact.normal = *cleanedNormal(otherIsExact ? negated(g.normal) : f.normal);
           contact.area = area;
           for (const ClipperLib::IntPoint& point : *largest) contact.region.push_back(frame.fromClipper(point));
           Vec3 edge = cross(axes[p], axes[q]);

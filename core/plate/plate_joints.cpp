@@ -505,6 +505,36 @@ void requireApart(const Plate& plate, const std::vector<Loop>& cuts, const Plane
   }
 }
 
+// The point of a plate's second face across from `point` of its first: a vertex as given keeps
+// its partner; a point on a side's first-face edge has its partner on that side's second-face
+// edge straight across the side (a cut through a mitred side); any other
+// point lies where the plate is whole (mortiseKind, mitreTenonOf) and is straight across.
+Vec3 secondFacePartner(const Plate& plate, const Vec3& point) {
+  for (size_t l = 0; l < plate.bottom.size(); ++l) {
+    for (size_t k = 0; k < plate.bottom[l].size(); ++k) {
+      if (norm(minus(plate.bottom[l][k], point)) < 1e-3) return plate.top[l][k];
+    }
+  }
+  for (size_t l = 0; l < plate.bottom.size(); ++l) {
+    const Loop& bottom = plate.bottom[l];
+    for (size_t k = 0; k < bottom.size(); ++k) {
+      const size_t next = (k + 1) % bottom.size();
+      const Vec3 edge = minus(bottom[next], bottom[k]);
+      const double length = norm(edge);
+      if (length < 1e-9) continue;
+      const double t = dot(minus(point, bottom[k]), edge) / (length * length);
+      if (t < -1e-9 || t > 1 + 1e-9) continue;
+      if (norm(minus(point, plus(bottom[k], scaled(edge, t)))) > 1e-3) continue;
+      // Across the side, square to its edges (they are parallel): the cuts that reach a mitred
+      // side meet it with walls square to it (a mitre tenon's notch).
+      const Vec3 along = scaled(edge, 1 / length);
+      const Vec3 offset = minus(plate.top[l][k], bottom[k]);
+      return plus(point, minus(offset, scaled(along, dot(offset, along))));
+    }
+  }
+  return plus(point, scaled(plateThicknessAxis(plate), plateThickness(plate)));
+}
+
 // The plate's solid between levels [from, to] along its thickness axis (0 = its first face), its
 // face cut by `added` and `removed`: a prism.
 Plate layerOf(const Plate& plate, const std::vector<Loop>& added, const std::vector<Loop>& removed, double from,
@@ -519,14 +549,7 @@ Plate layerOf(const Plate& plate, const std::vector<Loop>& added, const std::vec
     for (const Vec3& point : loop) {
       bottom.push_back(plus(point, scaled(axis, from)));
       top.push_back(plus(point, scaled(axis, to)));
-      if (prism) continue;
-      // Mitred sides keep their second face: a vertex of the plate as given keeps its partner;
-      // the cuts' new vertices lie where the plate is whole (mortiseKind), straight across.
-      for (size_t l = 0; l < plate.bottom.size(); ++l) {
-        for (size_t k = 0; k < plate.bottom[l].size(); ++k) {
-          if (norm(minus(plate.bottom[l][k], point)) < 1e-3) top.back() = plate.top[l][k];
-        }
-      }
+      if (!prism) top.back() = secondFacePartner(plate, point);
     }
     layer.bottom.push_back(bottom);
     layer.top.push_back(top);
@@ -535,6 +558,190 @@ Plate layerOf(const Plate& plate, const std::vector<Loop>& added, const std::vec
 }
 
 }  // namespace
+
+namespace {
+
+// 2D points of a mitre tenon's section plane (through `middle`, across the edge): x along
+// `across`, y along the mitre's normal into the pocket plate.
+using Flat = std::array<double, 2>;
+
+// The part of a convex polygon where a*x + b*y <= c (Sutherland-Hodgman, one half-plane).
+std::vector<Flat> clipHalfPlane(const std::vector<Flat>& polygon, double a, double b, double c) {
+  std::vector<Flat> out;
+  for (size_t i = 0; i < polygon.size(); ++i) {
+    const Flat& p = polygon[i];
+    const Flat& q = polygon[(i + 1) % polygon.size()];
+    const double sp = a * p[0] + b * p[1] - c, sq = a * q[0] + b * q[1] - c;
+    if (sp <= 0) out.push_back(p);
+    if ((sp <= 0) != (sq <= 0)) {
+      const double t = sp / (sp - sq);
+      out.push_back({p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])});
+    }
+  }
+  return out;
+}
+
+struct MitreFrame {
+  Vec3 origin, across, normal, line;
+  Vec3 at(const Flat& q, double s) const {
+    return plus(origin, plus(scaled(across, q[0]), plus(scaled(normal, q[1]), scaled(line, s))));
+  }
+};
+
+MitreFrame mitreFrame(const MitreTenon& tenon) {
+  return {tenon.middle, tenon.across, normalized(cross(tenon.line, tenon.across)), tenon.line};
+}
+
+// The tenon's section: its root on the mitre face, its tip `depth` along `into`, less `play` on
+// its sides and tip (the clearance).
+std::vector<Flat> tenonSection(const MitreTenon& tenon, const MitreFrame& frame, double play) {
+  const Flat into{dot(tenon.into, frame.across), dot(tenon.into, frame.normal)};
+  const double h = tenon.halfHeight - play, d = tenon.depth - play;
+  return {{-h, 0}, {h, 0}, {h + d * into[0], d * into[1]}, {-h + d * into[0], d * into[1]}};
+}
+
+// The notch through the pocket plate, in its plane: from beyond the mitre to past the pocket.
+Loop pocketNotch(const std::vector<Plate>& plates, const MitreTenon& tenon) {
+  const Plate& pocket = plates[tenon.pocketPlate];
+  const Vec3 axis = plateThicknessAxis(pocket);
+  Vec3 inward = normalized(cross(axis, tenon.line));
+  const MitreFrame frame = mitreFrame(tenon);
+  if (dot(inward, frame.normal) < 0) inward = negated(inward);
+  const double out = -2 * (plateThickness(pocket) + tenon.depth), in = tenon.notchReach;
+  auto at = [&](double s, double u) { return plus(tenon.middle, plus(scaled(tenon.line, s), scaled(inward, u))); };
+  return {at(-tenon.halfWidth, out), at(tenon.halfWidth, out), at(tenon.halfWidth, in), at(-tenon.halfWidth, in)};
+}
+
+// The pocket plate's wood in the notch, less the pocket: one prism along the edge.
+Plate pocketSurround(const std::vector<Plate>& plates, const MitreTenon& tenon) {
+  const Plate& pocket = plates[tenon.pocketPlate];
+  const MitreFrame frame = mitreFrame(tenon);
+  const Vec3 axis = plateThicknessAxis(pocket);
+  Vec3 inward = normalized(cross(axis, tenon.line));
+  if (dot(inward, frame.normal) < 0) inward = negated(inward);
+  const double big = 10 * (plateThickness(pocket) + tenon.depth + tenon.halfHeight + tenon.notchReach);
+  std::vector<Flat> wood{{-big, -big}, {big, -big}, {big, big}, {-big, big}};
+  const Flat a{dot(axis, frame.across), dot(axis, frame.normal)}, u{dot(inward, frame.across), dot(inward, frame.normal)};
+  const double level = dot(minus(tenon.middle, pocket.bottom[0][0]), axis);  // the section's origin's height
+  wood = clipHalfPlane(wood, 0, -1, 0);                                     // beyond the mitre: y >= 0
+  wood = clipHalfPlane(wood, -a[0], -a[1], level);                          // above the first face
+  wood = clipHalfPlane(wood, a[0], a[1], plateThickness(pocket) - level);   // below the second
+  wood = clipHalfPlane(wood, u[0], u[1], tenon.notchReach);                 // to the notch's end
+  // The pocket bites the wood's edge on the mitre (y = 0) between the tenon's root corners: the
+  // wood's section with the pocket's four corners put into that edge, computed exactly (no grid
+  // rounding: the pocket's walls must be parallel to the way the tenon leaves, or the contacts
+  // computed from them would block it by a rounding error).
+  const std::vector<Flat> pocketSection = tenonSection(tenon, frame, 0);
+  std::vector<Flat> bitten;
+  const double onMitre = 1e-9 * big;
+  for (size_t i = 0; i < wood.size(); ++i) {
+    const Flat& p = wood[i];
+    const Flat& q = wood[(i + 1) % wood.size()];
+    bitten.push_back(p);
+    if (std::abs(p[1]) > onMitre || std::abs(q[1]) > onMitre) continue;
+    // Along this edge from p to q: the root corner met first, its tip, the other tip, the other root.
+    const bool rising = q[0] > p[0];
+    const Flat& low = pocketSection[0];  // (-h, 0) and its tip pocketSection[3]
+    const Flat& high = pocketSection[1];  // (h, 0) and its tip pocketSection[2]
+    if (rising) {
+      bitten.insert(bitten.end(), {low, pocketSection[3], pocketSection[2], high});
+    } else {
+      bitten.insert(bitten.end(), {high, pocketSection[2], pocketSection[3], low});
+    }
+  }
+  if (bitten.size() != wood.size() + 4) {
+    throwBadInput("", "the pocket of a mitre tenon does not lie on the mitre of " + plateLabel(pocket));
+  }
+  Plate surround;
+  Loop first, second;
+  for (const Flat& q : bitten) {
+    first.push_back(frame.at(q, -tenon.halfWidth));
+    second.push_back(frame.at(q, tenon.halfWidth));
+  }
+  surround.bottom = {first};
+  surround.top = {second};
+  return surround;
+}
+
+Plate mitreTenonSolid(const MitreTenon& tenon, double clearance) {
+  const MitreFrame frame = mitreFrame(tenon);
+  const double play = clearance / 2, half = tenon.halfWidth - play;
+  Plate solid;
+  Loop first, second;
+  for (const Flat& q : tenonSection(tenon, frame, play)) {
+    first.push_back(frame.at(q, -half));
+    second.push_back(frame.at(q, half));
+  }
+  solid.bottom = {first};
+  solid.top = {second};
+  return solid;
+}
+
+}  // namespace
+
+std::optional<MitreTenon> mitreTenonOf(const std::vector<Plate>& plates, const PlateContact& contact, int tenonPlate,
+                                       const Vec3& into) {
+  if (contact.crossing || (contact.a != tenonPlate && contact.b != tenonPlate)) return std::nullopt;
+  MitreTenon tenon;
+  tenon.tenonPlate = tenonPlate;
+  tenon.pocketPlate = contact.a == tenonPlate ? contact.b : contact.a;
+  const Vec3 normal = contact.a == tenonPlate ? contact.normal : negated(contact.normal);
+  const Plate& pocket = plates[tenon.pocketPlate];
+  // Edge to edge: neither plate's face lies on the contact (those are T joints, tenonSiteOf).
+  for (const Plate* plate : {&plates[tenonPlate], &pocket}) {
+    if (std::abs(dot(normal, plateThicknessAxis(*plate))) > 1 - kSquare) return std::nullopt;
+  }
+  tenon.line = normalized(contact.edgeDirection);
+  tenon.into = normalized(into);
+  if (std::abs(dot(tenon.into, tenon.line)) > 1e-6 || dot(tenon.into, normal) < 0.05) return std::nullopt;
+  tenon.across = normalized(cross(normal, tenon.line));
+  const auto [s0, s1] = extentAlong(contact.region, contact.region[0], tenon.line);
+  const auto [x0, x1] = extentAlong(contact.region, contact.region[0], tenon.across);
+  tenon.halfWidth = (s1 - s0) / 6;   // a third of the mitre's length
+  tenon.halfHeight = (x1 - x0) / 8;  // a quarter of its height: room for the pocket in thin plates
+  if (2 * tenon.halfWidth < kShortestJoint || 2 * tenon.halfHeight < 1) return std::nullopt;
+  tenon.middle = plus(contact.region[0], plus(scaled(tenon.line, (s0 + s1) / 2), scaled(tenon.across, (x0 + x1) / 2)));
+  // As deep as the pocket plate holds it with a margin of wood on both faces, at most its thickness.
+  const Vec3 axis = plateThicknessAxis(pocket);
+  const double thickness = plateThickness(pocket), rate = dot(tenon.into, axis);
+  tenon.depth = thickness;
+  for (const double side : {-1.0, 1.0}) {
+    const double height = dot(minus(plus(tenon.middle, scaled(tenon.across, side * tenon.halfHeight)), pocket.bottom[0][0]), axis);
+    if (height < kMortiseMargin || height > thickness - kMortiseMargin) return std::nullopt;
+    if (rate > 1e-9) tenon.depth = std::min(tenon.depth, (thickness - kMortiseMargin - height) / rate);
+    if (rate < -1e-9) tenon.depth = std::min(tenon.depth, (height - kMortiseMargin) / -rate);
+  }
+  constexpr double kShallowestPocket = 2.0;  // mm
+  if (tenon.depth < kShallowestPocket) return std::nullopt;
+  // The notch runs past the pocket and past the mitre (its cut ends where the plate is whole).
+  Vec3 inwardDirection = normalized(cross(axis, tenon.line));
+  if (dot(inwardDirection, normal) < 0) inwardDirection = negated(inwardDirection);
+  const MitreFrame sectionFrame = mitreFrame(tenon);
+  for (const Flat& q : tenonSection(tenon, sectionFrame, 0))
+    tenon.notchReach = std::max(tenon.notchReach, dot(minus(sectionFrame.at(q, 0), tenon.middle), inwardDirection));
+  for (const Vec3& p : contact.region)
+    tenon.notchReach = std::max(tenon.notchReach, dot(minus(p, tenon.middle), inwardDirection));
+  tenon.notchReach += kMortiseMargin;
+  // The notch must lie in the pocket plate, away from its other sides.
+  const Loop notch = pocketNotch(plates, tenon);
+  const PlaneFrame frame(pocket.bottom[0][0], axis);
+  const Vec3 inward = minus(notch[2], notch[1]);
+  std::vector<Loop> whole = faceRegion(pocket, ClipperLib::ctUnion);
+  // The notch's part past the mitre zone (its last half) must be wood of the pocket plate.
+  const Loop deep{plus(notch[0], scaled(inward, 0.75)), plus(notch[1], scaled(inward, 0.75)), notch[2], notch[3]};
+  if (areaAgainst({deep}, whole, frame, true) > 1e-6) return std::nullopt;
+  return tenon;
+}
+
+std::vector<Vec3> mitreTenonFaceNormals(const MitreTenon& tenon) {
+  const MitreFrame frame = mitreFrame(tenon);
+  Vec3 side = normalized(cross(tenon.into, tenon.line));
+  return {frame.normal, side, negated(side), tenon.line, negated(tenon.line)};
+}
+
+CutFootprint mitreTenonFootprint(const std::vector<Plate>& plates, const MitreTenon& tenon) {
+  return {tenon.pocketPlate, 3, pocketNotch(plates, tenon)};
+}
 
 std::vector<CutFootprint> tenonFootprints(const std::vector<Plate>& plates, const TenonSite& site,
                                           const JointCutOptions& options) {
@@ -572,7 +779,8 @@ bool footprintsOverlap(const std::vector<Plate>& plates, const CutFootprint& a, 
 
 std::vector<Plate> cutTenonJoints(const std::vector<Plate>& plates, const std::vector<TenonSite>& sites,
                                   const JointCutOptions& options, const std::vector<SlotCut>& slots,
-                                  const std::vector<DovetailCut>& dovetails) {
+                                  const std::vector<DovetailCut>& dovetails,
+                                  const std::vector<MitreTenon>& mitreTenons) {
   std::vector<std::vector<Loop>> added(plates.size()), removed(plates.size());
   // Dovetail housings per plate and face (0: first face, 1: second), and the solids they attach.
   std::vector<std::array<std::vector<Loop>, 2>> housings(plates.size());
@@ -586,6 +794,11 @@ std::vector<Plate> cutTenonJoints(const std::vector<Plate>& plates, const std::v
     housingDepth[housingPlate][face] = dovetailSection(plates, cut.site.edge).depth;
     for (Plate& lip : pieces.lips) attached[housingPlate].push_back(std::move(lip));
     attached[cut.site.edge.tenonPlate].push_back(std::move(pieces.tongue));
+  }
+  for (const MitreTenon& tenon : mitreTenons) {
+    removed[tenon.pocketPlate].push_back(pocketNotch(plates, tenon));
+    attached[tenon.pocketPlate].push_back(pocketSurround(plates, tenon));
+    attached[tenon.tenonPlate].push_back(mitreTenonSolid(tenon, options.clearance));
   }
   for (const SlotCut& slot : slots) removed[slot.plate].push_back(slot.rectangle);
   for (const TenonSite& site : sites) {
@@ -739,9 +952,11 @@ bool meshCollidesAlong(const TriangleMesh& mover, const TriangleMesh& obstacle, 
       if (m.maxU <= s.minU || s.maxU <= m.minU || m.maxV <= s.minV || s.maxV <= m.minV) continue;
       std::vector<Point2> overlap(m.corner.begin(), m.corner.end());
       for (int i = 0; i < 3 && !overlap.empty(); ++i) overlap = clipLeftOf(overlap, s.corner[i], s.corner[(i + 1) % 3]);
-      // Shadows that only touch, or overlap in a sliver narrower than the tolerance (rounding at a
-      // shared edge: 2 area / perimeter is about a sliver's width), do not meet.
-      if (overlap.size() < 3 || 2 * polygonArea(overlap) <= tolerance * polygonPerimeter(overlap)) continue;
+      // Shadows that only touch (at an edge, or at a corner: an "overlap" of rounding noise), or
+      // overlap in a sliver narrower than the tolerance (2 area / perimeter is about a sliver's
+      // width), do not meet.
+      const double area = polygonArea(overlap);
+      if (overlap.size() < 3 || area <= tolerance * tolerance || 2 * area <= tolerance * polygonPerimeter(overlap)) continue;
       // The depth gap is affine over the overlap: its largest value is at a corner.
       for (const Point2& p : overlap) {
         if (depthAt(s, p) - depthAt(m, p) > tolerance) return true;

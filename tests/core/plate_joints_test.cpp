@@ -706,3 +706,78 @@ TEST(PlateJoints, AMitredPlateTakesTenonsWhereItIsWholeAndKeepsItsMitre) {
 
 }  // namespace
 }  // namespace desia
+
+// ---- tenons across a mitre (milled joints on plates that meet at an angle, paper Fig. 16a) -----
+
+namespace desia {
+namespace {
+
+TEST(PlateMitreTenons, ATenonAcrossAMitreFillsItsPocketAndLeavesStraightOut) {
+  const AssemblyDocument box = loadPlateExample("mitred_box.json");
+  const std::vector<PlateContact> contacts = computePlateContacts(box.plates, {});
+  const PlateContact& contact = contacts.at(0);
+  const int tenonPlate = contact.a, pocketPlate = contact.b;
+  // The tenon plate leaves along its outward axis; its tenon points the other way, into the pocket.
+  const Vec3 axis = plateThicknessAxis(box.plates[tenonPlate]);
+  std::optional<MitreTenon> tenon = mitreTenonOf(box.plates, contact, tenonPlate, axis);
+  Vec3 leave = negated(axis);
+  if (!tenon) {
+    tenon = mitreTenonOf(box.plates, contact, tenonPlate, negated(axis));
+    leave = axis;
+  }
+  ASSERT_TRUE(tenon.has_value());
+  EXPECT_FALSE(mitreTenonOf(box.plates, contact, tenonPlate, contact.edgeDirection).has_value());  // along the edge
+  const std::vector<Plate> jointed = cutTenonJoints(box.plates, {}, {}, {}, {}, {*tenon});
+  validatePlates(jointed, {}, "jointed");
+  for (const Plate& plate : jointed) EXPECT_NO_THROW(checkClosedMesh(plateMesh(plate), "jointed"));
+  // What the tenon plate gained, the pocket plate lost: the pocket fits the tenon.
+  const double gained = meshVolume(plateMesh(jointed[tenonPlate])) - meshVolume(plateMesh(box.plates[tenonPlate]));
+  const double lost = meshVolume(plateMesh(box.plates[pocketPlate])) - meshVolume(plateMesh(jointed[pocketPlate]));
+  EXPECT_GT(gained, 0);
+  EXPECT_NEAR(gained, lost, 1e-6 * meshVolume(plateMesh(box.plates[pocketPlate])));
+  // Between the two plates alone: free along the way out, and along no other candidate way.
+  const std::vector<Plate> pair{jointed[tenonPlate], jointed[pocketPlate]};
+  Assembly two;
+  two.parts = {{1, "tenon"}, {2, "pocket"}};
+  for (const PlateContact& c : computePlateContacts(pair, {})) two.contacts.push_back({c.a, c.b, c.normal, c.area});
+  const Vec3 normal = contact.normal;
+  const Vec3 line = contact.edgeDirection;
+  for (const Vec3& d : {leave, negated(leave), normal, negated(normal), line, negated(line), axis, negated(axis),
+                        plateThicknessAxis(box.plates[pocketPlate])}) {
+    const bool out = dot(d, leave) > 1 - 1e-9;
+    EXPECT_EQ(isPartFreeAlong(two, nullptr, 0, d), out) << d[0] << "," << d[1] << "," << d[2];
+  }
+  EXPECT_FALSE(plateCollidesAlong(pair[0], pair[1], leave, 0.05));
+  EXPECT_TRUE(plateCollidesAlong(pair[0], pair[1], line, 0.05));  // the tenon's end meets the pocket's
+}
+
+TEST(PlateMitreTenons, MitredBoxAndDodecahedronDesignWithMilledJointsAndVerify) {
+  for (const char* name : {"mitred_box.json", "dodecahedron.json", "cube.json"}) {
+    const AssemblyDocument shape = loadPlateExample(name);
+    EXPECT_EQ(designCut(shape.plates).status, PlateDesignStatus::NotFound) << name;  // nothing to cut
+    PlateDesignOptions options;
+    options.realization = JointRealization::Milled;
+    const PlateDesignResult result = designPlateJoints(shape.plates, computePlateContacts(shape.plates, {}), options);
+    ASSERT_EQ(result.status, PlateDesignStatus::Success) << name << ": " << result.message;
+    for (const PlateJoint& joint : result.joints) EXPECT_EQ(joint.type, JointType::MitreTenon) << name;
+    std::vector<Plate> inOrder;
+    for (int index : result.order) inOrder.push_back(result.jointedPlates[static_cast<size_t>(index)]);
+    for (const Plate& plate : inOrder) EXPECT_NO_THROW(checkClosedMesh(plateMesh(plate), name));
+    EXPECT_EQ(jointedPlatesFailure(inOrder, result.directions), "") << name;
+    // Reversing the key's way out runs it into its neighbours' pockets.
+    std::vector<Vec3> reversed = result.directions;
+    reversed[0] = negated(reversed[0]);
+    EXPECT_NE(jointedPlatesFailure(inOrder, reversed), "") << name;
+  }
+}
+
+TEST(PlateJoints, ShadowsThatOnlyTouchAtACornerDoNotCollide) {
+  // Two boxes side by side diagonally: moving the first down, their shadows along z share a corner.
+  const Plate a = board(1, {0, 0, 0}, {10, 10, 10});
+  const Plate b = board(2, {10, 10, -30}, {20, 20, -20});
+  EXPECT_FALSE(plateCollidesAlong(a, b, {0, 0, -1}, 0.05));
+  EXPECT_TRUE(plateCollidesAlong(a, board(3, {9, 9, -30}, {20, 20, -20}), {0, 0, -1}, 0.05));  // 1 x 1 mm shared
+}
+
+}  // namespace
+}  // namespace desia

@@ -23,9 +23,12 @@ enum class JointType {
                  // within 45..135 degrees of the direction)
   Halved,        // the edge runs along the direction: slots where two plates cross (paper Fig. 2)
   Dovetail,      // milled: a sliding dovetail along the edge, out through the housing's open end
+  MitreTenon,    // milled: plates meeting edge to edge at an angle, a tenon across the mitre into a
+                 // pocket that fits it (paper Fig. 16a); the plate leaves straight out of the pocket
   Empty,         // the plates only touch
 };
-const char* jointTypeName(JointType type);  // "mortise-tenon", "halved", "dovetail", "empty"
+// "mortise-tenon", "halved", "dovetail", "mitre-tenon", "empty"
+const char* jointTypeName(JointType type);
 
 // What a design makes of its joints.
 enum class JointRealization {
@@ -34,8 +37,10 @@ enum class JointRealization {
   Cut,
   // As Cut, and where no such joint lets a plate out, sliding dovetails milled along square edges
   // (a CNC router with a dovetail bit; the tongue and housing are not 2D cuts): the plate leaves
-  // along the edge. What furniture whose boards end flush (BOOKSHELF, CHAIR) needs. Exports: STL
-  // and OBJ (cut sheets hold 2D cuts only).
+  // along the edge. What furniture whose boards end flush (BOOKSHELF) needs. And on plates that
+  // meet edge to edge at an angle (mitres: the CABINET's ridge, polyhedral sculptures), tenons
+  // across the mitre into pockets (paper Fig. 16a). Exports: STL and OBJ (cut sheets hold 2D cuts
+  // only).
   Milled,
   // The paper's graph design stage alone (Section 5.2): halved, mortise-and-tenon or empty by the
   // angle between the shared edge and the direction, each joint modelled by the faces every such

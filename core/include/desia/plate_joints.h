@@ -60,6 +60,36 @@ struct DovetailSite {
   std::vector<Vec3> exits() const;
 };
 
+// A tenon across a mitre (milled; paper Fig. 16a, a mortise-and-tenon for plates that meet at an
+// angle with surface contact): two plates meeting edge to edge along a shared mitre face, neither
+// face on the other. A tenon of parallelogram section grows out of the tenon plate's mitre face
+// along `into`, perpendicular to the shared edge, into a pocket in the other plate that fits it
+// on all four sides; the tenon plate can then leave only along -into, straight out of the pocket.
+// The tenon and the pocket's surround are prisms along the edge (Plate::attached), and the pocket
+// plate gets a notch at its mitre, through it, beneath them.
+struct MitreTenon {
+  int tenonPlate = 0, pocketPlate = 0;
+  Vec3 line{0, 0, 0};     // unit, along the shared edge
+  Vec3 into{0, 0, 0};     // unit, perpendicular to the edge, from the tenon plate into the pocket plate
+  Vec3 middle{0, 0, 0};   // on the mitre face, the middle of the tenon's root
+  Vec3 across{0, 0, 0};   // unit, in the mitre face, perpendicular to the edge
+  double halfWidth = 0;   // the tenon's half extent along the edge
+  double halfHeight = 0;  // its root's half extent across the edge, in the mitre face
+  double depth = 0;       // how far it reaches along `into`
+  double notchReach = 0;  // how far the notch runs into the pocket plate from `middle`, past the
+                          // pocket and past the mitre (where the plate is whole again)
+};
+
+// The tenon across the mitre `contact` for `tenonPlate` leaving the other plate along -into, when
+// the other plate is thick enough there to hold its pocket (a millimetre of wood on every side);
+// nothing for other contacts or directions.
+std::optional<MitreTenon> mitreTenonOf(const std::vector<Plate>& plates, const PlateContact& contact,
+                                       int tenonPlate, const Vec3& into);
+
+// The normals of a mitre tenon's faces, from the tenon plate into the pocket plate: its tip, its
+// two ends and its two sides (the mitre contact itself stays).
+std::vector<Vec3> mitreTenonFaceNormals(const MitreTenon& tenon);
+
 // One dovetail to cut: the site and the end its housing opens at (0: from, 1: to).
 struct DovetailCut {
   DovetailSite site;
@@ -115,7 +145,8 @@ std::vector<SlotCut> halvedSlots(const std::vector<Plate>& plates, const PlateCo
 
 std::vector<Plate> cutTenonJoints(const std::vector<Plate>& plates, const std::vector<TenonSite>& sites,
                                   const JointCutOptions& options, const std::vector<SlotCut>& slots = {},
-                                  const std::vector<DovetailCut>& dovetails = {});
+                                  const std::vector<DovetailCut>& dovetails = {},
+                                  const std::vector<MitreTenon>& mitreTenons = {});
 
 // Where a joint's cut lies in a plate: a region of its face (a loop on or parallel to it), through
 // the plate (faces = 3) or into it from its first (1) or second (2) face only. Cuts of different
@@ -130,6 +161,7 @@ std::vector<CutFootprint> tenonFootprints(const std::vector<Plate>& plates, cons
                                           const JointCutOptions& options);
 CutFootprint dovetailFootprint(const std::vector<Plate>& plates, const DovetailCut& cut);
 CutFootprint slotFootprint(const SlotCut& slot);
+CutFootprint mitreTenonFootprint(const std::vector<Plate>& plates, const MitreTenon& tenon);
 // Both in one plate, sharing a face, their regions overlapping inside the plate (more than a
 // thousandth of a square millimetre).
 bool footprintsOverlap(const std::vector<Plate>& plates, const CutFootprint& a, const CutFootprint& b);
