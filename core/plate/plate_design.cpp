@@ -677,7 +677,8 @@ PlateDesignResult PlateJointPlanner::run() {
                "(CNC), joints 'planned' gives the paper's graph design alone"
              : options_.realization == JointRealization::Milled
                    ? " with the joints that can be cut or milled (mortise-and-tenon, halved and sliding dovetail "
-                     "joints on square edges at right angles); joints 'planned' gives the paper's graph design alone"
+                     "joints on square edges at right angles, tenons across mitres); joints 'planned' gives the "
+                     "paper's graph design alone"
                    : "");
     return result;
   }

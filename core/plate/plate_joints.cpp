@@ -719,17 +719,18 @@ std::optional<MitreTenon> mitreTenonOf(const std::vector<Plate>& plates, const P
   const MitreFrame sectionFrame = mitreFrame(tenon);
   for (const Flat& q : tenonSection(tenon, sectionFrame, 0))
     tenon.notchReach = std::max(tenon.notchReach, dot(minus(sectionFrame.at(q, 0), tenon.middle), inwardDirection));
-  for (const Vec3& p : contact.region)
-    tenon.notchReach = std::max(tenon.notchReach, dot(minus(p, tenon.middle), inwardDirection));
-  tenon.notchReach += kMortiseMargin;
-  // The notch must lie in the pocket plate, away from its other sides.
-  const Loop notch = pocketNotch(plates, tenon);
+  double mitreReach = 0;  // where the mitre ends and the plate is whole again
+  for (const Vec3& p : contact.region) mitreReach = std::max(mitreReach, dot(minus(p, tenon.middle), inwardDirection));
+  tenon.notchReach = std::max(tenon.notchReach, mitreReach) + kMortiseMargin;
+  // Past the mitre, the notch's end must lie in the pocket plate where it is whole (away from its
+  // other sides), so that its cut ends in wood.
+  auto at = [&](double s, double u) {
+    return plus(tenon.middle, plus(scaled(tenon.line, s), scaled(inwardDirection, u)));
+  };
+  const Loop end{at(-tenon.halfWidth, mitreReach), at(tenon.halfWidth, mitreReach),
+                 at(tenon.halfWidth, tenon.notchReach), at(-tenon.halfWidth, tenon.notchReach)};
   const PlaneFrame frame(pocket.bottom[0][0], axis);
-  const Vec3 inward = minus(notch[2], notch[1]);
-  std::vector<Loop> whole = faceRegion(pocket, ClipperLib::ctUnion);
-  // The notch's part past the mitre zone (its last half) must be wood of the pocket plate.
-  const Loop deep{plus(notch[0], scaled(inward, 0.75)), plus(notch[1], scaled(inward, 0.75)), notch[2], notch[3]};
-  if (areaAgainst({deep}, whole, frame, true) > 1e-6) return std::nullopt;
+  if (areaAgainst({end}, faceRegion(pocket, ClipperLib::ctIntersection), frame, true) > 1e-6) return std::nullopt;
   return tenon;
 }
 
