@@ -2,6 +2,8 @@
 // Benchmark of the voxel designer against the paper's Table 1, Fig. 12 and Fig. 14: for each case,
 // several seeds in both modes (desia, recursive), success rate, median time and nodes visited.
 // A command, not a test:  desia_design_bench [--seeds N] [--time-limit S] [--only NAME] [--large]
+//                         [--frontier] [--modes desia,recursive]
+// --frontier adds issue 10's harder cases (more parts from the same shapes, a 6x6x6 cube).
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -24,6 +26,7 @@ struct DesignCase {
   int parts;
   double paperSeconds;  // the paper's time (Table 1 / Section 5.1), negative when it gives none
   bool dogGroups = false;
+  bool frontier = false;  // issue 10's harder cases, run with --frontier
 };
 
 const std::vector<DesignCase> kCases = {
@@ -37,7 +40,18 @@ const std::vector<DesignCase> kCases = {
     {"bunny, N=80", "bunny_origin.puz", 80, 0.74 * 3600},
     {"cartoon dog, N=14", "dog_origin.puz", 14, 23.3},
     {"cartoon dog, N=14, groups", "dog_origin.puz", 14, 1.06 * 3600, true},
+    {"4x4x4 cube, N=10", "Cube_4x4x4_origin.puz", 10, -1, false, true},
+    {"5x5x5 cube, N=20", "Cube_5x5x5_origin.puz", 20, -1, false, true},
+    {"6x6x6 cube, N=30", "generated-cube-6", 30, -1, false, true},
+    {"bunny, N=100", "bunny_origin.puz", 100, -1, false, true},
+    {"bunny, N=120", "bunny_origin.puz", 120, -1, false, true},
 };
+
+VoxelGrid solidCube(int side) {
+  VoxelGrid cube(side, side, side);
+  for (int64_t i = 0; i < cube.voxelCount(); ++i) cube.setLabelAt(i, 1);
+  return cube;
+}
 
 std::string readText(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
@@ -92,7 +106,8 @@ int main(int argc, char** argv) {
   int seeds = 3;
   double timeLimit = 60;
   std::string only;
-  bool large = false;
+  bool large = false, frontier = false;
+  std::vector<DesignMode> modes{DesignMode::Desia, DesignMode::Recursive};
   std::string referenceDir = DESIA_BENCH_REFERENCE_DIR;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
@@ -100,8 +115,15 @@ int main(int argc, char** argv) {
     else if (arg == "--time-limit" && i + 1 < argc) timeLimit = std::atof(argv[++i]);
     else if (arg == "--only" && i + 1 < argc) only = argv[++i];
     else if (arg == "--large") large = true;
-    else {
-      std::fprintf(stderr, "usage: desia_design_bench [--seeds N] [--time-limit SECONDS] [--only TEXT] [--large]\n");
+    else if (arg == "--frontier") frontier = true;
+    else if (arg == "--modes" && i + 1 < argc) {
+      modes.clear();
+      std::stringstream list(argv[++i]);
+      for (std::string name; std::getline(list, name, ',');) modes.push_back(parseDesignMode(name));
+    } else {
+      std::fprintf(stderr,
+                   "usage: desia_design_bench [--seeds N] [--time-limit SECONDS] [--only TEXT] [--large] [--frontier] "
+                   "[--modes desia,recursive]\n");
       return 2;
     }
   }
@@ -111,8 +133,10 @@ int main(int argc, char** argv) {
   std::fflush(stdout);
   for (const DesignCase& c : kCases) {
     if (!only.empty() && c.name.find(only) == std::string::npos) continue;
-    const VoxelGrid shape = parsePuz(readText(referenceDir + "/input_puz/" + c.input));
-    for (DesignMode mode : {DesignMode::Desia, DesignMode::Recursive}) {
+    if (c.frontier && !frontier) continue;
+    const VoxelGrid shape =
+        c.input == "generated-cube-6" ? solidCube(6) : parsePuz(readText(referenceDir + "/input_puz/" + c.input));
+    for (DesignMode mode : modes) {
       std::vector<Run> runs;
       for (int seed = 1; seed <= seeds; ++seed) {
         VoxelDesignOptions options;
@@ -144,8 +168,7 @@ int main(int argc, char** argv) {
   if (large) {
     // Fig. 12(d): the paper reaches 1500 parts from a 35^3 cube in 3.33 h. Report the largest N
     // designed within the time limit, growing N while designs succeed.
-    VoxelGrid cube(35, 35, 35);
-    for (int64_t i = 0; i < cube.voxelCount(); ++i) cube.setLabelAt(i, 1);
+    const VoxelGrid cube = solidCube(35);
     int reached = 0;
     for (int parts : {50, 100, 200, 400, 800, 1500}) {
       VoxelDesignOptions options;
