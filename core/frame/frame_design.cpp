@@ -55,6 +55,7 @@
 #include <optional>
 
 #include "analysis/vec3.h"
+#include "model/restarts.h"
 #include "desia/cut_points.h"
 #include "desia/error.h"
 #include "desia/interlocking.h"
@@ -69,29 +70,9 @@ using Mask = uint32_t;  // a set of the 27 voxels of a joint cube
 // differ from every other seed's.
 uint64_t attemptSeed(uint64_t seed, int64_t attempt) {
   if (attempt == 0) return seed * 0x9E3779B97F4A7C15ull + 7;
-  uint64_t z = seed + 0x9E3779B97F4A7C15ull * static_cast<uint64_t>(attempt + 1);
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  return z ^ (z >> 31);
+  return splitMix64(seed + 0x9E3779B97F4A7C15ull * static_cast<uint64_t>(attempt + 1));
 }
 
-// The Luby sequence 1, 1, 2, 1, 1, 2, 4, 1, ... at 0-based index `index` (Luby, Sinclair and
-// Zuckerman 1993: within a constant factor of the best fixed restart budget for any runtime
-// distribution).
-int64_t lubyTerm(int64_t index) {
-  int64_t size = 1;
-  int seq = 0;
-  while (size < index + 1) {
-    ++seq;
-    size = 2 * size + 1;
-  }
-  while (size - 1 != index) {
-    size = (size - 1) >> 1;
-    --seq;
-    index %= size;
-  }
-  return int64_t(1) << seq;
-}
 
 // The budget unit of a search tree, in work (beam-direction corridors and voxel-set pairs tried,
 // so a tree of slow nodes is cut as soon as one of many fast ones): a node tries about as many

@@ -9,6 +9,7 @@
 
 #include "desia/error.h"
 #include "desia/voxel_design.h"
+#include "model/restarts.h"
 #include "voxel/design_internals.h"
 
 namespace desia {
@@ -224,29 +225,9 @@ class ConstructionTree {
 // trees differ from every other seed's first tree.
 uint64_t attemptSeed(uint64_t seed, int64_t attempt) {
   if (attempt == 0) return seed;
-  uint64_t z = seed + 0x9E3779B97F4A7C15ull * static_cast<uint64_t>(attempt + 1) + 0x5851F42D4C957F2Dull;
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  return z ^ (z >> 31);
+  return splitMix64(seed + 0x9E3779B97F4A7C15ull * static_cast<uint64_t>(attempt + 1) + 0x5851F42D4C957F2Dull);
 }
 
-// The Luby sequence 1, 1, 2, 1, 1, 2, 4, 1, ... at 0-based index `index` (Luby, Sinclair and
-// Zuckerman 1993: within a constant factor of the best fixed restart budget for any runtime
-// distribution; the frame designer restarts the same way).
-int64_t lubyTerm(int64_t index) {
-  int64_t size = 1;
-  int seq = 0;
-  while (size < index + 1) {
-    ++seq;
-    size = 2 * size + 1;
-  }
-  while (size - 1 != index) {
-    size = (size - 1) >> 1;
-    --seq;
-    index %= size;
-  }
-  return int64_t(1) << seq;
-}
 
 class Search {
  public:

@@ -1,0 +1,37 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Restarts of a seeded depth-first search (the voxel and the frame designers): each search tree
+// gets a budget from the Luby sequence, in work the search counts (never time, so the same seed
+// gives the same result), and a random state derived from the user's seed.
+#pragma once
+
+#include <cstdint>
+
+namespace desia {
+
+// The Luby sequence 1, 1, 2, 1, 1, 2, 4, 1, ... at 0-based index `index` (Luby, Sinclair and
+// Zuckerman 1993: within a constant factor of the best fixed restart budget for any runtime
+// distribution).
+inline int64_t lubyTerm(int64_t index) {
+  int64_t size = 1;
+  int seq = 0;
+  while (size < index + 1) {
+    ++seq;
+    size = 2 * size + 1;
+  }
+  while (size - 1 != index) {
+    size = (size - 1) >> 1;
+    --seq;
+    index %= size;
+  }
+  return int64_t(1) << seq;
+}
+
+// SplitMix64's output mix (Steele, Lea and Flood 2014): nearby inputs give unrelated outputs, so
+// the random states of restarts differ from every other seed's.
+inline uint64_t splitMix64(uint64_t z) {
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  return z ^ (z >> 31);
+}
+
+}  // namespace desia
