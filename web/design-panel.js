@@ -13,7 +13,10 @@
 // cancelled | cut-point | error (the last outcome), #design-panel[data-kind] = voxel | plate | frame (what
 // Design will do), #design-message (the core's message),
 // #design-progress-box[data-updates] (progress messages seen in the current run),
-// #session-state[data-parts, data-children, data-complete] (the open session's node).
+// #session-state[data-parts, data-children, data-complete] (the open session's node),
+// #design-input[data-name] (what Design designs from: the assembly the user loaded, not a result
+// designed from it), .field-help[data-invalid] under each field (its one-line explanation, or
+// what is wrong with the value typed; the field gets aria-invalid).
 // #design-joints holds the joints an example needs once it is loaded (main.js EXAMPLES).
 
 import { byId } from './dom.js';
@@ -33,6 +36,14 @@ const FIELDS = {
 };
 const NUMBER_FIELDS = ['parts', 'seed', 'candidates', 'timeLimit'];
 const FIELD_NAMES = { parts: 'Parts N', seed: 'Seed', candidates: 'Candidates m', timeLimit: 'Time limit', clearance: 'Clearance' };
+/** A number as typed: what the text fields accept before the core checks the value. */
+const NUMBER_PATTERN = /^[+-]?(\d+(\.\d*)?|\.\d+)([eE][+-]?\d+)?$/;
+/**
+ * The fewest parts an interlocking puzzle has (key, a part it frees, the rest): the core refuses
+ * 1 and 2 with these words, and 0 with its generic range, so the page says the same for all three.
+ */
+const MIN_PARTS = 3;
+const MIN_PARTS_REASON = `an interlocking puzzle needs at least ${MIN_PARTS} parts`;
 
 /** The fields designPlate takes; the others are voxel-only and disabled for plates. */
 const PLATE_FIELDS = ['seed', 'candidates', 'timeLimit', 'clearance'];
@@ -71,6 +82,7 @@ const ui = {
   sessionPreview: byId('session-preview'),
   sessionChoose: byId('session-choose'),
   sessionState: byId('session-state'),
+  input: byId('design-input'),
 };
 
 /** How often the elapsed time moves while the core is busy between progress messages. */
@@ -144,7 +156,9 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
     const keys = kind === 'plate' ? PLATE_FIELDS : kind === 'frame' ? FRAME_FIELDS : NUMBER_FIELDS;
     for (const key of keys) {
       const field = FIELDS[key];
-      if (field.validity.badInput) throw new Error(`${FIELD_NAMES[key]}: not a number`);
+      if (field.validity.badInput) throw fieldError(key, `${FIELD_NAMES[key]}: not a number`);
+      const problem = fieldProblem(key);
+      if (problem) throw fieldError(key, problem);
       if (field.value.trim() !== '') options[key] = Number(field.value);
     }
     if (kind === 'frame') return options;
@@ -157,6 +171,64 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
     options.rank = FIELDS.rank.value;
     options.mode = FIELDS.mode.value;
     return options;
+  }
+
+  /** What is wrong with the text of a number field ('' when nothing the page can tell). */
+  function fieldProblem(key) {
+    const raw = FIELDS[key].value.trim();
+    if (raw === '' || FIELDS[key].type !== 'text') return '';
+    if (!NUMBER_PATTERN.test(raw)) return `${FIELD_NAMES[key]}: "${raw}" is not a number`;
+    const value = Number(raw);
+    // The core's own words for 1 and 2 (it answers 0 with its generic range).
+    if (key === 'parts' && Number.isInteger(value) && value < MIN_PARTS) return `parts = ${value}: ${MIN_PARTS_REASON}`;
+    return '';
+  }
+
+  function fieldError(key, message) {
+    const error = new Error(message);
+    error.field = key;
+    return error;
+  }
+
+  /** The help line under a field: its explanation, or what is wrong with the value typed. */
+  function helpOf(key) {
+    return FIELDS[key].parentElement.querySelector('.field-help');
+  }
+
+  function explain(key) {
+    const help = helpOf(key);
+    if (!help) return;
+    const raw = FIELDS[key].value.trim();
+    let text = help.dataset.default ?? help.textContent;
+    if (key === 'timeLimit') {
+      // The core: seconds, 0 = no limit for voxels and frames; whole seconds from 1 for plates.
+      if (kind === 'plate') text = 'whole seconds, 1 or more';
+      else if (raw !== '' && NUMBER_PATTERN.test(raw) && Number(raw) === 0) text = '0 = no limit: runs until done or Cancel';
+    }
+    const problem = fieldProblem(key);
+    markInvalid(key, problem !== '');
+    help.textContent = problem ? problem.replace(/^[^:]*: /, '') : text;
+  }
+
+  function markInvalid(key, invalid) {
+    const help = helpOf(key);
+    if (invalid) FIELDS[key].setAttribute('aria-invalid', 'true');
+    else FIELDS[key].removeAttribute('aria-invalid');
+    if (help) help.dataset.invalid = String(invalid);
+  }
+
+  /** A message of the core about one option ("design option 'seed' ...", "parts = 40 ...") marks that field. */
+  function markFieldOf(message) {
+    for (const key of Object.keys(FIELDS)) {
+      if (message.includes(`'${key}'`) || message.startsWith(`${key} =`)) {
+        markInvalid(key, true);
+        return;
+      }
+    }
+  }
+
+  function explainAll() {
+    for (const key of NUMBER_FIELDS) explain(key);
   }
 
   // -------------------------------------------------------------------------------------------
@@ -241,6 +313,7 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
       return { shape, options: readOptions() };
     } catch (error) {
       setOutcome('error', error.message);
+      if (error.field) FIELDS[error.field].focus();
       return null;
     }
   }
@@ -286,7 +359,10 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
     } catch (error) {
       const elapsed = end();
       if (error.cancelled) setOutcome('cancelled', cancelledMessage(run.latest, elapsed, structure ? structure.parts : 'parts'));
-      else setOutcome('error', error.message);
+      else {
+        setOutcome('error', error.message);
+        markFieldOf(error.message);
+      }
     }
   }
 
@@ -392,7 +468,9 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
   /** Session assemblies have no .puz text from the core: the page keeps them as JSON documents. */
   function showSessionAssembly(name, document_, surfaces, report, elapsedMs) {
     const plain = document_.voxel ? { ...document_, voxel: { ...document_.voxel, labels: Array.from(document_.voxel.labels) } } : document_;
-    showAssembly({ name: `${name}.json`, text: JSON.stringify(plain), document: document_, surfaces, report, elapsedMs, timingLabel: 'Step time' });
+    showAssembly({
+      name: `${name}.json`, text: JSON.stringify(plain), document: document_, surfaces, report, elapsedMs, timingLabel: 'Step time', menuLabel: `Step by step: ${name}`,
+    });
   }
 
   /**
@@ -460,6 +538,7 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
     ui.sessionState.dataset.parts = alive ? String(session.snapshot.partsPlaced) : '';
     ui.sessionState.dataset.children = String(childCount);
     ui.sessionState.dataset.complete = String(alive && session.snapshot.complete);
+    explain('timeLimit');
   }
 
   function wire() {
@@ -469,6 +548,7 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
     });
     ui.cancelButton.addEventListener('click', cancel);
     FIELDS.parts.addEventListener('input', () => { partsTouched = true; });
+    for (const key of NUMBER_FIELDS) FIELDS[key].addEventListener('input', () => explain(key));
     FIELDS.joints.addEventListener('change', () => { jointsFromExample = false; });
     ui.form.addEventListener('input', syncUrl);
     ui.form.addEventListener('change', syncUrl);
@@ -483,6 +563,7 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
   prefillFromUrl();
   wire();
   refreshControls();
+  explainAll();
 
   return {
     get busy() {
@@ -523,7 +604,30 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
     shapeLoaded(voxelCount) {
       if (partsTouched || !(voxelCount > 0)) return;
       FIELDS.parts.value = String(defaultParts(voxelCount));
+      explain('parts');
       syncUrl();
+    },
+    /**
+     * The user chose another input (example, file, mesh): the last run's message and progress
+     * are about the previous one, and N follows the new shape again (`keepParts`: a shared link's
+     * first load keeps its N).
+     */
+    inputChanged({ keepParts = false } = {}) {
+      if (busy) return;
+      setOutcome('', '');
+      ui.progressBox.hidden = true;
+      ui.progressBox.dataset.updates = '0';
+      ui.progress.value = 0;
+      ui.progressText.textContent = '';
+      if (!keepParts) partsTouched = false;
+      for (const key of Object.keys(FIELDS)) markInvalid(key, false);
+      explainAll();
+    },
+    /** What Design designs from (`input` = { name }, or null), described as 'name · 64 voxels'. */
+    setInput(input, description) {
+      ui.input.hidden = !input;
+      ui.input.dataset.name = input?.name ?? '';
+      ui.input.textContent = input ? `Input: ${input.name} · ${description}` : '';
     },
     /** The worker was replaced (crash or cancel): forget what lived in the old one. */
     refresh: refreshControls,

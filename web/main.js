@@ -7,11 +7,14 @@
 // or design, or a crashed core, cannot freeze or break it.
 //
 // For tests the page exposes: body[data-status] = loading | ready | error, body[data-source] =
-// the assembly shown, body[data-webgl] = on | off, body[data-core] = starting | ready (the
-// worker), #verdict (text, data-verdict, data-key) and #error; design-panel.js, mesh-input.js,
-// export-panel.js and offline.js add their own.
+// the assembly last asked for (shown, or named by the error), body[data-shown] = the assembly in
+// the 3D view and report (a file that fails to load leaves the previous one there),
+// body[data-webgl] = on | off, body[data-core] = starting | ready (the worker), #verdict (text,
+// data-verdict: the core's verdict, or 'shape' for a one-part voxel shape to design from;
+// data-key), #still-showing (after a failed load: what the view still shows), #method-note (the graph test is not exact for this assembly) and #error;
+// design-panel.js, mesh-input.js, export-panel.js and offline.js add their own.
 
-import { byId, element } from './dom.js';
+import { byId, element, fitSelectToValue } from './dom.js';
 import { AssemblyView, createPlaybackControls } from './view.js';
 import { highlightRemovalStep, renderPlan, renderReport, resetReport, withPlannedRemoval } from './report.js';
 import { CoreWorker, MAX_FAILED_STARTS } from './worker-client.js';
@@ -78,6 +81,8 @@ function exampleUrl(file) {
   return new URL(file, example?.plate ? PLATE_EXAMPLES_URL : example?.frame ? FRAME_EXAMPLES_URL : EXAMPLES_URL);
 }
 const USER_FILE_OPTION = '__user-file__';
+/** The menu entry that names a designed result (or a design step) while it is on screen. */
+const RESULT_OPTION = '__result__';
 
 /** Larger inputs are refused before reading: a voxel file this big is surely a mistake. */
 const MAX_FILE_BYTES = 32 * 1024 * 1024;
@@ -104,7 +109,10 @@ const ui = {
   disassemblyMoves: byId('disassembly-moves'),
   explodedRange: byId('exploded-range'),
   error: byId('error'),
+  stillShowing: byId('still-showing'),
   sourceName: byId('source-name'),
+  methodNote: byId('method-note'),
+  methodNoteLp: byId('method-note-lp'),
   coreVersion: byId('core-version'),
   dropOverlay: byId('drop-overlay'),
 };
@@ -124,6 +132,8 @@ function showError(message) {
 function hideError() {
   ui.error.textContent = '';
   ui.error.hidden = true;
+  ui.stillShowing.textContent = '';
+  ui.stillShowing.hidden = true;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -154,8 +164,19 @@ window.__desiaView = {
   get exploded() { return view.exploded; },
 };
 let coreReady = false;
-/** { name, text } of the assembly on screen: re-checked with another method, designed from, downloaded. */
+/** { name, text } of the assembly on screen: re-checked with another method, downloaded, exported. */
 let current = null;
+/**
+ * Everything needed to put the last successfully shown assembly back on screen: a file that fails
+ * to load leaves it there. { name, text, document, surfaces, report, elapsedMs, timingLabel, option, optionLabel }
+ */
+let shown = null;
+/**
+ * The input the Design panel designs from: the last assembly the user loaded (an example, a file,
+ * a voxelized mesh), not a result designed from it, so Design on a result designs the same input
+ * again. { name, text, kind }
+ */
+let designInput = null;
 let loadGeneration = 0; // Only the newest load may touch the page.
 let lastUserFile = null; // The user's last file, so its select entry can load it again.
 
@@ -175,6 +196,25 @@ function isJsonName(name) {
   return /\.json$/i.test(name ?? '');
 }
 
+/** Puts the menu on the entry for what is on screen (`option`: a value; `label` for the user's file and results). */
+function selectMenuEntry(option, label) {
+  for (const value of [USER_FILE_OPTION, RESULT_OPTION]) {
+    const entry = ui.exampleSelect.querySelector(`option[value="${value}"]`);
+    if (value === option) {
+      if (label) entry.textContent = label;
+      entry.hidden = false;
+    } else if (value === RESULT_OPTION) {
+      entry.hidden = true; // a result is only listed while it is on screen
+    }
+  }
+  ui.exampleSelect.value = option;
+  fitSelectToValue(ui.exampleSelect);
+}
+
+function menuLabel(option) {
+  return ui.exampleSelect.querySelector(`option[value="${option}"]`)?.textContent ?? '';
+}
+
 function voxelCount(document_) {
   const labels = document_?.voxel?.labels ?? [];
   let count = 0;
@@ -186,37 +226,53 @@ function voxelCount(document_) {
  * Puts an assembly on screen whose document, part surfaces and report are already known (a
  * designed puzzle, a design step). It supersedes any load still in flight.
  */
-function showAssembly({ name, text, document: document_, surfaces, report, elapsedMs, timingLabel }) {
+function showAssembly({ name, text, document: document_, surfaces, report, elapsedMs, timingLabel, menuLabel: label = `Designed: ${name}` }) {
   loadGeneration += 1;
   document.body.dataset.source = name;
-  ui.sourceName.textContent = name;
   hideError();
-  view.show(document_, surfaces);
-  setCurrent({ name, text }, report, document_);
-  // A plate plan is played along its own planned removal directions.
-  const shown = withPlannedRemoval(report, document_);
-  renderReport(shown, elapsedMs, timingLabel);
-  renderPlan(document_);
-  view.applyReport(shown);
-  setUpDisassemblySlider(view.available ? shown.disassembly : null);
+  selectMenuEntry(RESULT_OPTION, label);
+  present({ name, text, document: document_, surfaces, report, elapsedMs, timingLabel, option: RESULT_OPTION, optionLabel: label });
   setStatus('ready');
   // Voxel designs are verified with the graph test; another chosen test runs on the result as
   // well (plate plans are verified with both tests already).
-  if (report.method && report.method !== 'both' && report.method !== ui.methodSelect.value) loadAssembly(name, async () => text);
+  if (report.method && report.method !== 'both' && report.method !== ui.methodSelect.value) loadAssembly(name, async () => text, { asInput: false });
+}
+
+/**
+ * Draws an assembly whose document, surfaces and report are known, fills the report and makes it
+ * the current one (the 3D view, the report panel, the download and export).
+ */
+function present(assembly) {
+  const { name, text, document: document_, surfaces, report, elapsedMs, timingLabel = 'Check time' } = assembly;
+  shown = assembly;
+  document.body.dataset.shown = name;
+  ui.sourceName.textContent = name;
+  view.show(document_, surfaces);
+  setCurrent({ name, text }, report, document_);
+  // A plate plan is played along its own planned removal directions.
+  const played = withPlannedRemoval(report, document_);
+  renderReport(played, elapsedMs, timingLabel, { voxels: document_.kind === 'voxel' ? voxelCount(document_) : null });
+  renderPlan(document_);
+  view.applyReport(played);
+  setUpDisassemblySlider(view.available ? played.disassembly : null);
 }
 
 /**
  * Shows one assembly: `readText` yields its text (a fetch or a file read, so that their errors
  * land in the same error box as the core's).
  */
-async function loadAssembly(name, readText, { origin = name } = {}) {
+async function loadAssembly(name, readText, { origin = name, asInput = true } = {}) {
   const generation = ++loadGeneration;
   const isCurrent = () => generation === loadGeneration;
+  // The menu entry asked for; on failure the menu goes back to the one on screen.
+  const option = ui.exampleSelect.value;
+  const optionLabel = menuLabel(option);
   setStatus('loading', coreReady ? 'Checking…' : 'Starting the core…');
   document.body.dataset.source = name;
   ui.sourceName.textContent = name;
   setCurrent(null);
   hideError();
+  // The view keeps the previous assembly until this one is parsed and checked.
   resetReport('Checking…');
   try {
     const text = await readText();
@@ -224,30 +280,48 @@ async function loadAssembly(name, readText, { origin = name } = {}) {
     // `source` makes the core's error messages name the file (and line) they are about.
     const { value: { document: document_, surfaces } } = await core.run('parse', text, { source: name });
     if (!isCurrent()) return;
-    view.show(document_, surfaces);
     const { value: report, elapsedMs } = await core.run('check', text, { method: ui.methodSelect.value, source: name });
     if (!isCurrent()) return;
-    setCurrent({ name, text }, report, document_);
     // A plate plan opened from a file plays its own removal, as it did when it was designed.
-    const shown = withPlannedRemoval(report, document_);
-    renderReport(shown, elapsedMs);
-    renderPlan(document_);
-    view.applyReport(shown);
-    setUpDisassemblySlider(view.available ? shown.disassembly : null);
-    if (document_.kind === 'voxel') designPanel.shapeLoaded(voxelCount(document_));
+    present({ name, text, document: document_, surfaces, report, elapsedMs, option, optionLabel });
+    if (asInput) {
+      designInput = { name, text, kind: report.kind ?? document_.kind };
+      designPanel.setInput(designInput, describeInput(document_, report));
+      if (document_.kind === 'voxel') designPanel.shapeLoaded(voxelCount(document_));
+    }
     setStatus('ready');
   } catch (error) {
     if (!isCurrent()) return;
-    setCurrent(null);
-    view.clear();
-    setUpDisassemblySlider(null);
-    resetReport('No result');
     // The core's messages start with the source name already; others (fetch, worker) get it here.
     // `origin` is the file the text came from when it is not `name` (a mesh and its voxels).
     const message = error.message.startsWith(name) || error.message.startsWith(origin) ? error.message : `${name}: ${error.message}`;
-    showError(message);
+    if (shown) {
+      // The previous assembly stays until a valid one replaces it.
+      present(shown);
+      selectMenuEntry(shown.option, shown.optionLabel);
+      showError(message);
+      ui.stillShowing.textContent = `Still showing ${shown.name}: the view and the report below are about it.`;
+      ui.stillShowing.hidden = false;
+    } else {
+      setCurrent(null);
+      view.clear();
+      setUpDisassemblySlider(null);
+      resetReport('No result');
+      showError(message);
+    }
     setStatus('error');
   }
+}
+
+/** 'Cube_4x4x4_origin.puz · 64 voxels' ('· 6 plates', '· 12 beams'): what Design starts from. */
+function describeInput(document_, report) {
+  const kind = report.kind ?? document_.kind;
+  if (kind === 'voxel') {
+    const parts = report.parts > 1 ? `, ${report.parts} parts` : '';
+    return `${voxelCount(document_)} voxels${parts}`;
+  }
+  const noun = kind === 'plate' ? 'plates' : kind === 'frame' ? 'beams' : 'parts';
+  return `${report.parts} ${noun}`;
 }
 
 async function fetchExampleText(file) {
@@ -261,8 +335,12 @@ async function fetchExampleText(file) {
  * Loads a bundled example; it brings the Joints choice it needs (`joints` in EXAMPLES), unless
  * `keepJoints` (the first load of a shared link that says which joints).
  */
-function loadExample(file, { keepJoints = false } = {}) {
+function loadExample(file, { keepJoints = false, first = false } = {}) {
   if (!keepJoints) designPanel.setExampleJoints(EXAMPLES.find((example) => example.file === file)?.joints ?? null);
+  // Another input: the last run's message, progress and N belong to the previous one (a shared
+  // link's N is kept for its first load).
+  designPanel.inputChanged({ keepParts: first });
+  selectMenuEntry(file);
   if (meshInput.isExample(file)) return meshInput.openExample(file);
   meshInput.forget();
   return loadAssembly(file, () => fetchExampleText(file));
@@ -271,10 +349,8 @@ function loadExample(file, { keepJoints = false } = {}) {
 function loadUserFile(file) {
   lastUserFile = file;
   designPanel.setExampleJoints(null); // the user's own design: 'cut' unless the user chose otherwise
-  const option = ui.exampleSelect.querySelector(`option[value="${USER_FILE_OPTION}"]`);
-  option.textContent = `Your file: ${file.name}`;
-  option.hidden = false;
-  ui.exampleSelect.value = USER_FILE_OPTION;
+  designPanel.inputChanged();
+  selectMenuEntry(USER_FILE_OPTION, `Your file: ${file.name}`);
   if (isMeshName(file.name)) return openMeshOrFrame(file);
   meshInput.forget();
   return loadAssembly(file.name, async () => {
@@ -388,7 +464,7 @@ const exportPanel = createExportPanel({ core });
 
 const designPanel = createDesignPanel({
   core,
-  getShape: () => current,
+  getShape: () => designInput,
   showAssembly,
   setBusy,
 });
@@ -396,9 +472,11 @@ const designPanel = createDesignPanel({
 // ---------------------------------------------------------------------------------------------
 // Wiring
 
+/** The label alone (the report names the file); the file name is the option's tooltip. */
 function exampleOption({ file, label }) {
-  const option = element('option', `${label} (${file})`);
+  const option = element('option', label);
   option.value = file;
+  option.title = file;
   return option;
 }
 
@@ -406,6 +484,9 @@ function fillExampleSelect() {
   const userOption = element('option', 'Your file');
   userOption.value = USER_FILE_OPTION;
   userOption.hidden = true;
+  const resultOption = element('option', 'Designed');
+  resultOption.value = RESULT_OPTION;
+  resultOption.hidden = true;
   const puzzles = document.createElement('optgroup');
   puzzles.label = 'Puzzles';
   puzzles.append(...EXAMPLES.filter((example) => !example.shape && !example.plate && !example.frame).map(exampleOption));
@@ -421,7 +502,7 @@ function fillExampleSelect() {
   const frames = document.createElement('optgroup');
   frames.label = 'Frame structures';
   frames.append(...EXAMPLES.filter((example) => example.frame).map(exampleOption));
-  ui.exampleSelect.replaceChildren(userOption, puzzles, shapes, meshes, plates, frames);
+  ui.exampleSelect.replaceChildren(userOption, resultOption, puzzles, shapes, meshes, plates, frames);
 }
 
 function initialExample() {
@@ -455,9 +536,19 @@ function wireDragAndDrop() {
   });
 }
 
+/** Checks the assembly on screen again with the chosen test (the design input stays what it was). */
+function recheck() {
+  if (!current) return;
+  const { name, text } = current;
+  loadAssembly(name, async () => text, { asInput: designInput?.name === name && designInput?.text === text });
+}
+
 function wireControls() {
   ui.exampleSelect.addEventListener('change', () => {
-    if (ui.exampleSelect.value !== USER_FILE_OPTION) {
+    fitSelectToValue(ui.exampleSelect);
+    if (ui.exampleSelect.value === RESULT_OPTION) {
+      // Only listed while the result is on screen: nothing to load.
+    } else if (ui.exampleSelect.value !== USER_FILE_OPTION) {
       writeUrlState({ example: ui.exampleSelect.value });
       loadExample(ui.exampleSelect.value);
     } else if (lastUserFile) {
@@ -470,10 +561,11 @@ function wireControls() {
     ui.fileInput.value = '';
     if (file) loadUserFile(file);
   });
-  ui.methodSelect.addEventListener('change', () => {
-    if (!current) return;
-    const { name, text } = current;
-    loadAssembly(name, async () => text);
+  ui.methodSelect.addEventListener('change', recheck);
+  // The graph test is not exact for this assembly (report.js says why): run the LP test on it.
+  ui.methodNoteLp.addEventListener('click', () => {
+    ui.methodSelect.value = 'lp';
+    recheck();
   });
   ui.downloadButton.addEventListener('click', downloadCurrent);
 }
@@ -488,7 +580,7 @@ function main() {
   ui.exampleSelect.value = file;
   registerServiceWorker();
   // Once the first assembly is on screen, keep the playground's files for offline use.
-  loadExample(file, { keepJoints: readUrlState().joints !== undefined }).finally(() => keepForOffline([
+  loadExample(file, { keepJoints: readUrlState().joints !== undefined, first: true }).finally(() => keepForOffline([
     ...EXAMPLES.map((example) => exampleUrl(example.file).href),
     ...meshInput.exampleUrls,
   ]));

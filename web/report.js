@@ -7,8 +7,14 @@
 // Plate designs add their cut points (#cut-points[data-plates]) and, for a joint plan, its joints
 // (#joints li[data-mover, data-other, data-type, data-direction], #joints-details[data-count]).
 //
-// For tests: #verdict[data-verdict, data-key], #paths li[aria-current] (the removal shown by the
-// disassembly animation), #dbg-panel (see dbg-panel.js).
+// A one-part voxel assembly is a shape to design from, not a failed puzzle: #verdict says
+// "Shape: 64 voxels, ready to design" (data-verdict="shape"). When the graph test ran on contacts
+// that are not all along the axes (the core's base directions are more than +x, +y, +z), its
+// "interlocking" or "deadlocked" is not exact (paper Section 3.2): #method-note says so and offers
+// the LP test.
+//
+// For tests: #verdict[data-verdict, data-key], #method-note[hidden, data-directions], #paths
+// li[aria-current] (the removal shown by the disassembly animation), #dbg-panel (see dbg-panel.js).
 
 import { byId, element } from './dom.js';
 import { clearBlockingGraphs, renderBlockingGraphs } from './dbg-panel.js';
@@ -42,7 +48,12 @@ const ui = {
   jointsDetails: byId('joints-details'),
   jointsSummary: byId('joints-summary'),
   joints: byId('joints'),
+  methodNote: byId('method-note'),
+  methodNoteText: byId('method-note-text'),
 };
+
+/** The base directions the core gives when every contact normal is along an axis. */
+const AXIS_DIRECTIONS = new Set(['+x', '+y', '+z']);
 
 const METHOD_NAMES = { dbg: 'graphs (DBG)', lp: 'linear program (LP)', both: 'graphs and linear program' };
 
@@ -95,15 +106,22 @@ function formatComponents(components) {
  * Shows `report`. `elapsedMs` is how long the core took; `timingLabel` says for what (a designed
  * puzzle reports its design time, which includes the verifying check).
  */
-export function renderReport(report, elapsedMs, timingLabel = 'Check time') {
+export function renderReport(report, elapsedMs, timingLabel = 'Check time', { voxels = null } = {}) {
   const verdict = report.verdict ?? (report.interlocking ? 'interlocking' : 'not-interlocking');
   const title = VERDICT_TITLES[verdict] ?? verdict;
   const hasKey = report.key !== null && report.key !== undefined;
-  ui.verdict.textContent = verdict === 'interlocking' && hasKey ? `${title}, key: part ${report.key}` : title;
-  ui.verdict.dataset.verdict = verdict;
+  if (isShape(report)) {
+    ui.verdict.textContent = `Shape: ${voxels ?? 'its'} voxels, ready to design`;
+    ui.verdict.dataset.verdict = 'shape';
+    ui.reason.textContent = 'One part: Design splits it into N interlocking parts.';
+  } else {
+    ui.verdict.textContent = verdict === 'interlocking' && hasKey ? `${title}, key: part ${report.key}` : title;
+    ui.verdict.dataset.verdict = verdict;
+    ui.reason.textContent = [report.reason, formatMethods(report.methods), formatShapeRemoval(report.shapeRemoval)]
+      .filter(Boolean).join('. ');
+  }
   ui.verdict.dataset.key = hasKey ? String(report.key) : '';
-  ui.reason.textContent = [report.reason, formatMethods(report.methods), formatShapeRemoval(report.shapeRemoval)]
-    .filter(Boolean).join('. ');
+  renderMethodNote(report, verdict);
   ui.method.textContent = METHOD_NAMES[report.method] ?? report.method ?? '—';
   ui.partsCount.textContent = String(report.parts ?? report.partIds?.length ?? '—');
   ui.key.textContent = hasKey ? `part ${report.key}` : 'none';
@@ -119,6 +137,29 @@ export function renderReport(report, elapsedMs, timingLabel = 'Check time') {
   renderGraphs(report.graphs);
   renderBlockingGraphs(ui.dbgPanel, report);
   renderCutPoints(report.cutPoints);
+}
+
+/** A voxel assembly of one part: the input of a design, not a puzzle that failed. */
+function isShape(report) {
+  return report.kind === 'voxel' && report.parts === 1;
+}
+
+/**
+ * The graph test decides exactly only when every contact normal is along an axis (then the core's
+ * base directions are +x, +y, +z). Otherwise parts moving at once in different directions escape
+ * it: its "interlocking" or "deadlocked" needs the LP test. A "not interlocking" names a real motion.
+ */
+function renderMethodNote(report, verdict) {
+  const labels = (report.baseDirections ?? []).map((direction) => direction.label);
+  const count = report.baseDirectionCount ?? labels.length;
+  const offAxis = count > AXIS_DIRECTIONS.size || labels.some((label) => !AXIS_DIRECTIONS.has(label));
+  const inexact = report.method === 'dbg' && offAxis && verdict !== 'not-interlocking' && !isShape(report);
+  ui.methodNote.hidden = !inexact;
+  ui.methodNote.dataset.directions = inexact ? String(count) : '';
+  ui.methodNoteText.textContent = inexact
+    ? `The graph test is not exact here: some contacts are not along an axis (${count} base directions), and `
+      + `parts moving at once in different directions escape it. The LP test decides exactly.`
+    : '';
 }
 
 /** A plate or frame result's removal plan replayed on its real shapes by the core (checkDocument). */
@@ -212,6 +253,8 @@ function renderGraphs(graphs) {
 }
 
 export function resetReport(message) {
+  ui.methodNote.hidden = true;
+  ui.methodNote.dataset.directions = '';
   ui.verdict.textContent = message;
   ui.verdict.dataset.verdict = '';
   ui.verdict.dataset.key = '';
