@@ -600,13 +600,16 @@ std::vector<Flat> tenonSection(const MitreTenon& tenon, const MitreFrame& frame,
   return {{-h, 0}, {h, 0}, {h + d * into[0], d * into[1]}, {-h + d * into[0], d * into[1]}};
 }
 
+// In the pocket plate's plane, across the edge, away from the mitre into the plate.
+Vec3 pocketInward(const std::vector<Plate>& plates, const MitreTenon& tenon) {
+  const Vec3 inward = normalized(cross(plateThicknessAxis(plates[tenon.pocketPlate]), tenon.line));
+  return dot(inward, mitreFrame(tenon).normal) < 0 ? negated(inward) : inward;
+}
+
 // The notch through the pocket plate, in its plane: from beyond the mitre to past the pocket.
 Loop pocketNotch(const std::vector<Plate>& plates, const MitreTenon& tenon) {
   const Plate& pocket = plates[tenon.pocketPlate];
-  const Vec3 axis = plateThicknessAxis(pocket);
-  Vec3 inward = normalized(cross(axis, tenon.line));
-  const MitreFrame frame = mitreFrame(tenon);
-  if (dot(inward, frame.normal) < 0) inward = negated(inward);
+  const Vec3 inward = pocketInward(plates, tenon);
   const double out = -2 * (plateThickness(pocket) + tenon.depth), in = tenon.notchReach;
   auto at = [&](double s, double u) { return plus(tenon.middle, plus(scaled(tenon.line, s), scaled(inward, u))); };
   return {at(-tenon.halfWidth, out), at(tenon.halfWidth, out), at(tenon.halfWidth, in), at(-tenon.halfWidth, in)};
@@ -617,8 +620,7 @@ Plate pocketSurround(const std::vector<Plate>& plates, const MitreTenon& tenon) 
   const Plate& pocket = plates[tenon.pocketPlate];
   const MitreFrame frame = mitreFrame(tenon);
   const Vec3 axis = plateThicknessAxis(pocket);
-  Vec3 inward = normalized(cross(axis, tenon.line));
-  if (dot(inward, frame.normal) < 0) inward = negated(inward);
+  const Vec3 inward = pocketInward(plates, tenon);
   const double big = 10 * (plateThickness(pocket) + tenon.depth + tenon.halfHeight + tenon.notchReach);
   std::vector<Flat> wood{{-big, -big}, {big, -big}, {big, big}, {-big, big}};
   const Flat a{dot(axis, frame.across), dot(axis, frame.normal)}, u{dot(inward, frame.across), dot(inward, frame.normal)};
@@ -714,8 +716,7 @@ std::optional<MitreTenon> mitreTenonOf(const std::vector<Plate>& plates, const P
   constexpr double kShallowestPocket = 2.0;  // mm
   if (tenon.depth < kShallowestPocket) return std::nullopt;
   // The notch runs past the pocket and past the mitre (its cut ends where the plate is whole).
-  Vec3 inwardDirection = normalized(cross(axis, tenon.line));
-  if (dot(inwardDirection, normal) < 0) inwardDirection = negated(inwardDirection);
+  const Vec3 inwardDirection = pocketInward(plates, tenon);
   const MitreFrame sectionFrame = mitreFrame(tenon);
   for (const Flat& q : tenonSection(tenon, sectionFrame, 0))
     tenon.notchReach = std::max(tenon.notchReach, dot(minus(sectionFrame.at(q, 0), tenon.middle), inwardDirection));
