@@ -79,6 +79,11 @@ VoxelDesignOptions parseDesignOptionsJson(const std::string& text, const VoxelGr
     else if (key == "rank") options.ranking = parseCandidateRanking(stringOption(value, "rank"));
     else if (key == "mode") options.mode = parseDesignMode(stringOption(value, "mode"));
     else if (key == "minPartSize") options.minPartSize = static_cast<int>(integerOption(value, "minPartSize", 0, 1000000));
+    else if (key == "maxPartSize") options.maxPartSize = static_cast<int>(integerOption(value, "maxPartSize", 0, 1000000));
+    else if (key == "evenParts") {
+      if (!value.is_boolean()) throwBadInput("", "design option 'evenParts' must be true or false, got " + value.dump());
+      options.evenParts = value.get<bool>();
+    }
     else if (key == "nodeLimit") options.nodeLimit = integerOption(value, "nodeLimit", 0, int64_t(1) << 52);
     else if (key == "keyDirection") options.keyDirection = parseAxisDirection(stringOption(value, "keyDirection"));
     else if (key == "groups") options.groups = groupsFromJson(value, shape, "design options");
@@ -87,8 +92,8 @@ VoxelDesignOptions parseDesignOptionsJson(const std::string& text, const VoxelGr
       options.timeLimitSeconds = value.get<double>();
     } else {
       throwBadInput("", "unknown design option '" + key +
-                            "' (expected parts, seed, candidates, rank, mode, minPartSize, nodeLimit, "
-                            "keyDirection, groups or timeLimit)");
+                            "' (expected parts, seed, candidates, rank, mode, minPartSize, maxPartSize, evenParts, "
+                            "nodeLimit, keyDirection, groups or timeLimit)");
     }
   }
   return options;
@@ -110,12 +115,15 @@ std::string designResultToJson(const VoxelDesignResult& result, int indent) {
   json progress = json::parse(designProgressToJson(result.progress));
   progress.erase("elapsedSeconds");  // timing differs between runs; keep results reproducible
   root["progress"] = progress;
+  root["seed"] = result.seed;
   if (result.status == DesignStatus::Success) {
     const AssemblyDocument document = documentFromVoxels(result.puzzle);
+    root["partSizes"] = {{"min", result.partSizes.min}, {"max", result.partSizes.max}, {"mean", result.partSizes.mean}};
     root["puz"] = formatPuz(result.puzzle);
     root["document"] = json::parse(documentToJson(document, -1));
     root["verification"] = json::parse(checkReportToJson(document, result.verification, -1));
   } else {
+    root["partSizes"] = nullptr;
     root["puz"] = nullptr;
     root["document"] = nullptr;
     root["verification"] = nullptr;

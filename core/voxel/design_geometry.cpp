@@ -107,6 +107,26 @@ int targetPartSize(int64_t remainderVoxels, int partsLeftIncludingRemainder) {
   return static_cast<int>(remainderVoxels / std::max(1, partsLeftIncludingRemainder));
 }
 
+PartSizeBounds partSizeBounds(const VoxelDesignOptions& options) {
+  PartSizeBounds bounds;
+  bounds.min = std::max(1, options.minPartSize);
+  bounds.max = options.maxPartSize > 0 ? options.maxPartSize : std::numeric_limits<int>::max();
+  return bounds;
+}
+
+SizeWindow partSizeWindow(int64_t remainderVoxels, int partsLeftIncludingRemainder, const PartSizeBounds& bounds) {
+  const int64_t later = std::max(0, partsLeftIncludingRemainder - 1);  // parts after this one
+  const int64_t low = std::max<int64_t>(bounds.min, remainderVoxels - later * bounds.max);
+  const int64_t high = std::min<int64_t>(bounds.max, remainderVoxels - later * bounds.min);
+  return {static_cast<int>(std::clamp<int64_t>(low, 0, std::numeric_limits<int>::max())),
+          static_cast<int>(std::clamp<int64_t>(high, -1, std::numeric_limits<int>::max()))};
+}
+
+SizeWindow clampInto(const SizeWindow& heuristic, const SizeWindow& allowed) {
+  if (allowed.empty()) return allowed;
+  return {std::clamp(heuristic.min, allowed.min, allowed.max), std::clamp(heuristic.max, allowed.min, allowed.max)};
+}
+
 PartBuilder::PartBuilder(const VoxelGrid& grid, int remainderLabel, const DesignContext& context,
                          const std::vector<double>& access)
     : grid_(grid),

@@ -158,4 +158,25 @@ std::vector<Candidate> generatePartCandidates(const VoxelGrid& grid, int remaind
 // The target size of the next part: what is left shared evenly over the parts still to make.
 int targetPartSize(int64_t remainderVoxels, int partsLeftIncludingRemainder);
 
+// A range of part sizes [min, max] in voxels; empty when min > max.
+struct SizeWindow {
+  int min = 0;
+  int max = 0;
+  bool empty() const { return min > max; }
+};
+
+// The part size bounds of a run: options.minPartSize and options.maxPartSize, filled in by the
+// designer (effective options), so every part, the last remainder included, lies within them.
+PartSizeBounds partSizeBounds(const VoxelDesignOptions& options);
+
+// Look-ahead on sizes: the sizes the next part may take within `bounds` such that the remainder
+// it leaves can still be split into the parts still to make (partsLeftIncludingRemainder - 1 of
+// them), each within `bounds`: remainder - size between (partsLeft - 1) * min and
+// (partsLeft - 1) * max. A part outside it is a dead branch however the rest is designed.
+SizeWindow partSizeWindow(int64_t remainderVoxels, int partsLeftIncludingRemainder, const PartSizeBounds& bounds);
+
+// A heuristic window (e.g. the target size +- a quarter) moved into the sizes `allowed` permits:
+// each end clamped into `allowed`, so the heuristic decides wherever the bounds leave it room.
+SizeWindow clampInto(const SizeWindow& heuristic, const SizeWindow& allowed);
+
 }  // namespace desia::design

@@ -104,7 +104,13 @@ std::vector<Candidate> generateKeyCandidates(const VoxelGrid& grid, DesignContex
   constexpr int remainder = 1;
   const Int3 d = context.options.keyDirection;
   const std::vector<double> access = accessibility(grid, remainder);
-  const int minSize = std::max(2, targetSize), maxSize = std::max(minSize, targetSize + targetSize / 4);
+  // The target size up to a quarter more, within what the size bounds leave for a key whose R1
+  // can still be split into the N - 1 parts to come (partSizeWindow).
+  const SizeWindow allowed = partSizeWindow(context.shapeVoxels, context.options.parts, partSizeBounds(context.options));
+  if (allowed.empty()) return {};
+  const int heuristicMin = std::max(2, targetSize);
+  const SizeWindow size = clampInto({heuristicMin, std::max(heuristicMin, targetSize + targetSize / 4)}, allowed);
+  const int minSize = size.min, maxSize = size.max;
   VoxelGrid work = grid;
   std::vector<Candidate> candidates;
   std::set<std::vector<int64_t>> seen;

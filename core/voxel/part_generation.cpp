@@ -268,12 +268,15 @@ std::vector<Candidate> generatePartCandidates(const VoxelGrid& grid, int remaind
   for (int64_t v = 0; v < grid.voxelCount(); ++v) remainderVoxels += grid.labelAt(v) == remainder ? 1 : 0;
 
   // Part sizes within a quarter of the target, which keeps the search flexible; the final split
-  // (P_(N-1) and the last remainder) only needs both parts to be of a reasonable size.
+  // (P_(N-1) and the last remainder) only needs both parts to be of a reasonable size. Both are
+  // moved into the sizes the bounds allow with R_i still splittable into the parts to come
+  // (partSizeWindow: a part outside it is a dead branch, refused before it is built).
   const bool finalSplit = partsStillToPlace == 1;
-  const int minSize = std::max(options.minPartSize, finalSplit ? targetSize / 2 : targetSize - targetSize / 4);
-  const int maxSize = finalSplit ? static_cast<int>(remainderVoxels) - minSize : targetSize + targetSize / 4 + 1;
-  // R_i must keep room for the parts still to come.
-  const int64_t remainderFloor = static_cast<int64_t>(partsStillToPlace) * std::max(1, options.minPartSize);
+  const SizeWindow allowed = partSizeWindow(remainderVoxels, partsStillToPlace + 1, partSizeBounds(options));
+  if (allowed.empty()) return {};
+  const int heuristicMin = clampInto({finalSplit ? targetSize / 2 : targetSize - targetSize / 4, 0}, allowed).min;
+  const int heuristicMax = finalSplit ? static_cast<int>(remainderVoxels) - heuristicMin : targetSize + targetSize / 4 + 1;
+  const SizeWindow size = clampInto({heuristicMin, std::max(heuristicMin, heuristicMax)}, allowed);
 
   VoxelGrid work = grid;
   std::vector<Candidate> candidates;
@@ -312,8 +315,8 @@ std::vector<Candidate> generatePartCandidates(const VoxelGrid& grid, int remaind
       }
     }
     ok = ok && someAxisFreeOfPairs && builder.connect() && builder.clearPathAlong(removal) &&
-         builder.growTo(minSize, maxSize, removal, context.random);
-    if (!ok || remainderVoxels - builder.size() < remainderFloor) continue;
+         builder.growTo(size.min, size.max, removal, context.random);
+    if (!ok) continue;
     Candidate candidate{builder.sortedPartVoxels(), 0};
     if (!seen.insert(candidate.partVoxels).second) continue;
     applyCandidate(work, remainder, candidate);

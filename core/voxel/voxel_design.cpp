@@ -3,6 +3,7 @@
 // to siblings and ancestors, held in an explicit stack (no recursion: WebAssembly's stack is
 // small and N can be in the thousands). A level stores its children as the voxels of the new part
 // only, so memory grows with N times m small lists, not with N grids.
+#include <algorithm>
 #include <chrono>
 #include <optional>
 #include <sstream>
@@ -54,6 +55,26 @@ const char* designStatusName(DesignStatus status) {
     case DesignStatus::Cancelled: return "cancelled";
   }
   return "not-found";
+}
+
+PartSizeBounds evenPartBounds(int64_t voxels, int parts) {
+  const int64_t n = std::max(1, parts);
+  const int64_t floorMean = voxels / n, ceilMean = (voxels + n - 1) / n;
+  const int64_t tolerance = std::max<int64_t>(1, static_cast<int64_t>(kEvenPartsTolerance * static_cast<double>(voxels) / n));
+  return {static_cast<int>(std::max<int64_t>(1, floorMean - tolerance)), static_cast<int>(ceilMean + tolerance)};
+}
+
+PartSizeSpread partSizeSpread(const VoxelGrid& puzzle) {
+  const std::vector<int64_t> counts = puzzle.labelCounts();  // entry 0: empty voxels
+  PartSizeSpread spread;
+  if (counts.size() < 2) return spread;
+  const auto [smallest, largest] = std::minmax_element(counts.begin() + 1, counts.end());
+  int64_t total = 0;
+  for (size_t k = 1; k < counts.size(); ++k) total += counts[k];
+  spread.min = static_cast<int>(*smallest);
+  spread.max = static_cast<int>(*largest);
+  spread.mean = static_cast<double>(total) / static_cast<double>(counts.size() - 1);
+  return spread;
 }
 
 namespace {
@@ -304,6 +325,8 @@ class Search {
     updateProgress();
     result.status = status;
     result.progress = progress_;
+    result.seed = options_.seed;
+    if (status == DesignStatus::Success) result.partSizes = partSizeSpread(result.puzzle);
     std::ostringstream message;
     const std::string reached = "the deepest node had " + std::to_string(progress_.bestDepth + 1) + " of " +
                                 std::to_string(options_.parts) + " parts (" + std::to_string(progress_.nodesVisited) +
@@ -343,10 +366,40 @@ class Search {
   DesignProgress progress_;
 };
 
-// Options with the automatic values filled in.
+std::string sizeText(const char* what, int size) { return std::string(what) + " part size " + std::to_string(size); }
+
+// Refuses part size bounds that no N parts covering the shape can meet, naming the values.
+void checkPartSizeBounds(const VoxelDesignOptions& options, int64_t voxelCount) {
+  const int64_t n = options.parts, minSize = options.minPartSize, maxSize = options.maxPartSize;
+  const std::string shape = "the shape's " + std::to_string(voxelCount) + " voxels";
+  if (minSize < 0 || maxSize < 0) throwBadInput("", "part sizes must be positive (0: automatic)");
+  if (maxSize > 0 && minSize > maxSize) {
+    throwBadInput("", sizeText("max", options.maxPartSize) + " is less than " + sizeText("min", options.minPartSize));
+  }
+  if (maxSize > 0 && maxSize * n < voxelCount) {
+    throwBadInput("", sizeText("max", options.maxPartSize) + " is too small: " + std::to_string(n) + " parts of at most " +
+                          std::to_string(maxSize) + " voxels hold " + std::to_string(maxSize * n) + ", fewer than " + shape);
+  }
+  if (minSize * n > voxelCount) {
+    throwBadInput("", sizeText("min", options.minPartSize) + " is too large: " + std::to_string(n) + " parts of at least " +
+                          std::to_string(minSize) + " voxels need " + std::to_string(minSize * n) + ", more than " + shape);
+  }
+}
+
+// Options with the automatic values filled in: the automatic minimum, no maximum as the whole
+// shape, and the even-size bounds intersected with the user's. (Bounds that pass
+// checkPartSizeBounds hold the mean voxels / N between them, as the even bounds and the automatic
+// minimum do, so the intersection is never empty.)
 VoxelDesignOptions effectiveOptions(const VoxelDesignOptions& options, int64_t voxelCount) {
+  checkPartSizeBounds(options, voxelCount);
   VoxelDesignOptions effective = options;
   if (effective.minPartSize <= 0) effective.minPartSize = std::max<int>(2, static_cast<int>(voxelCount / options.parts / 4));
+  if (effective.maxPartSize <= 0) effective.maxPartSize = static_cast<int>(voxelCount);
+  if (options.evenParts) {
+    const PartSizeBounds even = evenPartBounds(voxelCount, options.parts);
+    effective.minPartSize = std::max(effective.minPartSize, even.min);
+    effective.maxPartSize = std::min(effective.maxPartSize, even.max);
+  }
   return effective;
 }
 

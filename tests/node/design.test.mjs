@@ -66,7 +66,7 @@ test('impossible requests and bad options are DesiaErrors with the core message'
     [{ parts: 2 }, /parts = 2: an interlocking puzzle needs at least 3 parts/],
     [{ parts: 40 }, /parts = 40 is too many for a shape of 64 voxels/],
     [{ parts: 5, rank: 'prettiest' }, /unknown ranking 'prettiest'/],
-    [{ parts: 5, colour: 'red' }, /unknown design option 'colour' \(expected parts, seed, candidates, rank, mode, minPartSize, nodeLimit, keyDirection, groups or timeLimit\)$/],
+    [{ parts: 5, colour: 'red' }, /unknown design option 'colour' \(expected parts, seed, candidates, rank, mode, minPartSize, maxPartSize, evenParts, nodeLimit, keyDirection, groups or timeLimit\)$/],
     [{ parts: 5, groups: [[[9, 9, 9]]] }, /groups\[0\]: voxel \[9,9,9\] is not in the shape/],
     [{ parts: 5, keyDirection: 'up' }, /must be \+x, -x, \+y, -y, \+z or -z, got 'up'/],
     [{}, /design option 'parts' is required/],

@@ -19,12 +19,14 @@ std::vector<std::vector<int64_t>> parseVoxelGroupsJson(const std::string& text, 
                                                        const std::string& source);
 
 // The package's design options, e.g. {"parts": 7, "seed": 1, "candidates": 30,
-// "rank": "compactness", "mode": "desia", "minPartSize": 0, "timeLimit": 30, "nodeLimit": 0,
-// "keyDirection": "+y", "groups": [[[x, y, z], ...]]}. Unknown fields are refused.
+// "rank": "compactness", "mode": "desia", "minPartSize": 0, "maxPartSize": 0, "evenParts": false,
+// "timeLimit": 30, "nodeLimit": 0, "keyDirection": "+y", "groups": [[[x, y, z], ...]]}. Unknown
+// fields are refused.
 VoxelDesignOptions parseDesignOptionsJson(const std::string& text, const VoxelGrid& shape);
 
-// {"status", "message", "progress": {...}, "puz": text or null, "document": {...} or null,
-//  "verification": check report or null}.
+// {"status", "message", "progress": {...}, "seed": the search's seed, "partSizes": {"min", "max",
+//  "mean"} or null, "puz": text or null, "document": {...} or null, "verification": check report
+//  or null}.
 std::string designResultToJson(const VoxelDesignResult& result, int indent = -1);
 std::string designProgressToJson(const DesignProgress& progress);
 

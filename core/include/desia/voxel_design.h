@@ -47,6 +47,10 @@ struct VoxelDesignOptions {
   CandidateRanking ranking = CandidateRanking::Compactness;
   DesignMode mode = DesignMode::Desia;
   int minPartSize = 0;                 // 0: automatic (a quarter of the average part size, at least 2)
+  int maxPartSize = 0;                 // 0: none
+  // Even parts: every part within kEvenPartsTolerance of the mean size voxels / N (see
+  // evenPartBounds), on top of minPartSize / maxPartSize.
+  bool evenParts = false;
   Int3 keyDirection{0, 1, 0};          // the key's only free direction (default +y: gravity holds it)
   std::vector<std::vector<int64_t>> groups;  // voxel index groups that must end up in one part
   double timeLimitSeconds = 0;         // 0: none
@@ -54,6 +58,25 @@ struct VoxelDesignOptions {
   // Called after every visited node; return false to stop (cancellation). Not called concurrently.
   std::function<bool(const DesignProgress&)> onProgress;
 };
+
+// Bounds on the size of every part (the key and the last remainder included), in voxels.
+struct PartSizeBounds {
+  int min = 1;
+  int max = 0;
+};
+
+// Even parts: sizes between floor(mean) - t and ceil(mean) + t, mean = voxels / parts and
+// t = max(1, floor(kEvenPartsTolerance * mean)): within about 20% of the mean.
+constexpr double kEvenPartsTolerance = 0.2;
+PartSizeBounds evenPartBounds(int64_t voxels, int parts);
+
+// The sizes of a puzzle's parts: smallest, largest and mean (voxels / parts).
+struct PartSizeSpread {
+  int min = 0;
+  int max = 0;
+  double mean = 0;
+};
+PartSizeSpread partSizeSpread(const VoxelGrid& puzzle);
 
 enum class DesignStatus { Success, NotFound, LimitReached, Cancelled };
 const char* designStatusName(DesignStatus status);
@@ -64,6 +87,8 @@ struct VoxelDesignResult {
   VoxelGrid puzzle;           // on success: part 1 = key, ..., part N = last remainder
   CheckReport verification;   // on success: the check that verified the puzzle
   DesignProgress progress;    // final counters
+  uint64_t seed = 0;          // the seed of the search that produced this result
+  PartSizeSpread partSizes;   // on success: the spread of the puzzle's part sizes
 };
 
 // Step-by-step design, as the original tool's GUI ("Generate Next Part", "Child Index", "Go Back"):
@@ -101,7 +126,8 @@ class VoxelDesignSession {
 };
 
 // Throws BadInput for impossible requests (N < 3, N larger than the voxel count, a shape that is
-// not one face-connected part, groups outside the shape or overlapping).
+// not one face-connected part, groups outside the shape or overlapping, part size bounds that no
+// N parts can meet: max < min, max * N < voxels, min * N > voxels).
 VoxelDesignResult designVoxelPuzzle(const VoxelGrid& shape, const VoxelDesignOptions& options);
 
 }  // namespace desia
