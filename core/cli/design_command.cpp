@@ -9,6 +9,7 @@
 #include "cli_arguments.h"
 #include "cli_files.h"
 #include "commands.h"
+#include "design_portfolio.h"
 #include "desia/design_io.h"
 #include "desia/document.h"
 #include "desia/error.h"
@@ -24,6 +25,7 @@ extern "C" void onInterrupt(int) { interrupted = 1; }
 struct DesignArguments {
   std::string input, output, groupsFile;
   desia::VoxelDesignOptions options;
+  int jobs = desia::cli::defaultDesignJobs();
   bool quiet = false;
 };
 
@@ -51,6 +53,10 @@ DesignArguments parseArguments(const std::vector<std::string>& args) {
       parsed.quiet = true;
       continue;
     }
+    if (flag == "--even-parts") {
+      parsed.options.evenParts = true;
+      continue;
+    }
     if (i + 1 == args.size()) usage(flag + " needs a value");
     const std::string& value = args[++i];
     if (flag == "--input") parsed.input = value;
@@ -62,6 +68,8 @@ DesignArguments parseArguments(const std::vector<std::string>& args) {
     else if (flag == "--rank") parsed.options.ranking = desia::parseCandidateRanking(value);
     else if (flag == "--mode") parsed.options.mode = desia::parseDesignMode(value);
     else if (flag == "--min-part-size") parsed.options.minPartSize = static_cast<int>(desia::cli::integerOption(flag, value, 1, 1000000));
+    else if (flag == "--max-part-size") parsed.options.maxPartSize = static_cast<int>(desia::cli::integerOption(flag, value, 1, 1000000));
+    else if (flag == "--jobs") parsed.jobs = static_cast<int>(desia::cli::integerOption(flag, value, 1, 256));
     else if (flag == "--time-limit") parsed.options.timeLimitSeconds = secondsArgument(flag, value);
     else if (flag == "--node-limit") parsed.options.nodeLimit = desia::cli::integerOption(flag, value, 1, 1LL << 50);
     else if (flag == "--key-direction") parsed.options.keyDirection = desia::parseAxisDirection(value, "--key-direction");
@@ -74,6 +82,12 @@ DesignArguments parseArguments(const std::vector<std::string>& args) {
     usage("--output " + parsed.output + ": the file name must end in .puz or .json");
   }
   return parsed;
+}
+
+// "seeds 1-4 on 4 threads"
+std::string seedsText(const DesignArguments& parsed) {
+  const uint64_t first = parsed.options.seed, last = first + static_cast<uint64_t>(parsed.jobs) - 1;
+  return "seeds " + std::to_string(first) + "-" + std::to_string(last) + " on " + std::to_string(parsed.jobs) + " threads";
 }
 
 }  // namespace
@@ -93,17 +107,18 @@ int runDesignCommand(const std::vector<std::string>& args) {
   parsed.options.onProgress = [&](const desia::DesignProgress& p) {
     if (live && p.elapsedSeconds - lastShown > 0.2) {
       lastShown = p.elapsedSeconds;
-      std::fprintf(stderr, "\r%lld nodes, depth %d/%d, best %d/%d, %.1f s   ", static_cast<long long>(p.nodesVisited),
-                   p.depth + 1, p.targetParts, p.bestDepth + 1, p.targetParts, p.elapsedSeconds);
+      std::fprintf(stderr, "\r%lld nodes, depth %d/%d, best %d/%d, %.1f s%s   ", static_cast<long long>(p.nodesVisited),
+                   p.depth + 1, p.targetParts, p.bestDepth + 1, p.targetParts, p.elapsedSeconds,
+                   parsed.jobs > 1 ? (", " + std::to_string(parsed.jobs) + " seeds").c_str() : "");
     }
     return interrupted == 0;
   };
   std::signal(SIGINT, onInterrupt);
-  const desia::VoxelDesignResult result = desia::designVoxelPuzzle(document.voxels, parsed.options);
+  const desia::VoxelDesignResult result = desia::cli::designVoxelPortfolio(document.voxels, parsed.options, parsed.jobs);
   std::signal(SIGINT, SIG_DFL);
   if (live) std::fprintf(stderr, "\r%70s\r", "");
   if (result.status != desia::DesignStatus::Success) {
-    std::cerr << "desia: " << result.message << "\n";
+    std::cerr << "desia: " << result.message << (parsed.jobs > 1 ? " (" + seedsText(parsed) + ", the deepest shown)" : "") << "\n";
     return 1;
   }
   const std::string text = desia::cli::hasExtension(parsed.output, ".json")
@@ -111,6 +126,10 @@ int runDesignCommand(const std::vector<std::string>& args) {
                                : desia::formatPuz(result.puzzle);
   desia::cli::writeOutputFile(parsed.output, text);
   std::cout << result.message << " in " << result.progress.elapsedSeconds << " s\n"
+            << "seed: " << result.seed;
+  if (parsed.jobs > 1) std::cout << " won (" << seedsText(parsed) << "; --jobs 1 --seed " << result.seed << " gives this puzzle)";
+  std::cout << "\npart sizes: min " << result.partSizes.min << ", max " << result.partSizes.max << ", mean "
+            << result.partSizes.mean << "\n"
             << "verified: " << desia::checkReportToText(desia::documentFromVoxels(result.puzzle), result.verification)
             << "written: " << parsed.output << "\n";
   return 0;

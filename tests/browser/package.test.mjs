@@ -39,7 +39,7 @@ function run(command, args, { cwd = REPO_ROOT, env = {}, allowStatus = [0] } = {
 /** The native CLI's design of `shapeFile`, as .puz text. */
 function cliDesign(tmp, shapeFile, parts, seed) {
   const output = path.join(tmp, `design-${parts}-${seed}.puz`);
-  run(CLI, ['design', 'voxel', '--input', shapeFile, '--parts', String(parts), '--seed', String(seed), '--output', output]);
+  run(CLI, ['design', 'voxel', '--input', shapeFile, '--parts', String(parts), '--seed', String(seed), '--jobs', '1', '--output', output]);
   return fs.readFileSync(output, 'utf8');
 }
 

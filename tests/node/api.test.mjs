@@ -163,7 +163,7 @@ for (const worker of [true, false]) {
     const api = worker ? desia : await createDesia({ worker: false });
     const shapeFile = path.join(referenceDir, 'input_puz/Cube_5x5x5_origin.puz');
     const output = path.join(tmp, `cube5-${worker}.puz`);
-    const cli = runCli(['design', 'voxel', '--input', shapeFile, '--parts', '12', '--seed', '4', '--output', output]);
+    const cli = runCli(['design', 'voxel', '--input', shapeFile, '--parts', '12', '--seed', '4', '--jobs', '1', '--output', output]);
     assert.equal(cli.status, 0, cli.stderr);
     const seen = [];
     const result = await api.designVoxel(fs.readFileSync(shapeFile, 'utf8'), {

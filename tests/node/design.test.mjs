@@ -17,7 +17,7 @@ const shapePath = (name) => path.join(referenceDir, 'input_puz', name);
 for (const [name, parts, seed] of [['Cube_4x4x4_origin.puz', 7, 3], ['Cube_4x4x4_origin.puz', 8, 1], ['bunny_origin.puz', 20, 2]]) {
   test(`${name} N=${parts} seed ${seed}: WebAssembly designs the same puzzle as the native CLI`, () => {
     const output = path.join(tmp, `${name}-${parts}-${seed}.puz`);
-    const cli = runCli(['design', 'voxel', '--input', shapePath(name), '--parts', String(parts), '--seed', String(seed), '--output', output]);
+    const cli = runCli(['design', 'voxel', '--input', shapePath(name), '--parts', String(parts), '--seed', String(seed), '--jobs', '1', '--output', output]);
     assert.equal(cli.status, 0, cli.stderr);
     const result = core.designVoxel(fs.readFileSync(shapePath(name), 'utf8'), { parts, seed, source: name });
     assert.equal(result.status, 'success', result.message);

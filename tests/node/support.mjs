@@ -7,7 +7,8 @@ import { fileURLToPath } from 'node:url';
 
 export const root = fileURLToPath(new URL('../../', import.meta.url));
 export const referenceDir = path.join(root, 'tests/reference/desia/data');
-export const cliPath = path.join(root, 'build/native/core/cli/desia');
+/** The native CLI: build/native's, or the one named by DESIA_CLI (a build directory of one's own). */
+export const cliPath = process.env.DESIA_CLI ? path.resolve(process.env.DESIA_CLI) : path.join(root, 'build/native/core/cli/desia');
 
 export function referenceFiles() {
   const files = [];
