@@ -7,6 +7,7 @@
 import { checkLoadOptions, DesiaError, describeValue, documentedCode, loadDesiaModule, meshBytes, OPTION_NAMES,
   requireChildIndex, requireOptions } from './core.js';
 import { createCoreHost, unpackLabels } from './host.js';
+import { availableWorkers, portfolioSeeds, runPortfolio } from './portfolio.js';
 
 const isNode = typeof process === 'object' && typeof process.versions?.node === 'string' &&
   typeof window === 'undefined' && typeof importScripts === 'undefined';
@@ -382,6 +383,38 @@ function splitOptions(name, options) {
   return { onProgress, signal, coreOptions };
 }
 
+/** designVoxel's `jobs`: a whole number from 1 (default 1). */
+function requireJobs(jobs) {
+  if (jobs === undefined) return 1;
+  if (!Number.isInteger(jobs) || jobs < 1) {
+    throw new DesiaError(`designVoxel: jobs must be a whole number from 1, got ${describeValue(jobs)}`, 'bad-input');
+  }
+  return jobs;
+}
+
+/**
+ * designVoxel with `jobs` > 1: a portfolio of searches (wasm/portfolio.js) with seeds seed,
+ * seed + 1, ..., each in a worker of its own (`newClient()`), as many as the machine has cores
+ * (availableWorkers; one core: `single()`, the caller's worker). The first verified result wins
+ * and the other workers are terminated; the result names its seed. The caller's own worker is
+ * left alone (its design sessions live on).
+ */
+async function designPortfolio(newClient, single, shape, coreOptions, jobs, { signal, onProgress }) {
+  const count = Math.min(jobs, await availableWorkers());
+  if (count === 1) return single();
+  const seeds = portfolioSeeds(coreOptions.seed ?? 1, count);
+  const clients = [];
+  try {
+    return await runPortfolio(seeds, (seed, job) => {
+      const client = newClient();
+      clients.push(client);
+      return client.request('designVoxel', [shape, { ...coreOptions, seed }], job);
+    }, { signal, onProgress });
+  } finally {
+    await Promise.all(clients.map((client) => client.terminate()));
+  }
+}
+
 /** The async proxy of a design session living in the worker of `generation`. */
 function sessionProxy(client, sessionId, generation) {
   const session = { generation };
@@ -478,7 +511,24 @@ export async function createDesia(options) {
     exportAssembly: simple('exportAssembly'),
     partSurfaces: simple('partSurfaces'),
     cutSheets: simple('cutSheets'),
-    designVoxel: simple('designVoxel'),
+    designVoxel(shape, callOptions) {
+      let split;
+      let jobs;
+      try {
+        split = splitOptions('designVoxel', callOptions);
+        jobs = requireJobs(split.coreOptions.jobs);
+      } catch (error) {
+        return Promise.reject(error);
+      }
+      const coreOptions = { ...split.coreOptions };
+      delete coreOptions.jobs;
+      const call = { signal: split.signal, onProgress: split.onProgress };
+      const single = () => client.request('designVoxel', [shape, coreOptions], call);
+      // In-process there is one thread: one search.
+      if (jobs === 1 || !worker) return single();
+      const newClient = () => new DesiaClient({ wasmUrl, wasmBinary, startTimeout }, startPort);
+      return designPortfolio(newClient, single, shape, coreOptions, jobs, call);
+    },
     designPlate: simple('designPlate'),
     designFrame: simple('designFrame'),
     parseFrame: simple('parseFrame'),

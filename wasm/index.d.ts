@@ -145,6 +145,18 @@ export interface CallOptions {
   signal?: AbortSignal;
 }
 
+/** The promise-based designVoxel's portfolio of seeds (`desia design voxel --jobs`). */
+export interface PortfolioOptions {
+  /**
+   * Searches at once (default 1), each in a worker of its own with seeds seed, seed + 1, ...; at
+   * most navigator.hardwareConcurrency (node: os.availableParallelism()), and one with
+   * `{ worker: false }`. The first verified puzzle wins and the other workers are terminated; the
+   * result's `seed` names the winner, and `onProgress` sees the deepest search. The caller's own
+   * worker (and its design sessions) is not used. Limits apply to each search.
+   */
+  jobs?: number;
+}
+
 /** Options of designVoxel (the same meaning as `desia design voxel`'s flags). */
 export interface DesignVoxelOptions {
   /** N, the number of parts (at least 3). */
@@ -156,7 +168,15 @@ export interface DesignVoxelOptions {
   rank?: 'compactness' | 'x' | 'y' | 'z' | '-x' | '-y' | '-z';
   /** 'desia' (default) or 'recursive' (Song et al. 2012's local interlocking groups). */
   mode?: 'desia' | 'recursive';
+  /** Smallest part in voxels, the key and the last remainder included (default: a quarter of voxels / N, at least 2). */
   minPartSize?: number;
+  /** Largest part in voxels (default: none). Bounds no N parts can meet are a 'bad-input' DesiaError. */
+  maxPartSize?: number;
+  /**
+   * Even parts: every part between floor(mean) - t and ceil(mean) + t voxels, mean = voxels / N,
+   * t = max(1, floor(0.2 * mean)); combined with minPartSize / maxPartSize.
+   */
+  evenParts?: boolean;
   /** Seconds; 0 or absent: none. */
   timeLimit?: number;
   nodeLimit?: number;
@@ -183,6 +203,11 @@ export interface DesignProgress {
   bestDepth: number;
   targetParts: number;
   elapsedSeconds?: number;
+  /**
+   * designVoxel with `jobs` > 1: the seed of the deepest search, whose depths these are
+   * (`nodesVisited` counts the nodes of all searches).
+   */
+  seed?: number;
 }
 
 export interface DesignResult {
@@ -190,6 +215,13 @@ export interface DesignResult {
   status: 'success' | 'not-found' | 'limit-reached' | 'cancelled' | 'cut-point';
   message: string;
   progress: DesignProgress;
+  /**
+   * designVoxel: the seed of the search that gave this result. With `jobs` > 1 the winner's:
+   * designVoxel with `{ seed }` and one worker gives the same puzzle byte for byte.
+   */
+  seed?: number;
+  /** designVoxel on success: the part sizes in voxels, smallest, largest and mean (voxels / N); else null. */
+  partSizes?: { min: number; max: number; mean: number } | null;
   /** The verified puzzle as .puz text (part 1 = key), or null (always null for plates and frames). */
   puz: string | null;
   /** The verified puzzle as a JSON assembly document, or null. */
@@ -568,7 +600,7 @@ export interface Desia {
    * called about ten times a second and once more with the final progress before the promise
    * resolves.
    */
-  designVoxel(shapeText: string, options: DesignVoxelOptions & CallOptions): Promise<DesignResult>;
+  designVoxel(shapeText: string, options: DesignVoxelOptions & PortfolioOptions & CallOptions): Promise<DesignResult>;
   /** An interactive design session living in the worker; dispose() it when done. */
   designSession(
     shapeText: string,

@@ -34,8 +34,8 @@ const tarball = path.join(tmp, packed.filename);
 const shipped = packed.files.map((file) => file.path);
 
 test('the tarball holds the package and nothing else', () => {
-  for (const file of ['package.json', 'README.md', 'LICENSE', 'wasm/index.js', 'wasm/index.d.ts', 'wasm/core.js', 'wasm/client.js', 'wasm/host.js', 'wasm/worker.js',
-    'dist/desia_wasm.js', 'dist/desia_wasm.wasm', 'web/viewer.js']) {
+  for (const file of ['package.json', 'README.md', 'LICENSE', 'wasm/index.js', 'wasm/index.d.ts', 'wasm/core.js', 'wasm/client.js', 'wasm/host.js', 'wasm/portfolio.js',
+    'wasm/worker.js', 'dist/desia_wasm.js', 'dist/desia_wasm.wasm', 'web/viewer.js']) {
     assert.ok(shipped.includes(file), `${file} is missing from the tarball`);
   }
   for (const file of shipped) {
@@ -120,7 +120,7 @@ test('installed from the tarball with no network, `desia` works in node by name'
   const k9File = path.join(referenceDir, 'result_puz/Cube_4x4x4_K9.puz');
   const shapeFile = path.join(referenceDir, 'input_puz/Cube_4x4x4_origin.puz');
   const designed = path.join(tmp, 'cube7.puz');
-  assert.equal(runCli(['design', 'voxel', '--input', shapeFile, '--parts', '7', '--seed', '5', '--output', designed]).status, 0);
+  assert.equal(runCli(['design', 'voxel', '--input', shapeFile, '--parts', '7', '--seed', '5', '--jobs', '1', '--output', designed]).status, 0);
   fs.writeFileSync(path.join(project, 'smoke.mjs'), `
 import fs from 'node:fs';
 import { createDesia, DesiaError, loadDesiaModule } from 'desia';
