@@ -65,12 +65,9 @@ namespace {
 
 using Mask = uint32_t;  // a set of the 27 voxels of a joint cube
 
-// The random state of restart `attempt` for the user's seed: attempt 0 is the seed's own state
-// (as before restarts existed); later attempts mix the attempt in (splitmix64), so their orders
-// differ from every other seed's.
+// The random state of restart `attempt` for the user's seed (core/model/restarts.h).
 uint64_t attemptSeed(uint64_t seed, int64_t attempt) {
-  if (attempt == 0) return seed * 0x9E3779B97F4A7C15ull + 7;
-  return splitMix64(seed + 0x9E3779B97F4A7C15ull * static_cast<uint64_t>(attempt + 1));
+  return restartState(seed, attempt, seed * 0x9E3779B97F4A7C15ull + 7);
 }
 
 

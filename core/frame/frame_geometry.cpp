@@ -20,8 +20,6 @@
 namespace desia {
 namespace {
 
-Vec3 plus(const Vec3& a, const Vec3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
-Vec3 minus(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
 
 // Largest coordinate difference: two axis-aligned cubes of size s overlap or touch when it is <= s.
 double chebyshevDistance(const Vec3& a, const Vec3& b) {

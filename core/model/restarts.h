@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Restarts of a seeded depth-first search (the voxel and the frame designers): each search tree
+// Restarts of a seeded depth-first search (the voxel, frame and plate designers): each search tree
 // gets a budget from the Luby sequence, in work the search counts (never time, so the same seed
 // gives the same result), and a random state derived from the user's seed.
 #pragma once
@@ -32,6 +32,14 @@ inline uint64_t splitMix64(uint64_t z) {
   z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
   z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
   return z ^ (z >> 31);
+}
+
+// The random state of restart `attempt` for the user's seed: attempt 0 is `firstState`, the
+// seed's own state (as before restarts existed); later attempts mix the attempt in, so their
+// orders differ from every other seed's.
+inline uint64_t restartState(uint64_t seed, int64_t attempt, uint64_t firstState) {
+  if (attempt == 0) return firstState;
+  return splitMix64(seed + 0x9E3779B97F4A7C15ull * static_cast<uint64_t>(attempt + 1));
 }
 
 }  // namespace desia

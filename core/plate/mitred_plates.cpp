@@ -30,8 +30,6 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr size_t kMaxFaces = 10000;  // the plate document's own limit
 constexpr double kMaxInsideTests = 2e8;  // inner corners x triangles: a few seconds of winding numbers
 
-Vec3 minus(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-Vec3 plus(const Vec3& a, const Vec3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
 
 std::string number(double value) {
   std::ostringstream out;

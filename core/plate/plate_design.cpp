@@ -27,6 +27,7 @@
 
 #include "analysis/part_motion.h"
 #include "analysis/vec3.h"
+#include "model/restarts.h"
 #include "desia/cut_points.h"
 #include "desia/error.h"
 #include "desia/interlocking.h"
@@ -38,7 +39,6 @@ namespace {
 // Two unit vectors within about half a degree count as parallel (edge vectors of one design).
 bool parallel(const Vec3& a, const Vec3& b) { return norm(cross(a, b)) < 1e-2; }
 
-Vec3 minus(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
 
 // What the geometry says about the plates: who touches whom, along which edge, with which faces.
 struct PlateGraph {
@@ -394,6 +394,8 @@ class PlateJointPlanner {
   }
 
   PlateDesignResult run();
+  enum class Outcome { Found, Exhausted, OutOfBudget, Stopped };
+  Outcome searchTree(int64_t budget, PlateDesignResult* result);
 
   // What the search and a step-by-step session share.
   // A structure no joints can make interlocking (a cut point, fewer than 3 plates): its result.
@@ -621,32 +623,32 @@ std::optional<PlateDesignResult> PlateJointPlanner::refusal() const {
   return std::nullopt;
 }
 
-PlateDesignResult PlateJointPlanner::run() {
-  if (std::optional<PlateDesignResult> refused = refusal()) return *refused;
-  PlateDesignResult result;
-  PlateDesignProgress& progress = result.progress;
-  progress.targetParts = graph_.plateCount;
-  // Depth-first search over the construction tree, kept on an explicit stack of ranked children.
+// One search tree of the restarts (see run): depth first over the construction tree, kept on an
+// explicit stack of ranked children, for at most `budget` nodes.
+PlateJointPlanner::Outcome PlateJointPlanner::searchTree(int64_t budget, PlateDesignResult* result) {
+  PlateDesignProgress& progress = result->progress;
+  const int64_t first = progress.nodes;
   std::vector<std::vector<Step>> pending{childrenOf({})};
   std::vector<Step> path;
   while (!pending.empty()) {
+    if (progress.nodes - first >= budget) return Outcome::OutOfBudget;
     ++progress.nodes;
     progress.depth = static_cast<int>(path.size());
     progress.seconds = seconds();
     // Nodes are few and each costs far more than a report (a full graph test per child).
     if (options_.onProgress && !options_.onProgress(progress)) {
-      result.status = PlateDesignStatus::Cancelled;
-      result.message = "cancelled after " + std::to_string(progress.nodes) + " nodes";
-      return result;
+      result->status = PlateDesignStatus::Cancelled;
+      result->message = "cancelled after " + std::to_string(progress.nodes) + " nodes";
+      return Outcome::Stopped;
     }
     if ((options_.timeLimitSeconds > 0 && progress.seconds > options_.timeLimitSeconds) ||
         progress.nodes > options_.nodeLimit) {
-      result.status = PlateDesignStatus::LimitReached;
-      result.message =
+      result->status = PlateDesignStatus::LimitReached;
+      result->message =
           "no plan within the limits (" + std::to_string(progress.nodes) + " nodes; deepest " +
           std::to_string(progress.bestDepth) + " of " + std::to_string(graph_.plateCount) + " plates" +
           (lastRejection_.empty() ? std::string(")") : "; the last complete plan failed: " + lastRejection_ + ")");
-      return result;
+      return Outcome::Stopped;
     }
     if (pending.back().empty()) {  // no child left here: back to the parent's next sibling
       pending.pop_back();
@@ -658,13 +660,32 @@ PlateDesignResult PlateJointPlanner::run() {
     progress.bestDepth = std::max(progress.bestDepth, static_cast<int>(path.size()) + 1);
     if (static_cast<int>(path.size()) + 1 == graph_.plateCount) {
       // R is the last plate: a complete plan, accepted only if its jointed plates verify; else search on.
-      if (acceptComplete(path, &result)) break;
+      if (acceptComplete(path, result)) return Outcome::Found;
       path.pop_back();
       continue;
     }
     pending.push_back(childrenOf(path));
   }
-  if (result.status != PlateDesignStatus::Success) {
+  return Outcome::Exhausted;
+}
+
+PlateDesignResult PlateJointPlanner::run() {
+  if (std::optional<PlateDesignResult> refused = refusal()) return *refused;
+  PlateDesignResult result;
+  PlateDesignProgress& progress = result.progress;
+  progress.targetParts = graph_.plateCount;
+  // Restarts (core/model/restarts.h): a wrong choice near the root (the CABINET's shelf as the
+  // key: 5,811 nodes of plans whose roof cannot close) is searched to its end by one depth-first
+  // tree; tree k gets luby(k) units of nodes and its own tie-breaking order. A tree searched to
+  // its end within its budget proves that no plan exists: the ties only order the children.
+  const int64_t unit = std::max<int64_t>(64, 4 * int64_t(graph_.plateCount));
+  Outcome outcome = Outcome::OutOfBudget;
+  for (int64_t attempt = 0; outcome == Outcome::OutOfBudget; ++attempt) {
+    random_ = restartState(options_.seed, attempt, options_.seed * 0x9E3779B97F4A7C15ull + 1);
+    outcome = searchTree(unit * lubyTerm(attempt), &result);
+  }
+  if (outcome == Outcome::Stopped) return result;
+  if (outcome == Outcome::Exhausted) {
     result.status = PlateDesignStatus::NotFound;
     result.message =
         "no interlocking joint plan exists within the search (" + std::to_string(progress.nodes) + " nodes; deepest " +
@@ -724,12 +745,12 @@ bool PlateJointPlanner::acceptComplete(const std::vector<Step>& path, PlateDesig
     joints.insert(joints.end(), step.joints.begin(), step.joints.end());
   }
   order.push_back(static_cast<int>(std::find(taken.begin(), taken.end(), false) - taken.begin()));
-  const Assembly model = modelAssembly(graph_, path, plates_);
+  Assembly model = modelAssembly(graph_, path, plates_);
+  model.parts.back() = {plates_[order.back()].id, plates_[order.back()].name};
   lastRejection_ = planFailure(model, directions);
   if (!lastRejection_.empty()) return false;
   if (options_.realization == JointRealization::Planned) {
     result->jointAssembly = model;
-    result->jointAssembly.parts.back() = {plates_[order.back()].id, plates_[order.back()].name};
   } else if (!cutAndVerify(joints, order, directions, result)) {
     return false;
   }

@@ -17,8 +17,6 @@
 namespace desia {
 namespace {
 
-Vec3 minus(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-Vec3 plus(const Vec3& a, const Vec3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
 
 Vec3 centroidOf(const Loop& loop) {
   Vec3 c{0, 0, 0};

@@ -18,13 +18,12 @@
 
 #include "analysis/vec3.h"
 #include "desia/error.h"
+#include "plate/exact_vertices.h"
 #include "plate/plane_frame.h"
 
 namespace desia {
 namespace {
 
-Vec3 minus(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-Vec3 plus(const Vec3& a, const Vec3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
 
 constexpr double kSquare = 1e-6;        // |cos| below this: at a right angle
 constexpr double kTolerance = 0.05;     // mm: faces closer than this lie on one another
@@ -181,16 +180,12 @@ std::vector<Loop> cutFace(const Plate& plate, const std::vector<Loop>& added, co
     throwBadInput("", "the joints cut " + plateLabel(plate) + " into " + std::to_string(tree.ChildCount()) + " pieces");
   }
   const ClipperLib::PolyNode* outer = tree.Childs[0];
+  const ExactVertices exact(frame, {&plate.bottom, &added, &removed});
   std::vector<Loop> loops;
-  auto toLoop = [&](const ClipperLib::Path& path) {
-    Loop loop;
-    for (const ClipperLib::IntPoint& point : path) loop.push_back(frame.fromClipper(point));
-    return loop;
-  };
-  loops.push_back(toLoop(outer->Contour));
+  loops.push_back(exact.loop(outer->Contour));
   for (const ClipperLib::PolyNode* hole : outer->Childs) {
     if (hole->ChildCount() > 0) throwBadInput("", "the joints cut a loose piece inside " + plateLabel(plate));
-    loops.push_back(toLoop(hole->Contour));
+    loops.push_back(exact.loop(hole->Contour));
   }
   return loops;
 }

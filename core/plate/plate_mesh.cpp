@@ -200,7 +200,6 @@ void addFace(const std::vector<Loop>& loops, const Vec3& outward, int first, Tri
   for (const auto& t : triangles) mesh->triangles.push_back({first + t[0], first + t[1], first + t[2]});
 }
 
-Vec3 minus(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
 
 }  // namespace
 

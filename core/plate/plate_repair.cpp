@@ -22,7 +22,6 @@ constexpr double kSameNormal = 1e-6;
 constexpr double kMinimumWidth = 10.0;  // mm a bar needs to be worth making
 constexpr double kWidthPerThickness = 3.0;
 
-Vec3 plus(const Vec3& a, const Vec3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
 
 // A planar face of a plate: one of its loops (the outline, or a side quad) and its outward normal.
 struct Face {

@@ -14,7 +14,6 @@
 namespace desia {
 namespace {
 
-Vec3 minus(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
 
 // Triangle indices per piece: the OBJ groups, or the pieces joined by shared vertices.
 std::vector<std::vector<int>> pieces(const TriangleMesh& mesh) {
