@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// `desia export`: a voxel assembly as part meshes (STL, OBJ) or as a BurrTools .xmpuzzle; a plate
-// structure as meshes or cut files (SVG, DXF); a frame as meshes, .fpuz or a cut list.
+// `desia export`: a voxel assembly as part meshes (STL, OBJ), print-ready parts (a clearance, one
+// STL per part in a ZIP, a build plate) or a BurrTools .xmpuzzle; a plate structure as meshes or cut
+// files (SVG, DXF); a frame as meshes, .fpuz or a cut list.
 #include <cstdint>
 #include <iostream>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,8 +22,8 @@ namespace {
 constexpr int kExitBadInput = 2;
 
 const char* kExportUsage =
-    "usage: desia export FILE --format stl|stl-ascii|obj|xmpuzzle|svg|dxf|fpuz|csv|puz|voxel-json|pieces-obj|joint-pieces-stl\n"
-    "             [--part N] [--voxel-size S]\n"
+    "usage: desia export FILE --format stl|stl-ascii|obj|xmpuzzle|stl-zip|build-plate-stl|svg|dxf|fpuz|csv|puz|voxel-json|pieces-obj|joint-pieces-stl\n"
+    "             [--part N] [--voxel-size S] [--clearance MM] [--spacing MM]\n"
     "             [--sheet WxH] [--kerf MM] [--spacing MM] [--hairline] --output OUT\n";
 
 using desia::cli::UsageError;
@@ -75,8 +77,9 @@ int exportFile(const std::vector<std::string>& args) {
   std::string input, output, format;
   desia::ExportOptions options;
   desia::CutSheetOptions cut;
+  std::optional<double> spacing;
   const desia::cli::Arguments arguments =
-      desia::cli::splitArguments(withoutFlag(args, "--hairline", &cut.hairline), {"--format", "--part", "--voxel-size", "--output", "--sheet", "--kerf", "--spacing"});
+      desia::cli::splitArguments(withoutFlag(args, "--hairline", &cut.hairline), {"--format", "--part", "--voxel-size", "--clearance", "--output", "--sheet", "--kerf", "--spacing"});
   if (arguments.positional.size() > 1) throw UsageError{"export takes one FILE, got also " + arguments.positional[1]};
   if (!arguments.positional.empty()) input = arguments.positional[0];
   for (const auto& [name, value] : arguments.named) {
@@ -84,12 +87,16 @@ int exportFile(const std::vector<std::string>& args) {
     if (name == "--output") output = value;
     if (name == "--part") options.part = parsePart(value);
     if (name == "--voxel-size") options.voxelSize = parseVoxelSize(value);
+    // Range checks against the voxel size are the core's (the clearance below half a voxel).
+    if (name == "--clearance") options.clearance = desia::cli::numberOption(name, value, 0, 1e6);
     if (name == "--sheet") desia::parseSheetSize(value, &cut);
     if (name == "--kerf") cut.kerf = desia::cli::numberOption(name, value, 0, 5);
-    if (name == "--spacing") cut.spacing = desia::cli::numberOption(name, value, 0, 1000);
+    if (name == "--spacing") spacing = cut.spacing = desia::cli::numberOption(name, value, 0, 1000);
   }
+  // --spacing: the gaps between plates on a cut sheet, or between parts on a build plate.
+  if (format == "build-plate-stl") options.spacing = spacing;
   if (input.empty()) throw UsageError{"export needs a FILE (.puz or JSON voxel assembly)"};
-  if (format.empty()) throw UsageError{"export needs --format stl|stl-ascii|obj|xmpuzzle"};
+  if (format.empty()) throw UsageError{"export needs --format stl|stl-ascii|obj|xmpuzzle|stl-zip|build-plate-stl"};
   if (output.empty()) throw UsageError{"export needs --output OUT"};
   if (format == "svg" || format == "dxf") {
     // Cut files of a plate structure (core/io/cut_sheets.cpp).
@@ -105,6 +112,9 @@ int exportFile(const std::vector<std::string>& args) {
   options.source = input;
   const desia::AssemblyDocument document = desia::parseAssemblyText(desia::cli::readInputFile(input), input);
   if (document.kind == desia::AssemblyKind::Frame && document.contactsFromGeometry) {
+    if (options.clearance != 0) {
+      throw desia::Error(desia::ErrorCode::BadInput, input + ": --clearance applies to voxel assemblies, not to frames");
+    }
     // Frames (paper Section 5.3): part meshes, .fpuz, the cut list, or (axis-aligned on a voxel grid)
     // .puz, voxel JSON, .xmpuzzle (core/io/frame_export.cpp).
     const std::vector<uint8_t> bytes = desia::exportFrame(desia::frameFromAssemblyDocument(document, input), format, options.part, input);

@@ -10,40 +10,15 @@
 // size: the file is the XML plus 5 bytes per 64 KiB; pieces are cropped to their bounding boxes
 // (xmpuzzle_format.cpp) to keep the XML small.
 #include <algorithm>
-#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
 
 #include "desia/export.h"
+#include "io/export_internals.h"
 
 namespace desia {
-namespace {
-
-// CRC-32 of RFC 1952 (reflected polynomial 0xEDB88320), table built at compile time.
-constexpr std::array<uint32_t, 256> makeCrcTable() {
-  std::array<uint32_t, 256> table{};
-  for (uint32_t n = 0; n < 256; ++n) {
-    uint32_t c = n;
-    for (int k = 0; k < 8; ++k) c = (c & 1u) ? 0xEDB88320u ^ (c >> 1) : c >> 1;
-    table[n] = c;
-  }
-  return table;
-}
-constexpr std::array<uint32_t, 256> kCrcTable = makeCrcTable();
-
-uint32_t crc32(const std::string& data) {
-  uint32_t crc = 0xFFFFFFFFu;
-  for (const char byte : data) crc = kCrcTable[(crc ^ static_cast<uint8_t>(byte)) & 0xFFu] ^ (crc >> 8);
-  return crc ^ 0xFFFFFFFFu;
-}
-
-void appendLittleEndian(std::vector<uint8_t>& out, uint32_t value, int bytes) {
-  for (int k = 0; k < bytes; ++k) out.push_back(static_cast<uint8_t>((value >> (8 * k)) & 0xFFu));
-}
-
-}  // namespace
 
 std::vector<uint8_t> gzipStored(const std::string& data) {
   constexpr size_t kMaxStoredBlock = 65535;  // LEN is 16 bits

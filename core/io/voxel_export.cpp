@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // exportAssembly: checks the request, then hands over to the mesh writers or the xmpuzzle writer.
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -19,6 +20,8 @@ constexpr double kMinVoxelSize = 1e-6, kMaxVoxelSize = 1e6;
 int64_t minimumBytesPerTriangle(ExportFormat format) {
   switch (format) {
     case ExportFormat::StlBinary:
+    case ExportFormat::StlZip:
+    case ExportFormat::BuildPlateStl:
       return 50;
     case ExportFormat::StlAscii:
       return 100;  // facet, loop and three vertex lines with one-digit numbers
@@ -65,14 +68,34 @@ std::vector<uint8_t> exportMeshes(const AssemblyDocument& document, ExportFormat
         triangles * minimumBytesPerTriangle(format));
   }
   std::vector<NamedMesh> meshes;
-  for (const int part : chosen) meshes.push_back({part, surfaceOfVoxels(grid, part, voxels[part], options.voxelSize)});
+  for (const int part : chosen) {
+    meshes.push_back({part, insetSurfaceOfVoxels(grid, part, voxels[part], options.voxelSize, options.clearance)});
+  }
 
   const std::string what = options.part == 0
                                ? (parts == 1 ? std::string("1 part") : "all " + std::to_string(parts) + " parts")
                                : "part " + std::to_string(options.part) + " of " + std::to_string(parts);
-  const std::string title = "voxel export, " + what + ", voxel size " + formatNumber(options.voxelSize);
+  // The clearance is named only when there is one, so files without it keep their bytes.
+  const std::string sizes = "voxel size " + formatNumber(options.voxelSize) +
+                            (options.clearance > 0 ? ", clearance " + formatNumber(options.clearance) : "");
+  const std::string title = "voxel export, " + what + ", " + sizes;
   std::string bytes;
   switch (format) {
+    case ExportFormat::StlZip: {
+      // Each file ready to slice: the part turned as on the build plate, resting on z = 0.
+      turnFlat(meshes, grid, voxels);
+      setDownAtOrigin(meshes);
+      std::vector<uint8_t> archive = stlZipArchive(meshes, parts, sizes);
+      bytes.assign(archive.begin(), archive.end());
+      break;
+    }
+    case ExportFormat::BuildPlateStl: {
+      const double spacing = options.spacing.value_or(options.voxelSize);
+      turnFlat(meshes, grid, voxels);
+      layOutOnBuildPlate(meshes, spacing);
+      bytes = binaryStl(meshes, "build plate, " + what + ", " + sizes + ", spacing " + formatNumber(spacing));
+      break;
+    }
     case ExportFormat::StlBinary:
       bytes = binaryStl(meshes, title);
       break;
@@ -99,7 +122,10 @@ ExportFormat parseExportFormat(const std::string& name) {
   if (name == "stl-ascii") return ExportFormat::StlAscii;
   if (name == "obj") return ExportFormat::Obj;
   if (name == "xmpuzzle") return ExportFormat::XmPuzzle;
-  throwBadInput("", "unknown export format '" + name + "' (expected stl, stl-ascii, obj or xmpuzzle)");
+  if (name == "stl-zip") return ExportFormat::StlZip;
+  if (name == "build-plate-stl") return ExportFormat::BuildPlateStl;
+  throwBadInput("", "unknown export format '" + name +
+                        "' (expected stl, stl-ascii, obj, xmpuzzle, stl-zip or build-plate-stl)");
 }
 
 const char* exportFormatName(ExportFormat format) {
@@ -112,6 +138,10 @@ const char* exportFormatName(ExportFormat format) {
       return "obj";
     case ExportFormat::XmPuzzle:
       return "xmpuzzle";
+    case ExportFormat::StlZip:
+      return "stl-zip";
+    case ExportFormat::BuildPlateStl:
+      return "build-plate-stl";
   }
   return "stl";
 }
@@ -231,6 +261,13 @@ std::vector<uint8_t> exportPlates(const AssemblyDocument& document, ExportFormat
   if (format == ExportFormat::XmPuzzle) {
     throwBadInput(options.source, "BurrTools .xmpuzzle holds voxel puzzles; export plates as stl, stl-ascii or obj");
   }
+  if (format == ExportFormat::BuildPlateStl) {
+    throwBadInput(options.source, "a build plate lays out voxel parts; plates are laid flat on cut sheets (svg, dxf)");
+  }
+  if (options.clearance != 0) {
+    throwBadInput(options.source, "plates take their clearance when they are designed (desia design plate --clearance), "
+                                  "not when they are exported");
+  }
   std::vector<NamedMesh> meshes;
   // A result cut with a clearance: the plates to make (their mortises larger), not the verified ones.
   for (const Plate& plate : document.fabricationPlates.empty() ? document.plates : document.fabricationPlates) {
@@ -243,7 +280,13 @@ std::vector<uint8_t> exportPlates(const AssemblyDocument& document, ExportFormat
     case ExportFormat::StlBinary: bytes = binaryStl(meshes, title); break;
     case ExportFormat::StlAscii: bytes = asciiStl(meshes, options.part == 0 ? "structure" : "plate" + std::to_string(options.part)); break;
     case ExportFormat::Obj: bytes = wavefrontObj(meshes, title); break;
-    case ExportFormat::XmPuzzle: break;
+    case ExportFormat::StlZip: {
+      int largestId = 0;
+      for (const NamedMesh& mesh : meshes) largestId = std::max(largestId, mesh.partId);
+      return stlZipArchive(meshes, largestId, "plate export, mm");
+    }
+    case ExportFormat::XmPuzzle:
+    case ExportFormat::BuildPlateStl: break;
   }
   return bytesOf(bytes);
 }
@@ -264,7 +307,19 @@ std::vector<uint8_t> exportAssembly(const AssemblyDocument& document, ExportForm
     throwBadInput(options.source,
                   "the voxel size must be a number from 0.000001 to 1000000, got " + formatNumber(options.voxelSize));
   }
+  requireValidClearance(options.voxelSize, options.clearance, options.source);
+  if (options.spacing && format != ExportFormat::BuildPlateStl) {
+    throwBadInput(options.source, std::string("the spacing sets the gaps of a build plate (build-plate-stl), not of ") +
+                                      exportFormatName(format));
+  }
+  if (options.spacing && !(*options.spacing >= 0 && *options.spacing <= kMaxVoxelSize)) {
+    throwBadInput(options.source, "the spacing must be a number from 0 to 1000000, got " + formatNumber(*options.spacing));
+  }
   if (format != ExportFormat::XmPuzzle) return exportMeshes(document, format, options);
+  if (options.clearance != 0) {
+    throwBadInput(options.source, "a BurrTools .xmpuzzle holds voxels, not meshes: the clearance applies to stl, "
+                                  "stl-ascii, obj, stl-zip and build-plate-stl");
+  }
   if (options.part != 0) {
     throwBadInput(options.source, "a BurrTools .xmpuzzle holds the whole puzzle, so it cannot hold only part " +
                                       std::to_string(options.part) + " (choose all parts, part 0)");

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The closed surface of one part of a voxel assembly (the mesh behind the STL and OBJ exports).
+// The closed surface of one part of a voxel assembly (the mesh behind the STL and OBJ exports),
+// as the part is, or inset by a clearance where it touches other parts (print-ready parts).
 #include <array>
 #include <cstdint>
 #include <map>
@@ -14,25 +15,126 @@
 namespace desia {
 namespace {
 
-// Positions are kept in half-voxel units (integers) until the very end, so that the same point
-// reached from different faces gets the same coordinates, and is scaled once by one rounding.
+// Positions are kept in half-lattice units (integers) until the very end, so that the same point
+// reached from different faces gets the same coordinates, and is turned into a position once.
 using HalfUnits = std::array<int64_t, 3>;
 
+// The part as it is: the lattice is the voxel grid, a cell is solid when it has the part's label.
+class VoxelLattice {
+ public:
+  VoxelLattice(const VoxelGrid& grid, int partId, double voxelSize)
+      : grid_(grid), partId_(partId), voxelSize_(voxelSize) {}
+  Int3 cells() const { return {grid_.nx(), grid_.ny(), grid_.nz()}; }
+  bool solid(const Int3& c) const { return grid_.inside(c.x, c.y, c.z) && grid_.label(c.x, c.y, c.z) == partId_; }
+  double coordinate(int /*axis*/, int64_t halfUnits) const {
+    return static_cast<double>(halfUnits) * (0.5 * voxelSize_);
+  }
+
+ private:
+  const VoxelGrid& grid_;
+  const int partId_;
+  const double voxelSize_;
+};
+
+// The part inset by the clearance c where it touches another part. Every voxel is split into
+// 3 x 3 x 3 cells by the planes at c and s - c (s the voxel size) along each axis, and a cell of
+// the part is left out when it lies within c of another part:
+// - across a face of its voxel: the face between two parts moves in by c (the inset);
+// - across an edge or a corner of its voxel, when every voxel around that edge or corner is filled:
+//   that is a concave edge (or corner) of the part with inset faces on both sides, whose offset
+//   planes meet c further in along both axes (without it a c x c ridge would stay in the corner).
+// Where an inset face meets a face against empty space in the same plane, the cells beyond the
+// inset stay, so the outer face keeps its place and a step of height c joins the two. Outer faces
+// never move: a cell is only taken away towards another part. The middle cell of every voxel and
+// the middle cells of its faces towards the same part always stay (c < s / 2), so the inset part
+// is still one face-connected solid and the lattice surface is closed as before.
+class InsetLattice {
+ public:
+  InsetLattice(const VoxelGrid& grid, int partId, double voxelSize, double clearance)
+      : grid_(grid), partId_(partId), voxelSize_(voxelSize), clearance_(clearance) {}
+  Int3 cells() const { return {3 * grid_.nx(), 3 * grid_.ny(), 3 * grid_.nz()}; }
+  bool solid(const Int3& c) const {
+    if (c.x < 0 || c.y < 0 || c.z < 0) return false;
+    const Int3 voxel{c.x / 3, c.y / 3, c.z / 3};
+    if (label(voxel) != partId_) return false;
+    return !withinClearanceOfAnotherPart(voxel, {sideOf(c.x), sideOf(c.y), sideOf(c.z)});
+  }
+  // Lattice line k lies at voxel k / 3, plus 0, c or s - c; a half unit between two lines (the
+  // midpoint of a pinch edge, the centre of a fanned face) halfway between them.
+  double coordinate(int /*axis*/, int64_t halfUnits) const {
+    if (halfUnits % 2 == 0) return linePosition(halfUnits / 2);
+    return 0.5 * (linePosition(halfUnits / 2) + linePosition(halfUnits / 2 + 1));
+  }
+
+ private:
+  // -1, 0 or +1: the cell lies at the low side, the middle or the high side of its voxel.
+  static int sideOf(int cell) { return cell % 3 - 1; }
+
+  double linePosition(int64_t line) const {
+    const double base = static_cast<double>(line / 3) * voxelSize_;
+    switch (line % 3) {
+      case 1:
+        return base + clearance_;
+      case 2:
+        return base + (voxelSize_ - clearance_);
+      default:
+        return base;
+    }
+  }
+
+  int label(const Int3& v) const { return grid_.inside(v.x, v.y, v.z) ? grid_.label(v.x, v.y, v.z) : 0; }
+
+  // The voxel `voxel` + side restricted to the axes in `axes` (bit k = axis k).
+  static Int3 towards(const Int3& voxel, const Int3& side, int axes) {
+    return {voxel.x + ((axes & 1) ? side.x : 0), voxel.y + ((axes & 2) ? side.y : 0),
+            voxel.z + ((axes & 4) ? side.z : 0)};
+  }
+
+  bool withinClearanceOfAnotherPart(const Int3& voxel, const Int3& side) const {
+    const int sideAxes = (side.x != 0 ? 1 : 0) | (side.y != 0 ? 2 : 0) | (side.z != 0 ? 4 : 0);
+    // Each non-empty set of the cell's side axes names one neighbour of the voxel: across a face
+    // (one axis), an edge (two) or a corner (three).
+    for (int axes = 1; axes < 8; ++axes) {
+      if ((axes & ~sideAxes) != 0) continue;
+      const int other = label(towards(voxel, side, axes));
+      if (other == 0 || other == partId_) continue;
+      if (closedAround(voxel, side, axes)) return true;
+    }
+    return false;
+  }
+
+  // Every voxel between `voxel` and its neighbour across `axes` (those across the proper non-empty
+  // subsets of `axes`) is filled, by any part: no empty space reaches the edge or corner.
+  bool closedAround(const Int3& voxel, const Int3& side, int axes) const {
+    for (int between = (axes - 1) & axes; between > 0; between = (between - 1) & axes) {
+      if (label(towards(voxel, side, between)) == 0) return false;
+    }
+    return true;
+  }
+
+  const VoxelGrid& grid_;
+  const int partId_;
+  const double voxelSize_;
+  const double clearance_;
+};
+
+// The surface of the solid cells of a lattice (VoxelLattice or InsetLattice): one square per cell
+// face whose neighbour is not solid.
+template <typename Lattice>
 class PartSurfaceBuilder {
  public:
-  PartSurfaceBuilder(const VoxelGrid& grid, int partId, double voxelSize)
-      : grid_(grid), partId_(partId), voxelSize_(voxelSize) {}
+  PartSurfaceBuilder(const Lattice& lattice, int partId) : lattice_(lattice), partId_(partId), size_(lattice.cells()) {}
 
-  // Emits the boundary faces of the part's voxels (given in voxel index order) and, per voxel, in
-  // the face order -x, +x, -y, +y, -z, +z: a fixed order, so the output is deterministic.
-  TriangleMesh build(const std::vector<int64_t>& voxels) {
-    for (const int64_t i : voxels) {
-      const Int3 cell = grid_.coordinates(i);
-      for (int face = 0; face < 6; ++face) {
-        const int axis = face / 2, sign = face % 2 == 1 ? 1 : -1;
-        if (!inPart(offset(cell, axis, sign))) addFace(cell, i, axis, sign);
-      }
+  // Emits the boundary faces of a solid cell in the face order -x, +x, -y, +y, -z, +z; called for
+  // the cells in a fixed order, so the output is deterministic.
+  void addCell(const Int3& cell) {
+    for (int face = 0; face < 6; ++face) {
+      const int axis = face / 2, sign = face % 2 == 1 ? 1 : -1;
+      if (!inPart(offset(cell, axis, sign))) addFace(cell, axis, sign);
     }
+  }
+
+  TriangleMesh take() {
     if (mesh_.triangles.empty()) throwBadInput("", "part " + std::to_string(partId_) + " has no voxels");
     return std::move(mesh_);
   }
@@ -44,20 +146,21 @@ class PartSurfaceBuilder {
   }
   static int component(const Int3& cell, int axis) { return axis == 0 ? cell.x : axis == 1 ? cell.y : cell.z; }
 
-  bool inPart(const Int3& c) const { return grid_.inside(c.x, c.y, c.z) && grid_.label(c.x, c.y, c.z) == partId_; }
+  bool inPart(const Int3& c) const { return lattice_.solid(c); }
+
+  int64_t cellIndex(const Int3& c) const { return c.x + int64_t{size_.x} * (c.y + int64_t{size_.y} * c.z); }
 
   int vertexAt(const HalfUnits& position) {
     const int index = static_cast<int>(mesh_.vertices.size());
-    const double half = 0.5 * voxelSize_;
-    mesh_.vertices.push_back({static_cast<double>(position[0]) * half, static_cast<double>(position[1]) * half,
-                              static_cast<double>(position[2]) * half});
+    mesh_.vertices.push_back({lattice_.coordinate(0, position[0]), lattice_.coordinate(1, position[1]),
+                              lattice_.coordinate(2, position[2])});
     return index;
   }
 
-  // One vertex per grid corner (shared by every face of the part that meets there).
+  // One vertex per lattice corner (shared by every face of the part that meets there).
   int cornerVertex(const HalfUnits& position) {
     const int64_t key =
-        position[0] / 2 + (grid_.nx() + 1) * (position[1] / 2 + int64_t{grid_.ny() + 1} * (position[2] / 2));
+        position[0] / 2 + (size_.x + 1) * (position[1] / 2 + int64_t{size_.y + 1} * (position[2] / 2));
     const auto found = cornerVertices_.find(key);
     if (found != cornerVertices_.end()) return found->second;
     const int index = vertexAt(position);
@@ -78,7 +181,7 @@ class PartSurfaceBuilder {
   // edge's midpoint; a face with such a midpoint is fanned from its centre, so no triangle is
   // degenerate. The copies coincide in space (the solid itself pinches there), but every edge of
   // the indexed mesh belongs to exactly two triangles, and the volume is unchanged.
-  void addFace(const Int3& cell, int64_t cellIndex, int axis, int sign) {
+  void addFace(const Int3& cell, int axis, int sign) {
     static constexpr int kPlusSide[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
     static constexpr int kMinusSide[4][2] = {{0, 0}, {0, 1}, {1, 1}, {1, 0}};
     const auto& square = sign > 0 ? kPlusSide : kMinusSide;
@@ -104,7 +207,7 @@ class PartSurfaceBuilder {
       const Int3 diagonal = offset(beside, axis, sign);
       if (inPart(diagonal) && !inPart(beside)) {
         pinched = true;
-        polygon.push_back(midpointVertex(a, b, cellIndex));
+        polygon.push_back(midpointVertex(a, b, cellIndex(cell)));
       }
     }
     if (!pinched) {
@@ -121,10 +224,10 @@ class PartSurfaceBuilder {
   }
 
   // The midpoint of a pinch edge, one copy per voxel at the edge (shared by that voxel's two faces).
-  int midpointVertex(const HalfUnits& a, const HalfUnits& b, int64_t cellIndex) {
+  int midpointVertex(const HalfUnits& a, const HalfUnits& b, int64_t cell) {
     HalfUnits middle;
     for (int c = 0; c < 3; ++c) middle[c] = (a[c] + b[c]) / 2;
-    const auto key = std::make_pair(middle, cellIndex);
+    const auto key = std::make_pair(middle, cell);
     const auto found = midpointVertices_.find(key);
     if (found != midpointVertices_.end()) return found->second;
     const int index = vertexAt(middle);
@@ -132,9 +235,9 @@ class PartSurfaceBuilder {
     return index;
   }
 
-  const VoxelGrid& grid_;
+  const Lattice& lattice_;
   const int partId_;
-  const double voxelSize_;
+  const Int3 size_;
   TriangleMesh mesh_;
   // Looked up only; vertices are numbered in order of first use, never by iterating these maps.
   std::unordered_map<int64_t, int> cornerVertices_;
@@ -152,15 +255,71 @@ std::vector<std::vector<int64_t>> voxelsByPart(const VoxelGrid& grid) {
 }
 
 TriangleMesh surfaceOfVoxels(const VoxelGrid& grid, int partId, const std::vector<int64_t>& voxels, double voxelSize) {
-  return PartSurfaceBuilder(grid, partId, voxelSize).build(voxels);
+  const VoxelLattice lattice(grid, partId, voxelSize);
+  PartSurfaceBuilder<VoxelLattice> builder(lattice, partId);
+  for (const int64_t i : voxels) builder.addCell(grid.coordinates(i));
+  return builder.take();
 }
 
-TriangleMesh partSurfaceMesh(const VoxelGrid& grid, int partId, double voxelSize) {
+namespace {
+
+// Are all 26 voxels around `v` in part `partId`? Then no other part and no empty space lies
+// within one voxel of it: its 27 inset cells are all solid, and so are all cells next to them, so
+// it adds no face (skipping it keeps the inset export's work near the part's surface).
+bool surroundedByItsPart(const VoxelGrid& grid, const Int3& v, int partId) {
+  for (int dz = -1; dz <= 1; ++dz) {
+    for (int dy = -1; dy <= 1; ++dy) {
+      for (int dx = -1; dx <= 1; ++dx) {
+        const int x = v.x + dx, y = v.y + dy, z = v.z + dz;
+        if (!grid.inside(x, y, z) || grid.label(x, y, z) != partId) return false;
+      }
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+TriangleMesh insetSurfaceOfVoxels(const VoxelGrid& grid, int partId, const std::vector<int64_t>& voxels,
+                                  double voxelSize, double clearance) {
+  if (clearance == 0) return surfaceOfVoxels(grid, partId, voxels, voxelSize);
+  const InsetLattice lattice(grid, partId, voxelSize, clearance);
+  PartSurfaceBuilder<InsetLattice> builder(lattice, partId);
+  // Voxel by voxel in index order, each voxel's 27 cells in lattice index order.
+  for (const int64_t i : voxels) {
+    const Int3 v = grid.coordinates(i);
+    if (surroundedByItsPart(grid, v, partId)) continue;
+    for (int dz = 0; dz < 3; ++dz) {
+      for (int dy = 0; dy < 3; ++dy) {
+        for (int dx = 0; dx < 3; ++dx) {
+          const Int3 cell{3 * v.x + dx, 3 * v.y + dy, 3 * v.z + dz};
+          if (lattice.solid(cell)) builder.addCell(cell);
+        }
+      }
+    }
+  }
+  return builder.take();
+}
+
+namespace {
+
+std::vector<int64_t> voxelsOfPart(const VoxelGrid& grid, int partId) {
   std::vector<int64_t> voxels;
   for (int64_t i = 0; i < grid.voxelCount(); ++i) {
     if (grid.labelAt(i) == partId) voxels.push_back(i);
   }
-  return surfaceOfVoxels(grid, partId, voxels, voxelSize);
+  return voxels;
+}
+
+}  // namespace
+
+TriangleMesh partSurfaceMesh(const VoxelGrid& grid, int partId, double voxelSize) {
+  return surfaceOfVoxels(grid, partId, voxelsOfPart(grid, partId), voxelSize);
+}
+
+TriangleMesh insetPartSurfaceMesh(const VoxelGrid& grid, int partId, double voxelSize, double clearance) {
+  requireValidClearance(voxelSize, clearance, "");
+  return insetSurfaceOfVoxels(grid, partId, voxelsOfPart(grid, partId), voxelSize, clearance);
 }
 
 }  // namespace desia

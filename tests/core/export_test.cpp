@@ -29,8 +29,11 @@
 namespace desia {
 namespace {
 
+using desia::testing::bitwiseCrc32;
+using desia::testing::enclosedVolume;
 using desia::testing::gridFromLayers;
 using desia::testing::loadReference;
+using desia::testing::manifoldProblem;
 using Vec = std::array<double, 3>;
 
 const std::vector<std::string> kReferencePuzzles = {
@@ -42,39 +45,6 @@ const std::vector<std::string> kReferencePuzzles = {
 std::string text(const std::vector<uint8_t>& bytes) { return std::string(bytes.begin(), bytes.end()); }
 
 // ---- mesh properties -----------------------------------------------------------------------------
-
-// Empty when every directed edge (a, b) of the indexed mesh occurs exactly once and (b, a) exactly
-// once: each edge in exactly two triangles, in opposite directions (a closed, oriented 2-manifold
-// surface away from its vertices).
-std::string manifoldProblem(const TriangleMesh& mesh) {
-  std::map<std::pair<int, int>, int> directed;
-  for (const auto& t : mesh.triangles) {
-    for (int k = 0; k < 3; ++k) ++directed[{t[k], t[(k + 1) % 3]}];
-  }
-  for (const auto& [edge, count] : directed) {
-    const auto reverse = directed.find({edge.second, edge.first});
-    const int reverseCount = reverse == directed.end() ? 0 : reverse->second;
-    if (count != 1 || reverseCount != 1) {
-      return "edge " + std::to_string(edge.first) + "->" + std::to_string(edge.second) + " used " +
-             std::to_string(count) + " times, reversed " + std::to_string(reverseCount) + " times";
-    }
-  }
-  return "";
-}
-
-// Divergence theorem: the volume enclosed by an outward-oriented closed surface is the sum of the
-// signed volumes of the tetrahedra (origin, a, b, c).
-double enclosedVolume(const TriangleMesh& mesh) {
-  double volume = 0;
-  for (const auto& t : mesh.triangles) {
-    const Vec& a = mesh.vertices[t[0]];
-    const Vec& b = mesh.vertices[t[1]];
-    const Vec& c = mesh.vertices[t[2]];
-    volume +=
-        a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0]);
-  }
-  return volume / 6;
-}
 
 double surfaceArea(const TriangleMesh& mesh) {
   double area = 0;
@@ -123,15 +93,6 @@ void expectClosedSurfaceOfPart(const VoxelGrid& grid, int id, double voxelSize, 
 }
 
 // ---- our own gunzip ------------------------------------------------------------------------------
-
-uint32_t bitwiseCrc32(const std::string& data) {
-  uint32_t crc = 0xFFFFFFFFu;
-  for (const char c : data) {
-    crc ^= static_cast<uint8_t>(c);
-    for (int k = 0; k < 8; ++k) crc = (crc >> 1) ^ (0xEDB88320u & (0u - (crc & 1u)));
-  }
-  return ~crc;
-}
 
 uint32_t littleEndian(const std::vector<uint8_t>& bytes, size_t at, int count) {
   uint32_t value = 0;
@@ -200,7 +161,7 @@ std::map<int, std::array<int, 3>> offsetsOf(const std::string& xml) {
 // ---- tests ---------------------------------------------------------------------------------------
 
 TEST(ExportFormat, NamesRoundTripAndBadNamesAreNamed) {
-  for (const char* name : {"stl", "stl-ascii", "obj", "xmpuzzle"}) {
+  for (const char* name : {"stl", "stl-ascii", "obj", "xmpuzzle", "stl-zip", "build-plate-stl"}) {
     EXPECT_STREQ(exportFormatName(parseExportFormat(name)), name);
   }
   EXPECT_EQ(parseExportFormat("stl"), ExportFormat::StlBinary);
@@ -210,7 +171,8 @@ TEST(ExportFormat, NamesRoundTripAndBadNamesAreNamed) {
     FAIL() << "expected an error";
   } catch (const Error& e) {
     EXPECT_EQ(e.code(), ErrorCode::BadInput);
-    EXPECT_STREQ(e.what(), "unknown export format 'STEP' (expected stl, stl-ascii, obj or xmpuzzle)");
+    EXPECT_STREQ(e.what(), "unknown export format 'STEP' (expected stl, stl-ascii, obj, xmpuzzle, stl-zip or "
+                 "build-plate-stl)");
   }
 }
 

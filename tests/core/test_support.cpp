@@ -6,6 +6,7 @@
 #include <array>
 #include <cctype>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 namespace desia::testing {
@@ -148,6 +149,48 @@ std::string verifyPlan(const VoxelGrid& grid, const Assembly& assembly, const Di
     present[removal.part] = false;
   }
   return plan.removals.back().path.empty() ? "" : "the last part should stay in place";
+}
+
+// Empty when every directed edge (a, b) of the indexed mesh occurs exactly once and (b, a) exactly
+// once: each edge in exactly two triangles, in opposite directions (a closed, oriented 2-manifold
+// surface away from its vertices).
+std::string manifoldProblem(const TriangleMesh& mesh) {
+  std::map<std::pair<int, int>, int> directed;
+  for (const auto& t : mesh.triangles) {
+    for (int k = 0; k < 3; ++k) ++directed[{t[k], t[(k + 1) % 3]}];
+  }
+  for (const auto& [edge, count] : directed) {
+    const auto reverse = directed.find({edge.second, edge.first});
+    const int reverseCount = reverse == directed.end() ? 0 : reverse->second;
+    if (count != 1 || reverseCount != 1) {
+      return "edge " + std::to_string(edge.first) + "->" + std::to_string(edge.second) + " used " +
+             std::to_string(count) + " times, reversed " + std::to_string(reverseCount) + " times";
+    }
+  }
+  return "";
+}
+
+// Divergence theorem: the volume enclosed by an outward-oriented closed surface is the sum of the
+// signed volumes of the tetrahedra (origin, a, b, c).
+double enclosedVolume(const TriangleMesh& mesh) {
+  double volume = 0;
+  for (const auto& t : mesh.triangles) {
+    const std::array<double, 3>& a = mesh.vertices[t[0]];
+    const std::array<double, 3>& b = mesh.vertices[t[1]];
+    const std::array<double, 3>& c = mesh.vertices[t[2]];
+    volume +=
+        a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0]);
+  }
+  return volume / 6;
+}
+
+uint32_t bitwiseCrc32(const std::string& data) {
+  uint32_t crc = 0xFFFFFFFFu;
+  for (const char c : data) {
+    crc ^= static_cast<uint8_t>(c);
+    for (int k = 0; k < 8; ++k) crc = (crc >> 1) ^ (0xEDB88320u & (0u - (crc & 1u)));
+  }
+  return ~crc;
 }
 
 }  // namespace desia::testing

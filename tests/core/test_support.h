@@ -4,12 +4,14 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <random>
 #include <string>
 #include <vector>
 
 #include "desia/check.h"
 #include "desia/document.h"
+#include "desia/mesh.h"
 #include "desia/puz_format.h"
 
 namespace desia::testing {
@@ -50,5 +52,17 @@ std::string verifyRemoval(const VoxelGrid& grid, const std::vector<bool>& presen
 
 // Verifies a complete plan removal by removal; returns an empty string when valid.
 std::string verifyPlan(const VoxelGrid& grid, const Assembly& assembly, const DisassemblyPlan& plan);
+
+// Empty when every directed edge (a, b) of the indexed mesh occurs exactly once and (b, a) exactly
+// once: each edge in exactly two triangles, in opposite directions (a closed, consistently oriented
+// 2-manifold surface away from its vertices); otherwise the first offending edge.
+std::string manifoldProblem(const TriangleMesh& mesh);
+
+// The volume enclosed by an outward-oriented closed surface (divergence theorem: the sum of the
+// signed volumes of the tetrahedra origin, a, b, c).
+double enclosedVolume(const TriangleMesh& mesh);
+
+// CRC-32 (gzip, ZIP) computed bit by bit: independent of the writers' table.
+uint32_t bitwiseCrc32(const std::string& data);
 
 }  // namespace desia::testing
