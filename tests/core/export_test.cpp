@@ -18,6 +18,7 @@
 #include <utility>
 #include <vector>
 
+#include "desia/disassembly.h"
 #include "desia/error.h"
 #include "desia/export.h"
 #include "desia/frame.h"
@@ -34,6 +35,7 @@ using desia::testing::enclosedVolume;
 using desia::testing::gridFromLayers;
 using desia::testing::loadReference;
 using desia::testing::manifoldProblem;
+using desia::testing::verifyRemoval;
 using Vec = std::array<double, 3>;
 
 const std::vector<std::string> kReferencePuzzles = {
@@ -493,14 +495,146 @@ TEST(ExportXmPuzzle, PiecesReproduceTheLabelsOfEveryReferencePuzzle) {
       EXPECT_EQ(touches, (std::array<bool, 6>{true, true, true, true, true, true})) << file << " piece " << id;
     }
     EXPECT_TRUE(rebuilt == grid.labels()) << file;
-    // The problem: every piece once, shape 0 as the result, unsolved, no solutions.
+    // The problem: every piece once, shape 0 as the result, state 3 (solutions known, not counted),
+    // one saved solution (ExportXmPuzzle.SavedSolution... checks its content).
     std::string problemShapes;
     for (int id = 1; id <= parts; ++id) problemShapes += "    <shape id=\"" + std::to_string(id) + "\" count=\"1\"/>\n";
-    EXPECT_NE(xml.find("<problem name=\"desia\" state=\"0\">\n   <shapes>\n" + problemShapes +
-                       "   </shapes>\n   <result id=\"0\"/>\n   <bitmap/>\n  </problem>"),
+    EXPECT_NE(xml.find("<problem name=\"desia\" state=\"3\">\n   <shapes>\n" + problemShapes +
+                       "   </shapes>\n   <result id=\"0\"/>\n   <bitmap/>\n   <solutions>\n    <solution>\n     <assembly>"),
               std::string::npos)
         << file;
-    EXPECT_EQ(xml.find("solution"), std::string::npos);
+    EXPECT_NE(xml.find("    </solution>\n   </solutions>\n  </problem>\n </problems>\n"), std::string::npos) << file;
+  }
+}
+
+// One <separation> of the saved solution: the pieces still together, and the offsets of each piece
+// (in the order of `pieces`) in every state.
+struct Separation {
+  bool left = false;
+  std::vector<int> pieces;
+  std::vector<std::vector<std::array<int, 3>>> states;
+};
+
+std::vector<int> numbersOf(const std::string& text) {
+  std::vector<int> numbers;
+  std::istringstream in(text);
+  for (int n; in >> n;) numbers.push_back(n);
+  return numbers;
+}
+
+// The separations in document order, after checking that they nest as one chain (each one's
+// states before the separation nested in it) and that every tag is closed.
+std::vector<Separation> separationChainOf(const std::string& xml) {
+  std::vector<Separation> chain;
+  const std::regex token(
+      R"re(<separation( type="left")?>|<pieces count="(\d+)">([^<]*)</pieces>|<state><dx>([^<]*)</dx><dy>([^<]*)</dy><dz>([^<]*)</dz></state>|</separation>)re");
+  int open = 0, closed = 0;
+  for (auto it = std::sregex_iterator(xml.begin(), xml.end(), token); it != std::sregex_iterator(); ++it) {
+    const std::smatch& m = *it;
+    if (m.str(0).rfind("<separation", 0) == 0) {
+      EXPECT_EQ(closed, 0) << "a separation after a closing tag: not a chain";
+      chain.push_back({m[1].matched, {}, {}});
+      ++open;
+    } else if (m.str(0) == "</separation>") {
+      ++closed;
+    } else if (m[2].matched) {
+      chain.back().pieces = numbersOf(m[3]);
+      EXPECT_EQ(static_cast<int>(chain.back().pieces.size()), std::stoi(m[2]));
+    } else {
+      const std::vector<int> dx = numbersOf(m[4]), dy = numbersOf(m[5]), dz = numbersOf(m[6]);
+      EXPECT_EQ(dx.size(), chain.back().pieces.size());
+      EXPECT_EQ(dy.size(), dx.size());
+      EXPECT_EQ(dz.size(), dx.size());
+      std::vector<std::array<int, 3>> offsets;
+      for (size_t k = 0; k < dx.size() && k < dy.size() && k < dz.size(); ++k) offsets.push_back({dx[k], dy[k], dz[k]});
+      chain.back().states.push_back(offsets);
+    }
+  }
+  EXPECT_EQ(open, closed);
+  return chain;
+}
+
+TEST(ExportXmPuzzle, SavedSolutionPlacesEveryPieceAndReplaysTheDisassemblyPlan) {
+  for (const std::string& file : kReferencePuzzles) {
+    const AssemblyDocument document = loadReference(file);
+    const VoxelGrid& grid = document.voxels;
+    const int parts = grid.maxLabel();
+    const std::string xml = xmpuzzleXml(document, file);
+    // The assembly: x y z and transformation 0 per piece, x y z where the piece's box starts in the
+    // result; putting every piece there rebuilds the labels.
+    std::smatch assemblyMatch;
+    ASSERT_TRUE(std::regex_search(xml, assemblyMatch, std::regex("<assembly>([^<]*)</assembly>"))) << file;
+    const std::vector<int> placements = numbersOf(assemblyMatch[1]);
+    ASSERT_EQ(static_cast<int>(placements.size()), 4 * parts) << file;
+    const std::vector<XmlShape> shapes = shapesOf(xml);
+    std::vector<int> rebuilt(grid.voxelCount(), 0);
+    for (int piece = 0; piece < parts; ++piece) {
+      const XmlShape& shape = shapes.at(piece + 1);
+      const int* at = &placements[4 * piece];
+      EXPECT_EQ(at[3], 0) << file << ": transformation 0, the piece as drawn";
+      for (int z = 0; z < shape.z; ++z) {
+        for (int y = 0; y < shape.y; ++y) {
+          for (int x = 0; x < shape.x; ++x) {
+            if (shape.voxels[x + shape.x * (y + shape.y * z)] != '#') continue;
+            ASSERT_TRUE(grid.inside(x + at[0], y + at[1], z + at[2])) << file;
+            rebuilt[grid.index(x + at[0], y + at[1], z + at[2])] = piece + 1;
+          }
+        }
+      }
+    }
+    EXPECT_TRUE(rebuilt == grid.labels()) << file;
+
+    // The separations: one chain, each removing one piece, in the order of desia's plan, every
+    // move replayed against the pieces still there.
+    const std::vector<Separation> chain = separationChainOf(xml);
+    if (parts == 1) {
+      EXPECT_TRUE(chain.empty()) << file << ": one piece, nothing to take apart";
+      continue;
+    }
+    const DisassemblyPlan plan = planVoxelDisassembly(grid, document.assembly);
+    ASSERT_TRUE(plan.complete) << file;
+    ASSERT_EQ(static_cast<int>(chain.size()), parts - 1) << file;
+    std::vector<bool> present(parts, true);
+    for (size_t s = 0; s < chain.size(); ++s) {
+      const Separation& separation = chain[s];
+      EXPECT_EQ(separation.left, s > 0) << file << ": the pieces left over nest as the 'left' branch";
+      std::vector<int> together;
+      for (int piece = 0; piece < parts; ++piece) {
+        if (present[piece]) together.push_back(piece);
+      }
+      EXPECT_EQ(separation.pieces, together) << file << " separation " << s;
+      ASSERT_GE(separation.states.size(), 2u) << file;
+      for (const auto& offset : separation.states.front()) EXPECT_EQ(offset, (std::array<int, 3>{0, 0, 0}));
+      // Exactly one piece moves, along one axis per state; the last state puts it beyond 10000.
+      const int removedId = document.assembly.parts[plan.removals[s].part].id;
+      const size_t moving = static_cast<size_t>(
+          std::find(separation.pieces.begin(), separation.pieces.end(), removedId - 1) - separation.pieces.begin());
+      ASSERT_LT(moving, separation.pieces.size()) << file << ": the plan's next part is among the pieces";
+      std::vector<Move> path;
+      for (size_t k = 1; k < separation.states.size(); ++k) {
+        Move move;
+        int axesMoved = 0;
+        for (size_t piece = 0; piece < separation.pieces.size(); ++piece) {
+          for (int axis = 0; axis < 3; ++axis) {
+            const int delta = separation.states[k][piece][axis] - separation.states[k - 1][piece][axis];
+            if (delta == 0) continue;
+            EXPECT_EQ(piece, moving) << file << ": only the removed piece moves";
+            ++axesMoved;
+            move.direction[axis] = delta > 0 ? 1 : -1;
+            move.steps = std::abs(delta);
+          }
+        }
+        EXPECT_EQ(axesMoved, 1) << file << " separation " << s << " state " << k;
+        const bool last = k + 1 == separation.states.size();
+        const bool removed = std::any_of(separation.states[k][moving].begin(), separation.states[k][moving].end(),
+                                         [](int d) { return std::abs(d) > 10000; });
+        EXPECT_EQ(removed, last) << file << ": gone in the last state only";
+        if (last) move.steps = 1;  // verifyRemoval goes on to infinity along the last direction
+        path.push_back(move);
+      }
+      EXPECT_EQ(verifyRemoval(grid, present, removedId, path), "") << file << " separation " << s;
+      present[removedId - 1] = false;
+    }
   }
 }
 
