@@ -279,6 +279,21 @@ test('designPlate plans the CLI\'s joints in the worker, with progress; bad opti
     && /sheetIndex 3 is out of range/.test(error.message));
 });
 
+test('designPlate with joints \'milled\' gives the CLI\'s CABINET (Fig. 13): a tenon across the ridge, the sides\' tenons in the roof, verified on exact faces', async () => {
+  const input = path.join(root, 'examples/plate/cabinet.json');
+  const cabinet = fs.readFileSync(input, 'utf8');
+  const cliFile = path.join(tmp, 'cabinet-milled.json');
+  const cli = runCli(['design', 'plate', '--input', input, '--joints', 'milled', '--seed', '2', '--output', cliFile]);
+  assert.equal(cli.status, 0, cli.stderr);
+  const result = await desia.designPlate(cabinet, { joints: 'milled', seed: 2 });
+  assert.equal(result.status, 'success', result.message);
+  assert.equal(result.verification.verdict, 'interlocking');
+  assert.equal(result.verification.shapeRemoval.clear, true);
+  assert.equal(JSON.stringify(result.document), JSON.stringify(JSON.parse(fs.readFileSync(cliFile, 'utf8'))));
+  const types = new Set(result.document.joints.map((joint) => joint.type));
+  assert.ok(types.has('mitre-tenon') && types.has('mortise-tenon'), [...types].join(', '));
+});
+
 test('designPlate with joints \'milled\' gives the CLI\'s BOOKSHELF: sliding dovetails, replayed on the shapes, STL not cut sheets', async () => {
   const input = path.join(root, 'examples/plate/bookshelf.json');
   const bookshelf = fs.readFileSync(input, 'utf8');
