@@ -6,6 +6,7 @@
 #include <emscripten/bind.h>
 #include <emscripten/val.h>
 
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -261,17 +262,23 @@ class DesignSession {
   std::unique_ptr<desia::FrameDesignSession> frames_;
 };
 
-// A voxel assembly (.puz or JSON text) as file bytes: "stl", "stl-ascii", "obj" or "xmpuzzle";
-// part 0 = all parts. Returns a Uint8Array that owns its bytes (copied out of the heap at once:
-// a later memory growth would detach a view, toolchain.md #9).
-val exportAssembly(const std::string& text, const std::string& format, int part, double voxelSize,
-                   const std::string& source) {
+// A voxel assembly (.puz or JSON text) as file bytes: "stl", "stl-ascii", "obj", "xmpuzzle",
+// "stl-zip" or "build-plate-stl"; part 0 = all parts; `spacing` NaN = the default (one voxel).
+// Returns a Uint8Array that owns its bytes (copied out of the heap at once: a later memory growth
+// would detach a view, toolchain.md #9).
+val exportAssembly(const std::string& text, const std::string& format, int part, double voxelSize, double clearance,
+                   double spacing, const std::string& source) {
   return guarded([&] {
     desia::ExportOptions options;
     options.part = part;
     options.voxelSize = voxelSize;
+    options.clearance = clearance;
+    if (!std::isnan(spacing)) options.spacing = spacing;
     options.source = source;
     const desia::AssemblyDocument document = desia::parseAssemblyText(text, source);
+    if (desia::isFrameDocument(document) && clearance != 0) {
+      throw desia::Error(desia::ErrorCode::BadInput, source + ": the clearance applies to voxel assemblies, not to frames");
+    }
     // Frames have their own exports (meshes, .fpuz, the cut list) in the core.
     const std::vector<uint8_t> bytes =
         desia::isFrameDocument(document)

@@ -73,7 +73,7 @@ export const OPTION_NAMES = Object.freeze({
   parseDocument: ['source'],
   voxelize: ['resolution', 'source'],
   toPuz: ['source'],
-  exportAssembly: ['format', 'part', 'voxelSize', 'source', 'sheet', 'sheetIndex', 'kerf', 'spacing', 'hairline'],
+  exportAssembly: ['format', 'part', 'voxelSize', 'clearance', 'source', 'sheet', 'sheetIndex', 'kerf', 'spacing', 'hairline'],
   partSurfaces: ['source'],
   cutSheets: ['format', 'sheet', 'kerf', 'spacing', 'hairline', 'source'],
   parseFrame: ['source', 'jointSize'],
@@ -257,12 +257,18 @@ function makeCore(module) {
      * 'obj' or 'xmpuzzle' (BurrTools, voxel puzzles only); for plate structures also 'svg' and 'dxf'
      * cut files (sheet `sheetIndex`, default 0, of those cutSheets makes with the same options);
      * for frame structures 'stl', 'stl-ascii', 'obj', 'fpuz' (FrameInterlock) and 'csv' (cut list).
+     * Voxel assemblies print-ready: 'stl-zip' (a ZIP of one STL per part) and 'build-plate-stl'
+     * (every part lying flat on z = 0, `spacing` apart, default one voxel).
      * `part` 0 exports every part, k only part k; `voxelSize` scales voxel assemblies (model units
-     * per voxel). Returns the file's bytes.
+     * per voxel); `clearance` moves every face between two voxel parts in by that much (below half
+     * a voxel). Returns the file's bytes.
      */
     exportAssembly(assembly, options) {
-      const { format = 'stl', part = 0, voxelSize = 1, source = '<input>', sheetIndex = 0, ...cut } =
+      const { format = 'stl', part = 0, voxelSize = 1, clearance = 0, source = '<input>', sheetIndex = 0, ...cut } =
         requireOptions('exportAssembly', options, OPTION_NAMES.exportAssembly);
+      // `spacing` is a cut-sheet option, and the gap between the parts of a build plate.
+      const spacing = format === 'build-plate-stl' ? cut.spacing : undefined;
+      if (format === 'build-plate-stl') delete cut.spacing;
       if (format === 'svg' || format === 'dxf') {
         requireInt32(sheetIndex, 'exportAssembly: sheetIndex');
         const sheets = core.cutSheets(assembly, { format, source, ...cut });
@@ -277,14 +283,17 @@ function makeCore(module) {
       const text = assemblyText(assembly, 'exportAssembly: assembly');
       requireString(format, 'exportAssembly: format');
       requireInt32(part, 'exportAssembly: part');
-      if (typeof voxelSize !== 'number') {
-        throw new DesiaError(`exportAssembly: voxelSize must be a number, got ${describeValue(voxelSize)}`, 'bad-input');
+      for (const [name, value] of [['voxelSize', voxelSize], ['clearance', clearance], ['spacing', spacing ?? 0]]) {
+        if (typeof value !== 'number' || Number.isNaN(value)) {
+          throw new DesiaError(`exportAssembly: ${name} must be a number, got ${describeValue(value)}`, 'bad-input');
+        }
       }
       requireString(source, 'exportAssembly: source');
       if (typeof module.exportAssembly !== 'function') {
         throw new DesiaError('exportAssembly: this build of the WebAssembly module has no exporter (rebuild dist/ with scripts/build.sh wasm)', 'unsupported');
       }
-      const bytes = callModule(() => module.exportAssembly(text, format, part, voxelSize, source));
+      // NaN: no spacing given, the core's default (one voxel).
+      const bytes = callModule(() => module.exportAssembly(text, format, part, voxelSize, clearance, spacing ?? NaN, source));
       // A view into the module's memory would be detached by the next memory growth: own a copy.
       return bytes.buffer === module.HEAPU8?.buffer ? bytes.slice() : bytes;
     },

@@ -330,10 +330,15 @@ export interface AsyncDesignSession {
 
 /**
  * Export formats: 'stl' (binary STL), 'stl-ascii', 'obj' (Wavefront OBJ, one object per part) and
- * 'xmpuzzle' (BurrTools, voxel puzzles only).
+ * 'xmpuzzle' (BurrTools, voxel puzzles only, with desia's assembly and disassembly as a saved
+ * solution).
  */
 export type ExportFormat =
   | 'stl' | 'stl-ascii' | 'obj' | 'xmpuzzle' | 'svg' | 'dxf' | 'fpuz' | 'csv'
+  /** Voxel assemblies: a ZIP (stored) of one binary STL per part, `part-01.stl`, ..., each part lying flat on z = 0. */
+  | 'stl-zip'
+  /** Voxel assemblies: one binary STL with every part turned onto its largest layer and laid out on z = 0, `spacing` apart. */
+  | 'build-plate-stl'
   /** Frames: every beam body and glued joint piece its own OBJ object, in place. */
   | 'pieces-obj'
   /** Frames: the joint pieces alone, laid out on z = 0 to print and glue. */
@@ -344,14 +349,21 @@ export interface ExportOptions {
   format?: ExportFormat;
   /** 0 (default): every part; k: only part k. */
   part?: number;
-  /** Model units per voxel edge for voxel assemblies (default 1). */
+  /** Model units per voxel edge for voxel assemblies (default 1), e.g. mm for printing. */
   voxelSize?: number;
+  /**
+   * Voxel meshes (stl, stl-ascii, obj, stl-zip, build-plate-stl): every face of a part against
+   * another part moves in by this much (same units as voxelSize; 0 to below half a voxel; default
+   * 0), so touching parts print with a gap of twice the clearance; faces against empty space stay.
+   */
+  clearance?: number;
   /** Name used in error messages. */
   source?: string;
   /** 'svg' and 'dxf' only: which sheet (default 0); the other cut sheet options as for cutSheets. */
   sheetIndex?: number;
   sheet?: string;
   kerf?: number;
+  /** 'svg' and 'dxf': as for cutSheets; 'build-plate-stl': the gap between the parts' boxes (default one voxel). */
   spacing?: number;
   hairline?: boolean;
 }
@@ -476,8 +488,10 @@ export interface DesiaCore {
   toPuz(assembly: string | AssemblyDocument, options?: { source?: string }): string;
   /**
    * An assembly (.puz text, JSON text or a document object) as a file for other tools: STL or OBJ
-   * meshes of its parts (3D printing), or a BurrTools .xmpuzzle; a frame also as FrameInterlock
-   * '.fpuz' or its 'csv' cut list (both need designed joints). Returns the file's bytes.
+   * meshes of its parts (3D printing; with a `clearance`, as a ZIP of one STL per part or all parts
+   * on a build plate), or a BurrTools .xmpuzzle; a frame also as FrameInterlock '.fpuz' or its
+   * 'csv' cut list (both need designed joints). Returns the file's bytes. Throws a DesiaError
+   * ('bad-input') for a clearance of half a voxel or more, naming the value.
    */
   exportAssembly(assembly: string | AssemblyDocument, options?: ExportOptions): Uint8Array;
   /**

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The Export panel: saves the assembly on screen as .puz, as the JSON document, as STL or OBJ
-// meshes (3D printing; one part or all), as a BurrTools .xmpuzzle, for plate structures as
+// meshes (3D printing; one part or all), print-ready (voxel size and clearance in mm: one STL per
+// part in a ZIP, or every part laid flat on one build plate), as a BurrTools .xmpuzzle (with
+// desia's disassembly as a saved solution), for plate structures as
 // SVG or DXF cut sheets (one download per sheet; not for a result with milled joints, whose
 // sliding dovetails are no 2D cuts: STL or OBJ for the CNC instead), for frames as .fpuz and a
 // CSV cut list. Every byte comes from the core in the worker
@@ -10,7 +12,8 @@
 // in the panel (Preview sheets).
 //
 // For tests: #export-panel[data-state] = '' | working | done | error, #export-message (what was
-// saved, or the core's message), #export-part (options: 0 = all parts, else a part id).
+// saved, or the core's message), #export-part (options: 0 = all parts, else a part id),
+// #export-voxel-size and #export-clearance (mm; shown for the print-ready formats).
 
 import { byId, element } from './dom.js';
 
@@ -30,6 +33,9 @@ const FORMATS = {
   // object (OBJ, in place), and the joint pieces alone laid out on a build plate (STL).
   'pieces-obj': { op: 'export', extension: 'obj', suffix: '-pieces', type: 'model/obj', perPart: false, kinds: ['frame'] },
   'joint-pieces-stl': { op: 'export', extension: 'stl', suffix: '-joint-pieces', type: 'model/stl', perPart: false, kinds: ['frame'] },
+  // Print-ready voxel parts: the size and clearance fields apply (print: true).
+  'stl-zip': { op: 'export', extension: 'zip', type: 'application/zip', perPart: false, kinds: ['voxel'], print: true },
+  'build-plate-stl': { op: 'export', extension: 'stl', suffix: '-plate', type: 'model/stl', perPart: false, kinds: ['voxel'], print: true },
   xmpuzzle: { op: 'export', extension: 'xmpuzzle', type: 'application/octet-stream', perPart: false, kinds: ['voxel'] },
   svg: { op: 'cut-sheets', extension: 'svg', type: 'image/svg+xml', perPart: false, kinds: ['plate'], cut: true },
   dxf: { op: 'cut-sheets', extension: 'dxf', type: 'application/dxf', perPart: false, kinds: ['plate'], cut: true },
@@ -68,6 +74,8 @@ export function createExportPanel({ core }) {
     part: byId('export-part'),
     sheet: byId('export-sheet'),
     kerf: byId('export-kerf'),
+    voxelSize: byId('export-voxel-size'),
+    clearance: byId('export-clearance'),
     button: byId('export-button'),
     preview: byId('export-preview'),
     sheets: byId('sheet-preview'),
@@ -100,6 +108,7 @@ export function createExportPanel({ core }) {
     ui.part.disabled = !assembly || !format?.perPart;
     ui.part.hidden = Boolean(format?.cut);
     ui.sheet.hidden = ui.kerf.hidden = ui.preview.hidden = !format?.cut;
+    for (const field of [ui.voxelSize, ui.clearance]) field.closest('label').hidden = !format?.print;
     ui.button.disabled = !assembly || busy || exporting || !format || ui.format.selectedOptions[0]?.disabled;
     ui.preview.disabled = ui.button.disabled;
   }
@@ -135,7 +144,7 @@ export function createExportPanel({ core }) {
         return;
       }
       const options = format.op === 'export'
-        ? { format: formatName, part, voxelSize: 1, source: name }
+        ? { format: formatName, part, voxelSize: 1, source: name, ...(format.print ? printOptions() : {}) }
         : { source: name };
       const { value } = await core.run(format.op, text, options);
       // The assembly on screen may have changed meanwhile; the file is still the one asked for.
@@ -148,6 +157,20 @@ export function createExportPanel({ core }) {
       exporting = false;
       refresh();
     }
+  }
+
+  /**
+   * Voxel size and clearance (mm) of the print-ready formats; an empty field is its default (10 mm,
+   * no clearance). The core checks the ranges (the clearance below half a voxel) and names the value.
+   */
+  function printOptions() {
+    const number = (field, fallback, what) => {
+      if (field.value.trim() === '') return fallback;
+      const value = Number(field.value);
+      if (!Number.isFinite(value)) throw new Error(`The ${what} must be a number of mm, got '${field.value}'.`);
+      return value;
+    };
+    return { voxelSize: number(ui.voxelSize, 10, 'voxel size'), clearance: number(ui.clearance, 0, 'clearance') };
   }
 
   /** The cut-sheet options of the panel's fields. */

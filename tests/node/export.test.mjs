@@ -148,8 +148,12 @@ for (const file of puzzles) {
     }
     assert.deepEqual(rebuilt, labels);
     const problemShapes = Array.from({ length: parts }, (_, k) => `    <shape id="${k + 1}" count="1"/>\n`).join('');
-    assert.ok(xml.includes(`<problem name="desia" state="0">\n   <shapes>\n${problemShapes}   </shapes>\n   <result id="0"/>`));
-    assert.ok(!xml.includes('solution'));
+    assert.ok(xml.includes(`<problem name="desia" state="3">\n   <shapes>\n${problemShapes}   </shapes>\n   <result id="0"/>`));
+    // desia's assembly as BurrTools' saved solution: the pieces at their crop offsets, and one
+    // separation per removal (the last two pieces come apart in the last one).
+    const placements = /<assembly>([^<]*)<\/assembly>/.exec(xml)[1].split(' ').map(Number);
+    assert.deepEqual(placements, Array.from({ length: parts }, (_, k) => [...offsets.get(k + 1), 0]).flat());
+    assert.equal(xml.match(/<separation[ >]/g).length, parts - 1);
   });
 }
 
@@ -207,11 +211,13 @@ test('the WebAssembly binding gives the same bytes as the CLI, as a Uint8Array',
   for (const file of [k9File, path.join(referenceDir, 'result_puz/cartoon_dog.puz')]) {
     const text = fs.readFileSync(file, 'utf8');
     const cases = [['stl', []], ['stl-ascii', []], ['obj', []], ['xmpuzzle', []],
-      ['obj', ['--voxel-size', '0.1']], ['stl-ascii', ['--part', '3', '--voxel-size', '0.37']], ['stl', ['--part', '2']]];
+      ['obj', ['--voxel-size', '0.1']], ['stl-ascii', ['--part', '3', '--voxel-size', '0.37']], ['stl', ['--part', '2']],
+      ['stl', ['--voxel-size', '10', '--clearance', '0.2']], ['stl-zip', ['--voxel-size', '10', '--clearance', '0.2']],
+      ['build-plate-stl', ['--voxel-size', '10', '--clearance', '0.15', '--spacing', '3']], ['build-plate-stl', ['--part', '4']]];
     for (const [format, extra] of cases) {
-      const part = extra.includes('--part') ? Number(extra[extra.indexOf('--part') + 1]) : 0;
-      const voxelSize = extra.includes('--voxel-size') ? Number(extra[extra.indexOf('--voxel-size') + 1]) : 1;
-      const bytes = wasm.exportAssembly(text, format, part, voxelSize, file);
+      const flag = (name, fallback) => (extra.includes(name) ? Number(extra[extra.indexOf(name) + 1]) : fallback);
+      const [part, voxelSize, clearance, spacing] = [flag('--part', 0), flag('--voxel-size', 1), flag('--clearance', 0), flag('--spacing', NaN)];
+      const bytes = wasm.exportAssembly(text, format, part, voxelSize, clearance, spacing, file);
       assert.ok(bytes instanceof Uint8Array, 'a Uint8Array');
       assert.equal(bytes.byteOffset, 0, 'a copy that owns its buffer, not a view of the module heap');
       assert.equal(bytes.buffer.byteLength, bytes.length, 'a copy that owns its buffer, not a view of the module heap');
@@ -221,7 +227,8 @@ test('the WebAssembly binding gives the same bytes as the CLI, as a Uint8Array',
 });
 
 const badRequests = [
-  ['an unknown format', [k9File, '--format', 'step'], /^desia: error: unknown export format 'step' \(expected stl, stl-ascii, obj or xmpuzzle\)$/m,
+  ['an unknown format', [k9File, '--format', 'step'],
+    /^desia: error: unknown export format 'step' \(expected stl, stl-ascii, obj, xmpuzzle, stl-zip or build-plate-stl\)$/m,
     ['step', 0, 1], /^unknown export format 'step'/],
   ['a part that does not exist', [k9File, '--format', 'stl', '--part', '12'],
     /Cube_4x4x4_K9\.puz: part 12 does not exist: the assembly has parts 1 to 9 \(0 = all parts\)$/m,
@@ -230,6 +237,11 @@ const badRequests = [
     /a BurrTools \.xmpuzzle holds the whole puzzle, so it cannot hold only part 2/, ['xmpuzzle', 2, 1], /holds the whole puzzle/],
   ['a zero voxel size', [k9File, '--format', 'obj', '--voxel-size', '0'],
     /the voxel size must be a number from 0\.000001 to 1000000, got 0$/m, ['obj', 0, 0], /the voxel size must be a number/],
+  ['a clearance of half a voxel', [k9File, '--format', 'stl-zip', '--voxel-size', '10', '--clearance', '5'],
+    /Cube_4x4x4_K9\.puz: the clearance must be at least 0 and less than half the voxel size \(5\), got 5$/m,
+    ['stl-zip', 0, 10, 5], /^k9\.puz: the clearance must be at least 0 and less than half the voxel size \(5\), got 5$/],
+  ['a negative build plate spacing', [k9File, '--format', 'build-plate-stl', '--spacing', '-2'],
+    /--spacing -2 is out of range \(0 to 1000\)$/m, ['build-plate-stl', 0, 1, 0, -2], /the spacing must be a number from 0 to 1000000, got -2$/],
   ['a contact-graph document', [path.join(root, 'examples/contacts/figure4_two_parts_move_at_once.json'), '--format', 'stl'],
     /figure4_two_parts_move_at_once\.json: export needs a voxel assembly, this is a contacts document$/m, null, null],
 ];
@@ -244,7 +256,8 @@ for (const [name, args, cliMessage, bindingArgs, bindingMessage] of badRequests)
     assert.ok(!fs.existsSync(output));
     if (bindingArgs) {
       const [format, part, voxelSize] = bindingArgs;
-      assert.throws(() => wasm.exportAssembly(fs.readFileSync(k9File, 'utf8'), format, part, voxelSize, 'k9.puz'), (error) => {
+      const [clearance = 0, spacing = NaN] = bindingArgs.slice(3);
+      assert.throws(() => wasm.exportAssembly(fs.readFileSync(k9File, 'utf8'), format, part, voxelSize, clearance, spacing, 'k9.puz'), (error) => {
         assert.ok(error instanceof Error);
         assert.equal(error.code, 'bad-input');
         assert.match(error.message, bindingMessage);
@@ -256,7 +269,7 @@ for (const [name, args, cliMessage, bindingArgs, bindingMessage] of badRequests)
 
 test('non-voxel text through the binding: a bad-input Error naming the source', () => {
   const text = fs.readFileSync(path.join(root, 'examples/contacts/figure4_two_parts_move_at_once.json'), 'utf8');
-  assert.throws(() => wasm.exportAssembly(text, 'obj', 0, 1, 'fig4.json'),
+  assert.throws(() => wasm.exportAssembly(text, 'obj', 0, 1, 0, NaN, 'fig4.json'),
     { code: 'bad-input', message: 'fig4.json: export needs a voxel assembly, this is a contacts document' });
 });
 
