@@ -158,7 +158,13 @@ AssemblyDocument documentFromPlates(std::vector<Plate> plates, const PlateOption
   document.name = std::move(name);
   document.plateOptions = options;
   validatePlates(plates, options, source);
-  const std::vector<PlateContact> contacts = computePlateContacts(plates, options);
+  std::vector<PlateContact> contacts;
+  try {
+    contacts = computePlateContacts(plates, options);
+  } catch (const Error& error) {  // overlaps found by the geometry: name the file too
+    if (error.code() != ErrorCode::BadInput || source.empty()) throw;
+    throwBadInput(source, error.what());
+  }
   requireConnectedPlates(plates, contacts, source);
   document.assembly = assemblyFromPlates(plates, contacts);
   document.plateCutPoints = plateCutPoints(static_cast<int>(plates.size()), contacts);

@@ -13,6 +13,7 @@
 #include "desia/error.h"
 #include "desia/plate.h"
 #include "plate/plane_frame.h"
+#include "plate/plate_shape.h"
 
 namespace desia {
 namespace {
@@ -267,19 +268,6 @@ void validatePlates(const std::vector<Plate>& plates, const PlateOptions& option
 
 namespace {
 
-bool isPrismPlate(const Plate& plate, const Vec3& axis, double thickness) {
-  for (size_t l = 0; l < plate.bottom.size(); ++l) {
-    for (size_t k = 0; k < plate.bottom[l].size(); ++k) {
-      if (norm(minus(plate.top[l][k], plus(plate.bottom[l][k], scaled(axis, thickness)))) > 1e-6) return false;
-    }
-  }
-  return true;
-}
-
-double thicknessOf(const Plate& plate, const Vec3& axis) {
-  return dot(minus(plate.top[0][0], plate.bottom[0][0]), axis);
-}
-
 // The part of `plate`'s face inside the slab of `other` (between its faces), as Clipper paths in
 // `frame` (the plate's first face plane).
 ClipperLib::Paths insideSlab(const Plate& plate, const PlaneFrame& frame, const Vec3& point, const Vec3& line,
@@ -350,8 +338,8 @@ std::optional<PlateContact> plateCrossing(const std::vector<Plate>& plates, int 
   const Plate& b = plates[q];
   const Vec3 ta = plateThicknessAxis(a), tb = plateThicknessAxis(b);
   if (std::abs(dot(ta, tb)) > 1e-6) return std::nullopt;
-  const double ha = thicknessOf(a, ta), hb = thicknessOf(b, tb);
-  if (!isPrismPlate(a, ta, ha) || !isPrismPlate(b, tb, hb)) return std::nullopt;
+  const double ha = plateThickness(a), hb = plateThickness(b);
+  if (!isPrism(a) || !isPrism(b)) return std::nullopt;
   const Vec3 line = canonicalSign(normalized(cross(ta, tb)));
   // On both first faces: the planes' common line, with (ta, tb, line) orthonormal.
   const Vec3 point = plus(scaled(ta, dot(a.bottom[0][0], ta)), scaled(tb, dot(b.bottom[0][0], tb)));
@@ -414,18 +402,20 @@ std::optional<PlateContact> plateCrossing(const std::vector<Plate>& plates, int 
   return crossing;
 }
 
-// Two prism plates that are neither parallel-and-apart nor perpendicular (those are crossings) must
-// not share volume: sliced by planes parallel to the first plate's faces (a quarter, half and three
+// Two plates that are neither parallel-and-apart nor perpendicular (those are crossings) must not
+// share volume: sliced by planes parallel to the first plate's faces (a quarter, half and three
 // quarters of the way through it), the second plate's section must not overlap the first's face by
-// more than a sliver of the tolerance's width. A refusal is always a real overlap; an overlap thinner
-// than a quarter of the first plate's thickness between the slices can pass (the design's swept
-// check still finds it).
-void requireNoSlantedOverlap(const Plate& a, const Plate& b, double tolerance) {
-  const Vec3 ta = plateThicknessAxis(a), tb = plateThicknessAxis(b);
+// more than a sliver of the tolerance's width. A plate with mitred sides is judged by its core
+// prism (where it has its whole thickness, corePrism), which lies inside it. A refusal is always a
+// real overlap; an overlap thinner than a quarter of the first plate's thickness between the
+// slices, or within the mitres, can pass (the design's swept check still finds it).
+void requireNoSlantedOverlap(const Plate& plateA, const Plate& plateB, double tolerance) {
+  const Vec3 ta = plateThicknessAxis(plateA), tb = plateThicknessAxis(plateB);
   const double cosine = dot(ta, tb);
   if (std::abs(cosine) < 1e-6) return;  // perpendicular: computePlateContacts' crossings
-  const double ha = thicknessOf(a, ta), hb = thicknessOf(b, tb);
-  if (!isPrismPlate(a, ta, ha) || !isPrismPlate(b, tb, hb)) return;
+  const Plate a = corePrism(plateA), b = corePrism(plateB);
+  if (a.bottom.empty() || b.bottom.empty()) return;
+  const double ha = plateThickness(plateA), hb = plateThickness(plateB);
   const Box boxA = boxOf(a), boxB = boxOf(b);
   double reach = 0;
   for (int k = 0; k < 3; ++k) reach += std::max(boxA.hi[k], boxB.hi[k]) - std::min(boxA.lo[k], boxB.lo[k]);
@@ -472,7 +462,7 @@ void requireNoSlantedOverlap(const Plate& a, const Plate& b, double tolerance) {
       }
       const double area = std::abs(ClipperLib::Area(piece)) / (kClipperScale * kClipperScale);
       if (perimeter > 0 && 2 * area / perimeter > tolerance) {
-        throwBadInput("", plateName(a) + " and " + plateName(b) + " overlap (their solids share " + millimetres(2 * area / perimeter) +
+        throwBadInput("", plateName(plateA) + " and " + plateName(plateB) + " overlap (their solids share " + millimetres(2 * area / perimeter) +
                               " wide and more) where no contact or crossing explains it: move them apart until they touch");
       }
     }

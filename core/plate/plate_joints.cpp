@@ -20,6 +20,7 @@
 #include "desia/error.h"
 #include "plate/exact_vertices.h"
 #include "plate/plane_frame.h"
+#include "plate/plate_shape.h"
 
 namespace desia {
 namespace {
@@ -34,20 +35,6 @@ std::string plateLabel(const Plate& plate) {
   return "plate " + std::to_string(plate.id) + (plate.name.empty() ? "" : " (" + plate.name + ")");
 }
 
-double plateThickness(const Plate& plate) {
-  return std::abs(dot(minus(plate.top[0][0], plate.bottom[0][0]), plateThicknessAxis(plate)));
-}
-
-bool isPrism(const Plate& plate) {
-  const Vec3 lift = scaled(plateThicknessAxis(plate), plateThickness(plate));
-  for (size_t l = 0; l < plate.bottom.size(); ++l) {
-    for (size_t k = 0; k < plate.bottom[l].size(); ++k) {
-      if (norm(minus(plate.top[l][k], plus(plate.bottom[l][k], lift))) > 1e-6) return false;
-    }
-  }
-  return true;
-}
-
 // Side k of the outline is square: its face stands at a right angle on the plate's faces (a
 // plate given by its two faces may have mitred sides elsewhere).
 bool sideIsSquare(const Plate& plate, size_t k) {
@@ -55,26 +42,6 @@ bool sideIsSquare(const Plate& plate, size_t k) {
   const size_t next = (k + 1) % plate.bottom[0].size();
   return norm(minus(plate.top[0][k], plus(plate.bottom[0][k], lift))) < 1e-6 &&
          norm(minus(plate.top[0][next], plus(plate.bottom[0][next], lift))) < 1e-6;
-}
-
-// Where the plate is its whole thickness (both faces, seen along its axis) or any of it: for a
-// prism both are its face; a plate with mitred sides is thinner near them, and a cut through it
-// must stay where it is whole.
-std::vector<Loop> faceRegion(const Plate& plate, ClipperLib::ClipType operation) {
-  if (isPrism(plate)) return plate.bottom;
-  const PlaneFrame frame(plate.bottom[0][0], plateThicknessAxis(plate));
-  ClipperLib::Clipper clipper;
-  clipper.AddPaths(clipperPaths(plate.bottom, frame), ClipperLib::ptSubject, true);
-  clipper.AddPaths(clipperPaths(plate.top, frame), ClipperLib::ptClip, true);
-  ClipperLib::Paths region;
-  clipper.Execute(operation, region, ClipperLib::pftEvenOdd, ClipperLib::pftEvenOdd);
-  std::vector<Loop> loops;
-  for (const ClipperLib::Path& path : region) {
-    Loop loop;
-    for (const ClipperLib::IntPoint& point : path) loop.push_back(frame.fromClipper(point));
-    loops.push_back(loop);
-  }
-  return loops;
 }
 
 double areaOf(const ClipperLib::Paths& paths) {

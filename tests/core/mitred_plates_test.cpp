@@ -411,8 +411,11 @@ TEST(MitredPlatesRefusals, ThicknessTooLargeForTheShape) {
     solid.faces.push_back({8 + k, 8 + m, 12 + m, 12 + k});  // pocket wall
   }
   MitredPlateOptions options;
-  options.thickness = 6;
+  options.thickness = 3;
   EXPECT_EQ(mitredPlatesFromMesh(triangulated(solid), options, "tray").plates.size(), 14u);
+  // At 6 mm the floor's plate (z 2..8) and the bottom's (z 0..6) share 4 mm of wood under the
+  // pocket: plates with mitred sides are checked for overlaps by their core prisms.
+  expectRefusal(triangulated(solid), 6, "plate 1 and plate 2 overlap \\(their solids share 60 mm wide and more\\)");
   expectRefusal(triangulated(solid), 10,
                 "the thickness 10 mm is too large for the shape: the inner corner of face 2 \\(around \\(0, 0, 8\\)\\) below vertex 13 "
                 "\\(-60, -60, 8\\) lies outside the mesh at \\(-70, -70, -2\\)");

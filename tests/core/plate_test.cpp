@@ -139,6 +139,11 @@ TEST(PlateInput, BadPlatesAreNamedWithTheProblem) {
                       R"({"id":3,"outline":[[500,0,0],[600,0,0],[600,100,0],[500,100,0]],"thickness":10},)" +
                       R"({"id":4,"outline":[[500,0,10],[600,0,10],[600,100,10],[500,100,10]],"thickness":10}])",
                   "the design falls apart into 2 groups that do not touch: plates 1, 2; plates 3, 4");
+  // Two plates with mitred sides, the second 5 mm above the first: they share wood where both
+  // are whole (their core prisms; before, only prism plates were checked on reading).
+  ExpectBadPlates(R"([{"id":1,"faces":[[[0,0,0],[100,0,0],[100,100,0],[0,100,0]],[[10,10,10],[90,10,10],[90,90,10],[10,90,10]]]},)"
+                  R"({"id":2,"faces":[[[0,0,5],[100,0,5],[100,100,5],[0,100,5]],[[10,10,15],[90,10,15],[90,90,15],[10,90,15]]]}])",
+                  "plate 1 and plate 2 overlap (their solids share 40 mm wide and more)");
   ExpectBadPlates(R"({"id":1})", "plates: expected an array of plates");
   ExpectBadPlates(R"([{"id":1,"outline":[[0,0,0],[1,0,0]],"thickness":1}])", "a face needs at least 3 vertices");
   ExpectBadPlates(R"([{"id":1,"outline":[[0,0,0],[1e300,0,0],[0,1,0]],"thickness":1}])", "is not a finite number of millimetres");
