@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The Design panel: designs an N-part interlocking voxel puzzle from the assembly on screen
-// (all its voxels are the shape), automatically (designVoxel, with live progress) or step by
+// (all its voxels are the shape), automatically (designVoxel, with live progress; with several
+// Workers a portfolio of seeds, worker-client.js WorkerPortfolio, the winner naming the result) or step by
 // step (a design session); for a plate design it plans the joints (designPlate: seed,
 // candidates, time limit; N, ranking and mode do not apply), for a frame it designs the 3x3x3
 // voxel joints (designFrame: seed, candidates, time limit); plates and frames also step by step
@@ -13,6 +14,7 @@
 // cancelled | cut-point | error (the last outcome), #design-panel[data-kind] = voxel | plate | frame (what
 // Design will do), #design-message (the core's message),
 // #design-progress-box[data-updates] (progress messages seen in the current run),
+// #design-progress-box[data-seed] (with several Workers: the seed of the deepest search),
 // #session-state[data-parts, data-children, data-complete] (the open session's node),
 // #design-input[data-name] (what Design designs from: the assembly the user loaded, not a result
 // designed from it), .field-help[data-invalid] under each field (its one-line explanation, or
@@ -22,6 +24,7 @@
 import { byId } from './dom.js';
 import { readUrlState, writeUrlState } from './url-state.js';
 import { formatDirection } from './view.js';
+import { WorkerPortfolio } from './worker-client.js';
 
 /** The fields of the form, by URL key; their values go to the core as they are. */
 const FIELDS = {
@@ -31,11 +34,19 @@ const FIELDS = {
   timeLimit: byId('design-time-limit'),
   rank: byId('design-rank'),
   mode: byId('design-mode'),
+  workers: byId('design-workers'),
   joints: byId('design-joints'),
   clearance: byId('design-clearance'),
 };
 const NUMBER_FIELDS = ['parts', 'seed', 'candidates', 'timeLimit'];
-const FIELD_NAMES = { parts: 'Parts N', seed: 'Seed', candidates: 'Candidates m', timeLimit: 'Time limit', clearance: 'Clearance' };
+/** The text fields whose value the page checks and explains (Workers stays in the page). */
+const CHECKED_FIELDS = [...NUMBER_FIELDS, 'workers'];
+const FIELD_NAMES = { parts: 'Parts N', seed: 'Seed', candidates: 'Candidates m', timeLimit: 'Time limit', clearance: 'Clearance', workers: 'Workers' };
+/**
+ * Voxel designs run as a portfolio of seeds on this many workers at most (issue 10): one per core
+ * up to 4 (each worker holds its own WebAssembly memory). The Workers field starts there.
+ */
+const MAX_WORKERS = Math.max(1, Math.min(Number(navigator.hardwareConcurrency) || 1, 4));
 /** A number as typed: what the text fields accept before the core checks the value. */
 const NUMBER_PATTERN = /^[+-]?(\d+(\.\d*)?|\.\d+)([eE][+-]?\d+)?$/;
 /**
@@ -65,7 +76,7 @@ const ui = {
   frameHint: byId('design-frame-hint'),
   frameNote: byId('design-frame-note'),
   sessionPlateNote: byId('session-plate-note'),
-  voxelOnlyFields: [byId('design-parts-field'), byId('design-rank-field'), byId('design-mode-field')],
+  voxelOnlyFields: [byId('design-parts-field'), byId('design-rank-field'), byId('design-mode-field'), byId('design-workers-field')],
   plateOnlyFields: [byId('design-joints-field'), byId('design-clearance-field')],
   form: byId('design-form'),
   designButton: byId('design-button'),
@@ -117,6 +128,8 @@ function seconds(ms) {
 export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
   let busy = false;
   let partsTouched = false;
+  /** The workers of portfolio designs (started on the first one), or null. */
+  let portfolio = null;
   /** The open step-by-step session: { generation, base, snapshot }, or null. */
   let session = null;
   /** The latest run (design or session step): { started, latest, updates, clock, withProgress, noun }. */
@@ -142,7 +155,8 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
 
   function syncUrl() {
     const changes = {};
-    for (const [key, field] of Object.entries(FIELDS)) changes[key] = field.value;
+    // Workers is this machine's setting, not the design's: links leave it out.
+    for (const [key, field] of Object.entries(FIELDS)) if (key !== 'workers') changes[key] = field.value;
     writeUrlState(changes);
   }
 
@@ -170,7 +184,16 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
     }
     options.rank = FIELDS.rank.value;
     options.mode = FIELDS.mode.value;
+    options.jobs = readWorkers();
     return options;
+  }
+
+  /** The Workers field: searches at once, at most MAX_WORKERS (an empty field: one). */
+  function readWorkers() {
+    const problem = fieldProblem('workers');
+    if (problem) throw fieldError('workers', problem);
+    const raw = FIELDS.workers.value.trim();
+    return raw === '' ? 1 : Math.min(Number(raw), MAX_WORKERS);
   }
 
   /** What is wrong with the text of a number field ('' when nothing the page can tell). */
@@ -181,6 +204,7 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
     const value = Number(raw);
     // The core's own words for 1 and 2 (it answers 0 with its generic range).
     if (key === 'parts' && Number.isInteger(value) && value < MIN_PARTS) return `parts = ${value}: ${MIN_PARTS_REASON}`;
+    if (key === 'workers' && !(Number.isInteger(value) && value >= 1)) return `Workers: "${raw}" is not a whole number from 1`;
     return '';
   }
 
@@ -228,7 +252,7 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
   }
 
   function explainAll() {
-    for (const key of NUMBER_FIELDS) explain(key);
+    for (const key of CHECKED_FIELDS) explain(key);
   }
 
   // -------------------------------------------------------------------------------------------
@@ -276,6 +300,8 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
     run.latest = value;
     run.updates += 1;
     ui.progressBox.dataset.updates = String(run.updates);
+    // A portfolio's progress is its deepest search's (nodes: all of them); which seed that is.
+    ui.progressBox.dataset.seed = value.seed === undefined ? '' : String(value.seed);
     renderProgress();
   }
 
@@ -296,7 +322,8 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
   function cancel() {
     if (!busy) return;
     // Rejects the pending request with a CancelledError, handled where it was sent.
-    core.cancel();
+    if (run?.portfolio) portfolio.cancel();
+    else core.cancel();
   }
 
   // -------------------------------------------------------------------------------------------
@@ -327,13 +354,18 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
     if (busy) return;
     const request = readRequest();
     if (!request) return;
-    const { shape, options } = request;
+    const { shape, options: { jobs = 1, ...options } } = request;
     const structure = STRUCTURES[kind] ?? null;
     syncUrl();
     begin(structure ? structure.label : 'Designing…', { withProgress: true, ...(structure ? { noun: structure.noun } : {}) });
+    // Several workers: a portfolio of seeds (the result names the one that won).
+    run.portfolio = !structure && jobs > 1;
     try {
       const operation = structure ? structure.op : 'design';
-      const { value: result, elapsedMs } = await core.run(operation, shape.text, { ...options, source: shape.name }, { onProgress });
+      const coreOptions = { ...options, source: shape.name };
+      const { value: result, elapsedMs } = run.portfolio
+        ? await (portfolio ??= new WorkerPortfolio(core)).run(operation, shape.text, coreOptions, jobs, { onProgress })
+        : await core.run(operation, shape.text, coreOptions, { onProgress });
       if (structure) {
         // The result's progress is the final count (a finished plan has every plate joined); a cut
         // point is found before any search, so there is no progress to show.
@@ -345,7 +377,7 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
         showAssembly({
           name: structure
             ? `${baseName(shape.name)}_${structure.suffix}_seed${options.seed ?? 1}.json`
-            : `${baseName(shape.name)}_N${result.progress.targetParts}_seed${options.seed ?? 1}.puz`,
+            : `${baseName(shape.name)}_N${result.progress.targetParts}_seed${result.seed ?? options.seed ?? 1}.puz`,
           text: structure ? `${JSON.stringify(result.document, null, 2)}\n` : result.puz,
           document: result.document,
           surfaces: result.surfaces,
@@ -411,6 +443,7 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
     if (!request) return;
     const { shape, options } = request;
     delete options.timeLimit; // A session makes one step per click: no search to limit.
+    delete options.jobs; // One session, in the page's worker.
     syncUrl();
     const generation = core.generation;
     const answer = await sessionCall('session-open', shape.text, { ...options, source: shape.name }, 'Starting the session…');
@@ -548,7 +581,7 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
     });
     ui.cancelButton.addEventListener('click', cancel);
     FIELDS.parts.addEventListener('input', () => { partsTouched = true; });
-    for (const key of NUMBER_FIELDS) FIELDS[key].addEventListener('input', () => explain(key));
+    for (const key of CHECKED_FIELDS) FIELDS[key].addEventListener('input', () => explain(key));
     FIELDS.joints.addEventListener('change', () => { jointsFromExample = false; });
     ui.form.addEventListener('input', syncUrl);
     ui.form.addEventListener('change', syncUrl);
@@ -560,6 +593,8 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
     ui.sessionClose.addEventListener('click', closeSession);
   }
 
+  FIELDS.workers.value = String(MAX_WORKERS);
+  helpOf('workers').dataset.default = `seeds tried at once (at most ${MAX_WORKERS} here); the first puzzle wins`;
   prefillFromUrl();
   wire();
   refreshControls();

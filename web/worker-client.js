@@ -4,6 +4,8 @@
 // recovery, and cancellation. A busy single-threaded WebAssembly worker cannot read a 'cancel'
 // message, so cancel() terminates the worker and starts a fresh one at once.
 
+import { portfolioSeeds, runPortfolio } from '../wasm/portfolio.js';
+
 /** A worker that has not reported `ready` by then is considered dead. */
 const WORKER_START_TIMEOUT_MS = 30_000;
 /** Consecutive failed worker starts before we stop restarting on our own. */
@@ -83,7 +85,8 @@ export class CoreWorker {
    */
   run(op, text, options = {}, { onProgress, bytes } = {}) {
     if (!this.#worker) {
-      // We gave up restarting after repeated failures; a new request is worth one more try.
+      // stop() was called, or we gave up restarting after repeated failures; a new request is
+      // worth one more try.
       this.#failedStarts = 0;
       this.start();
     }
@@ -103,6 +106,14 @@ export class CoreWorker {
   cancel() {
     this.#discardWorker(new CancelledError());
     this.start();
+  }
+
+  /**
+   * Like cancel(), without starting a fresh worker: the next request starts one. For helper
+   * workers that need not sit loaded while nothing runs.
+   */
+  stop() {
+    this.#discardWorker(new CancelledError());
   }
 
   #handleMessage(message) {
@@ -159,5 +170,55 @@ export class CoreWorker {
     const willRestart = this.#failedStarts < MAX_FAILED_STARTS;
     this.#onCrash(message, willRestart);
     if (willRestart) this.start();
+  }
+}
+
+/**
+ * Voxel designs on several workers at once (issue 10, "all cores"; wasm/portfolio.js): search k
+ * runs with seed + k, the first in the page's own worker and the others in helper workers. The
+ * first verified puzzle wins and the other searches are stopped: a helper's worker is terminated
+ * (a run starts it again), the page's own is cancelled (a fresh one starts at once; a step-by-step
+ * session in it ends, as with Cancel).
+ */
+export class WorkerPortfolio {
+  #workers;
+
+  /** `main`: the page's CoreWorker, which runs the first search. */
+  constructor(main) {
+    this.#workers = [main];
+  }
+
+  /**
+   * Runs `op` ('design') with `options` in `jobs` workers; resolves with `{ value, elapsedMs }`
+   * of the winner (`value.seed` names its seed) or, when none succeeds, of the deepest search.
+   * `onProgress` gets the deepest search's progress with its `seed` and all searches' nodes.
+   * Every search is sent before this returns, so cancel() right after reaches them all.
+   */
+  run(op, text, options, jobs, { onProgress } = {}) {
+    while (this.#workers.length < jobs) {
+      // A helper's failure fails its search, and with it the run: nothing more to report. Its
+      // worker starts with its first request.
+      this.#workers.push(new CoreWorker({ onReady: () => {}, onCrash: () => {} }));
+    }
+    const seeds = portfolioSeeds(options.seed ?? 1, jobs);
+    const elapsed = new Map();
+    return runPortfolio(seeds, (seed, job, k) => {
+      const worker = this.#workers[k];
+      job.signal.addEventListener('abort', () => this.#halt(k), { once: true });
+      return worker.run(op, text, { ...options, seed }, { onProgress: job.onProgress }).then((answer) => {
+        elapsed.set(seed, answer.elapsedMs);
+        return answer.value;
+      });
+    }, { onProgress }).then((value) => ({ value, elapsedMs: elapsed.get(value.seed) }));
+  }
+
+  /** Stops every search within a moment; the running request rejects with a CancelledError. */
+  cancel() {
+    this.#workers.forEach((_, k) => this.#halt(k));
+  }
+
+  #halt(k) {
+    if (k === 0) this.#workers[0].cancel();
+    else this.#workers[k].stop();
   }
 }

@@ -93,7 +93,7 @@ describe('playground design panel in headless Chromium', { timeout: 100_000 }, (
     assert.equal(shape.parts, '1', 'the input shape is one part');
     assert.equal(await page.inputValue('#design-parts'), '7', 'default N for a small shape');
 
-    const outcome = await design(page, { parts: 7, seed: 1 });
+    const outcome = await design(page, { parts: 7, seed: 1, workers: 1 });
     await screenshot(page, 'design-cube-7');
     assert.equal(outcome.outcome, 'success', `design failed: ${outcome.message}`);
     assert.match(outcome.message, /7-part interlocking puzzle/);
@@ -104,6 +104,26 @@ describe('playground design panel in headless Chromium', { timeout: 100_000 }, (
     assertInterlockingWithKey(state, 1);
     assert.equal(state.parts, '7');
     if (state.webgl === 'on') assert.equal(state.meshes, '7', 'one mesh per part');
+  });
+
+  it('designs on two workers: the result names the seed that won, the puzzle of one worker with that seed', async () => {
+    await page.goto(`${server.url}?example=${CUBE_SHAPE}`);
+    await waitForReady(page, CUBE_SHAPE);
+    const cores = await page.evaluate(() => navigator.hardwareConcurrency);
+    assert.equal(await page.inputValue('#design-workers'), String(Math.max(1, Math.min(cores, 4))), 'one worker per core, up to 4');
+    const outcome = await design(page, { parts: 9, seed: 1, workers: 2 });
+    assert.equal(outcome.outcome, 'success', `design failed: ${outcome.message}`);
+    const source = await page.evaluate(() => document.body.dataset.source);
+    const winner = Number(source.match(/^Cube_4x4x4_N9_seed([12])\.puz$/)?.[1]);
+    assert.ok(winner === 1 || (cores > 1 && winner === 2), source);
+    if (cores > 1) {
+      assert.match(await page.evaluate(() => document.querySelector('#design-progress-box').dataset.seed), /^[12]$/);
+    }
+    assertInterlockingWithKey(await waitForReady(page, source), 1);
+    const [download] = await Promise.all([page.waitForEvent('download'), page.click('#download-button')]);
+    const shape = await readFile(path.join(REPO_ROOT, 'examples/voxel', CUBE_SHAPE), 'utf8');
+    const alone = core.designVoxel(shape, { parts: 9, seed: winner });
+    assert.equal(await readFile(await download.path(), 'utf8'), alone.puz);
   });
 
   it('shows progress, cancels a long design within a second, and designs again', async (t) => {
@@ -136,7 +156,7 @@ describe('playground design panel in headless Chromium', { timeout: 100_000 }, (
     assert.match(cancelled.message, /^Cancelled after \d+\.\d s: the deepest node had \d+ of 9 parts/);
     assert.deepEqual(after_, before_, 'the page still shows the previous assembly and its report');
 
-    const again = await design(page, { parts: 7, seed: 1, timeLimit: 60 });
+    const again = await design(page, { parts: 7, seed: 1, timeLimit: 60, workers: 1 });
     assert.equal(again.outcome, 'success', `design after cancel failed: ${again.message}`);
     assertInterlockingWithKey(await waitForReady(page, CUBE_7_SEED_1), 1);
   });
@@ -181,7 +201,9 @@ describe('playground design panel in headless Chromium', { timeout: 100_000 }, (
       [...document.querySelectorAll('#design-form [name]')].filter((field) => !field.closest('[hidden]'))
         .map((field) => [field.name, field.value]),
     ));
-    assert.deepEqual(values, { parts: '12', seed: '5', candidates: '20', timeLimit: '30', rank: '-y', mode: 'recursive' });
+    // Workers is not in links: one per core (up to 4) on the machine that opens one.
+    const workers = String(await page.evaluate(() => Math.max(1, Math.min(navigator.hardwareConcurrency, 4))));
+    assert.deepEqual(values, { parts: '12', seed: '5', candidates: '20', timeLimit: '30', rank: '-y', mode: 'recursive', workers });
     assert.equal((await designState(page)).outcome, '', 'a link never starts a design');
     assert.equal(await page.inputValue('#example-select'), CUBE_5_SHAPE);
 
@@ -191,6 +213,7 @@ describe('playground design panel in headless Chromium', { timeout: 100_000 }, (
     assert.equal(params.get('seed'), '6');
     assert.equal(params.get('example'), CUBE_5_SHAPE);
     assert.equal(params.get('parts'), '12');
+    assert.equal(params.get('workers'), null, 'Workers is not part of a link');
   });
 
   it('designs step by step: next, back, preview, choose, until complete', async () => {

@@ -197,7 +197,7 @@ for (const viewport of [{ width: 1400, height: 900 }, { width: 390, height: 844 
     });
 
     it('names a designed result in the menu and designs the same input again (items 5, 6)', async () => {
-      const first = await design(page, { parts: 7, seed: 1, timeLimit: 60 });
+      const first = await design(page, { parts: 7, seed: 1, timeLimit: 60, workers: 1 });
       assert.equal(first.outcome, 'success', first.message);
       assertInterlockingWithKey(await waitForReady(page, 'Cube_4x4x4_N7_seed1.puz'), 1);
       assert.equal(await page.inputValue('#example-select'), '__result__');
@@ -207,7 +207,7 @@ for (const viewport of [{ width: 1400, height: 900 }, { width: 390, height: 844 
       await screenshot(page, `flow-result-${size}`);
       // Design again: the input shape, not the 7 parts on screen.
       assert.equal(first.inputName, CUBE_SHAPE);
-      const again = await design(page, { parts: 8, seed: 2 });
+      const again = await design(page, { parts: 8, seed: 2, workers: 1 });
       assert.equal(again.outcome, 'success', again.message);
       assertInterlockingWithKey(await waitForReady(page, 'Cube_4x4x4_N8_seed2.puz'), 1);
       assert.equal(again.inputName, CUBE_SHAPE, 'the input stays the shape');

@@ -333,6 +333,7 @@ describe('playground mesh input and exports in headless Chromium', { timeout: 12
     await waitForReady(page, 'torus_r16.json');
     await page.fill('#design-parts', '7');
     await page.fill('#design-seed', '1');
+    await page.fill('#design-workers', '1');
     await page.click('#design-button');
     await page.waitForFunction(() => document.body.dataset.design !== 'running', null, { timeout: DESIGN_TIMEOUT_MS });
     const outcome = await page.evaluate(() => [document.body.dataset.design, document.querySelector('#design-message').textContent]);

@@ -214,7 +214,7 @@ describe('the playground as a static site under a sub-path', { timeout: 180_000 
   it('designs a 7-part puzzle from the 4×4×4 cube (seed 1)', async () => {
     await page.selectOption('#example-select', CUBE_SHAPE);
     assert.equal((await waitForReady(page, CUBE_SHAPE)).parts, '1');
-    const outcome = await design(page, { parts: 7, seed: 1, timeLimit: 60 });
+    const outcome = await design(page, { parts: 7, seed: 1, timeLimit: 60, workers: 1 });
     assert.equal(outcome.outcome, 'success', `design failed: ${outcome.message}`);
     const state = await waitForReady(page, CUBE_7_SEED_1);
     assertInterlockingWithKey(state, 1);
@@ -328,7 +328,7 @@ describe('the playground as a static site under a sub-path', { timeout: 180_000 
     assert.equal((await waitForReady(page, CUBE_SHAPE)).parts, '1');
     assert.equal(await page.evaluate(() => document.body.dataset.core), 'ready');
     // A design offline: the worker and the core came from the snapshot.
-    const outcome = await design(page, { parts: 7, seed: 1, timeLimit: 60 });
+    const outcome = await design(page, { parts: 7, seed: 1, timeLimit: 60, workers: 1 });
     assert.equal(outcome.outcome, 'success', `offline design failed: ${outcome.message}`);
     assertInterlockingWithKey(await waitForReady(page, CUBE_7_SEED_1), 1);
     await screenshot(page, 'site-offline');
