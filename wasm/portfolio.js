@@ -82,13 +82,20 @@ export function runPortfolio(seeds, runJob, { signal, onProgress } = {}) {
     }
     signal?.addEventListener('abort', onAbort, { once: true });
     seeds.forEach((seed, k) => {
+      if (settled) return;  // an earlier search failed at once
       const reportProgress = (value) => {
         if (settled) return;
         progress[k] = value;
         onProgress?.(combineProgress(progress, seeds));
       };
-      Promise.resolve()
-        .then(() => runJob(seed, { onProgress: reportProgress, signal: controllers[k].signal }, k))
+      // Started at once, not in a later task: a cancel right after this call reaches every search.
+      let started;
+      try {
+        started = Promise.resolve(runJob(seed, { onProgress: reportProgress, signal: controllers[k].signal }, k));
+      } catch (error) {
+        started = Promise.reject(error);
+      }
+      started
         .then((result) => {
           results[k] = result;
           if (result.progress) progress[k] = { ...progress[k], ...result.progress };
