@@ -108,6 +108,23 @@ std::string designProgressToJson(const DesignProgress& progress) {
       .dump();
 }
 
+DesignLimits parseDesignLimitsJson(const std::string& text) {
+  const json root = parseJsonText(text, "finish options");
+  if (!root.is_object()) throwBadInput("", "finish options must be an object");
+  DesignLimits limits;
+  for (const auto& [key, value] : root.items()) {
+    if (key == "nodeLimit") {
+      limits.nodeLimit = integerOption(value, "nodeLimit", 0, int64_t(1) << 52);
+    } else if (key == "timeLimit") {
+      if (!value.is_number() || !(value.get<double>() >= 0)) throwBadInput("", "finish option 'timeLimit' must be seconds >= 0, got " + value.dump());
+      limits.timeLimitSeconds = value.get<double>();
+    } else {
+      throwBadInput("", "unknown finish option '" + key + "' (expected timeLimit or nodeLimit)");
+    }
+  }
+  return limits;
+}
+
 std::string designResultToJson(const VoxelDesignResult& result, int indent) {
   json root;
   root["status"] = designStatusName(result.status);

@@ -150,7 +150,8 @@ bool verifyPuzzle(const VoxelGrid& grid, int parts, CheckReport* report) {
 
 // The construction tree of Algorithm 1 along the current path: one level per node from the root,
 // each with its ranked children (generated when first needed) and the next one to try. The grid
-// always holds the current node's assembly.
+// always holds the current node's assembly. A search may be confined to the subtree of one node
+// (the floor: a session's "finish from here"); it never ascends above it.
 class ConstructionTree {
  public:
   ConstructionTree(VoxelGrid grid, const VoxelDesignOptions& options, DesignContext& context)
@@ -160,6 +161,15 @@ class ConstructionTree {
 
   const VoxelGrid& grid() const { return grid_; }
   int depth() const { return static_cast<int>(levels_.size()) - 1; }  // parts placed
+  int floorDepth() const { return static_cast<int>(floor_); }
+  uint64_t floorSeed() const { return levels_[floor_].seed; }
+
+  // Confines the tree to the current node's subtree, whose children are tried again from the best
+  // ranked: what the search does from there does not depend on what a user tried before.
+  void makeCurrentTheFloor() {
+    floor_ = levels_.size() - 1;
+    levels_.back().next = 0;
+  }
 
   const std::vector<Candidate>& children() {
     Level& level = levels_.back();
@@ -192,17 +202,18 @@ class ConstructionTree {
     return true;
   }
 
-  // Back to the root with a new seed for it: a new tree (restarts, see Search).
-  void restart(uint64_t rootSeed) {
+  // Back to the floor (the root unless confined) with a new seed for it: a new subtree (restarts,
+  // see Search).
+  void restart(uint64_t floorSeed) {
     while (ascend()) {
     }
-    levels_[0] = Level{};
-    levels_[0].seed = rootSeed;
+    levels_[floor_] = Level{};
+    levels_[floor_].seed = floorSeed;
   }
 
-  // Back to the parent (its remaining children stay available); false at the root.
+  // Back to the parent (its remaining children stay available); false at the floor.
   bool ascend() {
-    if (levels_.size() == 1) return false;
+    if (levels_.size() == floor_ + 1) return false;
     levels_.pop_back();
     design::undoCandidate(grid_, depth() + 1);
     return true;
@@ -239,6 +250,7 @@ class ConstructionTree {
   const VoxelDesignOptions& options_;
   DesignContext& context_;
   std::vector<Level> levels_;
+  size_t floor_ = 0;  // the level searches never ascend above
 };
 
 // The root seed of restart `attempt` for the user's seed: attempt 0 is the seed itself (the tree
@@ -253,10 +265,23 @@ uint64_t attemptSeed(uint64_t seed, int64_t attempt) {
 class Search {
  public:
   Search(VoxelGrid grid, const VoxelDesignOptions& options, DesignContext& context)
-      : tree_(std::move(grid), options, context), options_(options), start_(std::chrono::steady_clock::now()) {}
+      : Search(ConstructionTree(std::move(grid), options, context), options) {}
+
+  // A search of `tree`'s subtree below its floor (its root unless confined); `options` gives the
+  // parts, seed and limits (the tree's own options may differ only in limits and progress).
+  Search(ConstructionTree tree, const VoxelDesignOptions& options)
+      : tree_(std::move(tree)), options_(options), floorSeed_(tree_.floorSeed()), start_(std::chrono::steady_clock::now()) {
+    progress_.bestDepth = tree_.depth();  // the floor's parts are placed already
+  }
 
   VoxelDesignResult run() {
     VoxelDesignResult result;
+    // A floor that is already complete (a finished session) has nothing left to search.
+    if (tree_.depth() == options_.parts - 1) {
+      const bool verified = verifyPuzzle(tree_.grid(), options_.parts, &result.verification);
+      if (verified) result.puzzle = tree_.grid();
+      return finish(verified ? DesignStatus::Success : DesignStatus::NotFound, result);
+    }
     int64_t attempt = 0, attemptStart = 0;
     while (true) {
       if (const auto stop = stopReason()) return finish(*stop, result);
@@ -265,7 +290,7 @@ class Search {
         // paid for with thousands of dead ends near the last parts, which chronological
         // backtracking explores before it gets back up there), so a tree that spends its node
         // budget is abandoned for a new one from another seed derived from the user's.
-        tree_.restart(attemptSeed(options_.seed, ++attempt));
+        tree_.restart(attemptSeed(floorSeed_, ++attempt));
         attemptStart = progress_.nodesVisited;
         ++restarts_;
         continue;
@@ -300,7 +325,7 @@ class Search {
   // backtrack that grows with N, times the Luby term. Counted in nodes, never time, so the same
   // seed gives the same puzzle on every machine and in WebAssembly.
   int64_t attemptBudget(int64_t attempt) const {
-    const int64_t n = options_.parts;
+    const int64_t n = options_.parts - tree_.floorDepth();  // the parts the subtree still decides
     return (n - 1) + kRestartUnitPerPart * n * lubyTerm(attempt);
   }
 
@@ -359,6 +384,7 @@ class Search {
 
   ConstructionTree tree_;
   const VoxelDesignOptions& options_;
+  uint64_t floorSeed_;  // restarts derive their seeds from it (the user's seed for a whole design)
   std::chrono::steady_clock::time_point start_;
   int64_t backtracks_ = 0;
   int64_t restarts_ = 0;
@@ -452,6 +478,17 @@ bool VoxelDesignSession::generateNextPart() {
 }
 
 bool VoxelDesignSession::goBack() { return state_->tree.ascend(); }
+
+VoxelDesignResult VoxelDesignSession::finish(const DesignLimits& limits) {
+  VoxelDesignOptions options = state_->options;
+  options.timeLimitSeconds = limits.timeLimitSeconds;
+  options.nodeLimit = limits.nodeLimit;
+  options.onProgress = limits.onProgress;
+  // A copy of the path: the session stays where it is, and its explored children stay explored.
+  ConstructionTree subtree = state_->tree;
+  subtree.makeCurrentTheFloor();
+  return Search(std::move(subtree), options).run();
+}
 
 CheckReport VoxelDesignSession::check() const { return checkAssembly(documentFromVoxels(state_->tree.grid())); }
 

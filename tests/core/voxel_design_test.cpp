@@ -400,3 +400,86 @@ TEST(DesignSession, ChildrenDependOnThePathNotOnWhatWasExploredBefore) {
 
 }  // namespace
 }  // namespace desia
+
+namespace desia {
+namespace {
+
+// "Finish automatically from here": the session's path, then the designer's search below it.
+TEST(DesignSessionFinish, KeepsTheChosenPartsInOrderAndIsVerified) {
+  const VoxelGrid cube = testing::loadReference("input_puz/Cube_4x4x4_origin.puz").voxels;
+  VoxelDesignOptions options;
+  options.parts = 9;
+  options.seed = 3;
+  VoxelDesignSession session(cube, options);
+  for (int child : {1, 2, 0}) session.chooseChild(child);
+  ASSERT_EQ(session.partsPlaced(), 3);
+  const VoxelGrid chosen = session.current();
+  const VoxelDesignResult result = session.finish({60, 0, {}});
+  ExpectVerifiedPuzzle(cube, result, 9);
+  // Parts 1..3 are the chosen ones, voxel for voxel; the remainder R3 holds parts 4..9.
+  for (int64_t i = 0; i < chosen.voxelCount(); ++i) {
+    const int label = chosen.labelAt(i);
+    if (label >= 1 && label <= 3) {
+      ASSERT_EQ(result.puzzle.labelAt(i), label) << i;
+    } else if (label == 4) {
+      ASSERT_GE(result.puzzle.labelAt(i), 4) << i;
+    }
+  }
+  // The session stays where it was.
+  EXPECT_EQ(session.partsPlaced(), 3);
+  EXPECT_EQ(session.current().labels(), chosen.labels());
+}
+
+TEST(DesignSessionFinish, SamePathSameSeedSamePuzzle) {
+  const VoxelGrid cube = testing::loadReference("input_puz/Cube_4x4x4_origin.puz").voxels;
+  VoxelDesignOptions options;
+  options.parts = 9;
+  options.seed = 3;
+  VoxelDesignSession a(cube, options), b(cube, options);
+  // A tries a child and comes back before taking the same path as B: same result, same counts.
+  a.chooseChild(0);
+  a.goBack();
+  for (int child : {1, 2, 0}) {
+    a.chooseChild(child);
+    b.chooseChild(child);
+  }
+  const VoxelDesignResult first = a.finish({60, 0, {}}), again = a.finish({60, 0, {}}), other = b.finish({60, 0, {}});
+  ASSERT_EQ(first.status, DesignStatus::Success) << first.message;
+  EXPECT_EQ(again.puzzle.labels(), first.puzzle.labels());
+  EXPECT_EQ(other.puzzle.labels(), first.puzzle.labels());
+  EXPECT_EQ(other.progress.nodesVisited, first.progress.nodesVisited);
+}
+
+TEST(DesignSessionFinish, FromTheRootIsTheAutomaticDesign) {
+  const VoxelGrid cube = testing::loadReference("input_puz/Cube_4x4x4_origin.puz").voxels;
+  const VoxelDesignOptions options = optionsFor(9, 1);
+  VoxelDesignSession session(cube, options);
+  const VoxelDesignResult automatic = designVoxelPuzzle(cube, options);
+  const VoxelDesignResult finished = session.finish({120, 0, {}});
+  ASSERT_EQ(finished.status, DesignStatus::Success) << finished.message;
+  EXPECT_EQ(finished.puzzle.labels(), automatic.puzzle.labels());
+  EXPECT_EQ(finished.progress.nodesVisited, automatic.progress.nodesVisited);
+}
+
+TEST(DesignSessionFinish, StopsAtLimitsAndOnCancelAndTakesACompleteNodeAsItIs) {
+  const VoxelGrid cube = testing::loadReference("input_puz/Cube_4x4x4_origin.puz").voxels;
+  VoxelDesignOptions options;
+  options.parts = 5;
+  options.seed = 1;
+  VoxelDesignSession session(cube, options);
+  int calls = 0;
+  const VoxelDesignResult cancelled = session.finish({0, 0, [&](const DesignProgress&) { return ++calls < 2; }});
+  EXPECT_EQ(cancelled.status, DesignStatus::Cancelled);
+  EXPECT_EQ(calls, 2);
+  EXPECT_EQ(session.finish({0, 1, {}}).status, DesignStatus::LimitReached);
+  while (!session.complete() && session.generateNextPart()) {
+  }
+  ASSERT_TRUE(session.complete());
+  const VoxelDesignResult done = session.finish({});
+  ASSERT_EQ(done.status, DesignStatus::Success) << done.message;
+  EXPECT_EQ(done.puzzle.labels(), session.current().labels());
+  EXPECT_EQ(done.progress.nodesVisited, 0);
+}
+
+}  // namespace
+}  // namespace desia

@@ -24,6 +24,10 @@ std::vector<std::vector<int64_t>> parseVoxelGroupsJson(const std::string& text, 
 // fields are refused.
 VoxelDesignOptions parseDesignOptionsJson(const std::string& text, const VoxelGrid& shape);
 
+// The limits of a session's finish(): {"timeLimit": seconds >= 0, "nodeLimit": n >= 0} (0 or
+// absent: none). Unknown fields are refused.
+DesignLimits parseDesignLimitsJson(const std::string& text);
+
 // {"status", "message", "progress": {...}, "seed": the search's seed, "partSizes": {"min", "max",
 //  "mean"} or null, "puz": text or null, "document": {...} or null, "verification": check report
 //  or null}.

@@ -91,6 +91,14 @@ struct VoxelDesignResult {
   PartSizeSpread partSizes;   // on success: the spread of the puzzle's part sizes
 };
 
+// The limits and progress callback of one search (a session's finish()); the same meaning as in
+// VoxelDesignOptions.
+struct DesignLimits {
+  double timeLimitSeconds = 0;  // 0: none
+  int64_t nodeLimit = 0;        // 0: none
+  std::function<bool(const DesignProgress&)> onProgress;
+};
+
 // Step-by-step design, as the original tool's GUI ("Generate Next Part", "Child Index", "Go Back"):
 // the construction tree is walked by hand. Children of a node are generated (and ranked) when first
 // asked for. Re-entrant: each session owns its state. Throws BadInput like designVoxelPuzzle.
@@ -119,6 +127,10 @@ class VoxelDesignSession {
   bool goBack();
   // The project's check of the current assembly (interlocking, key, disassembly).
   CheckReport check() const;
+  // "Finish automatically from here": designVoxelPuzzle's search (restarts, verification) run in
+  // the subtree of the current node, so parts 1..i stay as chosen. The session does not move.
+  // Deterministic: the same path gives the same result. Limits and progress come from `limits`.
+  VoxelDesignResult finish(const DesignLimits& limits);
 
  private:
   struct State;
