@@ -117,6 +117,15 @@ val voxelize(const val& bytes, int resolution, const std::string& source) {
   });
 }
 
+// The voxel designer's progress as a plain object for a JS function, which may return false to stop
+// the search. Holds `onProgress` by reference: use it within the call that received it.
+std::function<bool(const desia::DesignProgress&)> progressCallback(const val& onProgress) {
+  return [&onProgress](const desia::DesignProgress& progress) {
+    const val answer = onProgress(parseJsonText(desia::designProgressToJson(progress)));
+    return !(answer.isFalse());
+  };
+}
+
 // Designs a voxel puzzle. `optionsJson` is the package's options object as JSON text (parsed by the
 // core); `onProgress` (a JS function or undefined) receives a plain object after every visited
 // node and may return false to stop the search.
@@ -128,12 +137,7 @@ val designVoxel(const std::string& shapeText, const std::string& optionsJson, co
                                                          std::string(desia::assemblyKindName(document.kind)) + " document");
     }
     desia::VoxelDesignOptions options = desia::parseDesignOptionsJson(optionsJson, document.voxels);
-    if (onProgress.typeOf().as<std::string>() == "function") {
-      options.onProgress = [&onProgress](const desia::DesignProgress& progress) {
-        const val answer = onProgress(parseJsonText(desia::designProgressToJson(progress)));
-        return !(answer.isFalse());
-      };
-    }
+    if (onProgress.typeOf().as<std::string>() == "function") options.onProgress = progressCallback(onProgress);
     return parseJsonText(desia::designResultToJson(desia::designVoxelPuzzle(document.voxels, options)));
   });
 }
@@ -229,6 +233,19 @@ class DesignSession {
   }
   bool next() { return guarded([&] { return frames_ ? frames_->next() : plates_ ? plates_->next() : voxels_->generateNextPart(); }); }
   bool back() { return guarded([&] { return frames_ ? frames_->back() : plates_ ? plates_->back() : voxels_->goBack(); }); }
+  // "Finish automatically from here": the designer's search below the current node (voxel
+  // sessions); the same result object as designVoxel. `onProgress` as for designVoxel.
+  val finish(const std::string& limitsJson, val onProgress) {
+    return guarded([&] {
+      if (!voxels_) {
+        throw desia::Error(desia::ErrorCode::Unsupported, std::string("finish: only voxel sessions finish automatically (for a ") +
+                                                              (frames_ ? "frame use designFrame" : "plate design use designPlate") + ")");
+      }
+      desia::DesignLimits limits = desia::parseDesignLimitsJson(limitsJson);
+      if (onProgress.typeOf().as<std::string>() == "function") limits.onProgress = progressCallback(onProgress);
+      return parseJsonText(desia::designResultToJson(voxels_->finish(limits)));
+    });
+  }
   val check() const {
     return guarded([&] {
       desia::CheckOptions options;
@@ -346,5 +363,6 @@ EMSCRIPTEN_BINDINGS(desia) {
       .function("choose", &DesignSession::choose)
       .function("next", &DesignSession::next)
       .function("back", &DesignSession::back)
-      .function("check", &DesignSession::check);
+      .function("check", &DesignSession::check)
+      .function("finish", &DesignSession::finish);
 }

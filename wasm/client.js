@@ -415,6 +415,17 @@ async function designPortfolio(newClient, single, shape, coreOptions, jobs, { si
   }
 }
 
+/** session.finish's options: the limits for the core, and onProgress / signal for the client. */
+function splitFinishOptions(options) {
+  const name = 'designSession: finish';
+  const { onProgress, signal, ...coreOptions } = requireOptions(name, options, ['timeLimit', 'nodeLimit', 'onProgress', 'signal']);
+  if (onProgress !== undefined && typeof onProgress !== 'function') throw new DesiaError(`${name}: onProgress must be a function`, 'bad-input');
+  if (signal !== undefined && !isAbortSignal(signal)) {
+    throw new DesiaError(`${name}: signal must be an AbortSignal, got ${describeValue(signal)}`, 'bad-input');
+  }
+  return { onProgress, signal, coreOptions };
+}
+
 /** The async proxy of a design session living in the worker of `generation`. */
 function sessionProxy(client, sessionId, generation) {
   const session = { generation };
@@ -439,6 +450,17 @@ function sessionProxy(client, sessionId, generation) {
     next: () => call('next'),
     back: () => call('back'),
     check: () => call('check'),
+    finish(finishOptions) {
+      let split;
+      try {
+        split = splitFinishOptions(finishOptions);
+      } catch (error) {
+        return Promise.reject(error);
+      }
+      if (disposed) return Promise.reject(new DesiaError('designSession: the session was disposed', 'bad-input'));
+      // An abort terminates the worker (a busy one cannot read messages): the session goes with it.
+      return client.request('session-finish', [sessionId, split.coreOptions], { session, signal: split.signal, onProgress: split.onProgress });
+    },
     async dispose() {
       if (disposed) return;
       disposed = true;

@@ -392,6 +392,18 @@ function makeCore(module) {
         back: () => call('back'),
         /** The check report of the current assembly. */
         check: () => call('check'),
+        /**
+         * "Finish automatically from here" (voxel sessions): the designer's search below the
+         * current node, so the parts placed so far stay as chosen; the session does not move.
+         * Options: timeLimit, nodeLimit, onProgress (as designVoxel). Resolves like designVoxel.
+         */
+        finish(finishOptions = {}) {
+          const { onProgress, ...limits } = requireOptions('designSession: finish', finishOptions);
+          if (onProgress !== undefined && typeof onProgress !== 'function') {
+            throw new DesiaError('designSession: finish: onProgress must be a function', 'bad-input');
+          }
+          return call('finish', optionsJson('designSession: finish', limits), onProgress);
+        },
         dispose() {
           if (handle) handle.delete();
           handle = null;

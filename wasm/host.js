@@ -117,6 +117,9 @@ export function createCoreHost(loadCore, post, { isCancelled = () => false } = {
       if (!SESSION_METHODS.has(method)) throw hostError(`designSession: no method '${String(method)}'`, 'bad-input');
       return openSession(sessionId)[method](...(Array.isArray(args) ? args : []));
     },
+    // "Finish automatically from here": a search, so it reports progress like the designers.
+    'session-finish': (core, [sessionId, options], id) =>
+      withProgress(id, (onProgress) => openSession(sessionId).finish({ ...options, onProgress })),
     'session-dispose': (core, [sessionId]) => {
       sessions.get(sessionId)?.dispose();
       sessions.delete(sessionId);

@@ -306,8 +306,22 @@ export interface DesignSession {
   back(): boolean;
   /** The check report of the current assembly. */
   check(): CheckReport;
+  /**
+   * "Finish automatically from here" (voxel sessions; plates and frames throw 'unsupported'): the
+   * designer's search (restarts, verification) below the current node, so the parts placed so far
+   * stay as chosen, in order. The session does not move. The same path gives the same puzzle.
+   */
+  finish(options?: SessionFinishOptions & { onProgress?: (progress: DesignProgress) => boolean | void }): DesignResult;
   /** Frees the session; later calls throw. */
   dispose(): void;
+}
+
+/** The limits of a session's finish(): as designVoxel's (0 or absent: none). */
+export interface SessionFinishOptions {
+  /** Seconds (>= 0). */
+  timeLimit?: number;
+  /** Search nodes (>= 0). */
+  nodeLimit?: number;
 }
 
 /**
@@ -324,6 +338,11 @@ export interface AsyncDesignSession {
   next(): Promise<boolean>;
   back(): Promise<boolean>;
   check(): Promise<CheckReport>;
+  /**
+   * As {@link DesignSession.finish}, in the worker, with progress about ten times a second. An
+   * abort terminates the worker, so the session is lost with it (start a new one).
+   */
+  finish(options?: SessionFinishOptions & { onProgress?: (progress: DesignProgress) => void; signal?: AbortSignal }): Promise<DesignResult>;
   /** Frees the session in the worker; later calls reject with code 'bad-input'. */
   dispose(): Promise<void>;
 }
