@@ -180,9 +180,13 @@ void requireSimpleLoop(const Plate& plate, const Loop& loop, size_t loopIndex, c
   const PlaneFrame frame(centroidOf(loop), loopNormal(loop));
   std::vector<std::array<double, 2>> p;
   for (const Vec3& q : loop) p.push_back({dot(minus(q, frame.origin), frame.u), dot(minus(q, frame.origin), frame.v)});
+  // Which side of a-b the point c lies on; within rounding of the lengths involved, on it (edges
+  // along one line, as the wood beside a mitre tenon's pocket, must not count as crossing).
   auto orient = [&](size_t a, size_t b, size_t c) {
-    const double value = (p[b][0] - p[a][0]) * (p[c][1] - p[a][1]) - (p[b][1] - p[a][1]) * (p[c][0] - p[a][0]);
-    return value > 0 ? 1 : (value < 0 ? -1 : 0);
+    const double bx = p[b][0] - p[a][0], by = p[b][1] - p[a][1], cx = p[c][0] - p[a][0], cy = p[c][1] - p[a][1];
+    const double value = bx * cy - by * cx;
+    const double rounding = 1e-12 * std::hypot(bx, by) * std::hypot(cx, cy);
+    return value > rounding ? 1 : (value < -rounding ? -1 : 0);
   };
   const size_t n = p.size();
   for (size_t i = 0; i < n; ++i) {

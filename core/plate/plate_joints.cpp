@@ -562,6 +562,23 @@ std::vector<Flat> tenonSection(const MitreTenon& tenon, const MitreFrame& frame,
   return {{-h, 0}, {h, 0}, {h + d * into[0], d * into[1]}, {-h + d * into[0], d * into[1]}};
 }
 
+// A tenon whose way out is oblique to the edge (paper: mortise-and-tenon for an edge within
+// 45..135 degrees of d) is the section swept along `into`, not along the edge: a section point
+// `depth` along `into` also lies depth * (into . line) further along the edge. Its ends then
+// contain `into` and never block the way out.
+double shiftAlongEdge(const MitreTenon& tenon, const MitreFrame& frame, const Flat& q) {
+  const double slope = dot(tenon.into, tenon.line);
+  if (slope == 0) return 0;
+  return slope * q[1] / dot(tenon.into, frame.normal);
+}
+
+// Half the notch's length along the edge: the tenon's, and the shift of its tip beyond it plus a
+// margin of wood for the pocket's end walls when it is oblique.
+double notchHalfWidth(const MitreTenon& tenon) {
+  const double slope = std::abs(dot(tenon.into, tenon.line));
+  return slope == 0 ? tenon.halfWidth : tenon.halfWidth + slope * tenon.depth + kMortiseMargin;
+}
+
 // In the pocket plate's plane, across the edge, away from the mitre into the plate.
 Vec3 pocketInward(const std::vector<Plate>& plates, const MitreTenon& tenon) {
   const Vec3 inward = normalized(cross(plateThicknessAxis(plates[tenon.pocketPlate]), tenon.line));
@@ -574,11 +591,46 @@ Loop pocketNotch(const std::vector<Plate>& plates, const MitreTenon& tenon) {
   const Vec3 inward = pocketInward(plates, tenon);
   const double out = -2 * (plateThickness(pocket) + tenon.depth), in = tenon.notchReach;
   auto at = [&](double s, double u) { return plus(tenon.middle, plus(scaled(tenon.line, s), scaled(inward, u))); };
-  return {at(-tenon.halfWidth, out), at(tenon.halfWidth, out), at(tenon.halfWidth, in), at(-tenon.halfWidth, in)};
+  const double half = notchHalfWidth(tenon);
+  return {at(-half, out), at(half, out), at(half, in), at(-half, in)};
 }
 
-// The pocket plate's wood in the notch, less the pocket: one prism along the edge.
-Plate pocketSurround(const std::vector<Plate>& plates, const MitreTenon& tenon) {
+// The wood between an oblique pocket's slanted end (at `pocketEnd` along the edge at its root,
+// shifted along the edge as it deepens) and the plane square to the edge at `flat`: in the plane
+// of the edge and the tenon's depth a triangle, swept across the edge over the tenon's height.
+Plate pocketEndWedge(const MitreTenon& tenon, double pocketEnd, double flat) {
+  const double slope = dot(tenon.into, tenon.line);
+  const Vec3 deeper = minus(tenon.into, scaled(tenon.line, slope));  // into, less its part along the edge
+  auto at = [&](double across, double t, double s) {
+    return plus(tenon.middle, plus(scaled(tenon.across, across), plus(scaled(deeper, t), scaled(tenon.line, s))));
+  };
+  // (t, s) corners: the flat plane at the root and the tip, the slanted end at the root and the tip,
+  // one of which lies on the flat plane.
+  std::vector<std::pair<double, double>> corners{{0, flat}, {0, pocketEnd}, {tenon.depth, pocketEnd + slope * tenon.depth},
+                                                 {tenon.depth, flat}};
+  std::vector<std::pair<double, double>> triangle;
+  for (const auto& corner : corners) {
+    if (triangle.empty() || std::abs(triangle.back().second - corner.second) > 1e-12 ||
+        triangle.back().first != corner.first)
+      triangle.push_back(corner);
+  }
+  if (triangle.size() > 3 && std::abs(triangle.back().second - triangle.front().second) < 1e-12 &&
+      triangle.back().first == triangle.front().first)
+    triangle.pop_back();
+  Plate wedge;
+  Loop first, second;
+  for (const auto& [t, s] : triangle) {
+    first.push_back(at(-tenon.halfHeight, t, s));
+    second.push_back(at(tenon.halfHeight, t, s));
+  }
+  wedge.bottom = {first};
+  wedge.top = {second};
+  return wedge;
+}
+
+// The pocket plate's wood in the notch, less the pocket: a prism along the edge, and for an
+// oblique tenon the wood between the notch's ends and the pocket's slanted ends.
+std::vector<Plate> pocketSurround(const std::vector<Plate>& plates, const MitreTenon& tenon) {
   const Plate& pocket = plates[tenon.pocketPlate];
   const MitreFrame frame = mitreFrame(tenon);
   const Vec3 axis = plateThicknessAxis(pocket);
@@ -616,15 +668,37 @@ Plate pocketSurround(const std::vector<Plate>& plates, const MitreTenon& tenon) 
   if (bitten.size() != wood.size() + 4) {
     throwBadInput("", "the pocket of a mitre tenon does not lie on the mitre of " + plateLabel(pocket));
   }
+  const double half = notchHalfWidth(tenon);
   Plate surround;
   Loop first, second;
   for (const Flat& q : bitten) {
-    first.push_back(frame.at(q, -tenon.halfWidth));
-    second.push_back(frame.at(q, tenon.halfWidth));
+    first.push_back(frame.at(q, -half));
+    second.push_back(frame.at(q, half));
   }
   surround.bottom = {first};
   surround.top = {second};
-  return surround;
+  std::vector<Plate> pieces{surround};
+  if (half == tenon.halfWidth) return pieces;
+  // Between each end of the notch and the pocket's slanted end, the pocket's section is wood: a
+  // prism square to the edge up to where the slant begins, then a wedge (solids have parallel
+  // faces: the wedge's are its two sides across the edge).
+  const double slant = dot(tenon.into, tenon.line) * tenon.depth;  // how far the tip runs along the edge
+  for (const double end : {-1.0, 1.0}) {
+    const double pocketEnd = end * tenon.halfWidth;
+    const double straightTo = end < 0 ? pocketEnd + std::min(0.0, slant) : pocketEnd + std::max(0.0, slant);
+    Plate straight;
+    Loop atNotch, atSlant;
+    for (const Flat& q : pocketSection) {
+      atNotch.push_back(frame.at(q, end * half));
+      atSlant.push_back(frame.at(q, straightTo));
+    }
+    straight.bottom = {atNotch};
+    straight.top = {atSlant};
+    pieces.push_back(straight);
+    // A slant below a micrometre leaves no wedge worth a solid.
+    if (std::abs(slant) > 1e-3) pieces.push_back(pocketEndWedge(tenon, pocketEnd, straightTo));
+  }
+  return pieces;
 }
 
 Plate mitreTenonSolid(const MitreTenon& tenon, double clearance) {
@@ -633,8 +707,9 @@ Plate mitreTenonSolid(const MitreTenon& tenon, double clearance) {
   Plate solid;
   Loop first, second;
   for (const Flat& q : tenonSection(tenon, frame, play)) {
-    first.push_back(frame.at(q, -half));
-    second.push_back(frame.at(q, half));
+    const double shift = shiftAlongEdge(tenon, frame, q);
+    first.push_back(frame.at(q, -half + shift));
+    second.push_back(frame.at(q, half + shift));
   }
   solid.bottom = {first};
   solid.top = {second};
@@ -657,7 +732,8 @@ std::optional<MitreTenon> mitreTenonOf(const std::vector<Plate>& plates, const P
   }
   tenon.line = normalized(contact.edgeDirection);
   tenon.into = normalized(into);
-  if (std::abs(dot(tenon.into, tenon.line)) > 1e-6 || dot(tenon.into, normal) < 0.05) return std::nullopt;
+  // The paper's mortise-and-tenon: the edge within 45..135 degrees of the way out.
+  if (std::abs(dot(tenon.into, tenon.line)) > std::sqrt(0.5) + 1e-9 || dot(tenon.into, normal) < 0.05) return std::nullopt;
   tenon.across = normalized(cross(normal, tenon.line));
   const auto [s0, s1] = extentAlong(contact.region, contact.region[0], tenon.line);
   const auto [x0, x1] = extentAlong(contact.region, contact.region[0], tenon.across);
@@ -677,6 +753,11 @@ std::optional<MitreTenon> mitreTenonOf(const std::vector<Plate>& plates, const P
   }
   constexpr double kShallowestPocket = 2.0;  // mm
   if (tenon.depth < kShallowestPocket) return std::nullopt;
+  // An oblique tenon's notch runs further along the edge: it must stay on the mitre.
+  if (notchHalfWidth(tenon) > (s1 - s0) / 2 - kMortiseMargin) {
+    tenon.halfWidth -= notchHalfWidth(tenon) - ((s1 - s0) / 2 - kMortiseMargin);
+    if (2 * tenon.halfWidth < kShortestJoint) return std::nullopt;
+  }
   // The notch runs past the pocket and past the mitre (its cut ends where the plate is whole).
   const Vec3 inwardDirection = pocketInward(plates, tenon);
   const MitreFrame sectionFrame = mitreFrame(tenon);
@@ -690,8 +771,8 @@ std::optional<MitreTenon> mitreTenonOf(const std::vector<Plate>& plates, const P
   auto at = [&](double s, double u) {
     return plus(tenon.middle, plus(scaled(tenon.line, s), scaled(inwardDirection, u)));
   };
-  const Loop end{at(-tenon.halfWidth, mitreReach), at(tenon.halfWidth, mitreReach),
-                 at(tenon.halfWidth, tenon.notchReach), at(-tenon.halfWidth, tenon.notchReach)};
+  const double half = notchHalfWidth(tenon);
+  const Loop end{at(-half, mitreReach), at(half, mitreReach), at(half, tenon.notchReach), at(-half, tenon.notchReach)};
   const PlaneFrame frame(pocket.bottom[0][0], axis);
   if (areaAgainst({end}, faceRegion(pocket, ClipperLib::ctIntersection), frame, true) > 1e-6) return std::nullopt;
   return tenon;
@@ -700,7 +781,9 @@ std::optional<MitreTenon> mitreTenonOf(const std::vector<Plate>& plates, const P
 std::vector<Vec3> mitreTenonFaceNormals(const MitreTenon& tenon) {
   const MitreFrame frame = mitreFrame(tenon);
   Vec3 side = normalized(cross(tenon.into, tenon.line));
-  return {frame.normal, side, negated(side), tenon.line, negated(tenon.line)};
+  // Its ends contain `into` (shiftAlongEdge): across the edge's direction less its part along into.
+  const Vec3 end = normalized(minus(tenon.line, scaled(tenon.into, dot(tenon.into, tenon.line))));
+  return {frame.normal, side, negated(side), end, negated(end)};
 }
 
 CutFootprint mitreTenonFootprint(const std::vector<Plate>& plates, const MitreTenon& tenon) {
@@ -761,7 +844,7 @@ std::vector<Plate> cutTenonJoints(const std::vector<Plate>& plates, const std::v
   }
   for (const MitreTenon& tenon : mitreTenons) {
     removed[tenon.pocketPlate].push_back(pocketNotch(plates, tenon));
-    attached[tenon.pocketPlate].push_back(pocketSurround(plates, tenon));
+    for (Plate& piece : pocketSurround(plates, tenon)) attached[tenon.pocketPlate].push_back(std::move(piece));
     attached[tenon.tenonPlate].push_back(mitreTenonSolid(tenon, options.clearance));
   }
   for (const SlotCut& slot : slots) removed[slot.plate].push_back(slot.rectangle);

@@ -752,6 +752,42 @@ TEST(PlateMitreTenons, ATenonAcrossAMitreFillsItsPocketAndLeavesStraightOut) {
   EXPECT_TRUE(plateCollidesAlong(pair[0], pair[1], line, 0.05));  // the tenon's end meets the pocket's
 }
 
+// The paper's mortise-and-tenon takes an edge within 45..135 degrees of the way out: a tenon
+// leaving 63 degrees off the mitre's edge is its section swept along that way (ends slanted to
+// contain it), in a pocket of the same slant; it leaves that way and no other, not even straight out.
+TEST(PlateMitreTenons, AnObliqueTenonLeavesAlongItsSlantOnly) {
+  const AssemblyDocument box = loadPlateExample("mitred_box.json");
+  const std::vector<PlateContact> contacts = computePlateContacts(box.plates, {});
+  const PlateContact& contact = contacts.at(0);
+  const int tenonPlate = contact.a, pocketPlate = contact.b;
+  const Vec3 line = contact.edgeDirection;
+  Vec3 straight = plateThicknessAxis(box.plates[tenonPlate]);
+  if (!mitreTenonOf(box.plates, contact, tenonPlate, negated(straight))) straight = negated(straight);
+  const Vec3 leave = normalized(plus(straight, scaled(line, 0.5)));
+  const std::optional<MitreTenon> tenon = mitreTenonOf(box.plates, contact, tenonPlate, negated(leave));
+  ASSERT_TRUE(tenon.has_value());
+  EXPECT_FALSE(mitreTenonOf(box.plates, contact, tenonPlate, negated(normalized(plus(scaled(straight, 0.3), line)))))
+      << "17 degrees off the edge: no tenon";
+  const std::vector<Plate> jointed = cutTenonJoints(box.plates, {}, {}, {}, {}, {*tenon});
+  validatePlates(jointed, {}, "jointed");
+  for (const Plate& plate : jointed) EXPECT_NO_THROW(checkClosedMesh(plateMesh(plate), "jointed"));
+  const double gained = meshVolume(plateMesh(jointed[tenonPlate])) - meshVolume(plateMesh(box.plates[tenonPlate]));
+  const double lost = meshVolume(plateMesh(box.plates[pocketPlate])) - meshVolume(plateMesh(jointed[pocketPlate]));
+  EXPECT_GT(gained, 0);
+  EXPECT_NEAR(gained, lost, 1e-6 * meshVolume(plateMesh(box.plates[pocketPlate])));
+  const std::vector<Plate> pair{jointed[tenonPlate], jointed[pocketPlate]};
+  Assembly two;
+  two.parts = {{1, "tenon"}, {2, "pocket"}};
+  for (const PlateContact& c : computePlateContacts(pair, {})) two.contacts.push_back({c.a, c.b, c.normal, c.area});
+  for (const Vec3& d : {leave, negated(leave), straight, negated(straight), contact.normal, negated(contact.normal), line,
+                        negated(line), plateThicknessAxis(box.plates[pocketPlate])}) {
+    EXPECT_EQ(isPartFreeAlong(two, nullptr, 0, d), dot(d, leave) > 1 - 1e-9) << d[0] << "," << d[1] << "," << d[2];
+  }
+  EXPECT_FALSE(plateCollidesAlong(pair[0], pair[1], leave, 0.05));
+  EXPECT_TRUE(plateCollidesAlong(pair[0], pair[1], straight, 0.05));  // the slanted end holds it
+  EXPECT_TRUE(plateCollidesAlong(pair[0], pair[1], line, 0.05));
+}
+
 TEST(PlateMitreTenons, MitredBoxAndDodecahedronDesignWithMilledJointsAndVerify) {
   for (const char* name : {"mitred_box.json", "dodecahedron.json", "cube.json"}) {
     const AssemblyDocument shape = loadPlateExample(name);
