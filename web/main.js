@@ -58,7 +58,7 @@ const EXAMPLES = [
   { file: 'lizard.json', label: 'Lizard, 38 mitred plates (planned)', plate: true, joints: 'planned' },
   // Flush boards that no mortise-and-tenon lets out: sliding dovetails, milled on a CNC.
   { file: 'bookshelf.json', label: 'Bookshelf, 12 plates (milled dovetails)', plate: true, joints: 'milled' },
-  { file: 'bookcase_123.json', label: 'Bookcase, 123 plates (planned)', plate: true, joints: 'planned' },
+  { file: 'bookcase_123.json', label: 'Bookcase, 123 plates (milled)', plate: true, joints: 'milled' },
   // Frames (examples/frame/, in mm): beams joined by 3x3x3 voxel joints; Design makes the joints.
   { file: 'frame_cube.json', label: 'Frame cube, 12 beams', frame: true },
   { file: 'frame_chair.json', label: 'Frame chair, 11 beams', frame: true },

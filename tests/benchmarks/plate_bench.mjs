@@ -35,6 +35,7 @@ const CASES = [
   ['dodecahedron.json', 'DODECAHEDRON, 12 mitred plates', null, 'milled'],
   ['dodecahedron.json', 'DODECAHEDRON, 12 mitred plates', null, 'planned'],
   ['lizard.json', 'LIZARD, 38 mitred plates (Fig. 1: 33)', '2.73 s', 'planned'],
+  ['bookcase_123.json', 'BOOKCASE, 123 plates', '— (largest: 33)', 'milled'],
   ['bookcase_123.json', 'BOOKCASE, 123 plates', '— (largest: 33)', 'planned'],
 ];
 

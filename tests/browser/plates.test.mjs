@@ -335,9 +335,9 @@ describe('plate structures in the playground (headless Chromium)', { timeout: 12
     assert.equal(state.parts, '123');
     if (state.webgl === 'on') assert.equal(state.meshes, '123');
     await screenshot(page, 'plates-bookcase-1400');
-    // Its boards meet flush: cut joints cannot lock it, the paper's plan alone can (and takes a
-    // while); the example brings Joints 'planned' with it.
-    assert.equal(await page.inputValue('#design-joints'), 'planned');
+    // Its boards meet flush: cut joints cannot lock it, milled dovetails can (in a few seconds);
+    // the example brings Joints 'milled' with it.
+    assert.equal(await page.inputValue('#design-joints'), 'milled');
     await page.click('#design-button');
     await page.waitForFunction(() => Number(document.querySelector('#design-progress-box').dataset.updates) >= 2);
     const running = await designState(page);
