@@ -24,6 +24,7 @@
 import { byId } from './dom.js';
 import { readUrlState, writeUrlState } from './url-state.js';
 import { formatDirection } from './view.js';
+import { createChildThumbnails } from './child-thumbnails.js';
 import { WorkerPortfolio } from './worker-client.js';
 
 /** The fields of the form, by URL key; their values go to the core as they are. */
@@ -93,6 +94,8 @@ const ui = {
   sessionPreview: byId('session-preview'),
   sessionChoose: byId('session-choose'),
   sessionState: byId('session-state'),
+  sessionFinish: byId('session-finish'),
+  sessionChildren: byId('session-children'),
   input: byId('design-input'),
 };
 
@@ -406,6 +409,19 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
 
   // -------------------------------------------------------------------------------------------
   // Step by step
+  //
+  // The camera is framed once, when the session starts; every step, preview and finish after that
+  // keeps the user's camera (double-click the view to frame again), so children compare at one
+  // zoom. In the view the newest part glows and the remainder still to split is see-through.
+
+  /** Thumbnails of the ranked children shown at most (each one is a preview in the worker). */
+  const MAX_CHILD_THUMBNAILS = 6;
+  const thumbnails = createChildThumbnails(ui.sessionChildren, {
+    onPreview: (n) => { ui.sessionChild.value = String(n); preview(); },
+    onChoose: (n) => step('session-choose', { n }),
+  });
+  /** Counts the nodes shown, so thumbnails of a node already left are dropped. */
+  let nodeToken = 0;
 
   /** A session lives in one worker: after a crash or a cancel it is gone. */
   function sessionAlive() {
@@ -449,7 +465,7 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
     const answer = await sessionCall('session-open', shape.text, { ...options, source: shape.name }, 'Starting the session…');
     if (!answer) return;
     session = { generation, base: baseName(shape.name), snapshot: answer.value };
-    showSnapshot(answer.elapsedMs);
+    showSnapshot(answer.elapsedMs, { keepCamera: false });
     setOutcome('', '');
   }
 
@@ -461,7 +477,7 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
     showSnapshot(answer.elapsedMs);
     if (answer.value.moved === false) {
       setOutcome('not-found', op === 'session-next'
-        ? 'This step has no children: go back and choose another.'
+        ? 'This step has no children: go back and choose another, or finish automatically (from the step before).'
         : 'Already at the first step.');
     } else {
       setOutcome('', '');
@@ -481,7 +497,10 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
     }
     const { index, document: document_, surfaces, report } = answer.value;
     const { partsPlaced, targetParts } = session.snapshot;
-    showSessionAssembly(`${session.base}_step${partsPlaced}of${targetParts}_child${index}`, document_, surfaces, report, answer.elapsedMs);
+    // The child's new part is part partsPlaced; the remainder it leaves is the part after it.
+    showSessionAssembly(`${session.base}_step${partsPlaced}of${targetParts}_child${index}`, document_, surfaces, report, answer.elapsedMs,
+      { emphasis: stepEmphasis(partsPlaced + 1, targetParts) });
+    thumbnails.markSelected(index);
     setOutcome('', `Preview of child ${index}: choose it to continue from there.`);
   }
 
@@ -491,19 +510,90 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
     refreshControls();
   }
 
-  function showSnapshot(elapsedMs) {
-    const { partsPlaced, targetParts, document: document_, surfaces, report } = session.snapshot;
-    showSessionAssembly(`${session.base}_step${partsPlaced}of${targetParts}`, document_, surfaces, report, elapsedMs);
+  function showSnapshot(elapsedMs, { keepCamera = true } = {}) {
+    const { partsPlaced, targetParts, document: document_, surfaces, report, steps } = session.snapshot;
+    showSessionAssembly(`${session.base}_step${partsPlaced}of${targetParts}`, document_, surfaces, report, elapsedMs,
+      { keepCamera, emphasis: steps ? null : stepEmphasis(partsPlaced, targetParts) });
     ui.sessionChild.value = '0';
     refreshControls();
+    loadThumbnails();
+  }
+
+  /**
+   * A voxel assembly of `parts` parts on the way to `targetParts`: its newest part (parts - 1)
+   * highlighted and its remainder (the last part) ghosted; nothing at the root (the whole shape is
+   * the remainder) nor once complete (the last part is a part then).
+   */
+  function stepEmphasis(parts, targetParts) {
+    if (parts < 2 || parts >= targetParts) return null;
+    return { highlight: [parts - 1], ghost: [parts] };
   }
 
   /** Session assemblies have no .puz text from the core: the page keeps them as JSON documents. */
-  function showSessionAssembly(name, document_, surfaces, report, elapsedMs) {
+  function showSessionAssembly(name, document_, surfaces, report, elapsedMs, { keepCamera = true, emphasis = null } = {}) {
     const plain = document_.voxel ? { ...document_, voxel: { ...document_.voxel, labels: Array.from(document_.voxel.labels) } } : document_;
     showAssembly({
       name: `${name}.json`, text: JSON.stringify(plain), document: document_, surfaces, report, elapsedMs, timingLabel: 'Step time', menuLabel: `Step by step: ${name}`,
+      keepCamera, emphasis,
     });
+  }
+
+  /** Pictures of the current node's first ranked children (voxel sessions), made in the worker. */
+  async function loadThumbnails() {
+    const token = ++nodeToken;
+    thumbnails.clear();
+    if (!sessionAlive() || session.snapshot.steps || session.snapshot.childCount === 0) return;
+    const { partsPlaced, targetParts } = session.snapshot;
+    try {
+      const { value: children } = await core.run('session-children', '', { count: MAX_CHILD_THUMBNAILS });
+      if (token !== nodeToken || !sessionAlive()) return;
+      const emphasis = stepEmphasis(partsPlaced + 1, targetParts);
+      thumbnails.show(children, { newPart: partsPlaced, remainder: emphasis ? partsPlaced + 1 : null });
+    } catch {
+      // Pictures are a convenience: a failure (a cancelled worker) leaves the list and buttons.
+    }
+  }
+
+  /**
+   * "Finish automatically from here": the designer's search below the session's node, in the
+   * worker with progress and Cancel (which ends the session with its worker). A success is the
+   * verified puzzle, shown like any design; the session stays where it was.
+   */
+  async function finishFromHere() {
+    if (busy || !sessionAlive()) return;
+    const request = readRequest();
+    if (!request) return;
+    const timeLimit = request.options.timeLimit ?? 0;
+    // A dead end has nothing below it to search: finish from the step before instead.
+    if (session.snapshot.childCount === 0 && !session.snapshot.complete && session.snapshot.partsPlaced > 1) {
+      await step('session-back');
+      if (!sessionAlive()) return;
+    }
+    const { partsPlaced, targetParts } = session.snapshot;
+    const base = session.base;
+    begin('Finishing from here…', { withProgress: true });
+    try {
+      const { value: result, elapsedMs } = await core.run('session-finish', '', { timeLimit }, { onProgress });
+      end();
+      if (result.status === 'success' && result.puz) {
+        showAssembly({
+          name: `${base}_N${targetParts}_seed${result.seed}_from_step${partsPlaced}.puz`,
+          text: result.puz, document: result.document, surfaces: result.surfaces, report: result.verification,
+          elapsedMs, timingLabel: 'Design time', keepCamera: true,
+        });
+      }
+      setOutcome(result.status, result.message);
+    } catch (error) {
+      const elapsed = end();
+      if (error.cancelled) {
+        session = null;
+        thumbnails.clear();
+        setOutcome('cancelled', `${cancelledMessage(run.latest, elapsed)} The step-by-step session ended with its worker.`);
+      } else {
+        setOutcome('error', error.message);
+      }
+      refreshControls();
+    }
   }
 
   /**
@@ -526,7 +616,7 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
     const { partsPlaced, targetParts, complete, childCount, steps } = session.snapshot;
     const noun = !steps ? 'parts' : kind === 'frame' ? 'beams' : 'plates';
     if (complete) return `Complete: ${partsPlaced} of ${targetParts} ${noun}${steps ? ', verified' : ''}.`;
-    const children = childCount === 0 ? 'no children (go back)' : `${childCount} children (0 = best ranked)`;
+    const children = childCount === 0 ? (steps ? 'no children (go back)' : 'no children (go back, or finish automatically)') : `${childCount} children (0 = best ranked)`;
     const taken = steps?.length ? ` · taken: ${steps.map((step) => `${step.plate ?? step.beam} ${formatDirection(step.direction)}`).join(', ')}` : '';
     return `${partsPlaced} of ${targetParts} ${noun} (the last is the remainder)${taken} · ${children}.`;
   }
@@ -567,6 +657,10 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
     ui.sessionChild.max = String(Math.max(childCount - 1, 0));
     ui.sessionPreview.disabled = ui.sessionChild.disabled;
     ui.sessionChoose.disabled = ui.sessionChild.disabled;
+    // Plates and frames are finished by Design (their sessions have no search below a node yet).
+    ui.sessionFinish.disabled = busy || !alive || kind !== 'voxel' || session.snapshot.complete || Boolean(session.snapshot.steps);
+    ui.sessionChildren.inert = busy;
+    if (!alive && ui.sessionChildren.dataset.count !== '0') thumbnails.clear();
     ui.sessionState.textContent = describeSession();
     ui.sessionState.dataset.parts = alive ? String(session.snapshot.partsPlaced) : '';
     ui.sessionState.dataset.children = String(childCount);
@@ -591,6 +685,7 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
     ui.sessionChoose.addEventListener('click', () => step('session-choose', { n: Number(ui.sessionChild.value) }));
     ui.sessionPreview.addEventListener('click', preview);
     ui.sessionClose.addEventListener('click', closeSession);
+    ui.sessionFinish.addEventListener('click', finishFromHere);
   }
 
   FIELDS.workers.value = String(MAX_WORKERS);

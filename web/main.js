@@ -224,14 +224,15 @@ function voxelCount(document_) {
 
 /**
  * Puts an assembly on screen whose document, part surfaces and report are already known (a
- * designed puzzle, a design step). It supersedes any load still in flight.
+ * designed puzzle, a design step). It supersedes any load still in flight. Step by step passes
+ * `keepCamera` (the user's camera stays) and `emphasis` ({ highlight, ghost } part ids, view.js).
  */
-function showAssembly({ name, text, document: document_, surfaces, report, elapsedMs, timingLabel, menuLabel: label = `Designed: ${name}` }) {
+function showAssembly({ name, text, document: document_, surfaces, report, elapsedMs, timingLabel, menuLabel: label = `Designed: ${name}`, keepCamera = false, emphasis = null }) {
   loadGeneration += 1;
   document.body.dataset.source = name;
   hideError();
   selectMenuEntry(RESULT_OPTION, label);
-  present({ name, text, document: document_, surfaces, report, elapsedMs, timingLabel, option: RESULT_OPTION, optionLabel: label });
+  present({ name, text, document: document_, surfaces, report, elapsedMs, timingLabel, option: RESULT_OPTION, optionLabel: label, keepCamera, emphasis });
   setStatus('ready');
   // Voxel designs are verified with the graph test; another chosen test runs on the result as
   // well (plate plans are verified with both tests already).
@@ -243,17 +244,18 @@ function showAssembly({ name, text, document: document_, surfaces, report, elaps
  * the current one (the 3D view, the report panel, the download and export).
  */
 function present(assembly) {
-  const { name, text, document: document_, surfaces, report, elapsedMs, timingLabel = 'Check time' } = assembly;
+  const { name, text, document: document_, surfaces, report, elapsedMs, timingLabel = 'Check time', keepCamera = false, emphasis = null } = assembly;
   shown = assembly;
   document.body.dataset.shown = name;
   ui.sourceName.textContent = name;
-  view.show(document_, surfaces);
+  view.show(document_, surfaces, { keepCamera });
   setCurrent({ name, text }, report, document_);
   // A plate plan is played along its own planned removal directions.
   const played = withPlannedRemoval(report, document_);
   renderReport(played, elapsedMs, timingLabel, { voxels: document_.kind === 'voxel' ? voxelCount(document_) : null });
   renderPlan(document_);
-  view.applyReport(played);
+  view.applyReport(played, { keepCamera });
+  if (emphasis) view.setEmphasis(emphasis);
   setUpDisassemblySlider(view.available ? played.disassembly : null);
 }
 

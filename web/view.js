@@ -150,6 +150,11 @@ const KEY_EDGE_COLOR = 0xfff3c4;
 const CUT_POINT_COLOR = new THREE.Color(0xff5a3c);
 const CUT_POINT_EDGE_COLOR = 0xffd2c8;
 const MOVING_EDGE_COLOR = 0xffffff;
+/** Step by step: the new part's edges and glow, and how see-through the remainder is. */
+const HIGHLIGHT_EDGE_COLOR = 0xffffff;
+const HIGHLIGHT_GLOW = 0.45;
+const GHOST_OPACITY = 0.22;
+const GHOST_EDGE_OPACITY = 0.2;
 /** At explode factor 1 every part sits this many times farther from the centre than assembled. */
 const EXPLODE_SCALE = 1.2;
 /** How far a part keeps going after its last move before it disappears, in voxels. */
@@ -233,6 +238,7 @@ export class AssemblyView {
     this.#controls.addEventListener('change', () => this.requestRender());
     this.#renderer.domElement.addEventListener('pointermove', (event) => this.#updateHover(event));
     this.#renderer.domElement.addEventListener('pointerleave', () => { this.#hoverLabel.hidden = true; });
+    this.#renderer.domElement.addEventListener('dblclick', () => this.fit());
     this.#resizeObserver = new ResizeObserver(() => this.#resize());
     this.#resizeObserver.observe(container);
     this.#resize();
@@ -276,8 +282,11 @@ export class AssemblyView {
   /**
    * Draws a parsed document with its part surfaces (desia.partSurfaces of that document: an
    * array of { partId, positions, normals }); `applyReport` adds what the check found.
+   * `keepCamera`: leave the camera where the user put it (step by step: every child of a session
+   * is seen from the same place, so they compare at one zoom); the first assembly is still framed.
    */
-  show(document_, surfaces) {
+  show(document_, surfaces, { keepCamera = false } = {}) {
+    const kept = keepCamera ? this.#framed : null;
     this.clear();
     if (!this.available) return;
     const voxel = document_?.kind === 'voxel' && document_.voxel;
@@ -321,7 +330,39 @@ export class AssemblyView {
     this.#container.dataset.parts = String(this.#meshes.size);
     this.#updatePositions();
     // The explode factor outlives the assembly: frame what is actually shown.
+    if (kept) this.#framed = kept;
+    else this.#fitCamera(this.#framingBox());
+  }
+
+  /** Frames the assembly again from the usual three-quarter view (double-click on the view). */
+  fit() {
+    if (!this.available || this.#meshes.size === 0) return;
     this.#fitCamera(this.#framingBox());
+    this.requestRender();
+  }
+
+  /**
+   * Step by step: the parts in `highlight` (the new part) glow with bright edges, those in
+   * `ghost` (the remainder not yet split) are drawn see-through; the others as the report left
+   * them. Call after applyReport. The container's data-highlight / data-ghost list them.
+   */
+  setEmphasis({ highlight = [], ghost = [] } = {}) {
+    if (!this.available) return;
+    const glowing = new Set(highlight);
+    const ghosted = new Set(ghost);
+    for (const [partId, mesh] of this.#meshes) {
+      if (ghosted.has(partId)) {
+        mesh.userData.baseOpacity = GHOST_OPACITY;
+        mesh.userData.baseEdgeOpacity = GHOST_EDGE_OPACITY;
+      } else if (glowing.has(partId)) {
+        mesh.material.emissive.copy(mesh.material.color).multiplyScalar(HIGHLIGHT_GLOW);
+        mesh.userData.edgeColor = HIGHLIGHT_EDGE_COLOR;
+        mesh.userData.baseEdgeOpacity = 1;
+      }
+    }
+    this.#container.dataset.highlight = [...glowing].join(' ');
+    this.#container.dataset.ghost = [...ghosted].join(' ');
+    this.#updatePositions();
   }
 
   #addParts(surfaces, centroids, min, max) {
@@ -403,7 +444,7 @@ export class AssemblyView {
    * Highlights the key (or, on failure, the cut points of a plate design, else the witness
    * group) and prepares the removal animation.
    */
-  applyReport(report) {
+  applyReport(report, { keepCamera = false } = {}) {
     if (!this.available) return;
     this.#keyId = report?.key ?? null;
     // A plate design without joints is not interlocking by nature: greying out all but its
@@ -431,7 +472,7 @@ export class AssemblyView {
     this.#motions = removalMotions(report ?? {}, this.#scale);
     this.setDisassemblyStep(0);
     // Parts leaving along their paths should stay in the picture: frame their way out too.
-    if (this.#motions.size > 0 && this.#meshes.size > 0) this.#fitCamera(this.#framingBox());
+    if (!keepCamera && this.#motions.size > 0 && this.#meshes.size > 0) this.#fitCamera(this.#framingBox());
   }
 
   /**
@@ -553,6 +594,8 @@ export class AssemblyView {
   framing() {
     return {
       distance: this.available ? this.#camera.position.distanceTo(this.#controls.target) : 0,
+      camera: this.available ? this.#camera.position.toArray() : null,
+      target: this.available ? this.#controls.target.toArray() : null,
       gridCell: this.#scale.cell,
       removalStep: this.#scale.step,
     };
@@ -598,6 +641,8 @@ export class AssemblyView {
       this.#scene.remove(grid);
     }
     this.#container.dataset.parts = '0';
+    this.#container.dataset.highlight = '';
+    this.#container.dataset.ghost = '';
     this.requestRender();
   }
 

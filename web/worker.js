@@ -29,6 +29,11 @@
 //          op 'session-open'      text = the voxel shape, plate design or frame, options = designSession's options
 //          op 'session-next' | 'session-back' | 'session-close'
 //          op 'session-choose' | 'session-preview'   options = { n } (child index)
+//          op 'session-children'  options = { count }: the part surfaces of the first `count`
+//                                 ranked children (voxel sessions), for thumbnails:
+//                                 [{ index, surfaces }]
+//          op 'session-finish'    options = { timeLimit }: "finish automatically from here", with
+//                                 progress; result as for 'design'; the session does not move
 //   out: { type: 'ready', version }
 //        { type: 'progress', id, value }         designs only: { nodesVisited, depth, bestDepth,
 //                                                targetParts, elapsedSeconds }, at most ~10 per
@@ -113,6 +118,23 @@ const OPERATIONS = {
     // The core checks the previewed assembly from its own JSON document.
     const report = core.check(JSON.stringify(document), { source: `child ${index}` });
     return withSurfaces(core, { index, document, report }, `child ${index}`);
+  },
+  'session-children': (core, text, options) => {
+    const current = openSession();
+    const count = Math.min(current.childCount(), Number.isInteger(options?.count) ? options.count : 0);
+    const children = [];
+    for (let index = 0; index < count; index += 1) {
+      const preview = current.preview(index);
+      if (preview?.kind !== 'voxel') break; // plates and frames: a child is a step, not an assembly
+      children.push({ index, surfaces: core.partSurfaces(preview, { source: `child ${index}` }) });
+    }
+    return [children, children.flatMap(({ surfaces }) => surfaceBuffers(surfaces))];
+  },
+  'session-finish': (core, text, options, { id }) => {
+    const progress = createProgressThrottle((value) => self.postMessage({ type: 'progress', id, value }));
+    const result = openSession().finish({ ...(options ?? {}), onProgress: progress.report });
+    progress.flush();
+    return withSurfaces(core, result, 'finished design');
   },
   'session-close': () => {
     closeSession();
