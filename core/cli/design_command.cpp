@@ -2,6 +2,7 @@
 // desia design voxel: a thin shell over designVoxelPuzzle (core/include/desia/voxel_design.h).
 #include <unistd.h>
 
+#include <atomic>
 #include <csignal>
 #include <cstdio>
 #include <iostream>
@@ -18,9 +19,11 @@
 
 namespace {
 
-// Set by Ctrl-C; the search polls it after every node and stops with what it has.
-volatile std::sig_atomic_t interrupted = 0;
-extern "C" void onInterrupt(int) { interrupted = 1; }
+// Set by Ctrl-C; every search polls it after each node (from its own thread with --jobs) and
+// stops with what it has. A lock-free atomic: safe in a signal handler and across threads.
+std::atomic<bool> interrupted{false};
+static_assert(std::atomic<bool>::is_always_lock_free, "the Ctrl-C flag must be usable in a signal handler");
+extern "C" void onInterrupt(int) { interrupted = true; }
 
 struct DesignArguments {
   std::string input, output, groupsFile;
@@ -111,7 +114,7 @@ int runDesignCommand(const std::vector<std::string>& args) {
                    p.depth + 1, p.targetParts, p.bestDepth + 1, p.targetParts, p.elapsedSeconds,
                    parsed.jobs > 1 ? (", " + std::to_string(parsed.jobs) + " seeds").c_str() : "");
     }
-    return interrupted == 0;
+    return !interrupted;
   };
   std::signal(SIGINT, onInterrupt);
   const desia::VoxelDesignResult result = desia::cli::designVoxelPortfolio(document.voxels, parsed.options, parsed.jobs);
