@@ -15,6 +15,11 @@
 // For tests: figure.dbg-graph[data-direction, data-nodes, data-edges, data-components,
 // data-drawn = parts | components | none], circle.dbg-node[data-part, data-key],
 // path.dbg-edge[data-from, data-to]; the container gets data-graphs and data-key.
+//
+// Selection (the playground's part list, parts-panel.js): a click on a part's node dispatches a
+// bubbling 'dbg-select' event ({ detail: { partId } }) from the container instead of zooming the
+// graph, and highlightGraphPart(container, partId) marks that part's nodes
+// (circle.dbg-node[data-selected="true"], container[data-selected]); it survives a new drawing.
 
 import { KEY_COLOR_CSS, partColorCss } from './view.js';
 
@@ -375,12 +380,27 @@ export function renderBlockingGraphs(container, report, { maxDrawnNodes = MAX_DR
       figure.append(html('p', `Not drawn: ${components.length} components of ${figure.dataset.nodes} parts.`, 'dbg-note'));
     }
     figure.append(caption(graph, components));
-    figure.title = 'Click to enlarge or shrink';
-    figure.addEventListener('click', () => figure.classList.toggle('dbg-wide'));
+    figure.title = 'Click a part to select it, elsewhere to enlarge or shrink';
+    figure.addEventListener('click', (event) => {
+      const node = event.target.closest?.('.dbg-node-group')?.querySelector('circle.dbg-node[data-part]');
+      if (node) container.dispatchEvent(new CustomEvent('dbg-select', { bubbles: true, detail: { partId: Number(node.dataset.part) } }));
+      else figure.classList.toggle('dbg-wide');
+    });
     grid.append(figure);
   }
   children.push(grid);
   container.replaceChildren(...children);
+  highlightGraphPart(container, container.dataset.selected ? Number(container.dataset.selected) : null);
+}
+
+/** Marks part `partId`'s nodes in every graph of `container` as selected (null: none). */
+export function highlightGraphPart(container, partId) {
+  container.dataset.selected = partId === null || partId === undefined ? '' : String(partId);
+  for (const node of container.querySelectorAll('circle.dbg-node[data-part]')) {
+    const selected = Number(node.dataset.part) === partId;
+    if (selected) node.setAttribute('data-selected', 'true');
+    else node.removeAttribute('data-selected');
+  }
 }
 
 export function clearBlockingGraphs(container) {
