@@ -195,6 +195,17 @@ std::optional<PlateJoint> jointFor(const PlateGraph& graph, int mover, int other
       }
     }
     if (joint.type != JointType::Empty) return joint;
+    // Plates lying face to face: a stub tenon in a blind mortise, straight off the lap.
+    for (int c : graph.contactsOf[mover]) {
+      const PlateContact& contact = graph.contacts[c];
+      if (contact.a != other && contact.b != other) continue;
+      if (faceTenonOf(graph.plates, contact, mover, d) &&
+          (joint.contact < 0 || contact.area > graph.contacts[joint.contact].area)) {
+        joint.type = JointType::FaceTenon;
+        joint.contact = c;
+      }
+    }
+    if (joint.type != JointType::Empty) return joint;
   }
   // Milled: a sliding dovetail where no tenons let the plate out (the largest such contact).
   for (int c : graph.contactsOf[mover]) {
@@ -213,6 +224,11 @@ std::optional<PlateJoint> jointFor(const PlateGraph& graph, int mover, int other
 // The tenon to mill for a planned mitre-tenon joint: on the mover, into the other plate, against d.
 MitreTenon mitreTenonFor(const PlateGraph& graph, const PlateJoint& joint) {
   return *mitreTenonOf(graph.plates, graph.contacts[joint.contact], joint.mover, negated(joint.direction));
+}
+
+// The stub tenon to mill for a planned face-tenon joint: on the mover, off the lap along d.
+FaceTenon faceTenonFor(const PlateGraph& graph, const PlateJoint& joint) {
+  return *faceTenonOf(graph.plates, graph.contacts[joint.contact], joint.mover, joint.direction);
 }
 
 // The dovetail to mill for a planned dovetail joint: its housing opens where the tongue plate leaves.
@@ -266,6 +282,12 @@ Assembly modelAssembly(const PlateGraph& graph, const std::vector<Step>& steps, 
           assembly.contacts.push_back({a, b, contact.normal, contact.area});
         if (contact.b == joint.mover && contact.a == joint.other)
           assembly.contacts.push_back({a, b, negated(contact.normal), contact.area});
+      }
+      if (joint.type == JointType::FaceTenon) {
+        // The block's end on the mortise's floor (and the lap), its four sides in the mortise.
+        for (const Vec3& n : faceTenonFaceNormals(faceTenonFor(graph, joint)))
+          assembly.contacts.push_back({a, b, *cleanedNormal(n), 1.0});
+        continue;
       }
       if (joint.type == JointType::MitreTenon) {
         // The tenon's faces in its pocket: its tip and the mitre, its sides and its ends.
@@ -327,7 +349,9 @@ JointedPlan cutPlan(const std::vector<Plate>& plates, const PlateGraph& graph, c
   std::vector<SlotCut> slots;
   std::vector<DovetailCut> dovetails;
   std::vector<MitreTenon> mitreTenons;
+  std::vector<FaceTenon> faceTenons;
   for (const PlateJoint& joint : joints) {
+    if (joint.type == JointType::FaceTenon) faceTenons.push_back(faceTenonFor(graph, joint));
     if (joint.type == JointType::MortiseTenon) sites.push_back(*graph.tenonSites[joint.contact]);
     if (joint.type == JointType::Dovetail) dovetails.push_back(dovetailCutFor(graph, joint));
     if (joint.type == JointType::MitreTenon) mitreTenons.push_back(mitreTenonFor(graph, joint));
@@ -341,7 +365,7 @@ JointedPlan cutPlan(const std::vector<Plate>& plates, const PlateGraph& graph, c
   JointCutOptions cut = options;
   cut.clearance = clearance;
   JointedPlan plan;
-  plan.plates = cutTenonJoints(plates, sites, cut, slots, dovetails, mitreTenons);
+  plan.plates = cutTenonJoints(plates, sites, cut, slots, dovetails, mitreTenons, faceTenons);
   validatePlates(plan.plates, geometry, "the jointed plates");
   std::vector<int> position(plates.size(), 0);
   for (size_t k = 0; k < order.size(); ++k) {
@@ -488,6 +512,8 @@ std::vector<CutFootprint> PlateJointPlanner::cutsOf(const std::vector<PlateJoint
       cuts.push_back(dovetailFootprint(plates_, dovetailCutFor(graph_, joint)));
     } else if (joint.type == JointType::MitreTenon) {
       cuts.push_back(mitreTenonFootprint(plates_, mitreTenonFor(graph_, joint)));
+    } else if (joint.type == JointType::FaceTenon) {
+      cuts.push_back(faceTenonFootprint(plates_, faceTenonFor(graph_, joint)));
     } else if (joint.type == JointType::Halved) {
       for (const SlotCut& slot : halvedSlots(plates_, graph_.contacts[joint.contact], joint.mover, joint.direction, 0))
         cuts.push_back(slotFootprint(slot));
@@ -876,6 +902,8 @@ const char* jointTypeName(JointType type) {
       return "dovetail";
     case JointType::MitreTenon:
       return "mitre-tenon";
+    case JointType::FaceTenon:
+      return "face-tenon";
     case JointType::Empty:
       return "empty";
   }

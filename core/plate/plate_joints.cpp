@@ -778,6 +778,68 @@ std::optional<MitreTenon> mitreTenonOf(const std::vector<Plate>& plates, const P
   return tenon;
 }
 
+Loop FaceTenon::footprint(double grow) const {
+  auto at = [&](double s, double t) { return plus(origin, plus(scaled(u, s), scaled(v, t))); };
+  return {at(s0 - grow, t0 - grow), at(s1 + grow, t0 - grow), at(s1 + grow, t1 + grow), at(s0 - grow, t1 + grow)};
+}
+
+std::optional<FaceTenon> faceTenonOf(const std::vector<Plate>& plates, const PlateContact& contact, int tenonPlate,
+                                     const Vec3& d) {
+  if (contact.crossing || (contact.a != tenonPlate && contact.b != tenonPlate) || contact.region.size() < 3)
+    return std::nullopt;
+  FaceTenon tenon;
+  tenon.tenonPlate = tenonPlate;
+  tenon.mortisePlate = contact.a == tenonPlate ? contact.b : contact.a;
+  const Plate& mortise = plates[tenon.mortisePlate];
+  if (!isPrism(plates[tenonPlate]) || !isPrism(mortise)) return std::nullopt;
+  // A lap: the contact lies on a face of both plates.
+  for (const Plate* plate : {&plates[tenonPlate], &mortise}) {
+    if (std::abs(dot(contact.normal, plateThicknessAxis(*plate))) < 1 - kSquare) return std::nullopt;
+  }
+  tenon.out = contact.a == tenonPlate ? negated(contact.normal) : contact.normal;
+  if (dot(normalized(d), tenon.out) < 1 - 1e-9) return std::nullopt;  // straight off the lap only
+  tenon.u = normalized(contact.edgeDirection);
+  if (std::abs(dot(tenon.u, tenon.out)) > kSquare) return std::nullopt;
+  tenon.v = normalized(cross(tenon.out, tenon.u));
+  tenon.origin = contact.region[0];
+  const auto [s0, s1] = extentAlong(contact.region, tenon.origin, tenon.u);
+  const auto [t0, t1] = extentAlong(contact.region, tenon.origin, tenon.v);
+  // The middle third each way: wood all round the mortise, and room for other joints.
+  tenon.s0 = s0 + (s1 - s0) / 3;
+  tenon.s1 = s1 - (s1 - s0) / 3;
+  tenon.t0 = t0 + (t1 - t0) / 3;
+  tenon.t1 = t1 - (t1 - t0) / 3;
+  if (tenon.s1 - tenon.s0 < kShortestJoint || tenon.t1 - tenon.t0 < kShortestJoint) return std::nullopt;
+  tenon.depth = plateThickness(mortise) / 3;  // as deep as a dovetail's housing: both faces may hold one
+  // The block inside the lap (a lap that is not a rectangle may not hold the middle third).
+  const PlaneFrame frame(tenon.origin, tenon.out);
+  if (areaAgainst({tenon.footprint(0)}, {contact.region}, frame, true) > 1e-6) return std::nullopt;
+  return tenon;
+}
+
+std::vector<Vec3> faceTenonFaceNormals(const FaceTenon& tenon) {
+  return {negated(tenon.out), tenon.u, negated(tenon.u), tenon.v, negated(tenon.v)};
+}
+
+// The block on the tenon plate: its footprint on the lap, into the mortise plate by the depth.
+Plate faceTenonBlock(const FaceTenon& tenon) {
+  Plate block;
+  Loop onLap = tenon.footprint(0), inside;
+  for (const Vec3& p : onLap) inside.push_back(plus(p, scaled(tenon.out, -tenon.depth)));
+  block.bottom = {onLap};
+  block.top = {inside};
+  return block;
+}
+
+// The mortise plate's face the lap lies on: 0 its first, 1 its second.
+int faceTenonMortiseFace(const std::vector<Plate>& plates, const FaceTenon& tenon) {
+  return dot(tenon.out, plateThicknessAxis(plates[tenon.mortisePlate])) > 0 ? 1 : 0;
+}
+
+CutFootprint faceTenonFootprint(const std::vector<Plate>& plates, const FaceTenon& tenon) {
+  return {tenon.mortisePlate, faceTenonMortiseFace(plates, tenon) == 0 ? 1 : 2, tenon.footprint(0)};
+}
+
 std::vector<Vec3> mitreTenonFaceNormals(const MitreTenon& tenon) {
   const MitreFrame frame = mitreFrame(tenon);
   Vec3 side = normalized(cross(tenon.into, tenon.line));
@@ -827,7 +889,8 @@ bool footprintsOverlap(const std::vector<Plate>& plates, const CutFootprint& a, 
 std::vector<Plate> cutTenonJoints(const std::vector<Plate>& plates, const std::vector<TenonSite>& sites,
                                   const JointCutOptions& options, const std::vector<SlotCut>& slots,
                                   const std::vector<DovetailCut>& dovetails,
-                                  const std::vector<MitreTenon>& mitreTenons) {
+                                  const std::vector<MitreTenon>& mitreTenons,
+                                  const std::vector<FaceTenon>& faceTenons) {
   std::vector<std::vector<Loop>> added(plates.size()), removed(plates.size());
   // Dovetail housings per plate and face (0: first face, 1: second), and the solids they attach.
   std::vector<std::array<std::vector<Loop>, 2>> housings(plates.size());
@@ -846,6 +909,13 @@ std::vector<Plate> cutTenonJoints(const std::vector<Plate>& plates, const std::v
     removed[tenon.pocketPlate].push_back(pocketNotch(plates, tenon));
     for (Plate& piece : pocketSurround(plates, tenon)) attached[tenon.pocketPlate].push_back(std::move(piece));
     attached[tenon.tenonPlate].push_back(mitreTenonSolid(tenon, options.clearance));
+  }
+  for (const FaceTenon& tenon : faceTenons) {
+    // A blind mortise is a housing from the lap's face, as deep as the block (a dovetail's depth).
+    const int face = faceTenonMortiseFace(plates, tenon);
+    housings[tenon.mortisePlate][face].push_back(tenon.footprint(options.clearance / 2));
+    housingDepth[tenon.mortisePlate][face] = tenon.depth;
+    attached[tenon.tenonPlate].push_back(faceTenonBlock(tenon));
   }
   for (const SlotCut& slot : slots) removed[slot.plate].push_back(slot.rectangle);
   for (const TenonSite& site : sites) {

@@ -788,6 +788,35 @@ TEST(PlateMitreTenons, AnObliqueTenonLeavesAlongItsSlantOnly) {
   EXPECT_TRUE(plateCollidesAlong(pair[0], pair[1], line, 0.05));
 }
 
+// Two boards lying face to face (a lap, as the CHAIR's repair bars on its legs): a stub tenon on
+// the upper one in a blind mortise a third into the lower one lets it leave straight up only.
+TEST(PlateFaceTenons, AStubTenonOnALapLeavesStraightOffIt) {
+  const std::vector<Plate> boards{board(1, {0, 0, 0}, {120, 60, 18}), board(2, {20, 10, 18}, {140, 70, 36})};
+  const std::vector<PlateContact> contacts = computePlateContacts(boards, {});
+  ASSERT_EQ(contacts.size(), 1u);
+  const Vec3 up{0, 0, 1};
+  EXPECT_FALSE(faceTenonOf(boards, contacts[0], 1, {1, 0, 0}).has_value()) << "only straight off the lap";
+  EXPECT_FALSE(faceTenonOf(boards, contacts[0], 1, negated(up)).has_value()) << "not into the other board";
+  const std::optional<FaceTenon> tenon = faceTenonOf(boards, contacts[0], 1, up);
+  ASSERT_TRUE(tenon.has_value());
+  EXPECT_NEAR(tenon->depth, 6.0, 1e-12);  // a third of the lower board
+  const std::vector<Plate> jointed = cutTenonJoints(boards, {}, {}, {}, {}, {}, {*tenon});
+  validatePlates(jointed, {}, "jointed");
+  for (const Plate& plate : jointed) EXPECT_NO_THROW(checkClosedMesh(plateMesh(plate), "jointed"));
+  const double gained = totalVolume({jointed[1]}) - totalVolume({boards[1]});
+  const double lost = totalVolume({boards[0]}) - totalVolume({jointed[0]});
+  EXPECT_NEAR(gained, (100.0 / 3) * (50.0 / 3) * 6.0, 1e-6);  // the middle third of the 100 x 50 lap, 6 deep
+  EXPECT_NEAR(gained, lost, 1e-6);
+  Assembly two;
+  two.parts = {{1, "lower"}, {2, "upper"}};
+  for (const PlateContact& c : computePlateContacts(jointed, {})) two.contacts.push_back({c.a, c.b, c.normal, c.area});
+  for (const Vec3& d : std::vector<Vec3>{up, negated(up), {1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}}) {
+    EXPECT_EQ(isPartFreeAlong(two, nullptr, 1, d), d == up) << d[0] << "," << d[1] << "," << d[2];
+  }
+  EXPECT_FALSE(plateCollidesAlong(jointed[1], jointed[0], up, 0.05));
+  EXPECT_TRUE(plateCollidesAlong(jointed[1], jointed[0], {1, 0, 0}, 0.05));
+}
+
 TEST(PlateMitreTenons, MitredBoxAndDodecahedronDesignWithMilledJointsAndVerify) {
   for (const char* name : {"mitred_box.json", "dodecahedron.json", "cube.json"}) {
     const AssemblyDocument shape = loadPlateExample(name);

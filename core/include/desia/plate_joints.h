@@ -96,6 +96,29 @@ struct DovetailCut {
   int openEnd = 1;
 };
 
+// A stub tenon on a lap (milled; two plates lying face to face, as the CHAIR's repair bars on its
+// legs): a block on the tenon plate's face, a third of the lap's length and width in its middle,
+// standing into a blind mortise as deep as a third of the other plate's thickness (a housing cut
+// from that plate's face). The tenon plate can then leave only straight off the lap.
+struct FaceTenon {
+  int tenonPlate = 0, mortisePlate = 0;
+  Vec3 out{0, 0, 0};     // unit: the lap's normal from the mortise plate to the tenon plate (the way out)
+  Vec3 origin{0, 0, 0};  // on the lap; the block spans origin + [s0, s1] u + [t0, t1] v
+  Vec3 u{0, 0, 0}, v{0, 0, 0};
+  double s0 = 0, s1 = 0, t0 = 0, t1 = 0;
+  double depth = 0;      // into the mortise plate
+  Loop footprint(double grow) const;  // the block's rectangle on the lap, grown on every side
+};
+
+// The stub tenon on the lap `contact` for `tenonPlate` leaving along `d` (straight off the lap,
+// both plates prisms, the block inside the lap with a margin); nothing otherwise.
+std::optional<FaceTenon> faceTenonOf(const std::vector<Plate>& plates, const PlateContact& contact, int tenonPlate,
+                                     const Vec3& d);
+
+// The normals of a stub tenon's faces, from the tenon plate into the mortise plate: its end and
+// its four sides.
+std::vector<Vec3> faceTenonFaceNormals(const FaceTenon& tenon);
+
 struct JointCutOptions {
   double tenonWidth = 0;  // mm along the edge; 0 = from the edge's length (a third, or a fifth for two tenons)
   int tenonCount = 0;     // tenons per joint; 0 = one, or two on edges longer than 8 plate thicknesses
@@ -146,7 +169,8 @@ std::vector<SlotCut> halvedSlots(const std::vector<Plate>& plates, const PlateCo
 std::vector<Plate> cutTenonJoints(const std::vector<Plate>& plates, const std::vector<TenonSite>& sites,
                                   const JointCutOptions& options, const std::vector<SlotCut>& slots = {},
                                   const std::vector<DovetailCut>& dovetails = {},
-                                  const std::vector<MitreTenon>& mitreTenons = {});
+                                  const std::vector<MitreTenon>& mitreTenons = {},
+                                  const std::vector<FaceTenon>& faceTenons = {});
 
 // Where a joint's cut lies in a plate: a region of its face (a loop on or parallel to it), through
 // the plate (faces = 3) or into it from its first (1) or second (2) face only. Cuts of different
@@ -162,6 +186,7 @@ std::vector<CutFootprint> tenonFootprints(const std::vector<Plate>& plates, cons
 CutFootprint dovetailFootprint(const std::vector<Plate>& plates, const DovetailCut& cut);
 CutFootprint slotFootprint(const SlotCut& slot);
 CutFootprint mitreTenonFootprint(const std::vector<Plate>& plates, const MitreTenon& tenon);
+CutFootprint faceTenonFootprint(const std::vector<Plate>& plates, const FaceTenon& tenon);
 // Both in one plate, sharing a face, their regions overlapping inside the plate (more than a
 // thousandth of a square millimetre).
 bool footprintsOverlap(const std::vector<Plate>& plates, const CutFootprint& a, const CutFootprint& b);
