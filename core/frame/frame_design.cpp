@@ -743,7 +743,14 @@ FrameDesignResult FrameDesigner::run() {
       const Step step = pending.back().front();
       pending.back().erase(pending.back().begin());
       apply(step);
-      progress.bestDepth = std::max(progress.bestDepth, static_cast<int>(path_.size()) + 1);
+      if (static_cast<int>(path_.size()) + 1 > progress.bestDepth) {
+        progress.bestDepth = static_cast<int>(path_.size()) + 1;
+        // A live view of the deepest node (on demand): read from the path, never fed back.
+        if (options_.deepestSnapshots) {
+          progress.deepestPlaced.clear();
+          for (const Step& s : path_) progress.deepestPlaced.push_back(s.beam);
+        }
+      }
       if (static_cast<int>(path_.size()) + 1 == beams) {
         // R is the last beam: it owns every voxel still free. Accepted only if it verifies.
         if (completeHere(&result)) {

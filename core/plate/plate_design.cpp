@@ -683,7 +683,14 @@ PlateJointPlanner::Outcome PlateJointPlanner::searchTree(int64_t budget, PlateDe
     }
     path.push_back(pending.back().front());
     pending.back().erase(pending.back().begin());
-    progress.bestDepth = std::max(progress.bestDepth, static_cast<int>(path.size()) + 1);
+    if (static_cast<int>(path.size()) + 1 > progress.bestDepth) {
+      progress.bestDepth = static_cast<int>(path.size()) + 1;
+      // A live view of the deepest node (on demand): read from the path, never fed back.
+      if (options_.deepestSnapshots) {
+        progress.deepestPlaced.clear();
+        for (const Step& step : path) progress.deepestPlaced.push_back(step.plate);
+      }
+    }
     if (static_cast<int>(path.size()) + 1 == graph_.plateCount) {
       // R is the last plate: a complete plan, accepted only if its jointed plates verify; else search on.
       if (acceptComplete(path, result)) return Outcome::Found;

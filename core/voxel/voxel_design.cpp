@@ -272,6 +272,7 @@ class Search {
   Search(ConstructionTree tree, const VoxelDesignOptions& options)
       : tree_(std::move(tree)), options_(options), floorSeed_(tree_.floorSeed()), start_(std::chrono::steady_clock::now()) {
     progress_.bestDepth = tree_.depth();  // the floor's parts are placed already
+    snapshotDeepest();
   }
 
   VoxelDesignResult run() {
@@ -304,7 +305,10 @@ class Search {
         continue;
       }
       ++progress_.nodesVisited;
-      progress_.bestDepth = std::max(progress_.bestDepth, tree_.depth());
+      if (tree_.depth() > progress_.bestDepth) {
+        progress_.bestDepth = tree_.depth();
+        snapshotDeepest();
+      }
       if (!report()) return finish(DesignStatus::Cancelled, result);
       if (tree_.depth() == options_.parts - 1) {
         if (verifyPuzzle(tree_.grid(), options_.parts, &result.verification)) {
@@ -333,6 +337,12 @@ class Search {
     if (options_.timeLimitSeconds > 0 && elapsed() > options_.timeLimitSeconds) return DesignStatus::LimitReached;
     if (options_.nodeLimit > 0 && progress_.nodesVisited >= options_.nodeLimit) return DesignStatus::LimitReached;
     return std::nullopt;
+  }
+
+  // A copy of the current node, the deepest so far, for a live view (on demand only). Reads the
+  // tree, never the random state or the stack, so the search is the same with or without it.
+  void snapshotDeepest() {
+    if (options_.deepestSnapshots) progress_.deepest = std::make_shared<const VoxelGrid>(tree_.grid());
   }
 
   void updateProgress() {
@@ -484,6 +494,7 @@ VoxelDesignResult VoxelDesignSession::finish(const DesignLimits& limits) {
   options.timeLimitSeconds = limits.timeLimitSeconds;
   options.nodeLimit = limits.nodeLimit;
   options.onProgress = limits.onProgress;
+  options.deepestSnapshots = limits.deepestSnapshots;
   // A copy of the path: the session stays where it is, and its explored children stay explored.
   ConstructionTree subtree = state_->tree;
   subtree.makeCurrentTheFloor();

@@ -22,6 +22,9 @@ struct FrameDesignProgress {
   int bestDepth = 0;
   int targetParts = 0;  // the number of beams
   double seconds = 0;
+  // With FrameDesignOptions::deepestSnapshots: the beams taken at the deepest node so far (input
+  // indices, the key first), for a live view; replaced only when bestDepth grows.
+  std::vector<int> deepestPlaced;
 };
 
 struct FrameDesignOptions {
@@ -31,6 +34,7 @@ struct FrameDesignOptions {
   int64_t nodeLimit = 1'000'000;
   // Called at every node of the search; return false to cancel.
   std::function<bool(const FrameDesignProgress&)> onProgress;
+  bool deepestSnapshots = false;  // fill FrameDesignProgress::deepestPlaced (never changes the search)
 };
 
 enum class FrameDesignStatus { Success, NotFound, LimitReached, Cancelled, CutPoint };

@@ -66,6 +66,9 @@ struct PlateDesignProgress {
   int bestDepth = 0;
   int targetParts = 0;  // the number of plates
   double seconds = 0;
+  // With PlateDesignOptions::deepestSnapshots: the plates taken at the deepest node so far (input
+  // indices, the key first), for a live view; replaced only when bestDepth grows.
+  std::vector<int> deepestPlaced;
 };
 
 struct PlateDesignOptions {
@@ -78,6 +81,7 @@ struct PlateDesignOptions {
   PlateOptions geometry;   // the contact tolerance for the jointed plates' contacts
   // Called at every node of the search; return false to cancel.
   std::function<bool(const PlateDesignProgress&)> onProgress;
+  bool deepestSnapshots = false;  // fill PlateDesignProgress::deepestPlaced (never changes the search)
 };
 
 enum class PlateDesignStatus { Success, NotFound, LimitReached, Cancelled, CutPoint };

@@ -38,6 +38,10 @@ struct DesignProgress {
   int bestDepth = 0;         // the deepest node reached so far
   int targetParts = 0;       // N
   double elapsedSeconds = 0;
+  // With VoxelDesignOptions::deepestSnapshots: the deepest node found so far (A_bestDepth: parts
+  // 1..bestDepth placed, label bestDepth + 1 the remainder), in the input's grid; null otherwise.
+  // Replaced only when bestDepth grows, so successive snapshots are deeper (a live view).
+  std::shared_ptr<const VoxelGrid> deepest;
 };
 
 struct VoxelDesignOptions {
@@ -57,6 +61,9 @@ struct VoxelDesignOptions {
   int64_t nodeLimit = 0;               // 0: none
   // Called after every visited node; return false to stop (cancellation). Not called concurrently.
   std::function<bool(const DesignProgress&)> onProgress;
+  // Keep a copy of the deepest node for DesignProgress::deepest (a grid copy each time the best
+  // depth grows, at most N - 1 copies per design); it never changes the search.
+  bool deepestSnapshots = false;
 };
 
 // Bounds on the size of every part (the key and the last remainder included), in voxels.
@@ -97,6 +104,7 @@ struct DesignLimits {
   double timeLimitSeconds = 0;  // 0: none
   int64_t nodeLimit = 0;        // 0: none
   std::function<bool(const DesignProgress&)> onProgress;
+  bool deepestSnapshots = false;
 };
 
 // Step-by-step design, as the original tool's GUI ("Generate Next Part", "Child Index", "Go Back"):
