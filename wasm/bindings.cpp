@@ -117,11 +117,46 @@ val voxelize(const val& bytes, int resolution, const std::string& source) {
   });
 }
 
+// Live design (issue 11): the deepest node found so far rides on a progress object as `snapshot`
+// only when it is deeper than the last one handed to JS, so a search of thousands of nodes a
+// second copies at most one snapshot per new depth across the boundary.
+class SnapshotGate {
+ public:
+  bool isNew(int depth) {
+    if (depth <= sentDepth_) return false;
+    sentDepth_ = depth;
+    return true;
+  }
+
+ private:
+  int sentDepth_ = -1;
+};
+
+// { depth, labels }: the deepest node's voxel labels (parts 1..depth, depth + 1 the remainder) as
+// an Int32Array copied out of the heap, in the shape's grid order (x fastest, as documents).
+val voxelSnapshot(const desia::DesignProgress& progress) {
+  const std::vector<int>& labels = progress.deepest->labels();
+  val snapshot = val::object();
+  snapshot.set("depth", progress.bestDepth);
+  snapshot.set("labels", val(emscripten::typed_memory_view(labels.size(), labels.data())).call<val>("slice"));
+  return snapshot;
+}
+
+// { depth, placed }: the plates or beams (input indices, the key first) of the deepest node.
+val placedSnapshot(const std::vector<int>& placed) {
+  val snapshot = val::object();
+  snapshot.set("depth", static_cast<int>(placed.size()));
+  snapshot.set("placed", val::array(placed));
+  return snapshot;
+}
+
 // The voxel designer's progress as a plain object for a JS function, which may return false to stop
 // the search. Holds `onProgress` by reference: use it within the call that received it.
 std::function<bool(const desia::DesignProgress&)> progressCallback(const val& onProgress) {
-  return [&onProgress](const desia::DesignProgress& progress) {
-    const val answer = onProgress(parseJsonText(desia::designProgressToJson(progress)));
+  return [&onProgress, gate = SnapshotGate()](const desia::DesignProgress& progress) mutable {
+    val value = parseJsonText(desia::designProgressToJson(progress));
+    if (progress.deepest && gate.isNew(progress.bestDepth)) value.set("snapshot", voxelSnapshot(progress));
+    const val answer = onProgress(value);
     return !(answer.isFalse());
   };
 }
@@ -137,7 +172,10 @@ val designVoxel(const std::string& shapeText, const std::string& optionsJson, co
                                                          std::string(desia::assemblyKindName(document.kind)) + " document");
     }
     desia::VoxelDesignOptions options = desia::parseDesignOptionsJson(optionsJson, document.voxels);
-    if (onProgress.typeOf().as<std::string>() == "function") options.onProgress = progressCallback(onProgress);
+    if (onProgress.typeOf().as<std::string>() == "function") {
+      options.onProgress = progressCallback(onProgress);
+      options.deepestSnapshots = true;  // a listener gets the live view too
+    }
     return parseJsonText(desia::designResultToJson(desia::designVoxelPuzzle(document.voxels, options)));
   });
 }
@@ -151,8 +189,12 @@ val designPlate(const std::string& text, const std::string& optionsJson, const s
     }
     desia::PlateDesignOptions options = desia::parsePlateDesignOptionsJson(optionsJson);
     if (onProgress.typeOf().as<std::string>() == "function") {
-      options.onProgress = [&onProgress](const desia::PlateDesignProgress& progress) {
-        return !(onProgress(parseJsonText(desia::plateDesignProgressToJson(progress))).isFalse());
+      options.deepestSnapshots = true;
+      options.onProgress = [&onProgress, gate = SnapshotGate()](const desia::PlateDesignProgress& progress) mutable {
+        val value = parseJsonText(desia::plateDesignProgressToJson(progress));
+        const int placed = static_cast<int>(progress.deepestPlaced.size());
+        if (placed > 0 && gate.isNew(placed)) value.set("snapshot", placedSnapshot(progress.deepestPlaced));
+        return !(onProgress(value).isFalse());
       };
     }
     const std::vector<desia::PlateContact> contacts = desia::computePlateContacts(document.plates, document.plateOptions);
@@ -167,8 +209,12 @@ val designFrame(const std::string& text, const std::string& optionsJson, const s
     desia::FramePackageOptions options = desia::parseFrameDesignOptionsJson(optionsJson);
     const desia::FrameDocument frame = desia::parseFrameText(text, source, options.jointSize);
     if (onProgress.typeOf().as<std::string>() == "function") {
-      options.design.onProgress = [&onProgress](const desia::FrameDesignProgress& progress) {
-        return !(onProgress(parseJsonText(desia::frameDesignProgressToJson(progress))).isFalse());
+      options.design.deepestSnapshots = true;
+      options.design.onProgress = [&onProgress, gate = SnapshotGate()](const desia::FrameDesignProgress& progress) mutable {
+        val value = parseJsonText(desia::frameDesignProgressToJson(progress));
+        const int placed = static_cast<int>(progress.deepestPlaced.size());
+        if (placed > 0 && gate.isNew(placed)) value.set("snapshot", placedSnapshot(progress.deepestPlaced));
+        return !(onProgress(value).isFalse());
       };
     }
     return parseJsonText(desia::frameDesignResultToJson(frame, desia::designFrame(frame.layout, options.design)));
@@ -242,7 +288,10 @@ class DesignSession {
                                                               (frames_ ? "frame use designFrame" : "plate design use designPlate") + ")");
       }
       desia::DesignLimits limits = desia::parseDesignLimitsJson(limitsJson);
-      if (onProgress.typeOf().as<std::string>() == "function") limits.onProgress = progressCallback(onProgress);
+      if (onProgress.typeOf().as<std::string>() == "function") {
+        limits.onProgress = progressCallback(onProgress);
+        limits.deepestSnapshots = true;
+      }
       return parseJsonText(desia::designResultToJson(voxels_->finish(limits)));
     });
   }

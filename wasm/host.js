@@ -42,14 +42,20 @@ export function createProgressThrottle(send, intervalMs = PROGRESS_INTERVAL_MS) 
   let latest = null;
   let unsent = false;
   let lastSentAt = -Infinity;
+  // The core attaches a `snapshot` (the deepest node so far) once per new depth; one that arrives
+  // between two sent values rides on the next one, so a live view never misses the deepest node
+  // and gets at most one snapshot per interval.
+  let pendingSnapshot = null;
   const sendLatest = () => {
-    send(latest);
+    send(pendingSnapshot && !latest.snapshot ? { ...latest, snapshot: pendingSnapshot } : latest);
+    pendingSnapshot = null;
     unsent = false;
     lastSentAt = performance.now();
   };
   return {
     report(value) {
       latest = value;
+      if (value?.snapshot) pendingSnapshot = value.snapshot;
       unsent = true;
       if (performance.now() - lastSentAt >= intervalMs) sendLatest();
     },

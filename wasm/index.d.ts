@@ -208,6 +208,33 @@ export interface DesignProgress {
    * (`nodesVisited` counts the nodes of all searches).
    */
   seed?: number;
+  /**
+   * Live design: the deepest node found so far, present only on a progress value whose deepest
+   * node is deeper than the last one delivered (so at most once per new depth; the promise-based
+   * API keeps one that falls between two of its deliveries for the next). Taken from the search,
+   * never fed back: the same seed gives the same result with or without a listener.
+   */
+  snapshot?: VoxelSnapshot | PlacedSnapshot;
+}
+
+/** designVoxel's snapshot: the deepest node as voxel labels. */
+export interface VoxelSnapshot {
+  /** Parts placed: labels 1..depth are parts 1..depth (part 1 the key), depth + 1 the remainder. */
+  depth: number;
+  /**
+   * One label per cell of the shape's grid in the order of the document's `voxel.labels` (x
+   * fastest), 0 outside the shape: the shape's document with these labels is an assembly that
+   * partSurfaces and check take.
+   */
+  labels: Int32Array;
+}
+
+/** designPlate's and designFrame's snapshot: the plates or beams of the deepest node. */
+export interface PlacedSnapshot {
+  /** Plates or beams taken: `placed.length`. */
+  depth: number;
+  /** Their indices in the input's `plates` or `beams` (0-based), in the order taken (the key first). */
+  placed: number[];
 }
 
 export interface DesignResult {
