@@ -20,12 +20,15 @@
 // designed from it), .field-help[data-invalid] under each field (its one-line explanation, or
 // what is wrong with the value typed; the field gets aria-invalid).
 // #design-joints holds the joints an example needs once it is loaded (main.js EXAMPLES).
+// Live design: #design-progress-box[data-live-parts] (parts of the deepest node the view shows,
+// '' when none), #design-progress-difficulty (voxels per part against what usually succeeds).
 
 import { byId } from './dom.js';
 import { readUrlState, writeUrlState } from './url-state.js';
 import { formatDirection } from './view.js';
 import { createChildThumbnails } from './child-thumbnails.js';
 import { WorkerPortfolio } from './worker-client.js';
+import { createPaceTracker, difficultyText } from './live-design.js';
 
 /** The fields of the form, by URL key; their values go to the core as they are. */
 const FIELDS = {
@@ -126,9 +129,11 @@ function seconds(ms) {
  * Wires the panel. `core` is the page's CoreWorker; `getShape()` returns `{ name, text }` of the
  * assembly on screen or null; `showAssembly({ name, text, document, surfaces, report, elapsedMs,
  * timingLabel })` puts an assembly on screen; `setBusy(busy, label)` locks the page's other
- * inputs while the worker is busy for us.
+ * inputs while the worker is busy for us. Live design: `showLive(snapshot, kind)` draws the deepest
+ * node so far (worker.js createLiveView) and `endLive()` puts back what was shown before, when a
+ * run ends without a result to show.
  */
-export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
+export function createDesignPanel({ core, getShape, showAssembly, setBusy, showLive = () => {}, endLive = () => {} }) {
   let busy = false;
   let partsTouched = false;
   /** The workers of portfolio designs (started on the first one), or null. */
@@ -141,6 +146,8 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
   let kind = 'voxel';
   /** True while the Joints choice is one an example set (not the user's): another file resets it. */
   let jointsFromExample = false;
+  /** Voxels of the voxel shape on screen (for the difficulty line), or 0. */
+  let inputVoxels = 0;
 
   // -------------------------------------------------------------------------------------------
   // Parameters
@@ -273,7 +280,8 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
     setBusy(true, label);
     document.body.dataset.design = 'running';
     ui.message.hidden = true;
-    run = { started: performance.now(), latest: null, updates: 0, clock: 0, withProgress, noun };
+    run = { started: performance.now(), latest: null, updates: 0, clock: 0, withProgress, noun, pace: createPaceTracker(), live: false };
+    ui.progressBox.dataset.liveParts = '';
     if (withProgress) {
       ui.progressBox.hidden = false;
       ui.progressBox.dataset.updates = '0';
@@ -289,6 +297,7 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
   function end() {
     const elapsed = performance.now() - run.started;
     clearInterval(run.clock);
+    run.ended = true;
     // A run that failed before its first node has no progress worth keeping on screen.
     if (run.withProgress && run.latest) renderProgress();
     else ui.progressBox.hidden = true;
@@ -298,6 +307,14 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
     return elapsed;
   }
 
+  /** A run that drew live snapshots and has no result to show: the view goes back to its input. */
+  function endLiveView() {
+    if (!run?.live) return;
+    run.live = false;
+    ui.progressBox.dataset.liveParts = '';
+    endLive();
+  }
+
   function onProgress(value) {
     if (!run) return;
     run.latest = value;
@@ -305,7 +322,24 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
     ui.progressBox.dataset.updates = String(run.updates);
     // A portfolio's progress is its deepest search's (nodes: all of them); which seed that is.
     ui.progressBox.dataset.seed = value.seed === undefined ? '' : String(value.seed);
+    run.pace.observe(value);
+    // Only deeper snapshots: with several Workers they come from whichever search is deepest.
+    const shownDepth = Number(ui.progressBox.dataset.liveParts || -1);
+    if (value.snapshot && value.snapshot.depth > shownDepth) {
+      run.live = true;
+      ui.progressBox.dataset.liveParts = String(value.snapshot.depth);
+      showLive(value.snapshot, kind);
+    }
     renderProgress();
+  }
+
+  /** The difficulty of the request and the time left, when they can be told (live-design.js). */
+  function progressDetails(latest) {
+    const voxel = !STRUCTURES[kind];
+    // bestDepth counts the parts of the deepest node, the remainder included: targetParts at the end.
+    const estimate = run.ended ? '' : run.pace.estimate(latest);
+    const difficulty = voxel && inputVoxels > 0 ? difficultyText(inputVoxels, latest.targetParts) : '';
+    return [difficulty, estimate].filter(Boolean);
   }
 
   /** Parts placed (plates joined) of N (the deepest node so far), nodes, current depth, wall-clock time. */
@@ -318,8 +352,9 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
     }
     ui.progress.max = latest.targetParts;
     ui.progress.value = latest.bestDepth;
-    ui.progressText.textContent = `${latest.bestDepth} of ${latest.targetParts} ${run.noun} · `
-      + `${latest.nodesVisited} nodes visited · depth ${latest.depth} · ${elapsed}`;
+    ui.progressText.textContent = [`${latest.bestDepth} of ${latest.targetParts} ${run.noun}`,
+      `${latest.nodesVisited} nodes visited`, `depth ${latest.depth}`, elapsed,
+      ...progressDetails(latest)].join(' · ');
   }
 
   function cancel() {
@@ -376,6 +411,7 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
         if (result.status === 'cut-point') run.latest = null;
       }
       end();
+      if (!(result.status === 'success' && result.document)) endLiveView();
       if (result.status === 'success' && result.document) {
         showAssembly({
           name: structure
@@ -393,6 +429,7 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
       setOutcome(result.status, result.message);
     } catch (error) {
       const elapsed = end();
+      endLiveView();
       if (error.cancelled) setOutcome('cancelled', cancelledMessage(run.latest, elapsed, structure ? structure.parts : 'parts'));
       else {
         setOutcome('error', error.message);
@@ -732,6 +769,7 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy }) {
     },
     /** A new shape is on screen: N follows its size until the user sets N. */
     shapeLoaded(voxelCount) {
+      inputVoxels = voxelCount > 0 ? voxelCount : 0;
       if (partsTouched || !(voxelCount > 0)) return;
       FIELDS.parts.value = String(defaultParts(voxelCount));
       explain('parts');

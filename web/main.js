@@ -464,11 +464,37 @@ function setBusy(busy, label) {
 const meshInput = createMeshInput({ core, loadAssembly });
 const exportPanel = createExportPanel({ core });
 
+/**
+ * Live design (issue 11): the deepest node of a running design, drawn over what is shown with the
+ * user's camera kept. A voxel snapshot brings its document and surfaces (parts 1..depth placed, the
+ * remainder see-through); a plate or frame snapshot lists the input indices placed, and the input
+ * on screen is recoloured: the rest see-through. The report stays the input's until the result.
+ */
+function showLiveDesign(snapshot) {
+  if (!shown) return;
+  if (snapshot.document) {
+    view.show(snapshot.document, snapshot.surfaces, { keepCamera: true });
+    view.setEmphasis({ ghost: [snapshot.depth + 1] });
+    return;
+  }
+  const items = shown.document?.plates ?? shown.document?.beams ?? [];
+  const placed = new Set(snapshot.placed.map((index) => items[index]?.id));
+  view.show(shown.document, shown.surfaces, { keepCamera: true });
+  view.setEmphasis({ ghost: items.map((item) => item.id).filter((id) => !placed.has(id)) });
+}
+
+/** A design that ended without a result: the assembly shown before it, as it was. */
+function endLiveDesign() {
+  if (shown) present({ ...shown, keepCamera: true });
+}
+
 const designPanel = createDesignPanel({
   core,
   getShape: () => designInput,
   showAssembly,
   setBusy,
+  showLive: showLiveDesign,
+  endLive: endLiveDesign,
 });
 
 // ---------------------------------------------------------------------------------------------

@@ -36,8 +36,9 @@
 //                                 progress; result as for 'design'; the session does not move
 //   out: { type: 'ready', version }
 //        { type: 'progress', id, value }         designs only: { nodesVisited, depth, bestDepth,
-//                                                targetParts, elapsedSeconds }, at most ~10 per
-//                                                second, always including the last one
+//                                                targetParts, elapsedSeconds, snapshot? }, at most
+//                                                ~10 per second, always including the last one;
+//                                                snapshot: the deepest node so far (createLiveView)
 //        { type: 'result', id, value, elapsedMs }   elapsedMs: time spent in the core
 //        { type: 'error', id, message, fatal?, code? }   id is null for a failed init; code is
 //                                                one of the package's error codes (index.d.ts).
@@ -131,7 +132,11 @@ const OPERATIONS = {
     return [children, children.flatMap(({ surfaces }) => surfaceBuffers(surfaces))];
   },
   'session-finish': (core, text, options, { id }) => {
-    const progress = createProgressThrottle((value) => self.postMessage({ type: 'progress', id, value }));
+    // The session's own node is on screen (step by step): its live view is the page's to add.
+    const progress = createProgressThrottle((value) => {
+      const { snapshot, ...rest } = value;
+      self.postMessage({ type: 'progress', id, value: rest });
+    });
     const result = openSession().finish({ ...(options ?? {}), onProgress: progress.report });
     progress.flush();
     return withSurfaces(core, result, 'finished design');
@@ -146,10 +151,46 @@ const OPERATIONS = {
 function designOperation(core, designer, text, options, { id }) {
   // Returning nothing from onProgress lets the search go on; the page stops it by terminating
   // the worker.
-  const progress = createProgressThrottle((value) => self.postMessage({ type: 'progress', id, value }));
+  const live = createLiveView(core, designer === 'designVoxel' ? text : null, options?.source);
+  const progress = createProgressThrottle((value) => postProgress(id, live(value)));
   const result = core[designer](text, { ...(options ?? {}), onProgress: progress.report });
   progress.flush();
   return withSurfaces(core, result, options?.source);
+}
+
+/** Live design: a snapshot's surfaces are worth a few ms of the search at most four times a second. */
+const LIVE_INTERVAL_MS = 250;
+
+/**
+ * Live design (issue 11): progress values carry `snapshot` (the deepest node so far) whenever it
+ * grew. For a voxel design the worker turns it into `{ depth, document, surfaces }` (the shape's
+ * document with the node's labels, and the core's part surfaces of it: parts 1..depth placed,
+ * part depth + 1 the remainder), at most every LIVE_INTERVAL_MS; a snapshot held back rides on a
+ * later value. Plate and frame snapshots are `{ depth, placed }` (input indices): the page
+ * recolours what it already draws, so they pass as they are.
+ */
+function createLiveView(core, shapeText, source = '<input>') {
+  let shape = null;
+  let held = null;
+  let lastAt = -Infinity;
+  return (value) => {
+    if (!shapeText || !(value?.snapshot || held)) return value;
+    const { snapshot = held, ...rest } = value;
+    if (performance.now() - lastAt < LIVE_INTERVAL_MS) {
+      held = snapshot;
+      return rest;
+    }
+    held = null;
+    lastAt = performance.now();
+    shape ??= core.parseDocument(shapeText, { source });
+    const document = { ...shape, voxel: { ...shape.voxel, labels: Array.from(snapshot.labels) } };
+    const surfaces = core.partSurfaces(document, { source: `${source} (deepest node)` });
+    return { ...rest, snapshot: { depth: snapshot.depth, document, surfaces } };
+  };
+}
+
+function postProgress(id, value) {
+  self.postMessage({ type: 'progress', id, value }, surfaceBuffers(value?.snapshot?.surfaces ?? null));
 }
 
 function openSession() {
