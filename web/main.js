@@ -12,7 +12,7 @@
 // body[data-webgl] = on | off, body[data-core] = starting | ready (the worker), #verdict (text,
 // data-verdict: the core's verdict, or 'shape' for a one-part voxel shape to design from;
 // data-key), #still-showing (after a failed load: what the view still shows), #method-note (the graph test is not exact for this assembly) and #error;
-// design-panel.js, mesh-input.js, export-panel.js and offline.js add their own.
+// design-panel.js, mesh-input.js, export-panel.js, parts-panel.js and offline.js add their own.
 
 import { byId, element, fitSelectToValue } from './dom.js';
 import { AssemblyView, createPlaybackControls } from './view.js';
@@ -23,6 +23,7 @@ import { readUrlState, writeUrlState } from './url-state.js';
 import { createMeshInput, isMeshName } from './mesh-input.js';
 import { createExportPanel } from './export-panel.js';
 import { keepForOffline, registerServiceWorker } from './offline.js';
+import { createPartsPanel } from './parts-panel.js';
 
 // ---------------------------------------------------------------------------------------------
 // Configuration
@@ -104,6 +105,8 @@ const ui = {
   disassemblyStep: byId('disassembly-step'),
   viewerControls: byId('viewer-controls'),
   disassemblyPlay: byId('disassembly-play'),
+  disassemblyPrev: byId('disassembly-prev'),
+  disassemblyNext: byId('disassembly-next'),
   disassemblySpeed: byId('disassembly-speed'),
   disassemblyLoop: byId('disassembly-loop'),
   disassemblyMoves: byId('disassembly-moves'),
@@ -142,13 +145,28 @@ function hideError() {
 const view = new AssemblyView(ui.viewport, {
   notice: ui.viewerNotice,
   onWebGL: (on) => { document.body.dataset.webgl = on ? 'on' : 'off'; },
+  // A click on a part selects it in the part list (and the graphs); on empty space, nothing.
+  onPartClick: (partId) => partsPanel.select(partId),
+  // Removed parts lie in a tray beside the assembly; the leaving part's way out is drawn.
+  tray: true,
+  arrows: true,
 });
+// The part list: selection shared by the list, the view and the blocking graphs; hide, isolate.
+const partsPanel = createPartsPanel({
+  list: byId('part-list'),
+  summary: byId('parts-summary'),
+  isolateButton: byId('part-isolate'),
+  hideButton: byId('part-hide'),
+  showAllButton: byId('part-show-all'),
+}, { view, graphs: byId('dbg-panel') });
 // Play/pause, slider, speed, loop and explode (view.js); the removal shown is marked in the report.
 const playback = createPlaybackControls(view, {
   range: ui.disassemblyRange,
   label: ui.disassemblyStep,
   moves: ui.disassemblyMoves,
   playButton: ui.disassemblyPlay,
+  previousButton: ui.disassemblyPrev,
+  nextButton: ui.disassemblyNext,
   speedSelect: ui.disassemblySpeed,
   loopCheckbox: ui.disassemblyLoop,
   explodedRange: ui.explodedRange,
@@ -157,6 +175,13 @@ const playback = createPlaybackControls(view, {
 // A small read-only handle for tests and debugging in the console.
 window.__desiaView = {
   partPositions: () => view.partPositions(),
+  trayPositions: () => view.trayPositions(),
+  assemblyBounds: () => view.assemblyBounds(),
+  partBounds: (partId) => view.partBounds(partId),
+  get stepsPerSecond() { return playback.player.stepsPerSecond; },
+  screenPoint: (partId) => view.screenPoint(partId),
+  partAt: (x, y) => view.partAt(x, y),
+  get selected() { return view.selectedPart; },
   framing: () => view.framing(),
   get step() { return view.disassemblyStep; },
   get steps() { return playback.player.length; },
@@ -256,6 +281,7 @@ function present(assembly) {
   renderPlan(document_);
   view.applyReport(played, { keepCamera });
   if (emphasis) view.setEmphasis(emphasis);
+  partsPanel.setAssembly(name, document_, played);
   setUpDisassemblySlider(view.available ? played.disassembly : null);
 }
 
@@ -307,6 +333,7 @@ async function loadAssembly(name, readText, { origin = name, asInput = true } = 
     } else {
       setCurrent(null);
       view.clear();
+      partsPanel.clear();
       setUpDisassemblySlider(null);
       resetReport('No result');
       showError(message);

@@ -13,6 +13,9 @@
 //
 // For tests the container gets data-parts (meshes drawn), data-step (the disassembly step shown)
 // and data-exploded (the explode factor); AssemblyView.partPositions() reads the parts back.
+// With the playground's playback aids (options `tray` and `arrows`): data-visible (meshes shown,
+// the tray included), data-tray (removed parts laid out in the tray), data-arrow (the part whose
+// way out is drawn), data-selected and data-hidden (the part list's selection and hidden parts).
 
 import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
@@ -150,6 +153,19 @@ const KEY_EDGE_COLOR = 0xfff3c4;
 const CUT_POINT_COLOR = new THREE.Color(0xff5a3c);
 const CUT_POINT_EDGE_COLOR = 0xffd2c8;
 const MOVING_EDGE_COLOR = 0xffffff;
+/** The selected part (part list, click, graph): a cool glow and edges no part colour has. */
+const SELECTION_COLOR = new THREE.Color(0x4fd1ff);
+const SELECTION_GLOW = 0.4;
+const NO_GLOW = new THREE.Color(0);
+/** The arrows of the part leaving: light, drawn over the parts so they show inside the assembly. */
+const ARROW_COLOR = 0xfff3c4;
+/**
+ * With the tray, a removal step is its path (and run-out) for this share of the step, then the
+ * flight over the assembly to the part's place in the tray.
+ */
+const TRAY_PATH_SHARE = 0.6;
+/** A pointer that moves less than this between press and release is a click, not an orbit. */
+const CLICK_SLOP_PX = 5;
 /** Step by step: the new part's edges and glow, and how see-through the remainder is. */
 const HIGHLIGHT_EDGE_COLOR = 0xffffff;
 const HIGHLIGHT_GLOW = 0.45;
@@ -167,6 +183,8 @@ const STEP_EXTENT_FRACTION = 0.5;
 const RUN_OUT_EXTENT_FRACTION = 0.25;
 /** Grid cells per largest extent for documents in their own units (a voxel grid has 1-unit cells). */
 const GRID_CELLS_PER_EXTENT = 10;
+/** The size of the way-out arrows for documents in their own units (a voxel for voxel puzzles). */
+const ARROW_EXTENT_FRACTION = 0.05;
 
 export class AssemblyView {
   #container;
@@ -194,18 +212,41 @@ export class AssemblyView {
   #frameRequest = 0;
   #raycaster = new THREE.Raycaster();
   #hoverLabel = null;
+  /** The part list's state: the selected part (or null) and the parts the user hid. */
+  #selected = null;
+  #hiddenParts = new Set();
+  #onPartClick;
+  #pointerDown = null;
+  /** Playback aids: removed parts laid out in a tray (partId -> translation), arrows of the way out. */
+  #trayEnabled = false;
+  #arrowsEnabled = false;
+  #traySlots = new Map();
+  #trayBox = null;
+  #removalOrder = [];
+  #arrow = new THREE.Group();
+  #arrowKey = '';
+  /** What show() measured, to size the grid again once the tray is known. */
+  #bounds = null;
   #resizeObserver = null;
   #disposed = false;
 
   /**
    * `container` receives the canvas (and must have a size). Options: `notice` (an element for
    * messages such as "no WebGL"; one is created in the container when missing), `onWebGL(on)`
-   * (told once whether WebGL works), `background` (a CSS colour).
+   * (told once whether WebGL works), `background` (a CSS colour), `onPartClick(partId)` (a
+   * click, not a drag, on the view: the part under the pointer, or null on empty space),
+   * `tray` (removed parts are laid out beside the assembly instead of vanishing) and `arrows`
+   * (the way out of the part leaving is drawn as arrows).
    * A second argument that is an element is taken as `notice`.
    */
   constructor(container, options = {}) {
-    const { notice = null, onWebGL = () => {}, background = 0x1b1e24 } = options instanceof Element ? { notice: options } : options;
+    const {
+      notice = null, onWebGL = () => {}, background = 0x1b1e24, onPartClick = null, tray = false, arrows = false,
+    } = options instanceof Element ? { notice: options } : options;
     this.#container = container;
+    this.#onPartClick = onPartClick;
+    this.#trayEnabled = Boolean(tray);
+    this.#arrowsEnabled = Boolean(arrows);
     const ownerDocument = container.ownerDocument;
     this.#notice = notice ?? this.#makeNotice(ownerDocument);
     try {
@@ -238,6 +279,10 @@ export class AssemblyView {
     this.#controls.addEventListener('change', () => this.requestRender());
     this.#renderer.domElement.addEventListener('pointermove', (event) => this.#updateHover(event));
     this.#renderer.domElement.addEventListener('pointerleave', () => { this.#hoverLabel.hidden = true; });
+    this.#renderer.domElement.addEventListener('pointerdown', (event) => {
+      this.#pointerDown = event.button === 0 ? { x: event.clientX, y: event.clientY } : null;
+    });
+    this.#renderer.domElement.addEventListener('pointerup', (event) => this.#handleClick(event));
     this.#renderer.domElement.addEventListener('dblclick', () => this.fit());
     this.#resizeObserver = new ResizeObserver(() => this.#resize());
     this.#resizeObserver.observe(container);
@@ -306,8 +351,13 @@ export class AssemblyView {
     }
     const extent = Math.max(max[0] - min[0], max[1] - min[1], max[2] - min[2]);
     this.#scale = voxel
-      ? { step: 1, runOut: RUN_OUT_VOXELS, cell: 1 }
-      : { step: extent * STEP_EXTENT_FRACTION, runOut: extent * RUN_OUT_EXTENT_FRACTION, cell: niceStep(extent / GRID_CELLS_PER_EXTENT) };
+      ? { step: 1, runOut: RUN_OUT_VOXELS, cell: 1, arrow: 1 }
+      : {
+        step: extent * STEP_EXTENT_FRACTION,
+        runOut: extent * RUN_OUT_EXTENT_FRACTION,
+        cell: niceStep(extent / GRID_CELLS_PER_EXTENT),
+        arrow: extent * ARROW_EXTENT_FRACTION,
+      };
     this.#partNoun = document_?.kind === 'plate' ? 'plate' : document_?.kind === 'frame' ? 'beam' : 'part';
     for (const plate of Array.isArray(document_?.plates) ? document_.plates : []) {
       if (Number.isInteger(plate?.id) && typeof plate.name === 'string' && plate.name) this.#partNames.set(plate.id, plate.name);
@@ -326,6 +376,8 @@ export class AssemblyView {
     this.#content.position.copy(offset);
     this.#floorY = min[1] + offset.y;
     this.#addParts(surfaces, centroids, min, max);
+    this.#content.add(this.#arrow);
+    this.#bounds = { min, max, offset };
     this.#addGrid(min, max, offset);
     this.#container.dataset.parts = String(this.#meshes.size);
     this.#updatePositions();
@@ -355,7 +407,7 @@ export class AssemblyView {
         mesh.userData.baseOpacity = GHOST_OPACITY;
         mesh.userData.baseEdgeOpacity = GHOST_EDGE_OPACITY;
       } else if (glowing.has(partId)) {
-        mesh.material.emissive.copy(mesh.material.color).multiplyScalar(HIGHLIGHT_GLOW);
+        mesh.userData.emissive = mesh.material.color.clone().multiplyScalar(HIGHLIGHT_GLOW);
         mesh.userData.edgeColor = HIGHLIGHT_EDGE_COLOR;
         mesh.userData.baseEdgeOpacity = 1;
       }
@@ -399,11 +451,26 @@ export class AssemblyView {
     }
   }
 
-  #addGrid(min, max, offset) {
+  /** The floor grid under the assembly (and under the tray, `trayBox` in the content's frame). */
+  #addGrid(min, max, offset, trayBox = null) {
     const { cell } = this.#scale;
+    const old = this.#scene.getObjectByName('grid');
+    if (old) {
+      old.geometry.dispose();
+      old.material.dispose();
+      this.#scene.remove(old);
+    }
     const extent = (Math.max(max[0] - min[0], max[2] - min[2]) * (1 + EXPLODE_SCALE)) / cell;
     // An even number of cells keeps grid lines on whole cells, i.e. on voxel boundaries.
-    const divisions = 2 * Math.ceil((extent + 4) / 2);
+    let divisions = 2 * Math.ceil((extent + 4) / 2);
+    if (trayBox) {
+      // The grid stays centred on the assembly, so it reaches as far as the tray's farthest corner.
+      const reach = Math.max(
+        Math.abs(trayBox.min.x + offset.x), Math.abs(trayBox.max.x + offset.x),
+        Math.abs(trayBox.min.z + offset.z), Math.abs(trayBox.max.z + offset.z),
+      );
+      divisions = Math.max(divisions, 2 * Math.ceil(reach / cell + 2));
+    }
     const grid = new THREE.GridHelper(divisions * cell, divisions, 0x59606e, 0x353a44);
     grid.name = 'grid';
     grid.position.set(0, min[1] + offset.y - 0.001 * cell, 0);
@@ -462,7 +529,7 @@ export class AssemblyView {
       const edges = mesh.children[0].material;
       const color = isKey ? KEY_COLOR : (isCut ? CUT_POINT_COLOR : null);
       material.color.copy(color ?? partColor(partId));
-      material.emissive.copy(color ?? new THREE.Color(0)).multiplyScalar(color ? 0.35 : 0);
+      mesh.userData.emissive = (color ?? new THREE.Color(0)).clone().multiplyScalar(color ? 0.35 : 0);
       mesh.userData.edgeColor = isKey ? KEY_EDGE_COLOR : (isCut ? CUT_POINT_EDGE_COLOR : EDGE_COLOR);
       edges.color.set(mesh.userData.edgeColor);
       mesh.userData.baseEdgeOpacity = dimmed ? 0.12 : (color ? 1 : 0.55);
@@ -470,6 +537,8 @@ export class AssemblyView {
       material.needsUpdate = true;
     }
     this.#motions = removalMotions(report ?? {}, this.#scale);
+    this.#removalOrder = [...(report?.disassembly?.order ?? [])];
+    this.#layOutTray();
     this.setDisassemblyStep(0);
     // Parts leaving along their paths should stay in the picture: frame their way out too.
     if (!keepCamera && this.#motions.size > 0 && this.#meshes.size > 0) this.#fitCamera(this.#framingBox());
@@ -498,35 +567,150 @@ export class AssemblyView {
     this.#reframe();
   }
 
-  /** Every mesh at its exploded position plus its removal motion; the moving part outlined. */
+  /**
+   * Every mesh at its exploded position plus its removal motion (or in the tray once removed);
+   * the moving part and the selected part outlined, hidden parts left out, the arrows updated.
+   */
   #updatePositions() {
     if (!this.available) return;
-    const moving = new THREE.Vector3();
-    for (const [partId, mesh] of this.#meshes) {
-      const motion = this.#motions.get(partId);
-      let isMoving = false;
-      let fade = 1;
-      if (motion) {
-        const progress = THREE.MathUtils.clamp(this.#step - motion.index, 0, 1);
-        mesh.visible = progress < 1 || motion.waypoints.length === 1;
-        moving.copy(pointAlong(motion.waypoints, progress));
-        isMoving = progress > 0 && progress < 1;
-        // Past the end of its path the part runs out and fades away.
-        if (progress > motion.fadeFrom && motion.fadeFrom < 1) fade = 1 - (progress - motion.fadeFrom) / (1 - motion.fadeFrom);
-      } else {
-        mesh.visible = true;
-        moving.set(0, 0, 0);
-      }
-      this.#setFade(mesh, fade);
-      mesh.position.copy(this.#explodeOffsets.get(partId)).multiplyScalar(this.#exploded).add(moving);
-      const edges = mesh.children[0].material;
-      edges.color.set(isMoving ? MOVING_EDGE_COLOR : mesh.userData.edgeColor);
-    }
     // Exploding moves the lower parts down: lift everything so the lowest stays on the floor.
-    this.#lift.position.y = Math.max(this.#floorY - this.#explodedBox().min.y, 0);
-    this.#container.dataset.step = this.#step.toFixed(2);
-    this.#container.dataset.exploded = this.#exploded.toFixed(2);
+    const assembly = this.#explodedBox();
+    const lift = Math.max(this.#floorY - assembly.min.y, 0);
+    this.#lift.position.y = lift;
+    const top = assembly.max.y - this.#content.position.y;
+    let visible = 0;
+    let inTray = 0;
+    for (const [partId, mesh] of this.#meshes) {
+      const placement = this.#placement(partId, mesh, lift, top);
+      mesh.visible = placement.visible && !this.#hiddenParts.has(partId);
+      mesh.userData.inTray = placement.inTray;
+      mesh.position.copy(placement.position);
+      this.#setFade(mesh, placement.fade);
+      const selected = partId === this.#selected;
+      mesh.material.emissive.copy(selected ? SELECTION_COLOR : (mesh.userData.emissive ?? NO_GLOW)).multiplyScalar(selected ? SELECTION_GLOW : 1);
+      const edges = mesh.children[0].material;
+      edges.color.set(selected ? SELECTION_COLOR : (placement.moving ? MOVING_EDGE_COLOR : mesh.userData.edgeColor));
+      if (selected) edges.opacity = 1;
+      if (mesh.visible) visible += 1;
+      if (placement.inTray) inTray += 1;
+    }
+    this.#updateArrow();
+    Object.assign(this.#container.dataset, {
+      step: this.#step.toFixed(2),
+      exploded: this.#exploded.toFixed(2),
+      visible: String(visible),
+      tray: String(inTray),
+      selected: this.#selected === null ? '' : String(this.#selected),
+      hidden: [...this.#hiddenParts].sort((a, b) => a - b).join(' '),
+    });
     this.requestRender();
+  }
+
+  /**
+   * Where part `partId` is at the current step, as the translation of its mesh: { position,
+   * visible, fade, moving, inTray }. Without a tray a removed part runs out, fades and vanishes;
+   * with one it follows its path, then flies over the assembly (`top`: its highest point in the
+   * content's frame) to its place in the tray, on the floor (`lift` taken back).
+   */
+  #placement(partId, mesh, lift, top) {
+    const exploded = this.#explodeOffsets.get(partId).clone().multiplyScalar(this.#exploded);
+    const motion = this.#motions.get(partId);
+    if (!motion) return { position: exploded, visible: true, fade: 1, moving: false, inTray: false };
+    const progress = THREE.MathUtils.clamp(this.#step - motion.index, 0, 1);
+    const slot = this.#traySlots.get(partId);
+    if (!slot) {
+      // Past the end of its path the part runs out and fades away.
+      const fade = progress > motion.fadeFrom && motion.fadeFrom < 1 ? 1 - (progress - motion.fadeFrom) / (1 - motion.fadeFrom) : 1;
+      return {
+        position: exploded.add(pointAlong(motion.waypoints, progress)),
+        visible: progress < 1 || motion.waypoints.length === 1,
+        fade,
+        moving: progress > 0 && progress < 1,
+        inTray: false,
+      };
+    }
+    const resting = slot.clone().setY(slot.y - lift);
+    resting.x += this.#trayShift();
+    if (progress >= 1) return { position: resting, visible: true, fade: 1, moving: false, inTray: true };
+    if (progress <= TRAY_PATH_SHARE) {
+      return { position: exploded.add(pointAlong(motion.waypoints, progress / TRAY_PATH_SHARE)), visible: true, fade: 1, moving: progress > 0, inTray: false };
+    }
+    // Up from where its way out ended, across above everything, down into the tray.
+    const from = exploded.add(motion.waypoints[motion.waypoints.length - 1]);
+    const above = Math.max(from.y, resting.y, top - mesh.geometry.boundingBox.min.y + this.#scale.cell);
+    const flight = [from, new THREE.Vector3(from.x, above, from.z), new THREE.Vector3(resting.x, above, resting.z), resting];
+    return { position: pointAlong(flight, (progress - TRAY_PATH_SHARE) / (1 - TRAY_PATH_SHARE)), visible: true, fade: 1, moving: true, inTray: false };
+  }
+
+  /**
+   * The tray: every part that leaves gets a place on the floor beside the assembly, in removal
+   * order, in rows (layOutTray). Only where it lands is computed here; the moves are the core's.
+   */
+  #layOutTray() {
+    this.#traySlots = new Map();
+    this.#trayBox = null;
+    if (!this.#trayEnabled || !this.#bounds) return;
+    const leaving = this.#removalOrder
+      .filter((partId) => this.#meshes.has(partId) && (this.#motions.get(partId)?.waypoints.length ?? 0) > 1)
+      .map((partId) => ({ partId, box: this.#meshes.get(partId).geometry.boundingBox }));
+    if (leaving.length === 0) return;
+    const { min, max, offset } = this.#bounds;
+    const tray = layOutTray(leaving, { min, max }, this.#scale.cell);
+    this.#traySlots = tray.slots;
+    this.#trayBox = tray.box;
+    // The grid reaches the tray where the fully exploded assembly pushes it.
+    this.#addGrid(min, max, offset, tray.box.clone().translate(new THREE.Vector3(this.#trayShift(1), 0, 0)));
+  }
+
+  /**
+   * How far the tray moves out (+x) at explode factor `exploded`, so that the exploded assembly
+   * never reaches it: as far as the assembly's half width grows, in whole grid cells.
+   */
+  #trayShift(exploded = this.#exploded) {
+    if (!this.#bounds) return 0;
+    const halfWidth = (this.#bounds.max[0] - this.#bounds.min[0]) / 2;
+    return Math.ceil((halfWidth * EXPLODE_SCALE * exploded) / this.#scale.cell - 1e-9) * this.#scale.cell;
+  }
+
+  /**
+   * Arrows along the way out of the part leaving now (or next, between two removals): a shaft and
+   * a head per move of its path from the core, the run-out included, from the part's centre.
+   */
+  #updateArrow() {
+    const index = Math.floor(this.#step);
+    const partId = this.#arrowsEnabled && this.#step > 0 ? this.#removalOrder[index] : undefined;
+    const motion = partId === undefined ? null : this.#motions.get(partId);
+    const mesh = this.#meshes.get(partId);
+    const show = Boolean(motion && mesh && motion.waypoints.length > 1 && !this.#hiddenParts.has(partId));
+    const key = show ? `${partId}@${this.#exploded}` : '';
+    this.#container.dataset.arrow = show ? String(partId) : '';
+    if (key === this.#arrowKey) return;
+    this.#arrowKey = key;
+    disposeChildren(this.#arrow);
+    if (!show) return;
+    const start = mesh.geometry.boundingBox.getCenter(new THREE.Vector3())
+      .add(this.#explodeOffsets.get(partId).clone().multiplyScalar(this.#exploded));
+    const points = motion.waypoints.map((point) => start.clone().add(point));
+    const size = this.#scale.arrow ?? 1;
+    const material = new THREE.MeshBasicMaterial({ color: ARROW_COLOR, depthTest: false, transparent: true, opacity: 0.9 });
+    for (let i = 1; i < points.length; i += 1) {
+      const direction = points[i].clone().sub(points[i - 1]);
+      const length = direction.length();
+      if (!(length > 0)) continue;
+      direction.divideScalar(length);
+      const headLength = Math.min(0.7 * size, 0.6 * length);
+      const turn = new THREE.Quaternion().setFromUnitVectors(new THREE.Vector3(0, 1, 0), direction);
+      const shaft = new THREE.Mesh(new THREE.CylinderGeometry(0.09 * size, 0.09 * size, length - headLength, 8), material);
+      shaft.position.copy(points[i - 1]).addScaledVector(direction, (length - headLength) / 2);
+      shaft.quaternion.copy(turn);
+      const head = new THREE.Mesh(new THREE.ConeGeometry(0.3 * size, headLength, 12), material);
+      head.position.copy(points[i]).addScaledVector(direction, -headLength / 2);
+      head.quaternion.copy(turn);
+      for (const piece of [shaft, head]) {
+        piece.renderOrder = 10;
+        this.#arrow.add(piece);
+      }
+    }
   }
 
   /** Multiplies the part's own opacity (1, or dimmed for a witness) by `fade`. */
@@ -555,7 +739,10 @@ export class AssemblyView {
         .translate(motion.pathEnd);
       box.union(partBox);
     }
-    return box.translate(new THREE.Vector3(0, this.#lift.position.y, 0));
+    box.translate(new THREE.Vector3(0, this.#lift.position.y, 0));
+    // The tray lies on the floor: what is removed stays in the picture.
+    if (this.#trayBox) box.union(this.#trayBox.clone().translate(this.#content.position).translate(new THREE.Vector3(this.#trayShift(), 0, 0)));
+    return box;
   }
 
   /** The bounds of all parts at the current explode factor, before the lift (removal motions left out). */
@@ -601,12 +788,87 @@ export class AssemblyView {
     };
   }
 
-  /** Positions of the visible parts (for tests and debugging): { partId: [x, y, z] } in scene units. */
+  /**
+   * Positions of the visible parts still in the assembly or on their way out (for tests and
+   * debugging; removed parts in the tray are trayPositions()): { partId: [x, y, z] } in scene units.
+   */
   partPositions() {
+    return this.#positions((mesh) => mesh.visible && !mesh.userData.inTray);
+  }
+
+  /** Positions of the removed parts lying in the tray, as partPositions() gives them. */
+  trayPositions() {
+    return this.#positions((mesh) => mesh.visible && mesh.userData.inTray);
+  }
+
+  /** The bounds of the parts as assembled, in scene units: { min, max } (for tests: the tray lies outside). */
+  assemblyBounds() {
+    const box = this.#explodedBox().translate(new THREE.Vector3(0, this.#lift.position.y, 0));
+    return { min: box.min.toArray(), max: box.max.toArray() };
+  }
+
+  /** Part `partId`'s bounds where it is drawn now, in scene units: { min, max } (null when not drawn). */
+  partBounds(partId) {
+    const mesh = this.#meshes.get(partId);
+    if (!this.available || !mesh?.visible) return null;
+    mesh.updateWorldMatrix(true, false);
+    const box = mesh.geometry.boundingBox.clone().applyMatrix4(mesh.matrixWorld);
+    return { min: box.min.toArray(), max: box.max.toArray() };
+  }
+
+  /** The part ids drawn, ascending. */
+  get partIds() {
+    return [...this.#meshes.keys()];
+  }
+
+  get selectedPart() {
+    return this.#selected;
+  }
+
+  /** Selects part `partId` (null: none): it glows and its edges are drawn in the selection colour. */
+  setSelection(partId) {
+    this.#selected = Number.isInteger(partId) ? partId : null;
+    if (this.available) this.#updatePositions();
+  }
+
+  /** The parts not to draw (the part list's Hide and Isolate); all others are shown. */
+  setHiddenParts(partIds) {
+    this.#hiddenParts = new Set([...(partIds ?? [])].filter((partId) => this.#meshes.has(partId)));
+    if (this.available) this.#updatePositions();
+  }
+
+  /** The part drawn at client coordinates (x, y), or null: what a click there would pick. */
+  partAt(clientX, clientY) {
+    if (!this.available) return null;
+    const bounds = this.#renderer.domElement.getBoundingClientRect();
+    if (!(bounds.width > 0 && bounds.height > 0)) return null;
+    const pointer = new THREE.Vector2(
+      ((clientX - bounds.left) / bounds.width) * 2 - 1,
+      -((clientY - bounds.top) / bounds.height) * 2 + 1,
+    );
+    this.#raycaster.setFromCamera(pointer, this.#camera);
+    // See-through parts (a witness's others, a session's remainder) let the pointer through.
+    const hit = this.#raycaster
+      .intersectObjects([...this.#meshes.values()], false)
+      .find((candidate) => candidate.object.visible && (candidate.object.userData.baseOpacity ?? 1) === 1);
+    return hit ? hit.object.userData.partId : null;
+  }
+
+  /** Where the centre of part `partId`'s bounding box is on the screen, in client coordinates (or null). */
+  screenPoint(partId) {
+    const mesh = this.#meshes.get(partId);
+    if (!this.available || !mesh?.visible) return null;
+    mesh.updateWorldMatrix(true, false);
+    const centre = mesh.geometry.boundingBox.getCenter(new THREE.Vector3()).applyMatrix4(mesh.matrixWorld).project(this.#camera);
+    const bounds = this.#renderer.domElement.getBoundingClientRect();
+    return { x: bounds.left + ((centre.x + 1) / 2) * bounds.width, y: bounds.top + ((1 - centre.y) / 2) * bounds.height };
+  }
+
+  #positions(include) {
     const positions = {};
     const world = new THREE.Vector3();
     for (const [partId, mesh] of this.#meshes) {
-      if (!mesh.visible) continue;
+      if (!include(mesh)) continue;
       mesh.getWorldPosition(world);
       positions[partId] = world.toArray().map((value) => Math.round(value * 1000) / 1000);
     }
@@ -627,6 +889,14 @@ export class AssemblyView {
     this.#explodeOffsets.clear();
     this.#keyId = null;
     this.#cutPoints = new Set();
+    // The selection and the hidden parts stay (they are the part list's, which sets them again
+    // for every assembly it lists; a live design redraws the view many times in between).
+    this.#traySlots = new Map();
+    this.#trayBox = null;
+    this.#removalOrder = [];
+    disposeChildren(this.#arrow);
+    this.#arrowKey = '';
+    this.#bounds = null;
     this.#partNames.clear();
     this.#partNoun = 'part';
     this.#step = 0;
@@ -643,6 +913,7 @@ export class AssemblyView {
     this.#container.dataset.parts = '0';
     this.#container.dataset.highlight = '';
     this.#container.dataset.ghost = '';
+    Object.assign(this.#container.dataset, { visible: '0', tray: '0', arrow: '', hover: '' });
     this.requestRender();
   }
 
@@ -682,23 +953,76 @@ export class AssemblyView {
   }
 
   #updateHover(event) {
-    const bounds = this.#renderer.domElement.getBoundingClientRect();
-    const pointer = new THREE.Vector2(
-      ((event.clientX - bounds.left) / bounds.width) * 2 - 1,
-      -((event.clientY - bounds.top) / bounds.height) * 2 + 1,
-    );
-    this.#raycaster.setFromCamera(pointer, this.#camera);
-    const hit = this.#raycaster
-      .intersectObjects([...this.#meshes.values()], false)
-      .find((candidate) => candidate.object.visible && (candidate.object.userData.baseOpacity ?? 1) === 1);
-    this.#hoverLabel.hidden = !hit;
-    if (hit) {
-      const partId = hit.object.userData.partId;
-      const name = this.#partNames.get(partId);
-      const role = partId === this.#keyId ? ' (key)' : (this.#cutPoints.has(partId) ? ' (cut point)' : '');
-      this.#hoverLabel.textContent = `${this.#partNoun} ${partId}${role}${name ? `: ${name}` : ''}`;
-    }
+    const partId = this.partAt(event.clientX, event.clientY);
+    this.#hoverLabel.hidden = partId === null;
+    this.#container.dataset.hover = partId === null ? '' : String(partId);
+    if (partId !== null) this.#hoverLabel.textContent = this.describePart(partId);
   }
+
+  /** 'part 3 (key)', 'plate 2: left side', 'beam 5: input beam 7': what the hover label says. */
+  describePart(partId) {
+    const name = this.#partNames.get(partId);
+    const role = partId === this.#keyId ? ' (key)' : (this.#cutPoints.has(partId) ? ' (cut point)' : '');
+    return `${this.#partNoun} ${partId}${role}${name ? `: ${name}` : ''}`;
+  }
+
+  /** A click (press and release in about one place, so not an orbit) picks the part under it. */
+  #handleClick(event) {
+    const down = this.#pointerDown;
+    this.#pointerDown = null;
+    if (!down || !this.#onPartClick || this.#meshes.size === 0) return;
+    if (Math.hypot(event.clientX - down.x, event.clientY - down.y) > CLICK_SLOP_PX) return;
+    this.#onPartClick(this.partAt(event.clientX, event.clientY));
+  }
+}
+
+/** Removes and frees the meshes of `group` (the arrows). */
+function disposeChildren(group) {
+  const materials = new Set();
+  for (const child of group.children) {
+    child.geometry?.dispose();
+    if (child.material) materials.add(child.material);
+  }
+  for (const material of materials) material.dispose();
+  group.clear();
+}
+
+/**
+ * Places the removed parts (`parts`: { partId, box } in removal order, boxes in the content's
+ * frame) on the floor beside the assembly (`assembly`: { min, max } arrays): rows running along
+ * +x, starting past where the exploded assembly can reach, the next row behind (+z); the rows
+ * are about as long as the tray is deep. Places snap to `cell` (voxels stay on the grid).
+ * Returns { slots: Map(partId -> translation of the part), box: the tray's bounds }.
+ */
+function layOutTray(parts, assembly, cell) {
+  const snapUp = (value) => Math.ceil(value / cell - 1e-9) * cell;
+  const gap = cell;
+  const sizes = parts.map(({ box }) => box.getSize(new THREE.Vector3()));
+  const area = sizes.reduce((sum, size) => sum + (snapUp(size.x) + gap) * (snapUp(size.z) + gap), 0);
+  const rowLength = Math.max(Math.sqrt(area) * 1.2, ...sizes.map((size) => snapUp(size.x)));
+  const centreX = (assembly.min[0] + assembly.max[0]) / 2;
+  const halfWidth = (assembly.max[0] - assembly.min[0]) / 2;
+  // Just past the assembly (exploding it moves the tray out as well: AssemblyView.#trayShift).
+  const startX = Math.floor(centreX / cell) * cell + snapUp(halfWidth) + 2 * gap;
+  let x = startX;
+  let z = Math.floor(assembly.min[2] / cell) * cell;
+  let rowDepth = 0;
+  const slots = new Map();
+  const box = new THREE.Box3();
+  parts.forEach(({ partId, box: partBox }, index) => {
+    const size = sizes[index];
+    if (x > startX && x + size.x > startX + rowLength) {
+      x = startX;
+      z += snapUp(rowDepth) + gap;
+      rowDepth = 0;
+    }
+    const translation = new THREE.Vector3(x - partBox.min.x, assembly.min[1] - partBox.min.y, z - partBox.min.z);
+    slots.set(partId, translation);
+    box.union(partBox.clone().translate(translation));
+    x += snapUp(size.x) + gap;
+    rowDepth = Math.max(rowDepth, size.z);
+  });
+  return { slots, box };
 }
 
 /**
@@ -816,8 +1140,12 @@ export function withPlannedRemoval(report, document_) {
 // ---------------------------------------------------------------------------------------------
 // Playback: a clock that moves the disassembly step, and the controls that drive it.
 
-/** Steps per second at speed 1: one part leaves per second. */
+/** Steps per second at speed 1: one part leaves per second... */
 const STEPS_PER_SECOND = 1;
+/** ...unless that would take longer than this: a 100-part bunny plays in 20 s, not 100. */
+const MAX_PLAY_SECONDS = 20;
+/** Previous / next step animate one removal at least this fast (steps per second). */
+const MIN_STEP_RATE = 1.5;
 /** A looping animation rests this long when fully assembled or fully taken apart. */
 const LOOP_PAUSE_SECONDS = 0.9;
 /** A frame after a long stall (hidden tab) does not jump the animation ahead. */
@@ -839,6 +1167,8 @@ export class DisassemblyPlayer {
   #lastTime = 0;
   #onStep;
   #onPlayingChange;
+  /** Previous / next: the whole step to stop at, or null while playing freely. */
+  #target = null;
   speed = 1;
   loop = false;
 
@@ -859,6 +1189,11 @@ export class DisassemblyPlayer {
     return this.#playing;
   }
 
+  /** Steps per second at speed 1: one a second, more for many parts (the whole within MAX_PLAY_SECONDS). */
+  get stepsPerSecond() {
+    return Math.max(STEPS_PER_SECOND, this.#length / MAX_PLAY_SECONDS);
+  }
+
   /** A new disassembly of `length` steps: back to assembled, stopped. */
   setLength(length) {
     this.pause();
@@ -872,6 +1207,29 @@ export class DisassemblyPlayer {
     this.#onStep(this.#step);
   }
 
+  /** Animates to the next whole step (one more part removed). */
+  next() {
+    this.stepTo(Math.floor(this.#step + 1e-6) + 1);
+  }
+
+  /** Animates back to the previous whole step (the last removed part put back). */
+  previous() {
+    this.stepTo(Math.ceil(this.#step - 1e-6) - 1);
+  }
+
+  /** Animates to whole step `target` and stops there (at once when motion is to be reduced). */
+  stepTo(target) {
+    const clamped = Math.min(Math.max(Math.round(Number(target) || 0), 0), this.#length);
+    this.pause();
+    if (clamped === this.#step) return;
+    if (globalThis.matchMedia?.('(prefers-reduced-motion: reduce)').matches) {
+      this.seek(clamped);
+      return;
+    }
+    this.#target = clamped;
+    this.#start();
+  }
+
   play() {
     if (this.#playing || this.#length <= 0) return;
     // Play from the end means: start again (or, looping, go back the way it came).
@@ -880,6 +1238,11 @@ export class DisassemblyPlayer {
       else this.seek(0);
     }
     if (this.#step <= 0) this.#direction = 1;
+    this.#target = null;
+    this.#start();
+  }
+
+  #start() {
     this.#playing = true;
     this.#restSeconds = 0;
     this.#lastTime = 0;
@@ -890,6 +1253,7 @@ export class DisassemblyPlayer {
   pause() {
     if (!this.#playing) return;
     this.#playing = false;
+    this.#target = null;
     cancelAnimationFrame(this.#frameRequest);
     this.#frameRequest = 0;
     this.#onPlayingChange(false);
@@ -910,10 +1274,20 @@ export class DisassemblyPlayer {
     if (!this.#playing) return;
     const seconds = this.#lastTime ? Math.min((time - this.#lastTime) / 1000, MAX_FRAME_SECONDS) : 0;
     this.#lastTime = time;
-    if (this.#restSeconds > 0) {
+    if (this.#target !== null) {
+      const rate = Math.max(this.stepsPerSecond * this.speed, MIN_STEP_RATE);
+      const sign = this.#target > this.#step ? 1 : -1;
+      const next = this.#step + sign * seconds * rate;
+      const reached = sign > 0 ? next >= this.#target : next <= this.#target;
+      this.seek(reached ? this.#target : next);
+      if (reached) {
+        this.pause();
+        return;
+      }
+    } else if (this.#restSeconds > 0) {
       this.#restSeconds -= seconds;
     } else {
-      const next = this.#step + this.#direction * seconds * STEPS_PER_SECOND * this.speed;
+      const next = this.#step + this.#direction * seconds * this.stepsPerSecond * this.speed;
       const atEnd = this.#direction > 0 ? next >= this.#length : next <= 0;
       this.seek(next);
       if (atEnd) {
@@ -927,6 +1301,12 @@ export class DisassemblyPlayer {
     }
     this.#frameRequest = requestAnimationFrame((next) => this.#tick(next));
   }
+}
+
+/** '8 s', '1 min 20 s'. */
+function formatSeconds(seconds) {
+  const whole = Math.round(seconds);
+  return whole < 60 ? `${whole} s` : `${Math.floor(whole / 60)} min ${whole % 60} s`;
 }
 
 /** '+z×1, then -x×2'; a plate plan's moves (with their own vector) have no step count: 'along -z'. */
@@ -960,13 +1340,20 @@ export function describeDisassemblyStep(disassembly, step) {
  * Wires playback controls to `view`. `elements`: `range` (input[type=range], the step),
  * `label` (where describeDisassemblyStep's text goes), and optional `moves` (the moving part's
  * path), `playButton`, `speedSelect` (values are speed factors), `loopCheckbox`, `explodedRange`
- * (0..1), `root` (gets data-playing). `onStep({ step, index, partId })` is told about every
+ * (0..1), `previousButton` / `nextButton` (one removal back / on), `root` (gets data-playing).
+ * `onStep({ step, index, partId })` is told about every
  * change (e.g. to highlight the current removal in a list). Returns { setDisassembly, play,
  * pause, seek, setExploded, player, dispose }.
  */
 export function createPlaybackControls(view, elements, { onStep = () => {}, loop = false } = {}) {
-  const { range, label, moves, playButton, speedSelect, loopCheckbox, explodedRange, root } = elements;
+  const { range, label, moves, playButton, speedSelect, loopCheckbox, explodedRange, previousButton, nextButton, root } = elements;
   let disassembly = null;
+
+  /** Previous at the start and Next at the end have nothing to do. */
+  function updateStepButtons(step) {
+    if (previousButton) previousButton.disabled = !disassembly || step <= 0;
+    if (nextButton) nextButton.disabled = !disassembly || step >= player.length;
+  }
 
   const player = new DisassemblyPlayer({
     onStep(step) {
@@ -975,6 +1362,7 @@ export function createPlaybackControls(view, elements, { onStep = () => {}, loop
       const described = describeDisassemblyStep(disassembly, step);
       if (label) label.textContent = described.text;
       if (moves) moves.textContent = described.moves;
+      updateStepButtons(step);
       onStep({ step, index: described.index, partId: described.partId });
     },
     onPlayingChange(playing) {
@@ -1000,6 +1388,8 @@ export function createPlaybackControls(view, elements, { onStep = () => {}, loop
     player.seek(Number(range.value));
   });
   listen(playButton, 'click', () => player.toggle());
+  listen(previousButton, 'click', () => player.previous());
+  listen(nextButton, 'click', () => player.next());
   listen(speedSelect, 'change', () => { player.speed = Number(speedSelect.value) || 1; });
   listen(loopCheckbox, 'change', () => { player.loop = loopCheckbox.checked; });
   listen(explodedRange, 'input', () => view.setExploded(Number(explodedRange.value)));
@@ -1018,6 +1408,7 @@ export function createPlaybackControls(view, elements, { onStep = () => {}, loop
       view.setExploded(Number(explodedRange.value));
     }
     player.setLength(length);
+    if (range) range.title = disassembly ? `${length} removals, ${formatSeconds(length / player.stepsPerSecond)} at 1×` : '';
   }
 
   return {
