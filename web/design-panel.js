@@ -333,6 +333,18 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy, showL
     renderProgress();
   }
 
+  /** The line under the progress with the difficulty and the time left (made here: no markup to change). */
+  function progressHint() {
+    let hint = document.getElementById('design-progress-difficulty');
+    if (!hint) {
+      hint = document.createElement('p');
+      hint.id = 'design-progress-difficulty';
+      hint.className = 'progress-text';
+      ui.progressText.after(hint);
+    }
+    return hint;
+  }
+
   /** The difficulty of the request and the time left, when they can be told (live-design.js). */
   function progressDetails(latest) {
     const voxel = !STRUCTURES[kind];
@@ -352,9 +364,9 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy, showL
     }
     ui.progress.max = latest.targetParts;
     ui.progress.value = latest.bestDepth;
-    ui.progressText.textContent = [`${latest.bestDepth} of ${latest.targetParts} ${run.noun}`,
-      `${latest.nodesVisited} nodes visited`, `depth ${latest.depth}`, elapsed,
-      ...progressDetails(latest)].join(' · ');
+    ui.progressText.textContent = `${latest.bestDepth} of ${latest.targetParts} ${run.noun} · `
+      + `${latest.nodesVisited} nodes visited · depth ${latest.depth} · ${elapsed}`;
+    progressHint().textContent = progressDetails(latest).join(' · ');
   }
 
   function cancel() {
@@ -787,6 +799,7 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy, showL
       ui.progressBox.dataset.updates = '0';
       ui.progress.value = 0;
       ui.progressText.textContent = '';
+      progressHint().textContent = '';
       if (!keepParts) partsTouched = false;
       for (const key of Object.keys(FIELDS)) markInvalid(key, false);
       explainAll();

@@ -100,6 +100,13 @@ const VIEWER_CSS = `
 .dbg-graph svg { display: block; width: 100%; height: auto; }
 .dbg-graph figcaption { margin-top: 0.2rem; font-size: 0.75rem; color: #9aa1ad; }
 .dbg-graph figcaption strong { color: #e6e8ec; }
+.dbg-toolbar, .dbg-tool-group, .dbg-find, .dbg-matrix-directions { display: flex; flex-wrap: wrap; align-items: center; gap: 0.25rem 0.6rem; margin: 0.3rem 0; }
+.dbg-tool { font: inherit; font-size: 0.75rem; padding: 0.1rem 0.45rem; background: #2b303a; color: #e6e8ec; border: 1px solid #3b414d; border-radius: 4px; }
+.dbg-tool[aria-pressed="true"] { border-color: #ffc21a; color: #ffc21a; }
+.dbg-find input { width: 4rem; font: inherit; font-size: 0.75rem; }
+.dbg-find-status { color: #9aa1ad; font-size: 0.75rem; }
+.dbg-graph svg.dbg-svg { touch-action: none; }
+.dbg-matrix-scroll { max-height: 20rem; overflow: auto; }
 `;
 
 const VERDICT_TITLES = { interlocking: 'Interlocking', deadlocked: 'Deadlocked', 'not-interlocking': 'Not interlocking' };

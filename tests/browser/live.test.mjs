@@ -37,6 +37,7 @@ async function designWatchingLiveParts(page) {
         meshes: Number(document.querySelector('#viewport').dataset.parts ?? 0),
         ghost: document.querySelector('#viewport').dataset.ghost ?? '',
         text: document.querySelector('#design-progress-text').textContent,
+        hint: document.querySelector('#design-progress-difficulty')?.textContent ?? '',
         outcome: document.body.dataset.design,
       });
       if (document.body.dataset.design !== 'running' && performance.now() - started > 200) {
@@ -90,13 +91,117 @@ for (const viewport of [{ width: 1400, height: 900 }, { width: 390, height: 844 
       assert.equal(drawn.meshes, drawn.live + 1, JSON.stringify(drawn));
       assert.equal(drawn.ghost, String(drawn.live + 1));
       // How hard the request is: 966 voxels in 60 parts.
-      assert.match(running.at(-1).text, /~16 voxels per part: usually succeeds/);
+      assert.match(running.at(-1).hint, /^~16 voxels per part: usually succeeds/);
       const last = samples.at(-1);
       assert.equal(last.outcome, 'success', JSON.stringify(last));
       assert.equal(last.meshes, 60, 'the result replaces the live view');
       assert.equal(last.ghost, '', 'nothing ghosted in the result');
       assert.ok(shot, 'a screenshot was taken mid-design');
       await screenshot(page, `live-bunny-designed-${size}`);
+      assert.deepEqual(pageErrors, []);
+    });
+
+    it('zooms, pans, finds part 17 and shows the 80-part bunny as an adjacency matrix', async () => {
+      await page.selectOption('#example-select', BUNNY_PUZZLE);
+      await waitForReady(page, BUNNY_PUZZLE);
+      await page.evaluate(() => {
+        document.querySelector('#graphs-details').open = true;
+        window.dbgSelections = [];
+        document.querySelector('#dbg-panel').addEventListener('dbg-select', (event) => window.dbgSelections.push(event.detail.partId));
+      });
+      const figures = () => page.evaluate(() => [...document.querySelectorAll('#dbg-panel figure.dbg-graph')].map((figure) => ({
+        drawn: figure.dataset.drawn,
+        nodes: figure.querySelectorAll('circle.dbg-node').length,
+        edges: Number(figure.dataset.edges),
+        transform: figure.querySelector('g.dbg-zoom')?.getAttribute('transform'),
+        zoom: Number(figure.dataset.zoom),
+      })));
+      const before = await figures();
+      assert.equal(before.length, 3);
+      for (const figure of before) {
+        assert.equal(figure.drawn, 'parts', 'up to 200 parts are drawn part by part');
+        assert.equal(figure.nodes, 80);
+        assert.equal(figure.transform, 'translate(0 0) scale(1)');
+      }
+
+      // The wheel zooms about the pointer.
+      const first = page.locator('#dbg-panel figure.dbg-graph svg.dbg-svg').first();
+      await first.scrollIntoViewIfNeeded();
+      let box = await first.boundingBox();
+      await page.mouse.move(box.x + box.width * 0.3, box.y + box.height * 0.3);
+      await page.mouse.wheel(0, -400);
+      await page.waitForFunction(() => document.querySelector('#dbg-panel figure.dbg-graph').dataset.zoom !== '1');
+      const wheeled = (await figures())[0];
+      assert.ok(wheeled.zoom > 1, `zoomed in: ${wheeled.transform}`);
+      // A drag pans (and does not select a part or enlarge the figure).
+      box = await first.boundingBox();
+      await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
+      await page.mouse.down();
+      await page.mouse.move(box.x + box.width / 2 + 30, box.y + box.height / 2 + 20, { steps: 5 });
+      await page.mouse.up();
+      const dragged = (await figures())[0];
+      assert.notEqual(dragged.transform, wheeled.transform, 'the drag panned');
+      assert.equal(dragged.zoom, wheeled.zoom);
+      assert.equal(await page.locator('#dbg-panel figure.dbg-wide').count(), 0, 'a drag does not enlarge');
+      // Buttons for keyboard users: Zoom in on every graph, Fit back.
+      await page.click('#dbg-panel button[aria-label="Zoom in"]');
+      const buttoned = await figures();
+      assert.ok(buttoned[1].zoom > 1 && buttoned[2].zoom > 1, 'every graph zoomed');
+      await page.click('#dbg-panel button[aria-label="Show the whole graphs"]');
+      for (const figure of await figures()) assert.equal(figure.transform, 'translate(0 0) scale(1)');
+      // Keys on a focused drawing.
+      await first.focus();
+      await page.keyboard.press('+');
+      await page.keyboard.press('ArrowRight');
+      assert.notEqual((await figures())[0].transform, 'translate(0 0) scale(1)');
+
+      // Find part 17: highlighted in every graph and in the middle of each drawing.
+      await page.fill('#dbg-find', '17');
+      await page.press('#dbg-find', 'Enter');
+      const found = await page.evaluate(() => [...document.querySelectorAll('#dbg-panel figure.dbg-graph svg.dbg-svg')].map((root) => {
+        const node = root.querySelector('circle.dbg-node[data-part="17"]').getBoundingClientRect();
+        const frame = root.getBoundingClientRect();
+        return {
+          selected: root.querySelector('circle.dbg-node[data-part="17"]').dataset.selected,
+          dx: (node.x + node.width / 2) - (frame.x + frame.width / 2),
+          dy: (node.y + node.height / 2) - (frame.y + frame.height / 2),
+          size: frame.width,
+        };
+      }));
+      await screenshot(page, `live-dbg-find17-${size}`);
+      for (const node of found) {
+        assert.equal(node.selected, 'true');
+        assert.ok(Math.abs(node.dx) < node.size * 0.05 && Math.abs(node.dy) < node.size * 0.05, `centred: ${JSON.stringify(node)}`);
+      }
+      assert.deepEqual(await page.evaluate(() => window.dbgSelections), [17], 'Find selects the part on the page too');
+      await page.fill('#dbg-find', '999');
+      await page.press('#dbg-find', 'Enter');
+      assert.match(await page.textContent('#dbg-find-status'), /no part 999 \(parts 1–80\)/);
+
+      // The matrix: 80 x 80 cells per direction, filled where the graph has an edge.
+      await page.click('#dbg-panel button[data-view="matrix"]');
+      const matrix = await page.evaluate(() => {
+        const view = document.querySelector('#dbg-panel .dbg-matrix');
+        return {
+          size: Number(view.dataset.size), cells: view.querySelectorAll('rect.dbg-cell').length, direction: view.dataset.direction,
+          filled: view.querySelectorAll('rect.dbg-cell[data-edge="true"]').length, edges: Number(view.dataset.edges),
+          scrolls: view.querySelector('.dbg-matrix-scroll').scrollHeight > view.querySelector('.dbg-matrix-scroll').clientHeight,
+          selection: view.querySelector('.dbg-matrix-selection').getAttribute('visibility'),
+        };
+      });
+      await screenshot(page, `live-dbg-matrix-${size}`);
+      assert.equal(matrix.size, 80);
+      assert.equal(matrix.cells, 80 * 80);
+      assert.equal(matrix.filled, before[0].edges, 'one filled cell per edge of G(+x)');
+      assert.equal(matrix.selection, 'visible', 'part 17 stays selected: its row and column');
+      assert.ok(matrix.scrolls, 'the matrix scrolls');
+      await page.click('#dbg-panel .dbg-matrix-directions button:nth-child(2)');
+      assert.equal(await page.getAttribute('#dbg-panel .dbg-matrix', 'data-direction'), before.length > 1 ? '+y' : '+x');
+      await page.locator('#dbg-panel rect.dbg-cell[data-row="5"][data-col="9"]').click();
+      assert.deepEqual(await page.evaluate(() => window.dbgSelections), [17, 5], 'a cell selects its row');
+      // Back to the drawings for the next tests (the choice outlives a new report).
+      await page.click('#dbg-panel button[data-view="drawing"]');
+      assert.equal(await page.locator('#dbg-panel figure.dbg-graph').count(), 3);
       assert.deepEqual(pageErrors, []);
     });
   });
