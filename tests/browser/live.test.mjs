@@ -3,9 +3,10 @@
 // Live design and blocking graphs at scale (issue 11), in headless Chromium at 1400x900 and
 // 390x844: while the worker designs the bunny with N = 60, the 3D view shows the deepest node so
 // far, its placed parts growing before the result arrives, and the progress says how hard the
-// request is; a plate design recolours the bookcase as its plates are placed. The blocking graphs
-// of the 80-part bunny zoom and pan (the drawing's transform changes, by wheel, drag and buttons),
-// Find part 17 highlights and centres its node, and the matrix view draws N x N cells.
+// request is; a plate design recolours the bookcase as its plates are placed (123 meshes, those
+// not yet placed see-through). The blocking graphs of the 80-part bunny zoom and pan (the
+// drawing's transform changes, by wheel, drag, buttons and keys), Find part 17 highlights and
+// centres its node, and the matrix view draws N x N cells.
 //
 //   node --test tests/browser/live.test.mjs
 //
@@ -99,6 +100,24 @@ for (const viewport of [{ width: 1400, height: 900 }, { width: 390, height: 844 
       assert.ok(shot, 'a screenshot was taken mid-design');
       await screenshot(page, `live-bunny-designed-${size}`);
       assert.deepEqual(pageErrors, []);
+    });
+
+    it('recolours the 123-plate bookcase as its plates are placed', async () => {
+      await page.selectOption('#example-select', 'bookcase_123.json');
+      await waitForReady(page, 'bookcase_123.json');
+      const samples = await designWatchingLiveParts(page);
+      const running = samples.filter((sample) => sample.outcome === 'running' && sample.live !== null);
+      const distinct = [...new Set(running.map((sample) => sample.live))];
+      assert.ok(distinct.length >= 3, `the view showed several depths before the plan: ${distinct.join(', ')}`);
+      for (let k = 1; k < distinct.length; k += 1) assert.ok(distinct[k] > distinct[k - 1], `growing: ${distinct.join(', ')}`);
+      // The input's 123 plates stay on screen: those not yet placed are see-through.
+      const drawn = running.at(-1);
+      assert.equal(drawn.meshes, 123);
+      assert.equal(drawn.ghost.split(' ').filter(Boolean).length, 123 - drawn.live, JSON.stringify({ ...drawn, ghost: '…' }));
+      const last = samples.at(-1);
+      assert.equal(last.outcome, 'success', last.text);
+      assert.equal(last.ghost, '');
+      await screenshot(page, `live-bookcase-planned-${size}`);
     });
 
     it('zooms, pans, finds part 17 and shows the 80-part bunny as an adjacency matrix', async () => {
