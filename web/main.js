@@ -504,6 +504,7 @@ function showLiveDesign(snapshot) {
     view.setEmphasis({ ghost: [snapshot.depth + 1] });
     return;
   }
+  if (!Array.isArray(snapshot.placed)) return;
   const items = shown.document?.plates ?? shown.document?.beams ?? [];
   const placed = new Set(snapshot.placed.map((index) => items[index]?.id));
   view.show(shown.document, shown.surfaces, { keepCamera: true });
