@@ -104,6 +104,8 @@ const ui = {
 
 /** How often the elapsed time moves while the core is busy between progress messages. */
 const CLOCK_INTERVAL_MS = 100;
+/** Live design: the view draws the deepest node at most this often (worker.js sends as often). */
+const LIVE_INTERVAL_MS = 250;
 
 /**
  * A reasonable N for a shape of `voxels` voxels: about a dozen voxels per part (80 parts at
@@ -323,14 +325,28 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy, showL
     // A portfolio's progress is its deepest search's (nodes: all of them); which seed that is.
     ui.progressBox.dataset.seed = value.seed === undefined ? '' : String(value.seed);
     run.pace.observe(value);
-    // Only deeper snapshots: with several Workers they come from whichever search is deepest.
-    const shownDepth = Number(ui.progressBox.dataset.liveParts || -1);
-    if (value.snapshot && value.snapshot.depth > shownDepth) {
-      run.live = true;
-      ui.progressBox.dataset.liveParts = String(value.snapshot.depth);
-      showLive(value.snapshot, kind);
-    }
+    if (value.snapshot) offerLiveSnapshot(value.snapshot);
+    else if (run.pendingLive) offerLiveSnapshot(run.pendingLive);
     renderProgress();
+  }
+
+  /**
+   * Live design: draws a snapshot deeper than the one shown (with several Workers they come from
+   * whichever search is deepest), at most every LIVE_INTERVAL_MS so that a large structure's
+   * redraws leave the page responsive; one that comes sooner waits for the next progress.
+   */
+  function offerLiveSnapshot(snapshot) {
+    const shownDepth = Number(ui.progressBox.dataset.liveParts || -1);
+    if (!(snapshot.depth > shownDepth)) return;
+    if (performance.now() - (run.liveAt ?? -Infinity) < LIVE_INTERVAL_MS) {
+      run.pendingLive = snapshot;
+      return;
+    }
+    run.pendingLive = null;
+    run.liveAt = performance.now();
+    run.live = true;
+    ui.progressBox.dataset.liveParts = String(snapshot.depth);
+    showLive(snapshot, kind);
   }
 
   /** The line under the progress with the difficulty and the time left (made here: no markup to change). */

@@ -507,7 +507,9 @@ function showLiveDesign(snapshot) {
   if (!Array.isArray(snapshot.placed)) return;
   const items = shown.document?.plates ?? shown.document?.beams ?? [];
   const placed = new Set(snapshot.placed.map((index) => items[index]?.id));
-  view.show(shown.document, shown.surfaces, { keepCamera: true });
+  // Recoloured, not rebuilt (882 beams take seconds to rebuild): the report's colours back on
+  // every part, then the parts not yet placed see-through.
+  view.applyReport(withPlannedRemoval(shown.report, shown.document), { keepCamera: true });
   view.setEmphasis({ ghost: items.map((item) => item.id).filter((id) => !placed.has(id)) });
 }
 
