@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The part list and the playback aids (issue 11) in headless Chromium, at 1400x900 and 390x844,
-// for a voxel puzzle (the 9-part cube) and a plate plan (the TABLE designed with seed 1):
+// for a voxel puzzle (the 9-part cube), a plate plan (the TABLE designed with seed 1) and a
+// frame (the designed FRAME CUBE):
 // a part is selected from the list, from a click on it in the 3D view (the pointer put on the
 // projected centre of a part that is in front there) and from its node in the blocking graphs,
 // and the selection shows in all three; Isolate, Hide and Show all change the meshes drawn; the
@@ -21,6 +22,7 @@ const CUBE = 'Cube_4x4x4_K9.puz';
 const BUNNY = 'bunny_15x14x11_K80.puz';
 const TABLE = 'table.json';
 const TABLE_PLAN = 'table_plan_seed1.json';
+const FRAME_CUBE = 'frame_cube_result.json';
 const DESIGN_TIMEOUT_MS = 30_000;
 
 /** What the page says about parts: the list, the view, the graphs. */
@@ -236,6 +238,16 @@ for (const viewport of [{ width: 1400, height: 900 }, { width: 390, height: 844 
       state = await waitForReady(page, TABLE_PLAN);
       await checkSelection(page, { size, name: 'plate', total: 6, listed: ['plate 1 (key) | top', 'plate 2 | left side'], graphPart: 4 });
       await checkPlayback(page, { size, name: 'plate', order: [1, 2, 3, 4, 5, 6] });
+      assert.deepEqual(pageErrors, []);
+    });
+
+    it('selects, hides, isolates and steps through the designed FRAME CUBE', async (t) => {
+      await page.selectOption('#example-select', FRAME_CUBE);
+      const state = await waitForReady(page, FRAME_CUBE);
+      if (state.webgl !== 'on') return t.skip('no WebGL in this Chromium');
+      await checkSelection(page, { size, name: 'beam', total: 12, listed: ['beam 1 (key) | input beam 12', 'beam 2 | input beam 11'], graphPart: 4 });
+      const order = (await page.textContent('#order')).split(/[^0-9]+/).filter(Boolean).map(Number);
+      await checkPlayback(page, { size, name: 'beam', order });
       assert.deepEqual(pageErrors, []);
     });
 
