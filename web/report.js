@@ -180,7 +180,7 @@ function renderCutPoints(cutPoints) {
 }
 
 const JOINT_TYPES = {
-  halved: 'halved', 'mortise-tenon': 'mortise and tenon', dovetail: 'sliding dovetail', 'mitre-tenon': 'tenon across the mitre', 'face-tenon': 'stub tenon on a lap',
+  halved: 'halved', 'mortise-tenon': 'mortise and tenon', dovetail: 'sliding dovetail', 'mitre-tenon': 'tenon across the mitre', 'mitre-slide': 'tongue sliding along the mitre', 'face-tenon': 'stub tenon on a lap',
   empty: 'no joint (empty)',
 };
 

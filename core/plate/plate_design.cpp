@@ -61,6 +61,15 @@ PlateGraph buildPlateGraph(const std::vector<Plate>& plates, const std::vector<P
   PlateGraph graph;
   graph.plateCount = static_cast<int>(plates.size());
   graph.contacts = contacts;
+  // A contact's face holds its shared edge (the plates' planes' crossing line, exact to rounding of
+  // doubles): its normal, computed from the face's vertices, is made exactly square to it. In a
+  // design given to a micrometre they disagree by 1e-9, and a plate sliding along the edge would
+  // push into the face by more than the blocking tests' 1e-9.
+  for (PlateContact& contact : graph.contacts) {
+    if (contact.crossing || norm(contact.edgeDirection) == 0) continue;
+    const Vec3 squared = minus(contact.normal, scaled(contact.edgeDirection, dot(contact.normal, contact.edgeDirection)));
+    if (norm(squared) > 0.5) contact.normal = normalized(squared);
+  }
   graph.neighbours.resize(plates.size());
   graph.contactsOf.resize(plates.size());
   for (size_t c = 0; c < contacts.size(); ++c) {
@@ -195,6 +204,17 @@ std::optional<PlateJoint> jointFor(const PlateGraph& graph, int mover, int other
       }
     }
     if (joint.type != JointType::Empty) return joint;
+    // Plates meeting edge to edge at an angle, leaving along their edge: a tongue in a groove.
+    for (int c : graph.contactsOf[mover]) {
+      const PlateContact& contact = graph.contacts[c];
+      if (contact.a != other && contact.b != other) continue;
+      if (mitreSlideOf(graph.plates, contact, mover, d) &&
+          (joint.contact < 0 || contact.area > graph.contacts[joint.contact].area)) {
+        joint.type = JointType::MitreSlide;
+        joint.contact = c;
+      }
+    }
+    if (joint.type != JointType::Empty) return joint;
     // Plates lying face to face: a stub tenon in a blind mortise, straight off the lap.
     for (int c : graph.contactsOf[mover]) {
       const PlateContact& contact = graph.contacts[c];
@@ -224,6 +244,11 @@ std::optional<PlateJoint> jointFor(const PlateGraph& graph, int mover, int other
 // The tenon to mill for a planned mitre-tenon joint: on the mover, into the other plate, against d.
 MitreTenon mitreTenonFor(const PlateGraph& graph, const PlateJoint& joint) {
   return *mitreTenonOf(graph.plates, graph.contacts[joint.contact], joint.mover, negated(joint.direction));
+}
+
+// The slide to mill for a planned mitre-slide joint: the groove in the mover, along d.
+MitreSlide mitreSlideFor(const PlateGraph& graph, const PlateJoint& joint) {
+  return *mitreSlideOf(graph.plates, graph.contacts[joint.contact], joint.mover, joint.direction);
 }
 
 // The stub tenon to mill for a planned face-tenon joint: on the mover, off the lap along d.
@@ -282,6 +307,12 @@ Assembly modelAssembly(const PlateGraph& graph, const std::vector<Step>& steps, 
           assembly.contacts.push_back({a, b, contact.normal, contact.area});
         if (contact.b == joint.mover && contact.a == joint.other)
           assembly.contacts.push_back({a, b, negated(contact.normal), contact.area});
+      }
+      if (joint.type == JointType::MitreSlide) {
+        // The groove's floor (and the mitre), its flanks over the tongue, its stop.
+        for (const Vec3& n : mitreSlideFaceNormals(mitreSlideFor(graph, joint)))
+          assembly.contacts.push_back({a, b, *cleanedNormal(n), 1.0});
+        continue;
       }
       if (joint.type == JointType::FaceTenon) {
         // The block's end on the mortise's floor (and the lap), its four sides in the mortise.
@@ -342,15 +373,36 @@ struct JointedPlan {
   Assembly assembly;
 };
 
+// Jointed plates are cut from a design given to a micrometre (plates-from-mesh writes 6 decimals):
+// a face meant to slide along a plan direction can be off square to it by 1e-7 rad, past the blocking
+// tests' 1e-9 (README "Verdicts on computed normals"). A contact normal within 1e-6 of square to
+// plan directions is made exactly square to them; one that blocks a way out by more is kept, and
+// the swept check of every plate judges the shapes themselves.
+Vec3 squaredToPlan(Vec3 normal, const std::vector<Vec3>& directions) {
+  constexpr double kNearlySquare = 1e-6;
+  std::vector<Vec3> basis;  // orthonormal, spanning the directions the normal is nearly square to
+  for (const Vec3& d : directions) {
+    if (std::abs(dot(normal, d)) >= kNearlySquare) continue;
+    Vec3 e = d;
+    for (const Vec3& b : basis) e = minus(e, scaled(b, dot(e, b)));
+    if (norm(e) < kNearlySquare) continue;
+    basis.push_back(normalized(e));
+  }
+  for (const Vec3& b : basis) normal = minus(normal, scaled(b, dot(normal, b)));
+  return normalized(normal);
+}
+
 JointedPlan cutPlan(const std::vector<Plate>& plates, const PlateGraph& graph, const std::vector<PlateJoint>& joints,
-                    const std::vector<int>& order, const PlateOptions& geometry, double clearance,
-                    const JointCutOptions& options) {
+                    const std::vector<int>& order, const std::vector<Vec3>& directions, const PlateOptions& geometry,
+                    double clearance, const JointCutOptions& options) {
   std::vector<TenonSite> sites;
   std::vector<SlotCut> slots;
   std::vector<DovetailCut> dovetails;
   std::vector<MitreTenon> mitreTenons;
   std::vector<FaceTenon> faceTenons;
+  std::vector<MitreSlide> mitreSlides;
   for (const PlateJoint& joint : joints) {
+    if (joint.type == JointType::MitreSlide) mitreSlides.push_back(mitreSlideFor(graph, joint));
     if (joint.type == JointType::FaceTenon) faceTenons.push_back(faceTenonFor(graph, joint));
     if (joint.type == JointType::MortiseTenon) sites.push_back(*graph.tenonSites[joint.contact]);
     if (joint.type == JointType::Dovetail) dovetails.push_back(dovetailCutFor(graph, joint));
@@ -365,7 +417,7 @@ JointedPlan cutPlan(const std::vector<Plate>& plates, const PlateGraph& graph, c
   JointCutOptions cut = options;
   cut.clearance = clearance;
   JointedPlan plan;
-  plan.plates = cutTenonJoints(plates, sites, cut, slots, dovetails, mitreTenons, faceTenons);
+  plan.plates = cutTenonJoints(plates, sites, cut, slots, dovetails, mitreTenons, faceTenons, mitreSlides);
   validatePlates(plan.plates, geometry, "the jointed plates");
   std::vector<int> position(plates.size(), 0);
   for (size_t k = 0; k < order.size(); ++k) {
@@ -373,7 +425,8 @@ JointedPlan cutPlan(const std::vector<Plate>& plates, const PlateGraph& graph, c
     plan.assembly.parts.push_back({plates[order[k]].id, plates[order[k]].name});
   }
   for (const PlateContact& contact : computePlateContacts(plan.plates, geometry)) {
-    plan.assembly.contacts.push_back({position[contact.a], position[contact.b], contact.normal, contact.area});
+    plan.assembly.contacts.push_back(
+        {position[contact.a], position[contact.b], squaredToPlan(contact.normal, directions), contact.area});
   }
   return plan;
 }
@@ -415,6 +468,11 @@ class PlateJointPlanner {
     if (makesJoints(options.realization)) {
       for (const Plate& plate : plates) meshes_.push_back(plateMesh(plate));
     }
+    for (int plate = 0; plate < graph_.plateCount; ++plate) {
+      std::vector<Vec3> ways;
+      for (const Vec3& d : rawCandidateDirections(plate)) ways.push_back(canonical(d));
+      canonicalDirections_.push_back(ways);
+    }
   }
 
   PlateDesignResult run();
@@ -438,6 +496,10 @@ class PlateJointPlanner {
   std::vector<CutFootprint> cutsOf(const std::vector<PlateJoint>& joints) const;
   bool cutsCollide(const std::vector<Step>& steps, const std::vector<CutFootprint>& cuts) const;
   std::vector<Vec3> candidateDirections(int plate) const;
+  std::vector<Vec3> rawCandidateDirections(int plate) const;
+  Vec3 canonical(const Vec3& d);
+  std::vector<Vec3> canonical_;                        // see canonical()
+  std::vector<std::vector<Vec3>> canonicalDirections_;  // each plate's candidate ways out, canonical
   uint64_t nextRandom() {
     random_ = random_ * 6364136223846793005ull + 1442695040888963407ull;
     return random_ >> 11;
@@ -456,7 +518,26 @@ class PlateJointPlanner {
 // The edge vectors the plate shares with its neighbours (paper Section 5.2), both signs, and, beyond
 // the paper, its own thickness axis (a plate closed in on every edge can only leave across its
 // faces) and the axes of its tenon sites (the only ways a tenon joint lets it leave).
+// One vector for each way out that several plates share: edges meant to be parallel, computed from
+// a design given to a micrometre, differ by 1e-7 rad, and a contact square to one of them would
+// block the other by more than the tests' 1e-9 (squaredToPlan makes contacts square to the plan's
+// directions, which it can only do if they are one vector). The first plate's vector stands for all.
+Vec3 PlateJointPlanner::canonical(const Vec3& d) {
+  constexpr double kSameWay = 1 - 1e-12;  // within 1.4e-6 rad
+  for (const Vec3& known : canonical_) {
+    if (dot(known, d) > kSameWay) return known;
+    if (dot(known, d) < -kSameWay) return negated(known);
+  }
+  canonical_.push_back(d);
+  return d;
+}
+
 std::vector<Vec3> PlateJointPlanner::candidateDirections(int plate) const {
+  const auto& known = canonicalDirections_[static_cast<size_t>(plate)];
+  return known;
+}
+
+std::vector<Vec3> PlateJointPlanner::rawCandidateDirections(int plate) const {
   std::vector<Vec3> directions;
   std::vector<Vec3> lines = graph_.edgeTo[plate];
   lines.push_back(graph_.thicknessAxis[plate]);
@@ -514,6 +595,8 @@ std::vector<CutFootprint> PlateJointPlanner::cutsOf(const std::vector<PlateJoint
       cuts.push_back(mitreTenonFootprint(plates_, mitreTenonFor(graph_, joint)));
     } else if (joint.type == JointType::FaceTenon) {
       cuts.push_back(faceTenonFootprint(plates_, faceTenonFor(graph_, joint)));
+    } else if (joint.type == JointType::MitreSlide) {
+      cuts.push_back(mitreSlideFootprint(plates_, mitreSlideFor(graph_, joint)));
     } else if (joint.type == JointType::Halved) {
       for (const SlotCut& slot : halvedSlots(plates_, graph_.contacts[joint.contact], joint.mover, joint.direction, 0))
         cuts.push_back(slotFootprint(slot));
@@ -746,7 +829,7 @@ PlateDesignResult PlateJointPlanner::run() {
 bool PlateJointPlanner::cutAndVerify(const std::vector<PlateJoint>& joints, const std::vector<int>& order,
                                      const std::vector<Vec3>& directions, PlateDesignResult* result) {
   try {
-    JointedPlan jointed = cutPlan(plates_, graph_, joints, order, options_.geometry, 0, options_.joints);
+    JointedPlan jointed = cutPlan(plates_, graph_, joints, order, directions, options_.geometry, 0, options_.joints);
     lastRejection_ = jointedFailure(jointed, order, directions, options_.geometry.contactTolerance);
     if (!lastRejection_.empty()) return false;
     result->jointedPlates = std::move(jointed.plates);
@@ -754,7 +837,8 @@ bool PlateJointPlanner::cutAndVerify(const std::vector<PlateJoint>& joints, cons
     result->clearance = options_.joints.clearance;
     result->fabricationPlates =
         options_.joints.clearance > 0
-            ? cutPlan(plates_, graph_, joints, order, options_.geometry, options_.joints.clearance, options_.joints)
+            ? cutPlan(plates_, graph_, joints, order, directions, options_.geometry, options_.joints.clearance,
+                      options_.joints)
                   .plates
             : result->jointedPlates;
     return true;
@@ -911,6 +995,8 @@ const char* jointTypeName(JointType type) {
       return "mitre-tenon";
     case JointType::FaceTenon:
       return "face-tenon";
+    case JointType::MitreSlide:
+      return "mitre-slide";
     case JointType::Empty:
       return "empty";
   }
@@ -957,7 +1043,7 @@ std::string jointedPlatesFailure(const std::vector<Plate>& plates, const std::ve
   Assembly assembly;
   for (const Plate& plate : plates) assembly.parts.push_back({plate.id, plate.name});
   for (const PlateContact& contact : computePlateContacts(plates, geometry)) {
-    assembly.contacts.push_back({contact.a, contact.b, contact.normal, contact.area});
+    assembly.contacts.push_back({contact.a, contact.b, squaredToPlan(contact.normal, directions), contact.area});
   }
   const std::string failure = planFailure(assembly, directions);
   if (!failure.empty()) return failure;

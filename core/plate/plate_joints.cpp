@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <memory>
 
 #include "analysis/vec3.h"
 #include "desia/error.h"
@@ -471,7 +472,12 @@ void requireApart(const Plate& plate, const std::vector<Loop>& cuts, const Plane
 // its partner; a point on a side's first-face edge has its partner on that side's second-face
 // edge straight across the side (a cut through a mitred side); any other
 // point lies where the plate is whole (mortiseKind, mitreTenonOf) and is straight across.
-Vec3 secondFacePartner(const Plate& plate, const Vec3& point) {
+//
+// `wall`, when given, is the direction of the cut's edge that meets the side at `point` (in the
+// face): the cut's wall stands straight up along it, so the partner is where that wall meets the
+// side's second-face edge (a wall square to the side gives the same point as the rule above; an
+// oblique one, as a mitre slide's groove run out past a corner, would twist the face otherwise).
+Vec3 secondFacePartner(const Plate& plate, const Vec3& point, const Vec3* wall = nullptr) {
   for (size_t l = 0; l < plate.bottom.size(); ++l) {
     for (size_t k = 0; k < plate.bottom[l].size(); ++k) {
       if (norm(minus(plate.bottom[l][k], point)) < 1e-3) return plate.top[l][k];
@@ -491,10 +497,52 @@ Vec3 secondFacePartner(const Plate& plate, const Vec3& point) {
       // side meet it with walls square to it (a mitre tenon's notch).
       const Vec3 along = scaled(edge, 1 / length);
       const Vec3 offset = minus(plate.top[l][k], bottom[k]);
-      return plus(point, minus(offset, scaled(along, dot(offset, along))));
+      const Vec3 square = plus(point, minus(offset, scaled(along, dot(offset, along))));
+      if (wall == nullptr) return square;
+      // Where the wall's plane (along the cut's edge and the plate's axis) meets the second-face edge.
+      const Vec3 wallNormal = cross(*wall, plateThicknessAxis(plate));
+      const double rate = dot(along, wallNormal);
+      if (norm(wallNormal) < 1e-9 || std::abs(rate) < 1e-6 * norm(wallNormal)) return square;
+      return plus(square, scaled(along, dot(minus(point, square), wallNormal) / rate));
     }
   }
   return plus(point, scaled(plateThicknessAxis(plate), plateThickness(plate)));
+}
+
+// The side whose first-face edge holds `point` strictly between its vertices: its loop and first
+// vertex, or none.
+std::optional<std::pair<size_t, size_t>> sideHolding(const Plate& plate, const Vec3& point) {
+  for (size_t l = 0; l < plate.bottom.size(); ++l) {
+    const Loop& bottom = plate.bottom[l];
+    for (size_t k = 0; k < bottom.size(); ++k) {
+      if (norm(minus(bottom[k], point)) < 1e-3) return std::nullopt;
+    }
+    for (size_t k = 0; k < bottom.size(); ++k) {
+      const Vec3 edge = minus(bottom[(k + 1) % bottom.size()], bottom[k]);
+      const double length = norm(edge);
+      if (length < 1e-9) continue;
+      const double t = dot(minus(point, bottom[k]), edge) / (length * length);
+      if (t > 1e-9 && t < 1 - 1e-9 && norm(minus(point, plus(bottom[k], scaled(edge, t)))) <= 1e-3)
+        return std::make_pair(l, k);
+    }
+  }
+  return std::nullopt;
+}
+
+// At a vertex of a cut face that lies on one of the plate's sides: the direction of the cut's
+// edge that leaves the side there (to the neighbour off that side's line), or none.
+std::unique_ptr<Vec3> cutWallAt(const Plate& plate, const Loop& loop, size_t i) {
+  const std::optional<std::pair<size_t, size_t>> side = sideHolding(plate, loop[i]);
+  if (!side) return nullptr;
+  const Loop& bottom = plate.bottom[side->first];
+  const Vec3& a = bottom[side->second];
+  const Vec3 along = normalized(minus(bottom[(side->second + 1) % bottom.size()], a));
+  for (const size_t j : {(i + 1) % loop.size(), (i + loop.size() - 1) % loop.size()}) {
+    const Vec3 offset = minus(loop[j], a);
+    const bool onTheLine = norm(minus(offset, scaled(along, dot(offset, along)))) <= 1e-3;
+    if (!onTheLine) return std::make_unique<Vec3>(minus(loop[j], loop[i]));
+  }
+  return nullptr;
 }
 
 // The plate's solid between levels [from, to] along its thickness axis (0 = its first face), its
@@ -508,10 +556,11 @@ Plate layerOf(const Plate& plate, const std::vector<Loop>& added, const std::vec
   const bool prism = isPrism(plate);
   for (const Loop& loop : cutFace(plate, added, removed)) {
     Loop bottom, top;
-    for (const Vec3& point : loop) {
+    for (size_t i = 0; i < loop.size(); ++i) {
+      const Vec3& point = loop[i];
       bottom.push_back(plus(point, scaled(axis, from)));
       top.push_back(plus(point, scaled(axis, to)));
-      if (!prism) top.back() = secondFacePartner(plate, point);
+      if (!prism) top.back() = secondFacePartner(plate, point, cutWallAt(plate, loop, i).get());
     }
     layer.bottom.push_back(bottom);
     layer.top.push_back(top);
@@ -630,7 +679,13 @@ Plate pocketEndWedge(const MitreTenon& tenon, double pocketEnd, double flat) {
 
 // The pocket plate's wood in the notch, less the pocket: a prism along the edge, and for an
 // oblique tenon the wood between the notch's ends and the pocket's slanted ends.
-std::vector<Plate> pocketSurround(const std::vector<Plate>& plates, const MitreTenon& tenon) {
+// The pocket plate's wood in a notch at its mitre, in the section across the edge: beyond the
+// mitre, between its faces, up to the notch's end, with `pocketSection` (root corners [0] and [1]
+// on the mitre, their tips [3] and [2]) bitten out of its edge on the mitre, exactly (no grid
+// rounding: the pocket's walls must be parallel to the way its tenon or tongue moves, or the
+// contacts computed from them would block it by a rounding error).
+std::vector<Flat> woodAroundPocket(const std::vector<Plate>& plates, const MitreTenon& tenon,
+                                   const std::vector<Flat>& pocketSection) {
   const Plate& pocket = plates[tenon.pocketPlate];
   const MitreFrame frame = mitreFrame(tenon);
   const Vec3 axis = plateThicknessAxis(pocket);
@@ -643,11 +698,6 @@ std::vector<Plate> pocketSurround(const std::vector<Plate>& plates, const MitreT
   wood = clipHalfPlane(wood, -a[0], -a[1], level);                          // above the first face
   wood = clipHalfPlane(wood, a[0], a[1], plateThickness(pocket) - level);   // below the second
   wood = clipHalfPlane(wood, u[0], u[1], tenon.notchReach);                 // to the notch's end
-  // The pocket bites the wood's edge on the mitre (y = 0) between the tenon's root corners: the
-  // wood's section with the pocket's four corners put into that edge, computed exactly (no grid
-  // rounding: the pocket's walls must be parallel to the way the tenon leaves, or the contacts
-  // computed from them would block it by a rounding error).
-  const std::vector<Flat> pocketSection = tenonSection(tenon, frame, 0);
   std::vector<Flat> bitten;
   const double onMitre = 1e-9 * big;
   for (size_t i = 0; i < wood.size(); ++i) {
@@ -657,8 +707,8 @@ std::vector<Plate> pocketSurround(const std::vector<Plate>& plates, const MitreT
     if (std::abs(p[1]) > onMitre || std::abs(q[1]) > onMitre) continue;
     // Along this edge from p to q: the root corner met first, its tip, the other tip, the other root.
     const bool rising = q[0] > p[0];
-    const Flat& low = pocketSection[0];  // (-h, 0) and its tip pocketSection[3]
-    const Flat& high = pocketSection[1];  // (h, 0) and its tip pocketSection[2]
+    const Flat& low = pocketSection[0];
+    const Flat& high = pocketSection[1];
     if (rising) {
       bitten.insert(bitten.end(), {low, pocketSection[3], pocketSection[2], high});
     } else {
@@ -666,8 +716,15 @@ std::vector<Plate> pocketSurround(const std::vector<Plate>& plates, const MitreT
     }
   }
   if (bitten.size() != wood.size() + 4) {
-    throwBadInput("", "the pocket of a mitre tenon does not lie on the mitre of " + plateLabel(pocket));
+    throwBadInput("", "the pocket of a mitre joint does not lie on the mitre of " + plateLabel(pocket));
   }
+  return bitten;
+}
+
+std::vector<Plate> pocketSurround(const std::vector<Plate>& plates, const MitreTenon& tenon) {
+  const MitreFrame frame = mitreFrame(tenon);
+  const std::vector<Flat> pocketSection = tenonSection(tenon, frame, 0);
+  const std::vector<Flat> bitten = woodAroundPocket(plates, tenon, pocketSection);
   const double half = notchHalfWidth(tenon);
   Plate surround;
   Loop first, second;
@@ -776,6 +833,213 @@ std::optional<MitreTenon> mitreTenonOf(const std::vector<Plate>& plates, const P
   const PlaneFrame frame(pocket.bottom[0][0], axis);
   if (areaAgainst({end}, faceRegion(pocket, ClipperLib::ctIntersection), frame, true) > 1e-6) return std::nullopt;
   return tenon;
+}
+
+namespace {
+
+// The slide seen as a pocket in the slide plate (the tongue plate holding the "tenon"): the frame,
+// the inward direction and the wood around the groove are a mitre tenon's.
+MitreTenon grooveView(const MitreSlide& slide) {
+  MitreTenon view;
+  view.tenonPlate = slide.tonguePlate;
+  view.pocketPlate = slide.slidePlate;
+  view.line = slide.line;
+  view.into = slide.into;
+  view.middle = slide.middle;
+  view.across = slide.across;
+  view.halfHeight = slide.halfHeight;
+  view.depth = slide.depth;
+  view.notchReach = slide.notchReach;
+  return view;
+}
+
+// The tongue's section (root corners [0], [1] on the mitre, their tips [3], [2]), a dovetail:
+// `depth` along `into`, wider at its tip along the root, less `play` all round (the clearance).
+std::vector<Flat> slideSection(const MitreSlide& slide, double play) {
+  const double ix = dot(slide.into, slide.across), iy = dot(slide.into, slide.mitreNormal);
+  const double h = slide.halfHeight - play, d = slide.depth - play;
+  const double tip = slide.halfHeight + slide.lean * slide.depth - play;
+  return {{-h, 0}, {h, 0}, {d * ix + tip, d * iy}, {d * ix - tip, d * iy}};
+}
+
+// The notch through the slide plate, in its plane (MitreSlide::notch).
+Loop slideNotch(const std::vector<Plate>&, const MitreSlide& slide) { return slide.notch; }
+
+// A point of the slide plate's plane: s along the edge from the middle, u inward.
+Vec3 at0(const MitreSlide& slide, const Vec3& inward, double s, double u) {
+  return plus(slide.middle, plus(scaled(slide.line, s), scaled(inward, u)));
+}
+
+Plate prismAlongEdge(const MitreTenon& view, const std::vector<Flat>& section, double from, double to) {
+  const MitreFrame frame = mitreFrame(view);
+  Plate prism;
+  Loop first, second;
+  for (const Flat& q : section) {
+    first.push_back(frame.at(q, from));
+    second.push_back(frame.at(q, to));
+  }
+  prism.bottom = {first};
+  prism.top = {second};
+  return prism;
+}
+
+// Where the slide plate's other sides come within the notch's reach of its mitre, along the edge:
+// the nearest such point behind the middle (s < 0) and ahead (s > 0), from both its faces.
+std::pair<double, double> cornersAlongEdge(const Plate& plate, const MitreSlide& slide, const Vec3& inward,
+                                           double mitreFrom, double mitreTo) {
+  double behind = -HUGE_VAL, ahead = HUGE_VAL;
+  for (const std::vector<Loop>* face : {&plate.bottom, &plate.top}) {
+    for (const Loop& loop : *face) {
+      for (size_t k = 0; k < loop.size(); ++k) {
+        const Vec3 a = minus(loop[k], slide.middle), b = minus(loop[(k + 1) % loop.size()], slide.middle);
+        const double sa = dot(a, slide.line), sb = dot(b, slide.line), ua = dot(a, inward), ub = dot(b, inward);
+        // The mitre's own edges (along the line, between its outer and inner lines) do not count.
+        const bool alongLine = std::abs(ua - ub) < 1e-6 * (1 + std::abs(sa - sb));
+        if (alongLine && ua >= mitreFrom - 1e-3 && ua <= mitreTo + 1e-3) continue;
+        // The part of the edge with u <= notchReach.
+        double t0 = 0, t1 = 1;
+        if (ua > slide.notchReach && ub > slide.notchReach) continue;
+        if (ua > slide.notchReach) t0 = (slide.notchReach - ua) / (ub - ua);
+        if (ub > slide.notchReach) t1 = (slide.notchReach - ua) / (ub - ua);
+        for (const double t : {t0, t1}) {
+          const double sv = sa + t * (sb - sa);
+          if (sv < 0) behind = std::max(behind, sv);
+          if (sv > 0) ahead = std::min(ahead, sv);
+        }
+      }
+    }
+  }
+  return {behind, ahead};
+}
+
+}  // namespace
+
+std::optional<MitreSlide> mitreSlideOf(const std::vector<Plate>& plates, const PlateContact& contact, int slidePlate,
+                                       const Vec3& d) {
+  if (contact.crossing || (contact.a != slidePlate && contact.b != slidePlate) || contact.region.size() < 3)
+    return std::nullopt;
+  MitreSlide slide;
+  slide.slidePlate = slidePlate;
+  slide.tonguePlate = contact.a == slidePlate ? contact.b : contact.a;
+  const Plate& plate = plates[slidePlate];
+  // Edge to edge: neither face on the contact (those are T joints and laps).
+  for (const Plate* p : {&plate, &plates[slide.tonguePlate]}) {
+    if (std::abs(dot(contact.normal, plateThicknessAxis(*p))) > 1 - kSquare) return std::nullopt;
+  }
+  const Vec3 edge = normalized(contact.edgeDirection);
+  if (std::abs(std::abs(dot(edge, normalized(d))) - 1) > 1e-12) return std::nullopt;  // along the edge only
+  // The way out itself, and the mitre's normal made square to it: every face of the groove but its
+  // stop then lies along d to rounding of doubles (the edge and d may differ by 1e-9).
+  slide.line = normalized(d);
+  const Vec3 normal = contact.a == slidePlate ? negated(contact.normal) : contact.normal;  // tongue -> slide plate
+  slide.mitreNormal = normalized(minus(normal, scaled(slide.line, dot(normal, slide.line))));
+  slide.across = normalized(cross(slide.mitreNormal, slide.line));
+  slide.into = normalized(cross(plateThicknessAxis(plate), slide.line));
+  if (dot(slide.into, slide.mitreNormal) < 0) slide.into = negated(slide.into);
+  if (dot(slide.into, slide.mitreNormal) < 0.05) return std::nullopt;  // the mitre all but lies in the plate
+  const auto [s0, s1] = extentAlong(contact.region, contact.region[0], slide.line);
+  const auto [x0, x1] = extentAlong(contact.region, contact.region[0], slide.across);
+  slide.middle = plus(contact.region[0], plus(scaled(slide.line, (s0 + s1) / 2), scaled(slide.across, (x0 + x1) / 2)));
+  const double halfLength = (s1 - s0) / 2;
+  slide.halfHeight = (x1 - x0) / 8;  // a quarter of the mitre's height, as a mitre tenon's root
+  slide.lean = kDovetailSlope;
+  if (2 * slide.halfHeight < 1) return std::nullopt;
+  // As deep as the slide plate holds the groove with a millimetre of wood on both faces.
+  const Vec3 axis = plateThicknessAxis(plate);
+  const double thickness = plateThickness(plate);
+  auto fits = [&](double depth) {
+    slide.depth = depth;
+    for (const Flat& q : slideSection(slide, 0)) {
+      const Vec3 point = plus(slide.middle, plus(scaled(slide.across, q[0]), scaled(slide.mitreNormal, q[1])));
+      const double height = dot(minus(point, plate.bottom[0][0]), axis);
+      if (height < kMortiseMargin || height > thickness - kMortiseMargin) return false;
+    }
+    return true;
+  };
+  constexpr double kShallowestGroove = 2.0;  // mm
+  double depth = thickness;
+  while (depth >= kShallowestGroove && !fits(depth)) depth *= 0.8;
+  if (depth < kShallowestGroove) return std::nullopt;
+  // The notch runs past the groove and past the mitre.
+  const MitreTenon view = grooveView(slide);
+  const Vec3 inward = pocketInward(plates, view);
+  const MitreFrame frame = mitreFrame(view);
+  double mitreFrom = HUGE_VAL, mitreTo = -HUGE_VAL;  // the mitre's outer and inner lines
+  for (const Vec3& p : contact.region) {
+    mitreFrom = std::min(mitreFrom, dot(minus(p, slide.middle), inward));
+    mitreTo = std::max(mitreTo, dot(minus(p, slide.middle), inward));
+  }
+  for (const Flat& q : slideSection(slide, 0))
+    slide.notchReach = std::max(slide.notchReach, dot(minus(frame.at(q, 0), slide.middle), inward));
+  slide.notchReach = std::max(slide.notchReach, mitreTo) + kMortiseMargin;
+  // Along the edge: the wood around the groove only where the plate's other sides are clear of the
+  // notch; the groove stopped a plate thickness (10 mm at least) short of the end ahead.
+  const auto [behind, ahead] = cornersAlongEdge(plate, slide, inward, mitreFrom, mitreTo);
+  slide.woodFrom = std::max(behind, -halfLength) + kMortiseMargin;
+  slide.tongueFrom = slide.woodFrom;
+  slide.tongueTo = std::min(halfLength - std::max(10.0, thickness), ahead - kMortiseMargin);
+  constexpr double kShortestGroove = 10.0;  // mm
+  if (slide.tongueTo - slide.woodFrom < kShortestGroove) return std::nullopt;
+  const PlaneFrame planeFrame(plate.bottom[0][0], axis);
+  // The notch: the band at the mitre from the groove's stop back past all of the plate, out
+  // through its side behind the corner (the tongue leaves through it; where the band's inner edge
+  // crosses that mitred side, the cut's wall meets it along the edge: secondFacePartner).
+  double rearmost = 0;
+  for (const std::vector<Loop>* face : {&plate.bottom, &plate.top})
+    for (const Loop& loop : *face)
+      for (const Vec3& p : loop) rearmost = std::min(rearmost, dot(minus(p, slide.middle), slide.line));
+  slide.notchFrom = rearmost - 10;
+  const double out = -2 * (thickness + slide.depth);
+  slide.notch = {at0(slide, inward, slide.notchFrom, out), at0(slide, inward, slide.tongueTo, out),
+                 at0(slide, inward, slide.tongueTo, slide.notchReach), at0(slide, inward, slide.notchFrom, slide.notchReach)};
+  // The band's inner edge leaves the plate behind through one side on both faces (its wall meets
+  // that side: secondFacePartner); where a face's outline turns between them, it would not.
+  auto sideCrossedBehind = [&](const Loop& loop) {
+    int side = -1;
+    double nearest = -HUGE_VAL;
+    for (size_t k = 0; k < loop.size(); ++k) {
+      const Vec3 a = minus(loop[k], slide.middle), b = minus(loop[(k + 1) % loop.size()], slide.middle);
+      const double ua = dot(a, inward), ub = dot(b, inward);
+      if ((ua - slide.notchReach) * (ub - slide.notchReach) > 0 || ua == ub) continue;
+      const double t = (slide.notchReach - ua) / (ub - ua);
+      const double sv = dot(a, slide.line) + t * (dot(b, slide.line) - dot(a, slide.line));
+      if (sv < slide.woodFrom && sv > nearest) {
+        nearest = sv;
+        side = static_cast<int>(k);
+      }
+    }
+    return side;
+  };
+  if (sideCrossedBehind(plate.bottom[0]) != sideCrossedBehind(plate.top[0]) || sideCrossedBehind(plate.bottom[0]) < 0)
+    return std::nullopt;
+  // A plate whose outline comes back to the band behind (not convex there) would fall apart.
+  {
+    ClipperLib::Clipper clipper;
+    clipper.AddPaths(clipperPaths(plate.bottom, planeFrame), ClipperLib::ptSubject, true);
+    clipper.AddPaths(clipperPaths({slide.notch}, planeFrame), ClipperLib::ptClip, true);
+    ClipperLib::PolyTree left;
+    clipper.Execute(ClipperLib::ctDifference, left, ClipperLib::pftEvenOdd, ClipperLib::pftNonZero);
+    if (left.ChildCount() != 1) return std::nullopt;
+  }
+  // The notch's end past the mitre lies where the plate is whole, so that its cut ends in wood.
+  auto at = [&](double s, double u) { return plus(slide.middle, plus(scaled(slide.line, s), scaled(inward, u))); };
+  const Loop end{at(slide.woodFrom, mitreTo), at(slide.tongueTo, mitreTo), at(slide.tongueTo, slide.notchReach),
+                 at(slide.woodFrom, slide.notchReach)};
+  if (areaAgainst({end}, faceRegion(plate, ClipperLib::ctIntersection), planeFrame, true) > 1e-6) return std::nullopt;
+  return slide;
+}
+
+std::vector<Vec3> mitreSlideFaceNormals(const MitreSlide& slide) {
+  // In the section (x along `across`, y along the mitre's normal) the flanks run from the root
+  // corners along (ix -+ lean, iy); their normals, from the slide plate into the tongue.
+  const double ix = dot(slide.into, slide.across), iy = dot(slide.into, slide.mitreNormal);
+  const Vec3 low = normalized(minus(scaled(slide.across, iy), scaled(slide.mitreNormal, ix - slide.lean)));
+  const Vec3 high = normalized(plus(scaled(slide.across, -iy), scaled(slide.mitreNormal, ix + slide.lean)));
+  return {negated(slide.mitreNormal), low, high, negated(slide.line)};
+}
+
+CutFootprint mitreSlideFootprint(const std::vector<Plate>& plates, const MitreSlide& slide) {
+  return {slide.slidePlate, 3, slideNotch(plates, slide)};
 }
 
 Loop FaceTenon::footprint(double grow) const {
@@ -890,7 +1154,8 @@ std::vector<Plate> cutTenonJoints(const std::vector<Plate>& plates, const std::v
                                   const JointCutOptions& options, const std::vector<SlotCut>& slots,
                                   const std::vector<DovetailCut>& dovetails,
                                   const std::vector<MitreTenon>& mitreTenons,
-                                  const std::vector<FaceTenon>& faceTenons) {
+                                  const std::vector<FaceTenon>& faceTenons,
+                                  const std::vector<MitreSlide>& mitreSlides) {
   std::vector<std::vector<Loop>> added(plates.size()), removed(plates.size());
   // Dovetail housings per plate and face (0: first face, 1: second), and the solids they attach.
   std::vector<std::array<std::vector<Loop>, 2>> housings(plates.size());
@@ -909,6 +1174,14 @@ std::vector<Plate> cutTenonJoints(const std::vector<Plate>& plates, const std::v
     removed[tenon.pocketPlate].push_back(pocketNotch(plates, tenon));
     for (Plate& piece : pocketSurround(plates, tenon)) attached[tenon.pocketPlate].push_back(std::move(piece));
     attached[tenon.tenonPlate].push_back(mitreTenonSolid(tenon, options.clearance));
+  }
+  for (const MitreSlide& slide : mitreSlides) {
+    const MitreTenon view = grooveView(slide);
+    removed[slide.slidePlate].push_back(slideNotch(plates, slide));
+    attached[slide.slidePlate].push_back(
+        prismAlongEdge(view, woodAroundPocket(plates, view, slideSection(slide, 0)), slide.woodFrom, slide.tongueTo));
+    attached[slide.tonguePlate].push_back(
+        prismAlongEdge(view, slideSection(slide, options.clearance / 2), slide.tongueFrom, slide.tongueTo - options.clearance / 2));
   }
   for (const FaceTenon& tenon : faceTenons) {
     // A blind mortise is a housing from the lap's face, as deep as the block (a dovetail's depth).

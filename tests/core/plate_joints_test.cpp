@@ -817,6 +817,77 @@ TEST(PlateFaceTenons, AStubTenonOnALapLeavesStraightOffIt) {
   EXPECT_TRUE(plateCollidesAlong(jointed[1], jointed[0], {1, 0, 0}, 0.05));
 }
 
+// The halved joint's variant for a mitre (paper Fig. 16b): the plate leaving along the shared edge
+// slides off a dovetail tongue on the other plate, in a groove stopped ahead and run out past its
+// corner behind; it leaves that way only.
+TEST(PlateMitreSlides, ATongueInAGrooveAlongTheMitreLetsThePlateSlideOutOneWay) {
+  const AssemblyDocument box = loadPlateExample("mitred_box.json");
+  const std::vector<PlateContact> contacts = computePlateContacts(box.plates, {});
+  const PlateContact& contact = contacts.at(0);
+  const int slidePlate = contact.a, tonguePlate = contact.b;
+  const Vec3 line = normalized(contact.edgeDirection);
+  std::optional<MitreSlide> slide = mitreSlideOf(box.plates, contact, slidePlate, line);
+  Vec3 leave = line;
+  if (!slide) {
+    slide = mitreSlideOf(box.plates, contact, slidePlate, negated(line));
+    leave = negated(line);
+  }
+  ASSERT_TRUE(slide.has_value());
+  EXPECT_FALSE(mitreSlideOf(box.plates, contact, slidePlate, contact.normal).has_value()) << "across the edge: no slide";
+  const std::vector<Plate> jointed = cutTenonJoints(box.plates, {}, {}, {}, {}, {}, {}, {*slide});
+  validatePlates(jointed, {}, "jointed");
+  for (const Plate& plate : jointed) EXPECT_NO_THROW(checkClosedMesh(plateMesh(plate), "jointed"));
+  const std::vector<Plate> pair{jointed[slidePlate], jointed[tonguePlate]};
+  Assembly two;
+  two.parts = {{1, "slide"}, {2, "tongue"}};
+  for (const PlateContact& c : computePlateContacts(pair, {})) two.contacts.push_back({c.a, c.b, c.normal, c.area});
+  const Vec3 axis = plateThicknessAxis(box.plates[slidePlate]);
+  for (const Vec3& d : {leave, negated(leave), contact.normal, negated(contact.normal), axis, negated(axis),
+                        plateThicknessAxis(box.plates[tonguePlate]), negated(plateThicknessAxis(box.plates[tonguePlate]))}) {
+    EXPECT_EQ(isPartFreeAlong(two, nullptr, 0, d), dot(d, leave) > 1 - 1e-9) << d[0] << "," << d[1] << "," << d[2];
+  }
+  EXPECT_FALSE(plateCollidesAlong(pair[0], pair[1], leave, 0.05));
+  EXPECT_TRUE(plateCollidesAlong(pair[0], pair[1], negated(leave), 0.05));  // the groove's stop
+  EXPECT_TRUE(plateCollidesAlong(pair[0], pair[1], negated(contact.normal), 0.05));  // the dovetail holds it
+}
+
+// Every slide the LIZARD's mitres offer (38 plates from a low-poly mesh, corners of all angles)
+// cuts into plates that are valid solids, and lets its plate out along its edge only.
+TEST(PlateMitreSlides, EverySlideOfTheLizardCutsIntoValidPlates) {
+  const AssemblyDocument lizard = loadPlateExample("lizard.json");
+  const std::vector<PlateContact> contacts = computePlateContacts(lizard.plates, {});
+  int made = 0, free = 0;
+  for (const PlateContact& contact : contacts) {
+    for (const int plate : {contact.a, contact.b}) {
+      for (const double sign : {1.0, -1.0}) {
+        const std::optional<MitreSlide> slide =
+            mitreSlideOf(lizard.plates, contact, plate, scaled(normalized(contact.edgeDirection), sign));
+        if (!slide) continue;
+        ++made;
+        std::vector<Plate> jointed;
+        try {
+          jointed = cutTenonJoints(lizard.plates, {}, {}, {}, {}, {}, {}, {*slide});
+          validatePlates(jointed, {}, "jointed");
+        } catch (const Error& e) {
+          ADD_FAILURE() << "plate " << lizard.plates[plate].id << " sliding off " << lizard.plates[slide->tonguePlate].id
+                        << ": " << e.what();
+          continue;
+        }
+        const std::vector<Plate> pair{jointed[plate], jointed[slide->tonguePlate]};
+        // The joint adds no collision on the way out (the plates may meet elsewhere: the lizard's
+        // body folds round its legs), and closes the way back.
+        if (!plateCollidesAlong(lizard.plates[plate], lizard.plates[slide->tonguePlate], slide->line, 0.05)) {
+          ++free;
+          EXPECT_FALSE(plateCollidesAlong(pair[0], pair[1], slide->line, 0.05)) << lizard.plates[plate].id;
+        }
+        EXPECT_TRUE(plateCollidesAlong(pair[0], pair[1], negated(slide->line), 0.05)) << lizard.plates[plate].id;
+      }
+    }
+  }
+  EXPECT_GT(made, 20);
+  EXPECT_GT(free, 10);
+}
+
 TEST(PlateMitreTenons, MitredBoxAndDodecahedronDesignWithMilledJointsAndVerify) {
   for (const char* name : {"mitred_box.json", "dodecahedron.json", "cube.json"}) {
     const AssemblyDocument shape = loadPlateExample(name);
@@ -825,7 +896,8 @@ TEST(PlateMitreTenons, MitredBoxAndDodecahedronDesignWithMilledJointsAndVerify) 
     options.realization = JointRealization::Milled;
     const PlateDesignResult result = designPlateJoints(shape.plates, computePlateContacts(shape.plates, {}), options);
     ASSERT_EQ(result.status, PlateDesignStatus::Success) << name << ": " << result.message;
-    for (const PlateJoint& joint : result.joints) EXPECT_EQ(joint.type, JointType::MitreTenon) << name;
+    for (const PlateJoint& joint : result.joints)
+      EXPECT_TRUE(joint.type == JointType::MitreTenon || joint.type == JointType::MitreSlide) << name;
     std::vector<Plate> inOrder;
     for (int index : result.order) inOrder.push_back(result.jointedPlates[static_cast<size_t>(index)]);
     for (const Plate& plate : inOrder) EXPECT_NO_THROW(checkClosedMesh(plateMesh(plate), name));

@@ -25,11 +25,14 @@ enum class JointType {
   Dovetail,      // milled: a sliding dovetail along the edge, out through the housing's open end
   MitreTenon,    // milled: plates meeting edge to edge at an angle, a tenon across the mitre into a
                  // pocket that fits it (paper Fig. 16a); the plate leaves straight out of the pocket
+  MitreSlide,    // milled: plates meeting edge to edge at an angle, a dovetail tongue on one
+                 // running in a stopped groove in the other along the edge (paper Fig. 16b)
   FaceTenon,     // milled: plates lying face to face (a lap), a stub tenon on one in a blind
                  // mortise in the other; the plate leaves straight off the lap
   Empty,         // the plates only touch
 };
-// "mortise-tenon", "halved", "dovetail", "mitre-tenon", "face-tenon", "empty"
+// "mortise-tenon", "halved", "dovetail", "mitre-tenon", "mitre-slide", "face-tenon",
+// "empty"
 const char* jointTypeName(JointType type);
 
 // What a design makes of its joints.

@@ -96,6 +96,43 @@ struct DovetailCut {
   int openEnd = 1;
 };
 
+// A sliding joint along a mitre (milled; the paper's Fig. 16b, a halved joint for plates that
+// meet at an angle with surface contact): the plate leaving along the shared edge (`slidePlate`)
+// gets a groove of dovetail section in its mitre face, open towards its end behind it and stopped
+// ahead; the other plate carries the tongue that runs in it. The slide plate can then leave only
+// along the edge, forwards. The groove is a notch through the slide plate at its mitre with its
+// wood given back around the groove (an attached prism) where the plate's other sides are clear;
+// between there and its corner behind, the notch leaves the edge cut back (the tongue runs out
+// through that gap).
+struct MitreSlide {
+  int slidePlate = 0, tonguePlate = 0;
+  Vec3 line{0, 0, 0};     // unit: the slide plate's way out, along the edge
+  Vec3 mitreNormal{0, 0, 0};  // unit: the mitre's normal from the tongue plate into the slide plate
+  Vec3 into{0, 0, 0};     // unit: the groove's depth, in the slide plate's plane across the edge (its
+                          // faces leave the most wood round the groove that way)
+  Vec3 middle{0, 0, 0};   // on the mitre face: where s = 0 along the edge, the tongue's root's middle across
+  Vec3 across{0, 0, 0};   // unit, in the mitre face, perpendicular to the edge
+  double halfHeight = 0;  // the tongue's root's half extent across the edge
+  double depth = 0;       // how far it reaches into the slide plate, along `into`
+  double lean = 0;        // how much wider its tip is on each side, per mm of depth (a dovetail)
+  double tongueFrom = 0, tongueTo = 0;  // the tongue's extent along the edge; tongueTo is the groove's stop
+  double woodFrom = 0;    // where the slide plate's wood around the groove begins again
+  double notchFrom = 0;   // the notch's open end, past the slide plate's corner behind
+  double notchReach = 0;  // how far the notch runs into the slide plate from the mitre
+  Loop notch;             // the cut through the slide plate: the band at the mitre from its stop
+                          // back past the whole plate
+};
+
+// The slide along the mitre `contact` for `slidePlate` leaving along d (parallel to the shared
+// edge), when the plates leave room for the groove and the tongue (a millimetre of wood round the
+// groove, a groove at least 10 mm long with wood all round it); nothing otherwise.
+std::optional<MitreSlide> mitreSlideOf(const std::vector<Plate>& plates, const PlateContact& contact, int slidePlate,
+                                       const Vec3& d);
+
+// The normals of a slide's faces, from the slide plate into the tongue plate: the groove's floor
+// (and the mitre), its two flanks, and its stop.
+std::vector<Vec3> mitreSlideFaceNormals(const MitreSlide& slide);
+
 // A stub tenon on a lap (milled; two plates lying face to face, as the CHAIR's repair bars on its
 // legs): a block on the tenon plate's face, a third of the lap's length and width in its middle,
 // standing into a blind mortise as deep as a third of the other plate's thickness (a housing cut
@@ -170,7 +207,8 @@ std::vector<Plate> cutTenonJoints(const std::vector<Plate>& plates, const std::v
                                   const JointCutOptions& options, const std::vector<SlotCut>& slots = {},
                                   const std::vector<DovetailCut>& dovetails = {},
                                   const std::vector<MitreTenon>& mitreTenons = {},
-                                  const std::vector<FaceTenon>& faceTenons = {});
+                                  const std::vector<FaceTenon>& faceTenons = {},
+                                  const std::vector<MitreSlide>& mitreSlides = {});
 
 // Where a joint's cut lies in a plate: a region of its face (a loop on or parallel to it), through
 // the plate (faces = 3) or into it from its first (1) or second (2) face only. Cuts of different
@@ -187,6 +225,7 @@ CutFootprint dovetailFootprint(const std::vector<Plate>& plates, const DovetailC
 CutFootprint slotFootprint(const SlotCut& slot);
 CutFootprint mitreTenonFootprint(const std::vector<Plate>& plates, const MitreTenon& tenon);
 CutFootprint faceTenonFootprint(const std::vector<Plate>& plates, const FaceTenon& tenon);
+CutFootprint mitreSlideFootprint(const std::vector<Plate>& plates, const MitreSlide& slide);
 // Both in one plate, sharing a face, their regions overlapping inside the plate (more than a
 // thousandth of a square millimetre).
 bool footprintsOverlap(const std::vector<Plate>& plates, const CutFootprint& a, const CutFootprint& b);
