@@ -395,9 +395,10 @@ Vec3 squaredToPlan(Vec3 normal, const std::vector<Vec3>& directions) {
   return normalized(normal);
 }
 
-JointedPlan cutPlan(const std::vector<Plate>& plates, const PlateGraph& graph, const std::vector<PlateJoint>& joints,
-                    const std::vector<int>& order, const std::vector<Vec3>& directions, const PlateOptions& geometry,
-                    double clearance, const JointCutOptions& options) {
+// The plates with the joints cut into them (and their milled solids attached).
+std::vector<Plate> jointedPlates(const std::vector<Plate>& plates, const PlateGraph& graph,
+                                 const std::vector<PlateJoint>& joints, double clearance,
+                                 const JointCutOptions& options) {
   std::vector<TenonSite> sites;
   std::vector<SlotCut> slots;
   std::vector<DovetailCut> dovetails;
@@ -419,8 +420,14 @@ JointedPlan cutPlan(const std::vector<Plate>& plates, const PlateGraph& graph, c
   }
   JointCutOptions cut = options;
   cut.clearance = clearance;
+  return cutTenonJoints(plates, sites, cut, slots, dovetails, mitreTenons, faceTenons, mitreSlides);
+}
+
+JointedPlan cutPlan(const std::vector<Plate>& plates, const PlateGraph& graph, const std::vector<PlateJoint>& joints,
+                    const std::vector<int>& order, const std::vector<Vec3>& directions, const PlateOptions& geometry,
+                    double clearance, const JointCutOptions& options) {
   JointedPlan plan;
-  plan.plates = cutTenonJoints(plates, sites, cut, slots, dovetails, mitreTenons, faceTenons, mitreSlides);
+  plan.plates = jointedPlates(plates, graph, joints, clearance, options);
   validatePlates(plan.plates, geometry, "the jointed plates");
   std::vector<int> position(plates.size(), 0);
   for (size_t k = 0; k < order.size(); ++k) {
