@@ -65,7 +65,7 @@ test('options that are not a plain object are refused, naming the function and t
 
 test('unknown option names are refused with the accepted ones listed', async () => {
   const cases = [
-    ['exportAssembly', [k9, { fromat: 'obj' }], 'fromat', 'format, part, voxelSize, source, sheet, sheetIndex, kerf, spacing or hairline'],
+    ['exportAssembly', [k9, { fromat: 'obj' }], 'fromat', 'format, part, voxelSize, clearance, source, sheet, sheetIndex, kerf, spacing or hairline'],
     ['check', [k9, { methd: 'lp' }], 'methd', 'method, source or graphs'],
     ['parseDocument', [k9, { name: 'k9' }], 'name', 'source'],
     ['voxelize', [octahedron, { resolutoin: 8 }], 'resolutoin', 'resolution or source'],
