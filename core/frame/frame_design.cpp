@@ -202,7 +202,9 @@ class FrameDesigner {
     stepOf_.assign(beams, -1);
   }
 
-  FrameDesignResult run();
+  // The restarted search below the node `prefix` (the root: a whole design); the prefix's steps
+  // stay, restarts re-seed below that node.
+  FrameDesignResult run(const std::vector<Step>& prefix = {});
 
   // For the session (FrameDesignSession): why no design can exist (a cut point, too few beams);
   // the ranked children of the current node; moving down and up the tree; and a complete design
@@ -690,12 +692,24 @@ bool FrameDesigner::completeHere(FrameDesignResult* result) {
   return true;
 }
 
-FrameDesignResult FrameDesigner::run() {
+FrameDesignResult FrameDesigner::run(const std::vector<Step>& prefix) {
   if (std::optional<FrameDesignResult> refused = refusal()) return *refused;
   FrameDesignResult result;
   FrameDesignProgress& progress = result.progress;
   const int beams = static_cast<int>(frame_.beams.size());
   progress.targetParts = beams;
+  // The floor: the search never goes above the prefix's node.
+  for (const Step& step : prefix) apply(step);
+  const size_t floor = prefix.size();
+  if (static_cast<int>(floor) + 1 >= beams) {  // a complete node: nothing left to search
+    progress.depth = progress.bestDepth = beams;
+    if (!completeHere(&result)) {
+      result.status = FrameDesignStatus::NotFound;
+      result.message = "this complete design fails: " + lastRejection_;
+    }
+    return result;
+  }
+  const int remaining = beams - static_cast<int>(floor);  // beams the search still decides
   // Restarts (see the top): attempt k searches with the random state attemptSeed(seed, k) for at
   // most restartUnit * luby(k) work (and 12 nodes per beam times luby(k)). Within an attempt, iterative widening: a tree searched to
   // the end with m children per node is searched again with 2m (up to 32), so a narrow first
@@ -703,10 +717,10 @@ FrameDesignResult FrameDesigner::run() {
   bool complete = false, exhausted = false;
   for (int64_t attempt = 0; !complete && !exhausted; ++attempt) {
     random_ = attemptSeed(options_.seed, attempt);
-    const int64_t budget = restartUnit(beams) * lubyTerm(attempt);
+    const int64_t budget = restartUnit(remaining) * lubyTerm(attempt);
     // Nodes too: dead ends near the last beam are cheap, and thousands of them there mean a choice
     // far above went wrong.
-    const int64_t nodeBudget = std::max<int64_t>(1000, 12 * int64_t(beams)) * lubyTerm(attempt);
+    const int64_t nodeBudget = std::max<int64_t>(1000, 12 * int64_t(remaining)) * lubyTerm(attempt);
     const int64_t attemptStart = work_, attemptNodes = progress.nodes;
     bool outOfBudget = false;
   for (width_ = options_.candidates; !complete && !outOfBudget; width_ *= 2) {
@@ -737,7 +751,7 @@ FrameDesignResult FrameDesigner::run() {
       }
       if (pending.back().empty()) {  // no child left here: back to the parent's next sibling
         pending.pop_back();
-        if (!path_.empty()) undo(path_.back());
+        if (path_.size() > floor) undo(path_.back());
         continue;
       }
       const Step step = pending.back().front();
@@ -762,12 +776,14 @@ FrameDesignResult FrameDesigner::run() {
       }
       pending.push_back(childrenOfCurrent());
     }
-    while (!path_.empty() && !complete) undo(path_.back());
+    while (path_.size() > floor && !complete) undo(path_.back());
   }
   }
   if (!complete) {
     result.status = FrameDesignStatus::NotFound;
-    result.message = "no interlocking joints exist within the search (" + std::to_string(progress.nodes) +
+    result.message = std::string(floor == 0 ? "no interlocking joints exist within the search ("
+                                            : "no interlocking joints exist below this node (") +
+                     std::to_string(progress.nodes) +
                      " nodes; deepest " + std::to_string(progress.bestDepth) + " of " + std::to_string(beams) +
                      " beams)";
     return result;
@@ -785,9 +801,10 @@ FrameDesignResult FrameDesigner::run() {
 // labels and path follow the session's path (take / untake).
 struct FrameDesignSession::State {
   State(FrameLayout layout_, const FrameDesignOptions& options)
-      : layout(std::move(layout_)), designer(layout, options) {}
+      : layout(std::move(layout_)), designer(layout, options), options(options) {}
   FrameLayout layout;
   FrameDesigner designer;
+  FrameDesignOptions options;  // what finish() searches with (its limits replaced)
   std::vector<Step> path;
   std::vector<FrameDesignStep> steps;
   std::vector<std::optional<std::vector<Step>>> children{std::nullopt};  // per node on the path, root first
@@ -886,6 +903,25 @@ bool FrameDesignSession::back() {
   state.children.pop_back();
   state.showProgress();
   return true;
+}
+
+FrameDesignResult FrameDesignSession::finish(const FrameDesignLimits& limits) {
+  const State& state = *state_;
+  if (complete()) return state.result;  // a complete node: its verified design
+  FrameDesignOptions options = state.options;
+  options.timeLimitSeconds = limits.timeLimitSeconds;
+  options.nodeLimit = limits.nodeLimit > 0 ? limits.nodeLimit : std::numeric_limits<int64_t>::max();
+  options.onProgress = limits.onProgress;
+  options.deepestSnapshots = limits.deepestSnapshots;
+  // A designer of its own: its random state does not depend on what this session explored before,
+  // and the session's labels and children stay as they are.
+  FrameDesigner designer(state.layout, options);
+  FrameDesignResult result = designer.run(state.path);
+  if (result.status == FrameDesignStatus::Success) {
+    const std::string failure = frameDesignFailure(state.layout, result.labels, result.order, result.directions);
+    if (!failure.empty()) throw Error(ErrorCode::Internal, "the frame design did not verify: " + failure);
+  }
+  return result;
 }
 
 const char* frameDesignStatusName(FrameDesignStatus status) {

@@ -23,6 +23,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <optional>
 
 #include "analysis/part_motion.h"
@@ -485,9 +486,11 @@ class PlateJointPlanner {
     }
   }
 
-  PlateDesignResult run();
+  // The restarted search below the node `prefix` (the root: a whole design); the prefix's steps
+  // stay, restarts re-seed below that node.
+  PlateDesignResult run(const std::vector<Step>& prefix = {});
   enum class Outcome { Found, Exhausted, OutOfBudget, Stopped };
-  Outcome searchTree(int64_t budget, PlateDesignResult* result);
+  Outcome searchTree(int64_t budget, const std::vector<Step>& prefix, PlateDesignResult* result);
 
   // What the search and a step-by-step session share.
   // A structure no joints can make interlocking (a cut point, fewer than 3 plates): its result.
@@ -742,13 +745,15 @@ std::optional<PlateDesignResult> PlateJointPlanner::refusal() const {
   return std::nullopt;
 }
 
-// One search tree of the restarts (see run): depth first over the construction tree, kept on an
-// explicit stack of ranked children, for at most `budget` nodes.
-PlateJointPlanner::Outcome PlateJointPlanner::searchTree(int64_t budget, PlateDesignResult* result) {
+// One search tree of the restarts (see run): depth first over the subtree of the node `prefix`
+// (the root for a whole design), kept on an explicit stack of ranked children, for at most `budget`
+// nodes. It never ascends above `prefix`.
+PlateJointPlanner::Outcome PlateJointPlanner::searchTree(int64_t budget, const std::vector<Step>& prefix,
+                                                         PlateDesignResult* result) {
   PlateDesignProgress& progress = result->progress;
   const int64_t first = progress.nodes;
-  std::vector<std::vector<Step>> pending{childrenOf({})};
-  std::vector<Step> path;
+  std::vector<std::vector<Step>> pending{childrenOf(prefix)};
+  std::vector<Step> path = prefix;
   while (!pending.empty()) {
     if (progress.nodes - first >= budget) return Outcome::OutOfBudget;
     ++progress.nodes;
@@ -771,7 +776,7 @@ PlateJointPlanner::Outcome PlateJointPlanner::searchTree(int64_t budget, PlateDe
     }
     if (pending.back().empty()) {  // no child left here: back to the parent's next sibling
       pending.pop_back();
-      if (!path.empty()) path.pop_back();
+      if (path.size() > prefix.size()) path.pop_back();
       continue;
     }
     path.push_back(pending.back().front());
@@ -795,26 +800,39 @@ PlateJointPlanner::Outcome PlateJointPlanner::searchTree(int64_t budget, PlateDe
   return Outcome::Exhausted;
 }
 
-PlateDesignResult PlateJointPlanner::run() {
+PlateDesignResult PlateJointPlanner::run(const std::vector<Step>& prefix) {
   if (std::optional<PlateDesignResult> refused = refusal()) return *refused;
   PlateDesignResult result;
   PlateDesignProgress& progress = result.progress;
   progress.targetParts = graph_.plateCount;
+  if (static_cast<int>(prefix.size()) + 1 >= graph_.plateCount) {  // a complete node: nothing left to search
+    progress.depth = progress.bestDepth = graph_.plateCount;
+    if (!acceptComplete(prefix, &result)) {
+      result.status = PlateDesignStatus::NotFound;
+      result.message = "this complete plan fails: " + lastRejection_;
+      return result;
+    }
+    result.message = "designed " + std::to_string(result.joints.size()) + " joints";
+    return result;
+  }
   // Restarts (core/model/restarts.h): a wrong choice near the root (the CABINET's shelf as the
   // key: 5,811 nodes of plans whose roof cannot close) is searched to its end by one depth-first
   // tree; tree k gets luby(k) units of nodes and its own tie-breaking order. A tree searched to
   // its end within its budget proves that no plan exists: the ties only order the children.
-  const int64_t unit = std::max<int64_t>(64, 4 * int64_t(graph_.plateCount));
+  // Below a prefix the unit counts the plates still to take (the same for a whole design).
+  const int64_t unit = std::max<int64_t>(64, 4 * int64_t(graph_.plateCount - static_cast<int>(prefix.size())));
   Outcome outcome = Outcome::OutOfBudget;
   for (int64_t attempt = 0; outcome == Outcome::OutOfBudget; ++attempt) {
     random_ = restartState(options_.seed, attempt, options_.seed * 0x9E3779B97F4A7C15ull + 1);
-    outcome = searchTree(unit * lubyTerm(attempt), &result);
+    outcome = searchTree(unit * lubyTerm(attempt), prefix, &result);
   }
   if (outcome == Outcome::Stopped) return result;
   if (outcome == Outcome::Exhausted) {
     result.status = PlateDesignStatus::NotFound;
     result.message =
-        "no interlocking joint plan exists within the search (" + std::to_string(progress.nodes) + " nodes; deepest " +
+        std::string(prefix.empty() ? "no interlocking joint plan exists within the search ("
+                                   : "no interlocking joint plan exists below this node (") +
+        std::to_string(progress.nodes) + " nodes; deepest " +
         std::to_string(progress.bestDepth) + " of " + std::to_string(graph_.plateCount) + " plates" +
         (lastRejection_.empty() ? std::string(")")
                                 : "; the last complete plan failed on its jointed plates: " + lastRejection_ + ")") +
@@ -895,10 +913,11 @@ bool PlateJointPlanner::acceptComplete(const std::vector<Step>& path, PlateDesig
 // ranked children of every node on its path, generated when first asked for.
 struct PlateDesignSession::State {
   State(std::vector<Plate> plates_, std::vector<PlateContact> contacts_, const PlateDesignOptions& options)
-      : plates(std::move(plates_)), contacts(std::move(contacts_)), planner(plates, contacts, options) {}
+      : plates(std::move(plates_)), contacts(std::move(contacts_)), planner(plates, contacts, options), options(options) {}
   std::vector<Plate> plates;
   std::vector<PlateContact> contacts;
   PlateJointPlanner planner;
+  PlateDesignOptions options;  // what finish() searches with (its limits replaced)
   std::vector<Step> path;
   std::vector<PlateDesignStep> steps;
   std::vector<std::optional<std::vector<Step>>> children{std::nullopt};  // per node on the path, root first
@@ -991,6 +1010,25 @@ bool PlateDesignSession::back() {
   state.children.pop_back();
   state.showProgress();
   return true;
+}
+
+PlateDesignResult PlateDesignSession::finish(const PlateDesignLimits& limits) {
+  const State& state = *state_;
+  if (complete()) return state.result;  // a complete node: its verified plan
+  PlateDesignOptions options = state.options;
+  options.timeLimitSeconds = limits.timeLimitSeconds;
+  options.nodeLimit = limits.nodeLimit > 0 ? limits.nodeLimit : std::numeric_limits<int64_t>::max();
+  options.onProgress = limits.onProgress;
+  options.deepestSnapshots = limits.deepestSnapshots;
+  // A planner of its own: its tie-breaking does not depend on what this session explored before,
+  // and the session's own children stay as they are.
+  PlateJointPlanner planner(state.plates, state.contacts, options);
+  PlateDesignResult result = planner.run(state.path);
+  if (result.status == PlateDesignStatus::Success) {
+    const std::string failure = planFailure(result.jointAssembly, result.directions);
+    if (!failure.empty()) throw Error(ErrorCode::Internal, "the jointed plates did not verify: " + failure);
+  }
+  return result;
 }
 
 const char* jointTypeName(JointType type) {

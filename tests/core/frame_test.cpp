@@ -457,3 +457,41 @@ TEST(FrameSession, StepByStepGivesAVerifiedDesignAndGoesBack) {
 
 }  // namespace
 }  // namespace desia
+
+namespace desia {
+namespace {
+
+// "Finish automatically from here" on a frame session: the search below the node, the beams
+// taken so far first in the order with their directions, verified, reproducible; the session
+// does not move.
+TEST(FrameSessionFinish, FinishesBelowTheNodeVerifiedAndReproducible) {
+  const FrameDocument cube = loadFrameExample("frame_cube.json");
+  FrameDesignSession session(cube.layout, {});
+  ASSERT_GT(session.childCount(), 1);
+  session.chooseChild(1);  // not the search's own key
+  ASSERT_GT(session.childCount(), 0);
+  session.chooseChild(session.childCount() > 1 ? 1 : 0);
+  const std::vector<FrameDesignStep> chosen = session.steps();
+  ASSERT_EQ(chosen.size(), 2u);
+  FrameDesignLimits limits;
+  limits.nodeLimit = 200000;
+  const FrameDesignResult first = session.finish(limits);
+  ExpectVerifiedResult(cube, first, 12);
+  for (size_t k = 0; k < 2; ++k) {
+    EXPECT_EQ(first.order[k], chosen[k].beam);
+    EXPECT_EQ(first.directions[k], chosen[k].direction);
+  }
+  EXPECT_EQ(session.steps().size(), 2u) << "the session stays where it is";
+  EXPECT_FALSE(session.complete());
+  EXPECT_EQ(frameResultToJson(cube.layout, session.finish(limits)), frameResultToJson(cube.layout, first))
+      << "same path, same bytes";
+  // The session still walks on as before.
+  ASSERT_TRUE(session.next());
+  EXPECT_EQ(session.steps().size(), 3u);
+  FrameDesignLimits tiny;
+  tiny.nodeLimit = 1;
+  EXPECT_EQ(session.finish(tiny).status, FrameDesignStatus::LimitReached);
+}
+
+}  // namespace
+}  // namespace desia

@@ -997,3 +997,62 @@ TEST(PlateJoints, ShadowsThatOnlyTouchAtACornerDoNotCollide) {
 
 }  // namespace
 }  // namespace desia
+
+namespace desia {
+namespace {
+
+// "Finish automatically from here" on a plate session: the search below the node, the plates
+// taken so far first in the order, verified, reproducible; the session does not move.
+TEST(PlateSessionFinish, FinishesBelowTheNodeVerifiedAndReproducible) {
+  const AssemblyDocument table = loadPlateExample("table.json");
+  const std::vector<PlateContact> contacts = computePlateContacts(table.plates, {});
+  PlateDesignSession session(table.plates, contacts, {});
+  // The search's key, then its second-ranked child (the search takes the first): a node with plans
+  // below it (the TABLE's other keys leave none with cut joints).
+  session.chooseChild(0);
+  ASSERT_GT(session.childCount(), 1);
+  const PlateDesignStep searchs = session.childPreview(0);
+  session.chooseChild(1);
+  EXPECT_NE(session.steps()[1].plate, searchs.plate);
+  const std::vector<PlateDesignStep> chosen = session.steps();
+  ASSERT_EQ(chosen.size(), 2u);
+  PlateDesignLimits limits;
+  limits.nodeLimit = 200000;
+  const PlateDesignResult first = session.finish(limits);
+  ASSERT_EQ(first.status, PlateDesignStatus::Success) << first.message;
+  ASSERT_GE(first.order.size(), 2u);
+  for (size_t k = 0; k < 2; ++k) {
+    EXPECT_EQ(first.order[k], chosen[k].plate);
+    EXPECT_EQ(first.directions[k], chosen[k].direction);
+  }
+  EXPECT_EQ(first.jointedPlates.size(), 6u) << "the plan was cut and verified";
+  EXPECT_EQ(jointedPlatesFailure([&] {
+              std::vector<Plate> ordered;
+              for (int plate : first.order) ordered.push_back(first.jointedPlates[plate]);
+              return ordered;
+            }(),
+                                 first.directions, {}),
+            "");
+  EXPECT_EQ(session.steps().size(), 2u) << "the session stays where it is";
+  EXPECT_FALSE(session.complete());
+  const PlateDesignResult second = session.finish(limits);
+  EXPECT_EQ(plateDesignResultToJson(table, first), plateDesignResultToJson(table, second)) << "same path, same bytes";
+  // From the root it is the whole design.
+  while (session.back()) {
+  }
+  EXPECT_EQ(plateDesignResultToJson(table, session.finish(limits)),
+            plateDesignResultToJson(table, designPlateJoints(table.plates, contacts, [] {
+                                      PlateDesignOptions options;
+                                      options.nodeLimit = 200000;
+                                      options.timeLimitSeconds = 0;
+                                      return options;
+                                    }())));
+  // A node limit that stops the search at once is a limit, never an unverified plan.
+  session.chooseChild(0);
+  PlateDesignLimits tiny;
+  tiny.nodeLimit = 1;
+  EXPECT_EQ(session.finish(tiny).status, PlateDesignStatus::LimitReached);
+}
+
+}  // namespace
+}  // namespace desia

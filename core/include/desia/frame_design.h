@@ -40,6 +40,15 @@ struct FrameDesignOptions {
 enum class FrameDesignStatus { Success, NotFound, LimitReached, Cancelled, CutPoint };
 const char* frameDesignStatusName(FrameDesignStatus status);  // "success", "not-found", ...
 
+// The limits and progress callback of a session's finish() (0: no limit; the same meaning as in
+// FrameDesignOptions otherwise).
+struct FrameDesignLimits {
+  double timeLimitSeconds = 0;
+  int64_t nodeLimit = 0;
+  std::function<bool(const FrameDesignProgress&)> onProgress;
+  bool deepestSnapshots = false;
+};
+
 struct FrameDesignResult {
   FrameDesignStatus status = FrameDesignStatus::NotFound;
   std::string message;              // one sentence for the user
@@ -85,6 +94,11 @@ class FrameDesignSession {
   void chooseChild(int n);
   bool next();  // moves to the best child that works; false when none does (then go back)
   bool back();  // moves to the parent; false at the root
+  // "Finish automatically from here": designFrame's restarted search run below the current node,
+  // so the beams taken so far stay, first in the order with their directions and voxels; restarts
+  // re-seed below this node. A success is verified like any design. The session does not move.
+  // Deterministic: the same path and seed give the same result.
+  FrameDesignResult finish(const FrameDesignLimits& limits);
 
  private:
   struct State;

@@ -89,6 +89,15 @@ struct PlateDesignOptions {
 
 enum class PlateDesignStatus { Success, NotFound, LimitReached, Cancelled, CutPoint };
 
+// The limits and progress callback of a session's finish() (0: no limit; the same meaning as in
+// PlateDesignOptions otherwise).
+struct PlateDesignLimits {
+  double timeLimitSeconds = 0;
+  int64_t nodeLimit = 0;
+  std::function<bool(const PlateDesignProgress&)> onProgress;
+  bool deepestSnapshots = false;
+};
+
 struct PlateDesignResult {
   PlateDesignStatus status = PlateDesignStatus::NotFound;
   std::string message;           // one sentence for the user
@@ -140,6 +149,12 @@ class PlateDesignSession {
   void chooseChild(int n);
   bool next();  // moves to the best child that works; false when none does (then go back)
   bool back();  // moves to the parent; false at the root
+  // "Finish automatically from here": designPlateJoints's restarted search run below the current
+  // node, so the plates taken so far stay, first in the order with their directions; restarts
+  // re-seed below this node. A success is verified like any design. The session does not move.
+  // Deterministic: the same path and seed give the same result; from the root it is
+  // designPlateJoints with the session's options and these limits.
+  PlateDesignResult finish(const PlateDesignLimits& limits);
 
  private:
   struct State;
