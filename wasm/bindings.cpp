@@ -279,15 +279,41 @@ class DesignSession {
   }
   bool next() { return guarded([&] { return frames_ ? frames_->next() : plates_ ? plates_->next() : voxels_->generateNextPart(); }); }
   bool back() { return guarded([&] { return frames_ ? frames_->back() : plates_ ? plates_->back() : voxels_->goBack(); }); }
-  // "Finish automatically from here": the designer's search below the current node (voxel
-  // sessions); the same result object as designVoxel. `onProgress` as for designVoxel.
+  // "Finish automatically from here": the designer's search below the current node; the same
+  // result object as designVoxel / designPlate / designFrame, with their onProgress.
   val finish(const std::string& limitsJson, val onProgress) {
     return guarded([&] {
-      if (!voxels_) {
-        throw desia::Error(desia::ErrorCode::Unsupported, std::string("finish: only voxel sessions finish automatically (for a ") +
-                                                              (frames_ ? "frame use designFrame" : "plate design use designPlate") + ")");
-      }
       desia::DesignLimits limits = desia::parseDesignLimitsJson(limitsJson);
+      if (frames_) {
+        desia::FrameDesignLimits frameLimits;
+        frameLimits.timeLimitSeconds = limits.timeLimitSeconds;
+        frameLimits.nodeLimit = limits.nodeLimit;
+        if (onProgress.typeOf().as<std::string>() == "function") {
+          frameLimits.deepestSnapshots = true;
+          frameLimits.onProgress = [&onProgress, gate = SnapshotGate()](const desia::FrameDesignProgress& progress) mutable {
+            val value = parseJsonText(desia::frameDesignProgressToJson(progress));
+            const int placed = static_cast<int>(progress.deepestPlaced.size());
+            if (placed > 0 && gate.isNew(placed)) value.set("snapshot", placedSnapshot(progress.deepestPlaced));
+            return !(onProgress(value).isFalse());
+          };
+        }
+        return parseJsonText(desia::frameDesignResultToJson(frame_, frames_->finish(frameLimits)));
+      }
+      if (plates_) {
+        desia::PlateDesignLimits plateLimits;
+        plateLimits.timeLimitSeconds = limits.timeLimitSeconds;
+        plateLimits.nodeLimit = limits.nodeLimit;
+        if (onProgress.typeOf().as<std::string>() == "function") {
+          plateLimits.deepestSnapshots = true;
+          plateLimits.onProgress = [&onProgress, gate = SnapshotGate()](const desia::PlateDesignProgress& progress) mutable {
+            val value = parseJsonText(desia::plateDesignProgressToJson(progress));
+            const int placed = static_cast<int>(progress.deepestPlaced.size());
+            if (placed > 0 && gate.isNew(placed)) value.set("snapshot", placedSnapshot(progress.deepestPlaced));
+            return !(onProgress(value).isFalse());
+          };
+        }
+        return parseJsonText(desia::plateDesignResultToJson(document_, plates_->finish(plateLimits)));
+      }
       if (onProgress.typeOf().as<std::string>() == "function") {
         limits.onProgress = progressCallback(onProgress);
         limits.deepestSnapshots = true;

@@ -393,9 +393,10 @@ function makeCore(module) {
         /** The check report of the current assembly. */
         check: () => call('check'),
         /**
-         * "Finish automatically from here" (voxel sessions): the designer's search below the
+         * "Finish automatically from here" (voxel, plate and frame sessions): the designer's search below the
          * current node, so the parts placed so far stay as chosen; the session does not move.
-         * Options: timeLimit, nodeLimit, onProgress (as designVoxel). Resolves like designVoxel.
+         * Options: timeLimit, nodeLimit, onProgress (as designVoxel). Resolves like designVoxel (a
+         * plate or frame session: like designPlate or designFrame, the plates or beams taken so far first).
          */
         finish(finishOptions = {}) {
           const { onProgress, ...limits } = requireOptions('designSession: finish', finishOptions);

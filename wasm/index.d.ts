@@ -334,9 +334,11 @@ export interface DesignSession {
   /** The check report of the current assembly. */
   check(): CheckReport;
   /**
-   * "Finish automatically from here" (voxel sessions; plates and frames throw 'unsupported'): the
-   * designer's search (restarts, verification) below the current node, so the parts placed so far
-   * stay as chosen, in order. The session does not move. The same path gives the same puzzle.
+   * "Finish automatically from here": the designer's search (restarts, verification) below the
+   * current node, so the parts placed so far stay as chosen, in order (a plate or frame session:
+   * the plates or beams taken so far first in the order, with their directions; the result as
+   * designPlate's or designFrame's). The session does not move. The same
+   * path and seed give the same result.
    */
   finish(options?: SessionFinishOptions & { onProgress?: (progress: DesignProgress) => boolean | void }): DesignResult;
   /** Frees the session; later calls throw. */

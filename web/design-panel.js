@@ -646,6 +646,14 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy, showL
           text: result.puz, document: result.document, surfaces: result.surfaces, report: result.verification,
           elapsedMs, timingLabel: 'Design time', keepCamera: true,
         });
+      } else if (result.status === 'success' && result.document) {
+        // A plate or frame session: the verified design (designPlate's or designFrame's result),
+        // the plates or beams taken so far first.
+        showAssembly({
+          name: `${base}_${STRUCTURES[kind]?.suffix ?? 'result'}_seed${request.options.seed ?? 1}_from_step${partsPlaced}.json`,
+          text: `${JSON.stringify(result.document, null, 2)}\n`, document: result.document, surfaces: result.surfaces,
+          report: result.verification, elapsedMs, timingLabel: 'Design time', keepCamera: true,
+        });
       }
       setOutcome(result.status, result.message);
     } catch (error) {
@@ -722,8 +730,7 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy, showL
     ui.sessionChild.max = String(Math.max(childCount - 1, 0));
     ui.sessionPreview.disabled = ui.sessionChild.disabled;
     ui.sessionChoose.disabled = ui.sessionChild.disabled;
-    // Plates and frames are finished by Design (their sessions have no search below a node yet).
-    ui.sessionFinish.disabled = busy || !alive || kind !== 'voxel' || session.snapshot.complete || Boolean(session.snapshot.steps);
+    ui.sessionFinish.disabled = busy || !alive || session.snapshot.complete;
     ui.sessionChildren.inert = busy;
     if (!alive && ui.sessionChildren.dataset.count !== '0') thumbnails.clear();
     ui.sessionState.textContent = describeSession();
