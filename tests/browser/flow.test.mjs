@@ -264,6 +264,18 @@ for (const viewport of [{ width: 1400, height: 900 }, { width: 390, height: 844 
       await page.locator('#export-format').evaluate((select) => { select.value = 'puz'; });
     });
 
+    it('reaches Export from the toolbar, with the keyboard too', async () => {
+      await page.evaluate(() => window.scrollTo(0, 0));
+      await page.locator('#export-link').focus();
+      await page.keyboard.press('Enter');
+      await page.waitForFunction(() => {
+        const box = document.querySelector('#export-panel').getBoundingClientRect();
+        return box.top >= -1 && box.top < window.innerHeight;
+      });
+      assert.equal(await page.evaluate(() => document.activeElement?.id), 'export-panel');
+      await screenshot(page, `flow-export-${size}`);
+    });
+
     it('throws no page errors', () => {
       assert.deepEqual(pageErrors, []);
     });
