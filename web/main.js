@@ -52,7 +52,7 @@ const EXAMPLES = [
   { file: 'long_table_102.json', label: 'Long table, 102 plates', plate: true },
   { file: 'chair_cut_point.json', label: 'Chair with a cut point, 8 plates', plate: true },
   // Boards whose joints need milling (Joints "milled") or that only the paper's plan joins ("planned only").
-  { file: 'chair_repaired.json', label: 'Chair repaired, 10 plates (planned)', plate: true, joints: 'planned' },
+  { file: 'chair_repaired.json', label: 'Chair repaired, 10 plates (milled)', plate: true, joints: 'milled' },
   { file: 'cabinet.json', label: 'Cabinet under a gable roof, 7 plates (milled)', plate: true, joints: 'milled' },
   { file: 'mitred_box.json', label: 'Mitred box, 6 plates (milled mitre tenons)', plate: true, joints: 'milled' },
   { file: 'dodecahedron.json', label: 'Dodecahedron, 12 mitred plates (milled mitre tenons)', plate: true, joints: 'milled' },

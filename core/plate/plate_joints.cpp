@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <memory>
 
@@ -299,7 +300,8 @@ DovetailSection dovetailSection(const std::vector<Plate>& plates, const TenonSit
 std::pair<double, double> housingSpan(const std::vector<Plate>& plates, const DovetailCut& cut) {
   const TenonSite& edge = cut.site.edge;
   const double stop = std::max(kDovetailStop, plateThickness(plates[edge.mortisePlate]));
-  return cut.openEnd == 1 ? std::make_pair(edge.from + stop, edge.to) : std::make_pair(edge.from, edge.to - stop);
+  return cut.openEnd == 1 ? std::make_pair(edge.from + stop, edge.to + cut.site.reach[1])
+                          : std::make_pair(edge.from - cut.site.reach[0], edge.to - stop);
 }
 
 // A point of the joint: `s` along the edge, `c` across the edge plate, `n` into the face plate.
@@ -321,6 +323,37 @@ Plate prismAlongEdge(const std::vector<Plate>& plates, const TenonSite& edge, do
   prism.bottom.push_back(first);
   prism.top.push_back(second);
   return prism;
+}
+
+// How far past the contact's start (end 0) or end (end 1) a housing strip, [low, high] across the
+// edge plate, runs inside the face plate's outline before it leaves it. Both sides of the strip
+// must leave at the same place (a square end; a slanted one would leave wood in the way or open
+// the housing's side); nothing where they do not, or where the strip never leaves.
+std::optional<double> stripExit(const std::vector<Plate>& plates, const TenonSite& edge, const Loop& outline,
+                                const PlaneFrame& frame, int end, double low, double high) {
+  constexpr double kSameExit = 0.01;  // mm
+  const double sign = end == 1 ? 1 : -1, at = end == 1 ? edge.to : edge.from;
+  auto planar = [&](const Vec3& p) { return std::array<double, 2>{dot(frame.offset(p), frame.u), dot(frame.offset(p), frame.v)}; };
+  const Vec3 way = scaled(edge.along, sign);
+  const std::array<double, 2> dir{dot(way, frame.u), dot(way, frame.v)};
+  std::array<double, 2> exits{};
+  for (int side = 0; side < 2; ++side) {
+    const std::array<double, 2> p = planar(jointPoint(plates, edge, at, side == 0 ? low : high, 0));
+    double nearest = std::numeric_limits<double>::infinity();
+    for (size_t k = 0; k < outline.size(); ++k) {
+      const std::array<double, 2> q0 = planar(outline[k]), q1 = planar(outline[(k + 1) % outline.size()]);
+      const double ex = q1[0] - q0[0], ey = q1[1] - q0[1];
+      const double denominator = dir[0] * ey - dir[1] * ex;
+      if (std::abs(denominator) < 1e-12) continue;  // the side runs along the strip
+      const double wx = q0[0] - p[0], wy = q0[1] - p[1];
+      const double t = (wx * ey - wy * ex) / denominator, u = (wx * dir[1] - wy * dir[0]) / denominator;
+      if (t > 1e-9 && u >= -1e-9 && u <= 1 + 1e-9) nearest = std::min(nearest, t);
+    }
+    exits[side] = nearest;
+  }
+  if (!std::isfinite(exits[0]) || !std::isfinite(exits[1]) || std::abs(exits[0] - exits[1]) > kSameExit)
+    return std::nullopt;
+  return std::min(exits[0], exits[1]);
 }
 
 }  // namespace
@@ -361,15 +394,24 @@ std::optional<DovetailSite> dovetailSiteOf(const std::vector<Plate>& plates, con
                 jointPoint(plates, *edge, s1, high, 0), jointPoint(plates, *edge, s0, high, 0)};
   };
   constexpr double kFlush = 0.01;  // mm
-  // Open at an end: the face plate's material ends there (nothing of it just beyond), and the
-  // housing from the stop to that end lies inside it.
-  for (int end = 0; end < 2; ++end) {
-    const double at = end == 1 ? edge->to : edge->from, sign = end == 1 ? 1 : -1;
+  // Open at an end, `reach` past the contact: the face plate's material ends there (nothing of it
+  // just beyond), and the housing from the stop to there lies inside it.
+  auto opensAt = [&](int end, double reach) {
+    const double sign = end == 1 ? 1 : -1, at = (end == 1 ? edge->to : edge->from) + sign * reach;
     const Loop beyond = rectangle(std::min(at + sign * kFlush, at + sign * kMortiseMargin),
                                   std::max(at + sign * kFlush, at + sign * kMortiseMargin));
-    const Loop housing = end == 1 ? rectangle(edge->from + stop, edge->to - kFlush) : rectangle(edge->from + kFlush, edge->to - stop);
-    site.opens[end] = areaAgainst({beyond}, housingPlate.bottom, frame, false) < 1e-6 &&
-                      areaAgainst({housing}, housingPlate.bottom, frame, true) < 1e-6;
+    const Loop housing = end == 1 ? rectangle(edge->from + stop, at - kFlush) : rectangle(at + kFlush, edge->to - stop);
+    return areaAgainst({beyond}, housingPlate.bottom, frame, false) < 1e-6 &&
+           areaAgainst({housing}, housingPlate.bottom, frame, true) < 1e-6;
+  };
+  for (int end = 0; end < 2; ++end) {
+    site.opens[end] = opensAt(end, 0);
+    if (site.opens[end]) continue;
+    const std::optional<double> reach = stripExit(plates, *edge, housingPlate.bottom[0], frame, end, low, high);
+    if (reach && *reach > kFlush && opensAt(end, *reach)) {
+      site.opens[end] = true;
+      site.reach[end] = *reach;
+    }
   }
   if (!site.opens[0] && !site.opens[1]) return std::nullopt;
   return site;
@@ -436,7 +478,8 @@ DovetailPieces dovetailPieces(const std::vector<Plate>& plates, const DovetailCu
   pieces.lips = {prismAlongEdge(plates, edge, s0, s1, {{low, 0}, {narrowLow, 0}, {low, d.depth}}),
                  prismAlongEdge(plates, edge, s0, s1, {{narrowHigh, 0}, {high, 0}, {high, d.depth}})};
   const double play = clearance / 2;
-  const double t0 = cut.openEnd == 1 ? s0 + play : s0, t1 = cut.openEnd == 0 ? s1 - play : s1;
+  // The tongue runs along the contact only; the housing may run on past it to the open end.
+  const double t0 = cut.openEnd == 1 ? s0 + play : edge.from, t1 = cut.openEnd == 0 ? s1 - play : edge.to;
   pieces.tongue = prismAlongEdge(plates, edge, t0, t1,
                                  {{narrowLow + play, 0}, {narrowHigh - play, 0}, {high - play, d.depth - play},
                                   {low + play, d.depth - play}});

@@ -27,6 +27,7 @@ const CASES = [
   ['long_table_102.json', 'LONG TABLE, 25 bays, 102 plates', '— (largest: 33)', 'cut'],
   ['cabinet.json', 'CABINET, 7 plates, gable roof (Fig. 13)', '0.09 s', 'milled'],
   ['cabinet.json', 'CABINET, 7 plates, gable roof (Fig. 13)', '0.09 s', 'planned'],
+  ['chair_repaired.json', 'CHAIR repaired, 10 plates (Fig. 18)', '0.22 s (8 plates)', 'milled'],
   ['chair_repaired.json', 'CHAIR repaired, 10 plates (Fig. 18)', '0.22 s (8 plates)', 'planned'],
   ['bookshelf.json', 'BOOKSHELF, 12 plates (Fig. 1)', '0.30 s', 'milled'],
   ['bookshelf.json', 'BOOKSHELF, 12 plates (Fig. 1)', '0.30 s', 'planned'],

@@ -250,8 +250,10 @@ test('designPlate plans the CLI\'s joints in the worker, with progress; bad opti
   assert.match(chair.message, /^plate 5 is a cut point of the parts-graph/);
   assert.equal(chair.repair.message, 'added plate 9, a bar joining plates 1 and 6 past cut point 5');
   assert.equal(chair.repair.document.plates.length, 9);
-  const fixed = await desia.designPlate(chair.repair.document, { joints: 'planned' });
+  // The repaired chair designs with made joints (its rails' dovetail housings run on to the legs' edges).
+  const fixed = await desia.designPlate(chair.repair.document, { joints: 'milled' });
   assert.equal(fixed.status, 'success', fixed.message);
+  assert.equal(fixed.document.jointGeometry, 'milled');
   await assert.rejects(desia.designPlate(table, { parts: 4 }), (error) => error.code === 'bad-input'
     && /unknown design option 'parts' for designPlate/.test(error.message));
   await assert.rejects(desia.designPlate(k9), (error) => error.code === 'bad-input' && /designPlate needs a plate design/.test(error.message));

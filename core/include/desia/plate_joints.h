@@ -51,11 +51,17 @@ struct TenonSite {
 };
 
 // Where a sliding dovetail can be milled for one contact: a square edge standing on a face (the
-// tenon site's geometry, `edge`) whose contact runs out of the face plate at one end or both.
+// tenon site's geometry, `edge`) with a way along the edge out of the face plate at one end or
+// both: the contact runs out of the face plate there, or the housing can run on past the contact
+// through the face plate to its square edge (a stopped housing, as a shelf's in a cabinet side
+// that is open at the side's front edge; the CHAIR's rails slide up the legs this way).
 struct DovetailSite {
   TenonSite edge;  // tenonPlate: the tongue's plate, mortisePlate: the housing's
   // The housing may open at [0] the contact's start (`from`, towards -along), [1] its end (`to`).
   std::array<bool, 2> opens{false, false};
+  // How far the housing runs on past the contact's start [0] / end [1] before it opens (mm; 0
+  // where the contact runs out of the face plate).
+  std::array<double, 2> reach{0, 0};
   // The directions the tongue plate may leave in: along the edge towards an open end.
   std::vector<Vec3> exits() const;
 };
