@@ -816,20 +816,34 @@ Plate mitreTenonSolid(const MitreTenon& tenon, double clearance) {
   return solid;
 }
 
+// The plate across a contact from `plate`, for contacts where two plates touch (not crossings);
+// the check every joint on a touching pair opens with.
+std::optional<int> touchingPartnerOf(const PlateContact& contact, int plate) {
+  if (contact.crossing || (contact.a != plate && contact.b != plate)) return std::nullopt;
+  return contact.a == plate ? contact.b : contact.a;
+}
+
+// How many of the two plates have a face on the contact: 0 where they meet edge to edge (a
+// mitre), 2 where they lie face to face (a lap), 1 for an edge on a face (T and L joints).
+int facesOnContact(const std::vector<Plate>& plates, const PlateContact& contact) {
+  int faces = 0;
+  for (int plate : {contact.a, contact.b})
+    faces += std::abs(dot(contact.normal, plateThicknessAxis(plates[plate]))) > 1 - kSquare ? 1 : 0;
+  return faces;
+}
+
 }  // namespace
 
 std::optional<MitreTenon> mitreTenonOf(const std::vector<Plate>& plates, const PlateContact& contact, int tenonPlate,
                                        const Vec3& into) {
-  if (contact.crossing || (contact.a != tenonPlate && contact.b != tenonPlate)) return std::nullopt;
+  const std::optional<int> partner = touchingPartnerOf(contact, tenonPlate);
+  // Edge to edge: neither plate's face lies on the contact (those are T joints, tenonSiteOf).
+  if (!partner || facesOnContact(plates, contact) != 0) return std::nullopt;
   MitreTenon tenon;
   tenon.tenonPlate = tenonPlate;
-  tenon.pocketPlate = contact.a == tenonPlate ? contact.b : contact.a;
+  tenon.pocketPlate = *partner;
   const Vec3 normal = contact.a == tenonPlate ? contact.normal : negated(contact.normal);
   const Plate& pocket = plates[tenon.pocketPlate];
-  // Edge to edge: neither plate's face lies on the contact (those are T joints, tenonSiteOf).
-  for (const Plate* plate : {&plates[tenonPlate], &pocket}) {
-    if (std::abs(dot(normal, plateThicknessAxis(*plate))) > 1 - kSquare) return std::nullopt;
-  }
   tenon.line = normalized(contact.edgeDirection);
   tenon.into = normalized(into);
   // The paper's mortise-and-tenon: the edge within 45..135 degrees of the way out.
@@ -959,16 +973,13 @@ std::pair<double, double> cornersAlongEdge(const Plate& plate, const MitreSlide&
 
 std::optional<MitreSlide> mitreSlideOf(const std::vector<Plate>& plates, const PlateContact& contact, int slidePlate,
                                        const Vec3& d) {
-  if (contact.crossing || (contact.a != slidePlate && contact.b != slidePlate) || contact.region.size() < 3)
-    return std::nullopt;
+  const std::optional<int> partner = touchingPartnerOf(contact, slidePlate);
+  // Edge to edge: neither face on the contact (those are T joints and laps).
+  if (!partner || contact.region.size() < 3 || facesOnContact(plates, contact) != 0) return std::nullopt;
   MitreSlide slide;
   slide.slidePlate = slidePlate;
-  slide.tonguePlate = contact.a == slidePlate ? contact.b : contact.a;
+  slide.tonguePlate = *partner;
   const Plate& plate = plates[slidePlate];
-  // Edge to edge: neither face on the contact (those are T joints and laps).
-  for (const Plate* p : {&plate, &plates[slide.tonguePlate]}) {
-    if (std::abs(dot(contact.normal, plateThicknessAxis(*p))) > 1 - kSquare) return std::nullopt;
-  }
   const Vec3 edge = normalized(contact.edgeDirection);
   if (std::abs(std::abs(dot(edge, normalized(d))) - 1) > 1e-12) return std::nullopt;  // along the edge only
   // The way out itself, and the mitre's normal made square to it: every face of the groove but its
@@ -1092,17 +1103,14 @@ Loop FaceTenon::footprint(double grow) const {
 
 std::optional<FaceTenon> faceTenonOf(const std::vector<Plate>& plates, const PlateContact& contact, int tenonPlate,
                                      const Vec3& d) {
-  if (contact.crossing || (contact.a != tenonPlate && contact.b != tenonPlate) || contact.region.size() < 3)
-    return std::nullopt;
+  const std::optional<int> partner = touchingPartnerOf(contact, tenonPlate);
+  // A lap: the contact lies on a face of both plates.
+  if (!partner || contact.region.size() < 3 || facesOnContact(plates, contact) != 2) return std::nullopt;
   FaceTenon tenon;
   tenon.tenonPlate = tenonPlate;
-  tenon.mortisePlate = contact.a == tenonPlate ? contact.b : contact.a;
+  tenon.mortisePlate = *partner;
   const Plate& mortise = plates[tenon.mortisePlate];
   if (!isPrism(plates[tenonPlate]) || !isPrism(mortise)) return std::nullopt;
-  // A lap: the contact lies on a face of both plates.
-  for (const Plate* plate : {&plates[tenonPlate], &mortise}) {
-    if (std::abs(dot(contact.normal, plateThicknessAxis(*plate))) < 1 - kSquare) return std::nullopt;
-  }
   tenon.out = contact.a == tenonPlate ? negated(contact.normal) : contact.normal;
   if (dot(normalized(d), tenon.out) < 1 - 1e-9) return std::nullopt;  // straight off the lap only
   tenon.u = normalized(contact.edgeDirection);
