@@ -335,6 +335,28 @@ std::vector<std::pair<double, double>> commonStretches(const std::vector<std::pa
   return common;
 }
 
+std::optional<PlateContact> plateCrossing(const std::vector<Plate>& plates, int p, int q, double tolerance);
+
+// Perpendicular plates of which one or both have mitred sides cannot cross (halved joints need
+// plates of their whole thickness), so they must not share volume at all: judged by their core
+// prisms (where they have their whole thickness, corePrism), which lie inside them. A refusal is
+// always a real overlap; one within the mitres alone can pass (the design's swept check finds it).
+void requireMitredPerpendicularApart(const Plate& a, const Plate& b, double tolerance) {
+  const std::vector<Plate> cores{corePrism(a), corePrism(b)};
+  if (cores[0].bottom.empty() || cores[1].bottom.empty()) return;
+  bool overlap = false;
+  try {
+    overlap = plateCrossing(cores, 0, 1, tolerance).has_value();
+  } catch (const Error&) {
+    overlap = true;  // a partial overlap of the cores
+  }
+  if (overlap) {
+    throwBadInput("", plateName(a) + " and " + plateName(b) +
+                          " overlap where no contact explains it (perpendicular plates with mitred sides cannot "
+                          "cross through each other): move them apart until they touch");
+  }
+}
+
 // Plates p and q crossing through each other: perpendicular prisms whose faces each fill the other's
 // slab over a common stretch of the line where their planes meet. A partial overlap is refused.
 std::optional<PlateContact> plateCrossing(const std::vector<Plate>& plates, int p, int q, double tolerance) {
@@ -343,7 +365,10 @@ std::optional<PlateContact> plateCrossing(const std::vector<Plate>& plates, int 
   const Vec3 ta = plateThicknessAxis(a), tb = plateThicknessAxis(b);
   if (std::abs(dot(ta, tb)) > 1e-6) return std::nullopt;
   const double ha = plateThickness(a), hb = plateThickness(b);
-  if (!isPrism(a) || !isPrism(b)) return std::nullopt;
+  if (!isPrism(a) || !isPrism(b)) {
+    requireMitredPerpendicularApart(a, b, tolerance);
+    return std::nullopt;
+  }
   const Vec3 line = canonicalSign(normalized(cross(ta, tb)));
   // On both first faces: the planes' common line, with (ta, tb, line) orthonormal.
   const Vec3 point = plus(scaled(ta, dot(a.bottom[0][0], ta)), scaled(tb, dot(b.bottom[0][0], tb)));

@@ -144,6 +144,17 @@ TEST(PlateInput, BadPlatesAreNamedWithTheProblem) {
   ExpectBadPlates(R"([{"id":1,"faces":[[[0,0,0],[100,0,0],[100,100,0],[0,100,0]],[[10,10,10],[90,10,10],[90,90,10],[10,90,10]]]},)"
                   R"({"id":2,"faces":[[[0,0,5],[100,0,5],[100,100,5],[0,100,5]],[[10,10,15],[90,10,15],[90,90,15],[10,90,15]]]}])",
                   "plate 1 and plate 2 overlap (their solids share 40 mm wide and more)");
+  // A board standing upright 4 mm down in a plate with mitred sides (perpendicular plates: before,
+  // only prism pairs were checked on reading), and one passing right through it.
+  const std::string mitred = R"({"id":1,"faces":[[[0,0,0],[100,0,0],[100,100,0],[0,100,0]],[[10,10,10],[90,10,10],[90,90,10],[10,90,10]]]},)";
+  ExpectBadPlates("[" + mitred + R"({"id":2,"outline":[[20,40,6],[80,40,6],[80,40,60],[20,40,60]],"thickness":10}])",
+                  "plate 1 and plate 2 overlap where no contact explains it (perpendicular plates with mitred sides");
+  ExpectBadPlates("[" + mitred + R"({"id":2,"outline":[[20,40,-30],[80,40,-30],[80,40,60],[20,40,60]],"thickness":10}])",
+                  "plate 1 and plate 2 overlap where no contact explains it");
+  // Standing on its upper face, the same board is a T joint.
+  EXPECT_NO_THROW(parseAssemblyText(
+      plateDocument("[" + mitred + R"({"id":2,"outline":[[20,40,10],[80,40,10],[80,40,60],[20,40,60]],"thickness":10}])"),
+      "design.json"));
   ExpectBadPlates(R"({"id":1})", "plates: expected an array of plates");
   ExpectBadPlates(R"([{"id":1,"outline":[[0,0,0],[1,0,0]],"thickness":1}])", "a face needs at least 3 vertices");
   ExpectBadPlates(R"([{"id":1,"outline":[[0,0,0],[1e300,0,0],[0,1,0]],"thickness":1}])", "is not a finite number of millimetres");
