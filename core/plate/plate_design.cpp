@@ -375,6 +375,7 @@ std::string planFailure(const Assembly& model, const std::vector<Vec3>& directio
 struct JointedPlan {
   std::vector<Plate> plates;
   Assembly assembly;
+  std::vector<Vec3> directions;  // the plan's ways out, squared to the faces they slide along
 };
 
 // Jointed plates are cut from a design given to a micrometre (plates-from-mesh writes 6 decimals):
@@ -394,6 +395,47 @@ Vec3 squaredToPlan(Vec3 normal, const std::vector<Vec3>& directions) {
   }
   for (const Vec3& b : basis) normal = minus(normal, scaled(b, dot(normal, b)));
   return normalized(normal);
+}
+
+// The other half of the same rounding: a way out is itself one of the design's vectors (a shared
+// edge, a mitre's normal, a tenon's axis), off by as much. The LIZARD's plate 33 leaves across a
+// mitre along a vector 6.3e-9 out of the plane of plate 1, whose face its tenon slides along: no
+// normal can be squared to that and to the other ways out in that plane at once. So each way out
+// within 1e-6 of square to faces of its plate against plates still in place (the contacts in
+// `assembly`, part k leaving k-th) is first made exactly square to them; a way out that would turn
+// by more stays as it is (a real block is kept, and the swept check judges the shapes).
+std::vector<Vec3> directionsSquaredToFaces(const Assembly& assembly, std::vector<Vec3> directions) {
+  constexpr double kNearlySquare = 1e-6;
+  for (size_t k = 0; k < directions.size(); ++k) {
+    const int part = static_cast<int>(k);
+    std::vector<Vec3> basis;  // orthonormal, spanning the nearly square faces' normals
+    for (const Contact& contact : assembly.contacts) {
+      const bool mine = (contact.a == part && contact.b > part) || (contact.b == part && contact.a > part);
+      if (!mine || std::abs(dot(contact.normal, directions[k])) >= kNearlySquare) continue;
+      Vec3 e = contact.normal;
+      for (const Vec3& b : basis) e = minus(e, scaled(b, dot(e, b)));
+      if (norm(e) < kNearlySquare) continue;
+      basis.push_back(normalized(e));
+    }
+    Vec3 squared = directions[k];
+    for (const Vec3& b : basis) squared = minus(squared, scaled(b, dot(squared, b)));
+    if (norm(minus(squared, directions[k])) < kNearlySquare) directions[k] = normalized(squared);
+  }
+  return directions;
+}
+
+// The contacts of jointed plates (part k = the k-th to leave) as an assembly for the tests, with
+// the plan's ways out and the contacts' normals squared to each other where rounding of the
+// design's coordinates left them 1e-6 or less off square.
+Assembly jointedAssembly(const std::vector<PlateContact>& contacts, const std::vector<int>& position,
+                         std::vector<Part> parts, std::vector<Vec3>* directions) {
+  Assembly assembly;
+  assembly.parts = std::move(parts);
+  for (const PlateContact& contact : contacts)
+    assembly.contacts.push_back({position[contact.a], position[contact.b], contact.normal, contact.area});
+  *directions = directionsSquaredToFaces(assembly, *directions);
+  for (Contact& contact : assembly.contacts) contact.normal = squaredToPlan(contact.normal, *directions);
+  return assembly;
 }
 
 // The plates with the joints cut into them (and their milled solids attached).
@@ -431,14 +473,13 @@ JointedPlan cutPlan(const std::vector<Plate>& plates, const PlateGraph& graph, c
   plan.plates = jointedPlates(plates, graph, joints, clearance, options);
   validatePlates(plan.plates, geometry, "the jointed plates");
   std::vector<int> position(plates.size(), 0);
+  std::vector<Part> parts;
   for (size_t k = 0; k < order.size(); ++k) {
     position[order[k]] = static_cast<int>(k);
-    plan.assembly.parts.push_back({plates[order[k]].id, plates[order[k]].name});
+    parts.push_back({plates[order[k]].id, plates[order[k]].name});
   }
-  for (const PlateContact& contact : computePlateContacts(plan.plates, geometry)) {
-    plan.assembly.contacts.push_back(
-        {position[contact.a], position[contact.b], squaredToPlan(contact.normal, directions), contact.area});
-  }
+  plan.directions = directions;
+  plan.assembly = jointedAssembly(computePlateContacts(plan.plates, geometry), position, std::move(parts), &plan.directions);
   return plan;
 }
 
@@ -461,11 +502,10 @@ std::string sweepFailure(const std::vector<Plate>& plates, const std::vector<int
 
 // Why the jointed plates fail, or "": both interlocking tests on their computed contacts, and
 // each plate swept along its direction past every plate still in place.
-std::string jointedFailure(const JointedPlan& plan, const std::vector<int>& order, const std::vector<Vec3>& directions,
-                           double tolerance) {
-  const std::string failure = planFailure(plan.assembly, directions);
+std::string jointedFailure(const JointedPlan& plan, const std::vector<int>& order, double tolerance) {
+  const std::string failure = planFailure(plan.assembly, plan.directions);
   if (!failure.empty()) return failure;
-  return sweepFailure(plan.plates, order, directions, tolerance);
+  return sweepFailure(plan.plates, order, plan.directions, tolerance);
 }
 
 class PlateJointPlanner {
@@ -504,7 +544,7 @@ class PlateJointPlanner {
   bool acceptable(const std::vector<Step>& steps) const;
   bool runsIntoAStranger(int plate, const Vec3& d, const std::vector<int>& rest) const;
   bool cutAndVerify(const std::vector<PlateJoint>& joints, const std::vector<int>& order,
-                    const std::vector<Vec3>& directions, PlateDesignResult* result);
+                    std::vector<Vec3>* directions, PlateDesignResult* result);
   Step makeStep(const std::vector<Step>& steps, int plate, const Vec3& d) const;
   std::vector<CutFootprint> cutsOf(const std::vector<PlateJoint>& joints) const;
   bool cutsCollide(const std::vector<Step>& steps, const std::vector<CutFootprint>& cuts) const;
@@ -855,17 +895,18 @@ PlateDesignResult PlateJointPlanner::run(const std::vector<Step>& prefix) {
 
 // Cuts the joints into the plates and verifies the plan there; keeps the jointed plates on success.
 bool PlateJointPlanner::cutAndVerify(const std::vector<PlateJoint>& joints, const std::vector<int>& order,
-                                     const std::vector<Vec3>& directions, PlateDesignResult* result) {
+                                     std::vector<Vec3>* directions, PlateDesignResult* result) {
   try {
-    JointedPlan jointed = cutPlan(plates_, graph_, joints, order, directions, options_.geometry, 0, options_.joints);
-    lastRejection_ = jointedFailure(jointed, order, directions, options_.geometry.contactTolerance);
+    JointedPlan jointed = cutPlan(plates_, graph_, joints, order, *directions, options_.geometry, 0, options_.joints);
+    lastRejection_ = jointedFailure(jointed, order, options_.geometry.contactTolerance);
     if (!lastRejection_.empty()) return false;
+    *directions = jointed.directions;  // squared to the faces they slide along
     result->jointedPlates = std::move(jointed.plates);
     result->jointAssembly = std::move(jointed.assembly);
     result->clearance = options_.joints.clearance;
     result->fabricationPlates =
         options_.joints.clearance > 0
-            ? cutPlan(plates_, graph_, joints, order, directions, options_.geometry, options_.joints.clearance,
+            ? cutPlan(plates_, graph_, joints, order, *directions, options_.geometry, options_.joints.clearance,
                       options_.joints)
                   .plates
             : result->jointedPlates;
@@ -896,9 +937,12 @@ bool PlateJointPlanner::acceptComplete(const std::vector<Step>& path, PlateDesig
   if (!lastRejection_.empty()) return false;
   if (options_.realization == JointRealization::Planned) {
     result->jointAssembly = model;
-  } else if (!cutAndVerify(joints, order, directions, result)) {
+  } else if (!cutAndVerify(joints, order, &directions, result)) {
     return false;
   }
+  // A joint leaves along its mover's way out as verified (squared to the faces it slides along).
+  for (PlateJoint& joint : joints)
+    joint.direction = directions[static_cast<size_t>(std::find(order.begin(), order.end(), joint.mover) - order.begin())];
   result->realization = options_.realization;
   result->order = order;
   result->directions = directions;
@@ -1088,16 +1132,17 @@ std::string jointedPlatesFailure(const std::vector<Plate>& plates, const std::ve
   if (plates.size() < 2 || directions.size() + 1 != plates.size()) {
     return "every plate but the last needs a removal direction";
   }
-  Assembly assembly;
-  for (const Plate& plate : plates) assembly.parts.push_back({plate.id, plate.name});
-  for (const PlateContact& contact : computePlateContacts(plates, geometry)) {
-    assembly.contacts.push_back({contact.a, contact.b, squaredToPlan(contact.normal, directions), contact.area});
-  }
-  const std::string failure = planFailure(assembly, directions);
-  if (!failure.empty()) return failure;
+  std::vector<Part> parts;
   std::vector<int> order(plates.size());
-  for (size_t k = 0; k < order.size(); ++k) order[k] = static_cast<int>(k);
-  return sweepFailure(plates, order, directions, geometry.contactTolerance);
+  for (size_t k = 0; k < order.size(); ++k) {
+    order[k] = static_cast<int>(k);
+    parts.push_back({plates[k].id, plates[k].name});
+  }
+  std::vector<Vec3> squared = directions;
+  const Assembly assembly = jointedAssembly(computePlateContacts(plates, geometry), order, std::move(parts), &squared);
+  const std::string failure = planFailure(assembly, squared);
+  if (!failure.empty()) return failure;
+  return sweepFailure(plates, order, squared, geometry.contactTolerance);
 }
 
 }  // namespace desia

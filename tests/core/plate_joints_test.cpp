@@ -746,6 +746,32 @@ TEST(PlateDovetails, TheRepairedChairDesignsWithMilledJointsThroughRunOnHousings
   }
 }
 
+TEST(PlateDovetails, WaysOutAFewNanoradiansOffTheFacesTheySlideAlongAreSquaredToThem) {
+  // A design given to a micrometre gives ways out (shared edges, mitre normals) that are off by
+  // 1e-9 rad or so: the chair's plan with every way out tilted by 3e-9 rad towards two axes, so
+  // that each pushes into the faces it slides along by more than the blocking tests' 1e-9. The
+  // check squares a way out to faces within 1e-6 of square to it (the LIZARD's plate 33 was off
+  // plate 1's face by 6.3e-9); a way out turned by more is a real block and still fails.
+  const AssemblyDocument chair = loadPlateExample("chair_repaired.json");
+  PlateDesignOptions options;
+  options.realization = JointRealization::Milled;
+  const PlateDesignResult result = designPlateJoints(chair.plates, computePlateContacts(chair.plates, {}), options);
+  ASSERT_EQ(result.status, PlateDesignStatus::Success) << result.message;
+  std::vector<Plate> inOrder;
+  for (int index : result.order) inOrder.push_back(result.jointedPlates[static_cast<size_t>(index)]);
+  auto tilted = [&](double by) {
+    std::vector<Vec3> directions = result.directions;
+    for (Vec3& d : directions) {
+      for (int axis = 0; axis < 3; ++axis) d[axis] += std::abs(d[axis]) < 0.5 ? by : 0;
+      d = normalized(d);
+    }
+    return directions;
+  };
+  EXPECT_EQ(jointedPlatesFailure(inOrder, tilted(3e-9)), "");
+  EXPECT_EQ(jointedPlatesFailure(inOrder, tilted(-3e-9)), "");
+  EXPECT_NE(jointedPlatesFailure(inOrder, tilted(1e-3)), "");
+}
+
 TEST(PlateDovetails, MilledIsAJointRealization) {
   EXPECT_EQ(parseJointRealization("milled"), JointRealization::Milled);
   EXPECT_STREQ(jointRealizationName(JointRealization::Milled), "milled");
