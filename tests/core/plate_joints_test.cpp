@@ -38,6 +38,21 @@ PlateDesignResult designCut(const std::vector<Plate>& plates, const JointCutOpti
   return designPlateJoints(plates, computePlateContacts(plates, {}), options);
 }
 
+PlateDesignResult designMilled(const std::vector<Plate>& plates, uint64_t seed = 1, double clearance = 0) {
+  PlateDesignOptions options;
+  options.realization = JointRealization::Milled;
+  options.seed = seed;
+  options.joints.clearance = clearance;
+  return designPlateJoints(plates, computePlateContacts(plates, {}), options);
+}
+
+// A result's jointed plates in removal order (what jointedPlatesFailure checks).
+std::vector<Plate> jointedInRemovalOrder(const PlateDesignResult& result) {
+  std::vector<Plate> inOrder;
+  for (int index : result.order) inOrder.push_back(result.jointedPlates[static_cast<size_t>(index)]);
+  return inOrder;
+}
+
 double meshVolume(const TriangleMesh& mesh) {
   double volume = 0;
   for (const auto& t : mesh.triangles)
@@ -556,6 +571,20 @@ bool solidContains(const Plate& plate, const Vec3& p) {
   return false;
 }
 
+// The jointed base (0) and board (1) of a dovetail open towards +z: the board is free along +z
+// and along no other axis direction, by the contacts of the jointed plates and by the exact sweep.
+void ExpectTheBoardLeavesAlongPlusZOnly(const std::vector<Plate>& jointed) {
+  Assembly pair;
+  pair.parts = {{1, "base"}, {2, "board"}};
+  for (const PlateContact& contact : computePlateContacts(jointed, {}))
+    pair.contacts.push_back({contact.a, contact.b, contact.normal, contact.area});
+  const std::vector<Vec3> axes{{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+  for (const Vec3& d : axes) {
+    EXPECT_EQ(isPartFreeAlong(pair, nullptr, 1, d), d[2] > 0) << d[0] << "," << d[1] << "," << d[2];
+    EXPECT_EQ(plateCollidesAlong(jointed[1], jointed[0], d, 0.05), d[2] <= 0) << d[0] << "," << d[1] << "," << d[2];
+  }
+}
+
 TEST(PlateDovetails, AFlushEdgeGetsASiteOpenAtBothEnds) {
   const std::vector<Plate> plates = boardOnBase();
   const std::vector<PlateContact> contacts = computePlateContacts(plates, {});
@@ -625,16 +654,8 @@ TEST(PlateDovetails, ARunOnHousingLetsTheBoardSlideOutThroughTheBaseEndOnly) {
   const double section = (12.0 + 10.0) / 2 * 6;
   EXPECT_NEAR(meshVolume(plateMesh(jointed[1])), 18.0 * 200 * 200 + section * 182, 1e-6 * section * 182);
   EXPECT_NEAR(meshVolume(plateMesh(jointed[0])), 300.0 * 18 * 240 - section * 222, 1e-6 * section * 222);
-  Assembly pair;
-  pair.parts = {{1, "base"}, {2, "board"}};
-  for (const PlateContact& contact : computePlateContacts(jointed, {}))
-    pair.contacts.push_back({contact.a, contact.b, contact.normal, contact.area});
-  const std::vector<Vec3> axes{{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
-  for (const Vec3& d : axes) {
-    EXPECT_EQ(isPartFreeAlong(pair, nullptr, 1, d), d[2] > 0) << d[0] << "," << d[1] << "," << d[2];
-    // Swept 300 mm: along +z the tongue leaves the housing through the base's end.
-    EXPECT_EQ(plateCollidesAlong(jointed[1], jointed[0], d, 0.05), d[2] <= 0) << d[0] << "," << d[1] << "," << d[2];
-  }
+  // Swept: along +z the tongue leaves the housing through the base's end.
+  ExpectTheBoardLeavesAlongPlusZOnly(jointed);
 }
 
 TEST(PlateDovetails, TheTongueFillsItsHousingAndLeavesOnlyThroughTheOpenEnd) {
@@ -650,16 +671,9 @@ TEST(PlateDovetails, TheTongueFillsItsHousingAndLeavesOnlyThroughTheOpenEnd) {
   EXPECT_NEAR(meshVolume(plateMesh(jointed[0])), 300.0 * 18 * 200 - tongue, 1e-6 * tongue);
   // The contacts of the jointed boards let the board out along +z and in no other axis direction
   // (the flanks hold it down against +y, the stop against -z).
-  Assembly pair;
-  pair.parts = {{1, "base"}, {2, "board"}};
-  for (const PlateContact& contact : computePlateContacts(jointed, {}))
-    pair.contacts.push_back({contact.a, contact.b, contact.normal, contact.area});
+  // The exact sweep says the same, and so does moving the tongue's inside in 0.25 mm steps.
+  ExpectTheBoardLeavesAlongPlusZOnly(jointed);
   const std::vector<Vec3> axes{{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
-  for (const Vec3& d : axes) {
-    EXPECT_EQ(isPartFreeAlong(pair, nullptr, 1, d), d[2] > 0) << d[0] << "," << d[1] << "," << d[2];
-    // The exact sweep says the same, and so does moving the tongue's inside in 0.25 mm steps.
-    EXPECT_EQ(plateCollidesAlong(jointed[1], jointed[0], d, 0.05), d[2] <= 0) << d[0] << "," << d[1] << "," << d[2];
-  }
   const Plate& tongue3d = jointed[1].attached.at(0);
   const PrismInside inside(tongue3d);
   for (const Vec3& d : axes) {
@@ -681,17 +695,13 @@ TEST(PlateDovetails, TheTongueFillsItsHousingAndLeavesOnlyThroughTheOpenEnd) {
 TEST(PlateDovetails, TheBookshelfDesignsWithMilledJointsOnlyAndReadsBack) {
   const AssemblyDocument shelf = loadPlateExample("bookshelf.json");
   EXPECT_EQ(designCut(shelf.plates).status, PlateDesignStatus::NotFound);
-  PlateDesignOptions options;
-  options.realization = JointRealization::Milled;
-  options.joints.clearance = 0.2;
-  const PlateDesignResult result = designPlateJoints(shelf.plates, computePlateContacts(shelf.plates, {}), options);
+  const PlateDesignResult result = designMilled(shelf.plates, 1, 0.2);
   ASSERT_EQ(result.status, PlateDesignStatus::Success) << result.message;
   int dovetails = 0;
   for (const PlateJoint& joint : result.joints) dovetails += joint.type == JointType::Dovetail ? 1 : 0;
   EXPECT_GT(dovetails, 0);
   // Every jointed plate closed, the result verified again in removal order from its own plates.
-  std::vector<Plate> inOrder;
-  for (int index : result.order) inOrder.push_back(result.jointedPlates[static_cast<size_t>(index)]);
+  const std::vector<Plate> inOrder = jointedInRemovalOrder(result);
   for (const Plate& plate : inOrder) EXPECT_NO_THROW(checkClosedMesh(plateMesh(plate), plate.name));
   EXPECT_EQ(jointedPlatesFailure(inOrder, result.directions), "");
   // Clearance narrows the tongues only: the made plates hold less wood than the verified ones.
@@ -725,11 +735,8 @@ TEST(PlateDovetails, TheRepairedChairDesignsWithMilledJointsThroughRunOnHousings
   // away from the legs' ends, so their dovetails need housings that run on through the leg to its
   // edge; with them every seed designs and verifies (before: 8 of 10 plates).
   const AssemblyDocument chair = loadPlateExample("chair_repaired.json");
-  PlateDesignOptions options;
-  options.realization = JointRealization::Milled;
   for (uint64_t seed : {1u, 2u, 3u}) {
-    options.seed = seed;
-    const PlateDesignResult result = designPlateJoints(chair.plates, computePlateContacts(chair.plates, {}), options);
+    const PlateDesignResult result = designMilled(chair.plates, seed);
     ASSERT_EQ(result.status, PlateDesignStatus::Success) << "seed " << seed << ": " << result.message;
     int runOn = 0;
     for (const PlateJoint& joint : result.joints) {
@@ -739,8 +746,7 @@ TEST(PlateDovetails, TheRepairedChairDesignsWithMilledJointsThroughRunOnHousings
       runOn += site->reach[0] > 0 || site->reach[1] > 0 ? 1 : 0;
     }
     EXPECT_GT(runOn, 0) << "seed " << seed;
-    std::vector<Plate> inOrder;
-    for (int index : result.order) inOrder.push_back(result.jointedPlates[static_cast<size_t>(index)]);
+    const std::vector<Plate> inOrder = jointedInRemovalOrder(result);
     for (const Plate& plate : inOrder) EXPECT_NO_THROW(checkClosedMesh(plateMesh(plate), plate.name));
     EXPECT_EQ(jointedPlatesFailure(inOrder, result.directions), "") << "seed " << seed;
   }
@@ -753,12 +759,9 @@ TEST(PlateDovetails, WaysOutAFewNanoradiansOffTheFacesTheySlideAlongAreSquaredTo
   // check squares a way out to faces within 1e-6 of square to it (the LIZARD's plate 33 was off
   // plate 1's face by 6.3e-9); a way out turned by more is a real block and still fails.
   const AssemblyDocument chair = loadPlateExample("chair_repaired.json");
-  PlateDesignOptions options;
-  options.realization = JointRealization::Milled;
-  const PlateDesignResult result = designPlateJoints(chair.plates, computePlateContacts(chair.plates, {}), options);
+  const PlateDesignResult result = designMilled(chair.plates);
   ASSERT_EQ(result.status, PlateDesignStatus::Success) << result.message;
-  std::vector<Plate> inOrder;
-  for (int index : result.order) inOrder.push_back(result.jointedPlates[static_cast<size_t>(index)]);
+  const std::vector<Plate> inOrder = jointedInRemovalOrder(result);
   auto tilted = [&](double by) {
     std::vector<Vec3> directions = result.directions;
     for (Vec3& d : directions) {
@@ -1003,14 +1006,11 @@ TEST(PlateMitreTenons, MitredBoxAndDodecahedronDesignWithMilledJointsAndVerify) 
   for (const char* name : {"mitred_box.json", "dodecahedron.json", "cube.json"}) {
     const AssemblyDocument shape = loadPlateExample(name);
     EXPECT_EQ(designCut(shape.plates).status, PlateDesignStatus::NotFound) << name;  // nothing to cut
-    PlateDesignOptions options;
-    options.realization = JointRealization::Milled;
-    const PlateDesignResult result = designPlateJoints(shape.plates, computePlateContacts(shape.plates, {}), options);
+    const PlateDesignResult result = designMilled(shape.plates);
     ASSERT_EQ(result.status, PlateDesignStatus::Success) << name << ": " << result.message;
     for (const PlateJoint& joint : result.joints)
       EXPECT_TRUE(joint.type == JointType::MitreTenon || joint.type == JointType::MitreSlide) << name;
-    std::vector<Plate> inOrder;
-    for (int index : result.order) inOrder.push_back(result.jointedPlates[static_cast<size_t>(index)]);
+    const std::vector<Plate> inOrder = jointedInRemovalOrder(result);
     for (const Plate& plate : inOrder) EXPECT_NO_THROW(checkClosedMesh(plateMesh(plate), name));
     EXPECT_EQ(jointedPlatesFailure(inOrder, result.directions), "") << name;
     // Reversing the key's way out runs it into its neighbours' pockets.
@@ -1066,9 +1066,7 @@ TEST(PlateJoints, ExactVerticesRecoverInputVerticesAndCrossings) {
 // tests (d·n > 1e-9) to hold the roof in place: 4,005 complete plans failed on their jointed plates.
 TEST(PlateJoints, CabinetDesignsWithMilledJointsOnExactFaces) {
   const AssemblyDocument shape = loadPlateExample("cabinet.json");
-  PlateDesignOptions options;
-  options.realization = JointRealization::Milled;
-  const PlateDesignResult result = designPlateJoints(shape.plates, computePlateContacts(shape.plates, {}), options);
+  const PlateDesignResult result = designMilled(shape.plates);
   ASSERT_EQ(result.status, PlateDesignStatus::Success) << result.message;
   EXPECT_LT(result.progress.nodes, 2000);  // restarts: 182 nodes for seed 1 (7,902 in one tree)
   std::set<JointType> types;
@@ -1082,8 +1080,7 @@ TEST(PlateJoints, CabinetDesignsWithMilledJointsOnExactFaces) {
       EXPECT_TRUE(along < 1e-12 || along > 1e-4) << "a contact turned by " << along << " rad off a plan direction";
     }
   }
-  std::vector<Plate> inOrder;
-  for (int index : result.order) inOrder.push_back(result.jointedPlates[static_cast<size_t>(index)]);
+  const std::vector<Plate> inOrder = jointedInRemovalOrder(result);
   for (const Plate& plate : inOrder) EXPECT_NO_THROW(checkClosedMesh(plateMesh(plate), "cabinet"));
   EXPECT_EQ(jointedPlatesFailure(inOrder, result.directions), "");
   for (CheckMethod method : {CheckMethod::Graphs, CheckMethod::Inequalities}) {
