@@ -8,7 +8,22 @@
 
 namespace desia::design {
 
+GridSteps::GridSteps(const VoxelGrid& grid) : inside_(static_cast<size_t>(grid.voxelCount()), 0) {
+  const int64_t nx = grid.nx(), nxy = nx * grid.ny();
+  offset_ = {1, -1, nx, -nx, nxy, -nxy};
+  size_t i = 0;
+  for (int z = 0; z < grid.nz(); ++z) {
+    for (int y = 0; y < grid.ny(); ++y) {
+      for (int x = 0; x < grid.nx(); ++x, ++i) {
+        inside_[i] = static_cast<uint8_t>((x + 1 < grid.nx()) | (x > 0) << 1 | (y + 1 < grid.ny()) << 2 | (y > 0) << 3 |
+                                          (z + 1 < grid.nz()) << 4 | (z > 0) << 5);
+      }
+    }
+  }
+}
+
 std::vector<double> accessibility(const VoxelGrid& grid, int label) {
+  const GridSteps steps(grid);
   // The set's voxels and, once, their in-set neighbours: the three passes then touch only the set
   // (this runs for every ranked candidate, on grids of tens of thousands of voxels).
   std::vector<int64_t> voxels;
@@ -18,8 +33,8 @@ std::vector<double> accessibility(const VoxelGrid& grid, int label) {
   std::vector<std::array<int64_t, 6>> neighbours(voxels.size());
   std::vector<uint8_t> neighbourCount(voxels.size(), 0);
   for (size_t k = 0; k < voxels.size(); ++k) {
-    for (const Int3& step : kAxisSteps) {
-      const int64_t j = neighbourIndex(grid, voxels[k], step);
+    for (int step = 0; step < 6; ++step) {
+      const int64_t j = steps.neighbour(voxels[k], step);
       if (j >= 0 && grid.labelAt(j) == label) neighbours[k][neighbourCount[k]++] = j;
     }
   }
@@ -40,6 +55,7 @@ std::vector<double> accessibility(const VoxelGrid& grid, int label) {
 }
 
 bool isFaceConnected(const VoxelGrid& grid, int label) {
+  const GridSteps steps(grid);
   int64_t total = 0, start = -1;
   for (int64_t i = 0; i < grid.voxelCount(); ++i) {
     if (grid.labelAt(i) != label) continue;
@@ -55,8 +71,8 @@ bool isFaceConnected(const VoxelGrid& grid, int label) {
     const int64_t i = stack.back();
     stack.pop_back();
     ++reached;
-    for (const Int3& step : kAxisSteps) {
-      const int64_t j = neighbourIndex(grid, i, step);
+    for (int step = 0; step < 6; ++step) {
+      const int64_t j = steps.neighbour(i, step);
       if (j < 0 || seen[j] || grid.labelAt(j) != label) continue;
       seen[j] = true;
       stack.push_back(j);
@@ -132,6 +148,7 @@ PartBuilder::PartBuilder(const VoxelGrid& grid, int remainderLabel, const Design
     : grid_(grid),
       context_(context),
       access_(access),
+      steps_(grid),
       state_(static_cast<size_t>(grid.voxelCount()), kOther),
       cameFrom_(static_cast<size_t>(grid.voxelCount()), -2),
       connected_(static_cast<size_t>(grid.voxelCount()), false) {
@@ -210,8 +227,8 @@ bool PartBuilder::connect() {
       const int64_t v = stack.back();
       stack.pop_back();
       component.push_back(v);
-      for (const Int3& step : kAxisSteps) {
-        const int64_t w = neighbourIndex(grid_, v, step);
+      for (int step = 0; step < 6; ++step) {
+        const int64_t w = steps_.neighbour(v, step);
         if (w < 0 || connected_[w] || state_[w] != kPart) continue;
         connected_[w] = true;
         stack.push_back(w);
@@ -229,8 +246,8 @@ bool PartBuilder::connect() {
     bool reached = false;
     while (head < queue.size() && !reached) {
       const int64_t v = queue[head++];
-      for (const Int3& step : kAxisSteps) {
-        const int64_t w = neighbourIndex(grid_, v, step);
+      for (int step = 0; step < 6; ++step) {
+        const int64_t w = steps_.neighbour(v, step);
         if (w < 0 || cameFrom_[w] != -2 || (state_[w] != kFree && state_[w] != kPart)) continue;
         cameFrom_[w] = v;
         queue.push_back(w);
@@ -283,8 +300,8 @@ bool PartBuilder::forcedPartConnectable() {
   };
   reachedForced(forcedPart_[0]);
   for (size_t head = 0; head < queue.size() && static_cast<int64_t>(forced.size()) < toReach; ++head) {
-    for (const Int3& step : kAxisSteps) {
-      const int64_t w = neighbourIndex(grid_, queue[head], step);
+    for (int step = 0; step < 6; ++step) {
+      const int64_t w = steps_.neighbour(queue[head], step);
       if (w < 0 || cameFrom_[w] != -2 || (state_[w] != kFree && state_[w] != kPart)) continue;
       cameFrom_[w] = -3;
       queue.push_back(w);
@@ -328,8 +345,8 @@ bool PartBuilder::growTo(int minSize, int maxSize, const Int3& direction, std::m
     // that leave the remainder compact), ties broken by index for determinism.
     std::vector<int64_t> frontier;
     for (int64_t v : part_) {
-      for (const Int3& step : kAxisSteps) {
-        const int64_t w = neighbourIndex(grid_, v, step);
+      for (int step = 0; step < 6; ++step) {
+        const int64_t w = steps_.neighbour(v, step);
         if (w >= 0 && state_[w] == kFree) frontier.push_back(w);
       }
     }
