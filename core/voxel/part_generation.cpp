@@ -19,6 +19,7 @@
 #include "voxel/candidate_checks.h"
 #include "voxel/design_internals.h"
 #include "voxel/graph_design.h"
+#include "voxel/split_evaluation.h"
 
 namespace desia::design {
 namespace {
@@ -262,7 +263,9 @@ std::vector<Candidate> generatePartCandidates(const VoxelGrid& grid, int remaind
   const std::vector<DirectionalBlockingGraph> graphs = buildBaseBlockingGraphs(assembly);  // +x, +y, +z
   std::vector<AxisInfo> axes;
   for (int axis = 0; axis < 3; ++axis) axes.push_back(describeAxis(grid, remainder, axis, graphs[axis].graph, recursive));
-  const std::vector<double> access = accessibility(grid, remainder);
+  // The checks and ranking of this node's candidates, local to each candidate's part.
+  SplitEvaluator evaluator(grid, remainder, options.keyDirection, options.ranking);
+  const std::vector<double>& access = evaluator.access();
   const std::vector<int64_t> seeds = seedPool(grid, remainder, access);
   int64_t remainderVoxels = 0;
   for (int64_t v = 0; v < grid.voxelCount(); ++v) remainderVoxels += grid.labelAt(v) == remainder ? 1 : 0;
@@ -278,7 +281,6 @@ std::vector<Candidate> generatePartCandidates(const VoxelGrid& grid, int remaind
   const int heuristicMax = finalSplit ? static_cast<int>(remainderVoxels) - heuristicMin : targetSize + targetSize / 4 + 1;
   const SizeWindow size = clampInto({heuristicMin, std::max(heuristicMin, heuristicMax)}, allowed);
 
-  VoxelGrid work = grid;
   std::vector<Candidate> candidates;
   std::set<std::vector<int64_t>> seen;
   PartBuilder builder(grid, remainder, context, access);  // reset for every attempt
@@ -319,12 +321,10 @@ std::vector<Candidate> generatePartCandidates(const VoxelGrid& grid, int remaind
     if (!ok) continue;
     Candidate candidate{builder.sortedPartVoxels(), 0};
     if (!seen.insert(candidate.partVoxels).second) continue;
-    applyCandidate(work, remainder, candidate);
-    if (acceptsSplit(work, remainder, options.keyDirection)) {
-      candidate.rankKey = rankingKey(work, remainder, remainder + 1, options.ranking);
+    if (evaluator.accepts(candidate)) {
+      candidate.rankKey = evaluator.rankKey(candidate);
       candidates.push_back(std::move(candidate));
     }
-    undoCandidate(work, remainder);
   }
   std::stable_sort(candidates.begin(), candidates.end(),
                    [](const Candidate& x, const Candidate& y) { return x.rankKey < y.rankKey; });
