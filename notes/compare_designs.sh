@@ -28,7 +28,7 @@ cases=(
 fail=0
 for c in "${cases[@]}"; do
   set -- $c
-  for extra in "" "--rank x" "--mode recursive --node-limit 400"; do
+  for extra in "" "--rank x --node-limit 400" "--mode recursive --node-limit 400"; do
     [ "$extra" != "" ] && [ "$2" -gt 60 ] && continue
     "$base" design voxel --input "$1" --parts "$2" --seed "$3" --jobs 1 $extra --output "$out/a.json" >"$out/a.txt" 2>&1
     "$new" design voxel --input "$1" --parts "$2" --seed "$3" --jobs 1 $extra --output "$out/b.json" >"$out/b.txt" 2>&1

@@ -157,9 +157,21 @@ class PartBuilder {
   std::vector<std::pair<int64_t, uint8_t>> journal_;  // (voxel, previous state), in order
   bool propagate_ = false;
   Int3 removal_{0, 0, 0};
+  // Best-first search over the voxels the part may take (free or part), from `sources` towards
+  // `toward` (bucket queue on distance + Manhattan distance to it), until a voxel `isGoal` accepts
+  // leaves the queue: returns its distance from the sources, or -1 when none is reachable. With
+  // the single goal `toward` it is A* with a consistent heuristic, so the distance is exact.
+  // `visited` receives every voxel reached (their bestG_ entries, to be cleared by the caller).
+  template <typename IsGoal>
+  int32_t bestFirst(const std::vector<int64_t>& sources, const Int3& toward, IsGoal isGoal, std::vector<int64_t>* visited);
+  void clearBestG(const std::vector<int64_t>& visited) {
+    for (int64_t v : visited) bestG_[v] = -1;
+  }
+
   // Scratch buffers of connect(), grid-sized once; entries used are cleared after each use.
   std::vector<int64_t> cameFrom_;
   std::vector<bool> connected_;
+  std::vector<int32_t> bestG_;  // of bestFirst: the best distance pushed, -1 unreached
 };
 
 // Key generation (Section 4.2): candidates {A_1} for [P1, R1] with P1 free along the key direction
