@@ -27,6 +27,30 @@ namespace {
 
 }  // namespace
 
+PartReachability::PartReachability(const DirectedGraph& graph, int remainder)
+    : graph_(&graph), remainder_(remainder), rows_(static_cast<size_t>(std::max(0, remainder))) {}
+
+bool PartReachability::operator()(int from, int to) const {
+  std::vector<bool>& row = rows_[from];
+  if (row.empty()) {
+    // Depth-first from `from` over G(+e), never entering R_(i-1) (labels are graph nodes + 1).
+    row.assign(static_cast<size_t>(remainder_), false);
+    std::vector<int> stack{from};
+    row[from] = true;
+    while (!stack.empty()) {
+      const int label = stack.back();
+      stack.pop_back();
+      for (int next : graph_->successors(label - 1)) {
+        const int nextLabel = next + 1;
+        if (nextLabel == remainder_ || row[nextLabel]) continue;
+        row[nextLabel] = true;
+        stack.push_back(nextLabel);
+      }
+    }
+  }
+  return row[to];
+}
+
 AxisInfo describeAxis(const VoxelGrid& grid, int remainder, int axis, const DirectedGraph& graph, bool recursive) {
   AxisInfo info;
   const Int3 e = axisStep(axis), back{-e.x, -e.y, -e.z};
@@ -47,23 +71,7 @@ AxisInfo describeAxis(const VoxelGrid& grid, int remainder, int axis, const Dire
     if (behind == remainder) record(info.pairBackward, info.pairBackwardIndex, v);
     if (front == remainder && behind == remainder) record(info.pairBoth, info.pairBothIndex, v);
   }
-  // Reachability between earlier parts in G(+e) without passing R_(i-1) (a part reaches itself).
-  const int parts = remainder - 1;
-  info.reaches.assign(parts + 1, std::vector<bool>(parts + 1, false));
-  for (int from = 1; from <= parts; ++from) {
-    std::vector<int> stack{from};
-    info.reaches[from][from] = true;
-    while (!stack.empty()) {
-      const int label = stack.back();
-      stack.pop_back();
-      for (int next : graph.successors(label - 1)) {
-        const int nextLabel = next + 1;
-        if (nextLabel == remainder || info.reaches[from][nextLabel]) continue;
-        info.reaches[from][nextLabel] = true;
-        stack.push_back(nextLabel);
-      }
-    }
-  }
+  info.reaches = PartReachability(graph, remainder);
   return info;
 }
 
@@ -150,7 +158,7 @@ bool pickCycleContacts(const AxisInfo& info, const VoxelGrid& grid, const Int3& 
                                              [&](const ExternalContact& c) { return outUsable(c.voxel); }, random);
   if (!first) return false;
   const ExternalContact* second = nearestPick(info.blockingPart, info.blockingPartIndex, grid, seed, [&](const ExternalContact& c) {
-    return inUsable(c.voxel) && info.reaches[first->part][c.part];
+    return inUsable(c.voxel) && info.reaches(first->part, c.part);
   }, random);
   if (!second) return false;
   *out = *first;
