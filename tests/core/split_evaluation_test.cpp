@@ -135,5 +135,124 @@ TEST(SplitEvaluation, FallsBackToTheWholeGridWhereTheRemainderIsNotTheLastLabel)
   EXPECT_EQ(evaluator.rankKey(candidate), design::rankingKey(split, 1, 2, CandidateRanking::Compactness));
 }
 
+// The breadth-first searches PartBuilder used before its searches were aimed at their targets
+// (issue 10), on a copy of the builder's states: the reference for the connection and the
+// look-ahead. States: 0 other, 1 free, 2 part, 3 forced remainder.
+struct ReferenceBuilder {
+  const VoxelGrid& grid;
+  std::vector<int> state;
+  std::vector<int64_t> forced;
+
+  bool passable(int64_t v) const { return v >= 0 && (state[v] == 1 || state[v] == 2); }
+
+  bool forcedConnectable() const {
+    std::vector<bool> seen(state.size(), false);
+    std::vector<int64_t> queue{forced[0]};
+    seen[forced[0]] = true;
+    for (size_t head = 0; head < queue.size(); ++head) {
+      for (const Int3& step : design::kAxisSteps) {
+        const int64_t w = design::neighbourIndex(grid, queue[head], step);
+        if (!passable(w) || seen[w]) continue;
+        seen[w] = true;
+        queue.push_back(w);
+      }
+    }
+    for (int64_t v : forced) {
+      if (!seen[v]) return false;
+    }
+    return true;
+  }
+
+  // connect() as it was: flood the first forced voxel's part piece, then breadth-first from the
+  // whole piece to each forced voxel not in it, taking the first path found.
+  bool connect() {
+    std::vector<bool> connected(state.size(), false);
+    std::vector<int64_t> component;
+    auto flood = [&](int64_t from) {
+      if (connected[from]) return;
+      std::vector<int64_t> stack{from};
+      connected[from] = true;
+      while (!stack.empty()) {
+        const int64_t v = stack.back();
+        stack.pop_back();
+        component.push_back(v);
+        for (const Int3& step : design::kAxisSteps) {
+          const int64_t w = design::neighbourIndex(grid, v, step);
+          if (w < 0 || connected[w] || state[w] != 2) continue;
+          connected[w] = true;
+          stack.push_back(w);
+        }
+      }
+    };
+    auto reach = [&](int64_t target) {
+      std::vector<int64_t> cameFrom(state.size(), -2);
+      std::vector<int64_t> queue(component.begin(), component.end());
+      for (int64_t v : component) cameFrom[v] = -1;
+      for (size_t head = 0; head < queue.size(); ++head) {
+        for (const Int3& step : design::kAxisSteps) {
+          const int64_t w = design::neighbourIndex(grid, queue[head], step);
+          if (!passable(w) || cameFrom[w] != -2) continue;
+          cameFrom[w] = queue[head];
+          queue.push_back(w);
+          if (w != target) continue;
+          for (int64_t v = target; cameFrom[v] >= 0; v = cameFrom[v]) state[v] = 2;
+          return true;
+        }
+      }
+      return false;
+    };
+    flood(forced[0]);
+    for (size_t k = 1; k < forced.size(); ++k) {
+      if (connected[forced[k]]) continue;
+      if (!reach(forced[k])) return false;
+      flood(forced[k]);
+    }
+    return true;
+  }
+
+  std::vector<int64_t> partVoxels() const {
+    std::vector<int64_t> part;
+    for (size_t v = 0; v < state.size(); ++v) {
+      if (state[v] == 2) part.push_back(static_cast<int64_t>(v));
+    }
+    return part;
+  }
+};
+
+TEST(PartBuilderSearches, AgreeWithTheWholeBreadthFirstSearchesOnRandomForcings) {
+  VoxelDesignOptions options;
+  options.parts = 3;
+  std::mt19937_64 random(11);
+  int connectedCases = 0, failedCases = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    VoxelGrid grid(9, 8, 7);
+    for (int64_t i = 0; i < grid.voxelCount(); ++i) grid.setLabelAt(i, random() % 10 < 7 ? 1 : 2);
+    design::DesignContext context{options, {}, {}, grid.voxelCount(), std::mt19937_64(1)};
+    const std::vector<double> access = design::accessibility(grid, 1);
+    design::PartBuilder builder(grid, 1, context, access);
+    ReferenceBuilder reference{grid, std::vector<int>(static_cast<size_t>(grid.voxelCount()), 0), {}};
+    for (int64_t i = 0; i < grid.voxelCount(); ++i) reference.state[i] = grid.labelAt(i) == 1 ? 1 : 0;
+    const int forcedParts = 2 + static_cast<int>(random() % 5), forcedRests = static_cast<int>(random() % 400);
+    for (int k = 0; k < forcedRests; ++k) {
+      const int64_t v = static_cast<int64_t>(random() % grid.voxelCount());
+      if (builder.forceRemainder(v)) reference.state[v] = 3;
+    }
+    for (int k = 0; k < forcedParts; ++k) {
+      const int64_t v = static_cast<int64_t>(random() % grid.voxelCount());
+      if (!builder.forcePart(v)) continue;
+      reference.state[v] = 2;
+      reference.forced.push_back(v);
+    }
+    if (reference.forced.empty()) continue;
+    const bool connectable = reference.forcedConnectable();
+    EXPECT_EQ(builder.forcedPartConnectable(), connectable) << trial;
+    EXPECT_EQ(builder.connect(), reference.connect()) << trial;
+    EXPECT_EQ(builder.sortedPartVoxels(), reference.partVoxels()) << trial;  // the same paths
+    (connectable ? connectedCases : failedCases) += 1;
+  }
+  EXPECT_GT(connectedCases, 50);
+  EXPECT_GT(failedCases, 10);
+}
+
 }  // namespace
 }  // namespace desia
