@@ -382,9 +382,17 @@ double SplitEvaluator::rankKey(const Candidate& candidate) {
   for (int64_t v : candidate.partVoxels) {
     const Int3 c = grid_.coordinates(v);
     switch (ranking_) {
-      case CandidateRanking::LowestX: case CandidateRanking::HighestX: sum += c.x; break;
-      case CandidateRanking::LowestY: case CandidateRanking::HighestY: sum += c.y; break;
-      default: sum += c.z; break;
+      case CandidateRanking::LowestX:
+      case CandidateRanking::HighestX:
+        sum += c.x;
+        break;
+      case CandidateRanking::LowestY:
+      case CandidateRanking::HighestY:
+        sum += c.y;
+        break;
+      default:
+        sum += c.z;
+        break;
     }
   }
   const size_t count = candidate.partVoxels.size();

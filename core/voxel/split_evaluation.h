@@ -37,7 +37,7 @@ class IncrementalAccessibility {
   const VoxelGrid& grid_;
   int label_;
   GridSteps steps_;
-  std::vector<int64_t> voxels_;               // the set, in index order
+  std::vector<int64_t> voxels_;                // the set, in index order
   std::array<std::vector<double>, 4> passes_;  // a_0 .. a_3 of the set
   // Scratch of one call, cleared after it: P's voxels, the zone (distance 1..4 from P within
   // R \ P; zoneDistance_ 0 elsewhere) and its new values per pass.
@@ -63,12 +63,12 @@ class SplitAssembly {
   const VoxelGrid& grid_;
   int remainder_;
   GridSteps steps_;
-  std::vector<Contact> kept_;           // contacts between earlier parts, in order
-  std::vector<size_t> keptEnd_;         // per earlier part a: end of its contacts in kept_
-  std::vector<Faces> belowRemainder_;   // per earlier part q: faces with q on the -axis side of R
-  std::vector<Faces> aboveRemainder_;   // per earlier part q: faces with q on the +axis side of R
-  // Scratch of one call: the same counts for P (P on the +axis side / the -axis side of q), and
-  // P's faces with R_i. `partMark_` flags P's voxels.
+  std::vector<Contact> kept_;          // contacts between earlier parts, in order
+  std::vector<size_t> keptEnd_;        // per earlier part a: end of its contacts in kept_
+  std::vector<Faces> belowRemainder_;  // per earlier part q: faces with q on the -axis side of R
+  std::vector<Faces> aboveRemainder_;  // per earlier part q: faces with q on the +axis side of R
+  // Scratch of one call: the same counts for P (belowPart_[q]: P on the -axis side of q,
+  // abovePart_[q]: on its +axis side), and P's faces with R_i. `partMark_` flags P's voxels.
   std::vector<Faces> belowPart_, abovePart_;
   Faces partBelowRest_{}, restBelowPart_{};
   std::vector<uint8_t> partMark_;
@@ -125,9 +125,10 @@ class SplitEvaluator {
   IncrementalAccessibility accessibility_;
   SplitAssembly assembly_;
   RemainderConnectivity connectivity_;
-  VoxelGrid pair_;  // [P_i, R_i] alone, R_(i-1) labelled r + 1: P's voxels are set per candidate
+  // [P_i, R_i] alone, R_(i-1) labelled r + 1: P's voxels are set per candidate.
+  VoxelGrid pair_;
   std::array<std::vector<int>, 3> slabs_;  // R_(i-1)'s voxels per x, y and z slab (R_i's box)
-  std::optional<VoxelGrid> work_;  // the fallback's split grid (only where the node needs it)
+  std::optional<VoxelGrid> work_;          // the fallback's split grid (only where the node needs it)
 };
 
 }  // namespace desia::design

@@ -106,7 +106,8 @@ TEST_P(SplitEvaluation, AgreesWithTheWholeGridFunctionsOnRandomParts) {
     EXPECT_EQ(design::isListFaceConnected(steps, candidate.partVoxels), design::isFaceConnected(split, remainder));
     EXPECT_EQ(accessibility.sumWithout(candidate.partVoxels), compactnessSum(split, remainder + 1)) << trial;
     if (restConnected) ExpectSameContacts(assembly.assemblyAfter(candidate.partVoxels), assemblyFromVoxels(split));
-    for (CandidateRanking ranking : {CandidateRanking::Compactness, CandidateRanking::HighestX, CandidateRanking::LowestZ}) {
+    for (CandidateRanking ranking :
+         {CandidateRanking::Compactness, CandidateRanking::HighestX, CandidateRanking::LowestZ}) {
       design::SplitEvaluator evaluator(grid, remainder, Int3{0, 1, 0}, ranking);
       const bool accepts = design::acceptsSplit(split, remainder, Int3{0, 1, 0});
       EXPECT_EQ(evaluator.accepts(candidate), accepts) << trial;
