@@ -39,12 +39,13 @@ bool partLeavesRemainder(const VoxelGrid& grid, int partLabel) {
 
 }  // namespace
 
+bool splitInterlocks(const Assembly& assembly, int partLabel, const Int3& keyDirection) {
+  return partLabel == 1 ? keyMovesOnlyAlong(assembly, keyDirection) : interlockingWithKeyOne(assembly, keyDirection);
+}
+
 bool acceptsSplit(const VoxelGrid& grid, int partLabel, const Int3& keyDirection) {
   if (!isFaceConnected(grid, partLabel) || !isFaceConnected(grid, partLabel + 1)) return false;
-  const Assembly assembly = assemblyFromVoxels(grid);
-  const bool interlocks = partLabel == 1 ? keyMovesOnlyAlong(assembly, keyDirection)
-                                         : interlockingWithKeyOne(assembly, keyDirection);
-  return interlocks && partLeavesRemainder(grid, partLabel);
+  return splitInterlocks(assemblyFromVoxels(grid), partLabel, keyDirection) && partLeavesRemainder(grid, partLabel);
 }
 
 }  // namespace desia::design

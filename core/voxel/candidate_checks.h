@@ -2,6 +2,7 @@
 // Exact checks of a candidate split, with the project's own tests (Section 4.1 requirements).
 #pragma once
 
+#include "desia/assembly.h"
 #include "desia/voxel_grid.h"
 #include "voxel/design_internals.h"
 
@@ -11,6 +12,10 @@ namespace desia::design {
 // remainder one piece, is A_i interlocking with part 1 as key free along `keyDirection` only (for
 // the key itself, with only [P1, R1]: P1 free along keyDirection only), and can the new part
 // leave [P_i, R_i]?
+// The whole-grid reference; SplitEvaluator (split_evaluation.h) gives the same answers per node.
 bool acceptsSplit(const VoxelGrid& grid, int partLabel, const Int3& keyDirection);
+
+// Requirement (ii) alone, on the assembly of the split grid (assemblyFromVoxels).
+bool splitInterlocks(const Assembly& assembly, int partLabel, const Int3& keyDirection);
 
 }  // namespace desia::design

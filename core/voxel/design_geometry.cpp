@@ -8,7 +8,22 @@
 
 namespace desia::design {
 
+GridSteps::GridSteps(const VoxelGrid& grid) : inside_(static_cast<size_t>(grid.voxelCount()), 0) {
+  const int64_t nx = grid.nx(), nxy = nx * grid.ny();
+  offset_ = {1, -1, nx, -nx, nxy, -nxy};
+  size_t i = 0;
+  for (int z = 0; z < grid.nz(); ++z) {
+    for (int y = 0; y < grid.ny(); ++y) {
+      for (int x = 0; x < grid.nx(); ++x, ++i) {
+        inside_[i] = static_cast<uint8_t>((x + 1 < grid.nx()) | (x > 0) << 1 | (y + 1 < grid.ny()) << 2 | (y > 0) << 3 |
+                                          (z + 1 < grid.nz()) << 4 | (z > 0) << 5);
+      }
+    }
+  }
+}
+
 std::vector<double> accessibility(const VoxelGrid& grid, int label) {
+  const GridSteps steps(grid);
   // The set's voxels and, once, their in-set neighbours: the three passes then touch only the set
   // (this runs for every ranked candidate, on grids of tens of thousands of voxels).
   std::vector<int64_t> voxels;
@@ -18,8 +33,8 @@ std::vector<double> accessibility(const VoxelGrid& grid, int label) {
   std::vector<std::array<int64_t, 6>> neighbours(voxels.size());
   std::vector<uint8_t> neighbourCount(voxels.size(), 0);
   for (size_t k = 0; k < voxels.size(); ++k) {
-    for (const Int3& step : kAxisSteps) {
-      const int64_t j = neighbourIndex(grid, voxels[k], step);
+    for (int step = 0; step < 6; ++step) {
+      const int64_t j = steps.neighbour(voxels[k], step);
       if (j >= 0 && grid.labelAt(j) == label) neighbours[k][neighbourCount[k]++] = j;
     }
   }
@@ -40,6 +55,7 @@ std::vector<double> accessibility(const VoxelGrid& grid, int label) {
 }
 
 bool isFaceConnected(const VoxelGrid& grid, int label) {
+  const GridSteps steps(grid);
   int64_t total = 0, start = -1;
   for (int64_t i = 0; i < grid.voxelCount(); ++i) {
     if (grid.labelAt(i) != label) continue;
@@ -55,8 +71,8 @@ bool isFaceConnected(const VoxelGrid& grid, int label) {
     const int64_t i = stack.back();
     stack.pop_back();
     ++reached;
-    for (const Int3& step : kAxisSteps) {
-      const int64_t j = neighbourIndex(grid, i, step);
+    for (int step = 0; step < 6; ++step) {
+      const int64_t j = steps.neighbour(i, step);
       if (j < 0 || seen[j] || grid.labelAt(j) != label) continue;
       seen[j] = true;
       stack.push_back(j);
@@ -132,9 +148,11 @@ PartBuilder::PartBuilder(const VoxelGrid& grid, int remainderLabel, const Design
     : grid_(grid),
       context_(context),
       access_(access),
+      steps_(grid),
       state_(static_cast<size_t>(grid.voxelCount()), kOther),
       cameFrom_(static_cast<size_t>(grid.voxelCount()), -2),
-      connected_(static_cast<size_t>(grid.voxelCount()), false) {
+      connected_(static_cast<size_t>(grid.voxelCount()), false),
+      bestG_(static_cast<size_t>(grid.voxelCount()), -1) {
   for (int64_t i = 0; i < grid.voxelCount(); ++i) {
     if (grid.labelAt(i) == remainderLabel) state_[i] = kFree;
   }
@@ -210,8 +228,8 @@ bool PartBuilder::connect() {
       const int64_t v = stack.back();
       stack.pop_back();
       component.push_back(v);
-      for (const Int3& step : kAxisSteps) {
-        const int64_t w = neighbourIndex(grid_, v, step);
+      for (int step = 0; step < 6; ++step) {
+        const int64_t w = steps_.neighbour(v, step);
         if (w < 0 || connected_[w] || state_[w] != kPart) continue;
         connected_[w] = true;
         stack.push_back(w);
@@ -219,21 +237,42 @@ bool PartBuilder::connect() {
     }
   };
   // Breadth-first from the whole component: the first time the target is reached, the path back
-  // is a shortest connection through voxels the part may take.
+  // is a shortest connection through voxels the part may take. The search is pruned to voxels
+  // that can lie on a shortest path (distance + Manhattan distance to the target <= the target's
+  // distance, found first by A*), which finds the same path as the whole breadth-first search:
+  // a voxel w on a shortest path takes its predecessor from its neighbours one step closer to the
+  // component, which are all on shortest paths too, so by induction over the distance the pruned
+  // queue holds those voxels in the same relative order and each w the same predecessor. The
+  // cost follows the region between the component and the target, not a ball around it.
   auto reach = [&](int64_t target) {
+    const Int3 goal = grid_.coordinates(target);
+    std::vector<int64_t> visited;
+    const int32_t distance = bestFirst(component, goal, [&](int64_t v) { return v == target; }, &visited);
+    clearBestG(visited);
+    if (distance < 0) return false;
     // The queue is a vector read from `head` on; it also lists every voxel whose cameFrom_ entry
-    // was set, for the clean-up.
+    // was set, for the clean-up. `at` and `layer` hold each entry's coordinates and distance.
     std::vector<int64_t> queue(component.begin(), component.end());
+    std::vector<Int3> at;
+    for (int64_t v : component) at.push_back(grid_.coordinates(v));
+    std::vector<int32_t> layer(component.size(), 0);
     size_t head = 0;
     for (int64_t v : component) cameFrom_[v] = -1;
     bool reached = false;
     while (head < queue.size() && !reached) {
-      const int64_t v = queue[head++];
-      for (const Int3& step : kAxisSteps) {
-        const int64_t w = neighbourIndex(grid_, v, step);
+      const int64_t v = queue[head];
+      const Int3 c = at[head];
+      const int32_t next = layer[head] + 1;
+      ++head;
+      for (int step = 0; step < 6; ++step) {
+        const int64_t w = steps_.neighbour(v, step);
         if (w < 0 || cameFrom_[w] != -2 || (state_[w] != kFree && state_[w] != kPart)) continue;
+        const Int3 cw = plus(c, kAxisSteps[step]);
+        if (next + manhattan(cw, goal) > distance) continue;  // on no shortest path
         cameFrom_[w] = v;
         queue.push_back(w);
+        at.push_back(cw);
+        layer.push_back(next);
         if (w == target) {
           reached = true;
           break;
@@ -259,41 +298,65 @@ bool PartBuilder::connect() {
   return ok;
 }
 
+template <typename IsGoal>
+int32_t PartBuilder::bestFirst(const std::vector<int64_t>& sources, const Int3& toward, IsGoal isGoal,
+                               std::vector<int64_t>* visited) {
+  struct Entry {
+    int64_t voxel;
+    Int3 at;
+    int32_t distance;
+  };
+  std::vector<std::vector<Entry>> buckets;  // by distance + Manhattan distance to `toward`
+  auto push = [&](int64_t v, const Int3& at, int32_t distance) {
+    if (bestG_[v] >= 0 && bestG_[v] <= distance) return;
+    if (bestG_[v] < 0) visited->push_back(v);
+    bestG_[v] = distance;
+    const size_t f = static_cast<size_t>(distance + manhattan(at, toward));
+    if (f >= buckets.size()) buckets.resize(f + 1);
+    buckets[f].push_back({v, at, distance});
+  };
+  for (int64_t v : sources) push(v, grid_.coordinates(v), 0);
+  for (size_t f = 0; f < buckets.size(); ++f) {
+    while (!buckets[f].empty()) {  // last in, first out: the deepest entry of the bucket first
+      const Entry entry = buckets[f].back();
+      buckets[f].pop_back();
+      if (entry.distance != bestG_[entry.voxel]) continue;  // a shorter way was found meanwhile
+      if (isGoal(entry.voxel)) return entry.distance;
+      for (int step = 0; step < 6; ++step) {
+        const int64_t w = steps_.neighbour(entry.voxel, step);
+        if (w >= 0 && canBePart(w)) push(w, plus(entry.at, kAxisSteps[step]), entry.distance + 1);
+      }
+    }
+  }
+  return -1;
+}
+
 bool PartBuilder::forcedPartConnectable() {
   if (forcedPart_.empty()) return false;
-  // Distinct forced voxels still to reach (a voxel can be forced twice).
-  int64_t toReach = 0;
-  for (int64_t v : forcedPart_) {
-    if (!connected_[v]) {
-      connected_[v] = true;
-      ++toReach;
+  // Each forced voxel searches its way towards the first (best-first, aimed at it) until it meets
+  // a voxel already known to be connected to it: the voxels a search reached are connected too.
+  // Same answer as a breadth-first search from the first forced voxel, at the cost of paths
+  // rather than of balls around the first voxel (forced voxels lie far apart early in a large
+  // shape). connected_ marks the known voxels, `joined` lists them for the clean-up.
+  const int64_t first = forcedPart_[0];
+  const Int3 firstAt = grid_.coordinates(first);
+  std::vector<int64_t> joined{first}, visited;
+  connected_[first] = true;
+  bool ok = true;
+  for (size_t k = 1; k < forcedPart_.size() && ok; ++k) {
+    const int64_t target = forcedPart_[k];
+    if (connected_[target]) continue;
+    visited.clear();
+    ok = bestFirst({target}, firstAt, [&](int64_t v) { return static_cast<bool>(connected_[v]); }, &visited) >= 0;
+    clearBestG(visited);
+    for (int64_t v : visited) {
+      if (ok && !connected_[v]) {
+        connected_[v] = true;
+        joined.push_back(v);
+      }
     }
   }
-  for (int64_t v : forcedPart_) connected_[v] = false;
-  // Breadth-first over part and free voxels from the first forced voxel; cameFrom_ marks the
-  // visited ones (-3) and `queue` lists them for the clean-up.
-  std::vector<int64_t> queue{forcedPart_[0]};
-  cameFrom_[forcedPart_[0]] = -3;
-  std::vector<int64_t> forced;  // forced voxels reached, to count each once
-  auto reachedForced = [&](int64_t v) {
-    if (!connected_[v] && std::find(forcedPart_.begin(), forcedPart_.end(), v) != forcedPart_.end()) {
-      connected_[v] = true;
-      forced.push_back(v);
-    }
-  };
-  reachedForced(forcedPart_[0]);
-  for (size_t head = 0; head < queue.size() && static_cast<int64_t>(forced.size()) < toReach; ++head) {
-    for (const Int3& step : kAxisSteps) {
-      const int64_t w = neighbourIndex(grid_, queue[head], step);
-      if (w < 0 || cameFrom_[w] != -2 || (state_[w] != kFree && state_[w] != kPart)) continue;
-      cameFrom_[w] = -3;
-      queue.push_back(w);
-      reachedForced(w);
-    }
-  }
-  const bool ok = static_cast<int64_t>(forced.size()) == toReach;
-  for (int64_t v : queue) cameFrom_[v] = -2;
-  for (int64_t v : forced) connected_[v] = false;
+  for (int64_t v : joined) connected_[v] = false;
   return ok;
 }
 
@@ -328,8 +391,8 @@ bool PartBuilder::growTo(int minSize, int maxSize, const Int3& direction, std::m
     // that leave the remainder compact), ties broken by index for determinism.
     std::vector<int64_t> frontier;
     for (int64_t v : part_) {
-      for (const Int3& step : kAxisSteps) {
-        const int64_t w = neighbourIndex(grid_, v, step);
+      for (int step = 0; step < 6; ++step) {
+        const int64_t w = steps_.neighbour(v, step);
         if (w >= 0 && state_[w] == kFree) frontier.push_back(w);
       }
     }

@@ -20,6 +20,22 @@ struct ExternalContact {
   int part;       // the earlier part's label
 };
 
+// Which earlier parts reach which in G(+e) without passing R_(i-1) (a part reaches itself; labels
+// 1 .. R - 1). Each row is searched on first use: a node asks about the few parts near its seeds,
+// while all rows cost one search of the graph per part (quadratic in the parts: most of a node's
+// time late in a 1500-part cube). The graph must outlive it.
+class PartReachability {
+ public:
+  PartReachability() = default;
+  PartReachability(const DirectedGraph& graph, int remainder);
+  bool operator()(int from, int to) const;
+
+ private:
+  const DirectedGraph* graph_ = nullptr;
+  int remainder_ = 0;
+  mutable std::vector<std::vector<bool>> rows_;  // by `from`; empty until first asked
+};
+
 // Everything about one axis e of A_(i-1) that graph design needs.
 struct AxisInfo {
   std::vector<ExternalContact> remainderBlockedBy;  // R voxel v, part at v+e: edge R -> part in G(+e)
@@ -27,7 +43,7 @@ struct AxisInfo {
   std::vector<int64_t> pairForward;                 // R voxel a with a+e in R
   std::vector<int64_t> pairBackward;                // R voxel a with a-e in R
   std::vector<int64_t> pairBoth;                    // both
-  std::vector<std::vector<bool>> reaches;           // [from][to] over earlier parts, avoiding R
+  PartReachability reaches;                         // (from, to) over earlier parts, avoiding R
   // Position of each voxel in the lists above (-1: absent), so picks near a seed can search the
   // neighbourhood instead of whole lists.
   std::vector<int32_t> remainderBlockedByIndex, blockingPartIndex, pairForwardIndex, pairBackwardIndex, pairBothIndex;

@@ -8,6 +8,7 @@
 
 #include "voxel/candidate_checks.h"
 #include "voxel/design_internals.h"
+#include "voxel/split_evaluation.h"
 
 namespace desia::design {
 namespace {
@@ -103,7 +104,8 @@ bool forceBlockingPairs(const VoxelGrid& grid, int remainder, const Int3& d, con
 std::vector<Candidate> generateKeyCandidates(const VoxelGrid& grid, DesignContext& context, int targetSize) {
   constexpr int remainder = 1;
   const Int3 d = context.options.keyDirection;
-  const std::vector<double> access = accessibility(grid, remainder);
+  SplitEvaluator evaluator(grid, remainder, d, context.options.ranking);  // checks and ranking, per candidate
+  const std::vector<double>& access = evaluator.access();
   // The target size up to a quarter more, within what the size bounds leave for a key whose R1
   // can still be split into the N - 1 parts to come (partSizeWindow).
   const SizeWindow allowed = partSizeWindow(context.shapeVoxels, context.options.parts, partSizeBounds(context.options));
@@ -111,19 +113,16 @@ std::vector<Candidate> generateKeyCandidates(const VoxelGrid& grid, DesignContex
   const int heuristicMin = std::max(2, targetSize);
   const SizeWindow size = clampInto({heuristicMin, std::max(heuristicMin, targetSize + targetSize / 4)}, allowed);
   const int minSize = size.min, maxSize = size.max;
-  VoxelGrid work = grid;
   std::vector<Candidate> candidates;
   std::set<std::vector<int64_t>> seen;
   auto consider = [&](PartBuilder& builder) {
     if (!builder.connect() || !builder.clearPathAlong(d) || !builder.growTo(minSize, maxSize, d, context.random)) return;
     Candidate candidate{builder.sortedPartVoxels(), 0};
     if (!seen.insert(candidate.partVoxels).second) return;
-    applyCandidate(work, remainder, candidate);
-    if (acceptsSplit(work, remainder, d)) {
-      candidate.rankKey = rankingKey(work, remainder, remainder + 1, context.options.ranking);
+    if (evaluator.accepts(candidate)) {
+      candidate.rankKey = evaluator.rankKey(candidate);
       candidates.push_back(std::move(candidate));
     }
-    undoCandidate(work, remainder);
   };
   const std::vector<int64_t> anchors = anchorVoxels(grid, remainder, d);
   PartBuilder builder(grid, remainder, context, access);  // reset for every attempt

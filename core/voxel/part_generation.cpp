@@ -19,12 +19,37 @@
 #include "voxel/candidate_checks.h"
 #include "voxel/design_internals.h"
 #include "voxel/graph_design.h"
+#include "voxel/split_evaluation.h"
 
 namespace desia::design {
 namespace {
 
 
 }  // namespace
+
+PartReachability::PartReachability(const DirectedGraph& graph, int remainder)
+    : graph_(&graph), remainder_(remainder), rows_(static_cast<size_t>(std::max(0, remainder))) {}
+
+bool PartReachability::operator()(int from, int to) const {
+  std::vector<bool>& row = rows_[from];
+  if (row.empty()) {
+    // Depth-first from `from` over G(+e), never entering R_(i-1) (labels are graph nodes + 1).
+    row.assign(static_cast<size_t>(remainder_), false);
+    std::vector<int> stack{from};
+    row[from] = true;
+    while (!stack.empty()) {
+      const int label = stack.back();
+      stack.pop_back();
+      for (int next : graph_->successors(label - 1)) {
+        const int nextLabel = next + 1;
+        if (nextLabel == remainder_ || row[nextLabel]) continue;
+        row[nextLabel] = true;
+        stack.push_back(nextLabel);
+      }
+    }
+  }
+  return row[to];
+}
 
 AxisInfo describeAxis(const VoxelGrid& grid, int remainder, int axis, const DirectedGraph& graph, bool recursive) {
   AxisInfo info;
@@ -46,23 +71,7 @@ AxisInfo describeAxis(const VoxelGrid& grid, int remainder, int axis, const Dire
     if (behind == remainder) record(info.pairBackward, info.pairBackwardIndex, v);
     if (front == remainder && behind == remainder) record(info.pairBoth, info.pairBothIndex, v);
   }
-  // Reachability between earlier parts in G(+e) without passing R_(i-1) (a part reaches itself).
-  const int parts = remainder - 1;
-  info.reaches.assign(parts + 1, std::vector<bool>(parts + 1, false));
-  for (int from = 1; from <= parts; ++from) {
-    std::vector<int> stack{from};
-    info.reaches[from][from] = true;
-    while (!stack.empty()) {
-      const int label = stack.back();
-      stack.pop_back();
-      for (int next : graph.successors(label - 1)) {
-        const int nextLabel = next + 1;
-        if (nextLabel == remainder || info.reaches[from][nextLabel]) continue;
-        info.reaches[from][nextLabel] = true;
-        stack.push_back(nextLabel);
-      }
-    }
-  }
+  info.reaches = PartReachability(graph, remainder);
   return info;
 }
 
@@ -149,7 +158,7 @@ bool pickCycleContacts(const AxisInfo& info, const VoxelGrid& grid, const Int3& 
                                              [&](const ExternalContact& c) { return outUsable(c.voxel); }, random);
   if (!first) return false;
   const ExternalContact* second = nearestPick(info.blockingPart, info.blockingPartIndex, grid, seed, [&](const ExternalContact& c) {
-    return inUsable(c.voxel) && info.reaches[first->part][c.part];
+    return inUsable(c.voxel) && info.reaches(first->part, c.part);
   }, random);
   if (!second) return false;
   *out = *first;
@@ -262,7 +271,9 @@ std::vector<Candidate> generatePartCandidates(const VoxelGrid& grid, int remaind
   const std::vector<DirectionalBlockingGraph> graphs = buildBaseBlockingGraphs(assembly);  // +x, +y, +z
   std::vector<AxisInfo> axes;
   for (int axis = 0; axis < 3; ++axis) axes.push_back(describeAxis(grid, remainder, axis, graphs[axis].graph, recursive));
-  const std::vector<double> access = accessibility(grid, remainder);
+  // The checks and ranking of this node's candidates, local to each candidate's part.
+  SplitEvaluator evaluator(grid, remainder, options.keyDirection, options.ranking);
+  const std::vector<double>& access = evaluator.access();
   const std::vector<int64_t> seeds = seedPool(grid, remainder, access);
   int64_t remainderVoxels = 0;
   for (int64_t v = 0; v < grid.voxelCount(); ++v) remainderVoxels += grid.labelAt(v) == remainder ? 1 : 0;
@@ -278,7 +289,6 @@ std::vector<Candidate> generatePartCandidates(const VoxelGrid& grid, int remaind
   const int heuristicMax = finalSplit ? static_cast<int>(remainderVoxels) - heuristicMin : targetSize + targetSize / 4 + 1;
   const SizeWindow size = clampInto({heuristicMin, std::max(heuristicMin, heuristicMax)}, allowed);
 
-  VoxelGrid work = grid;
   std::vector<Candidate> candidates;
   std::set<std::vector<int64_t>> seen;
   PartBuilder builder(grid, remainder, context, access);  // reset for every attempt
@@ -319,12 +329,10 @@ std::vector<Candidate> generatePartCandidates(const VoxelGrid& grid, int remaind
     if (!ok) continue;
     Candidate candidate{builder.sortedPartVoxels(), 0};
     if (!seen.insert(candidate.partVoxels).second) continue;
-    applyCandidate(work, remainder, candidate);
-    if (acceptsSplit(work, remainder, options.keyDirection)) {
-      candidate.rankKey = rankingKey(work, remainder, remainder + 1, options.ranking);
+    if (evaluator.accepts(candidate)) {
+      candidate.rankKey = evaluator.rankKey(candidate);
       candidates.push_back(std::move(candidate));
     }
-    undoCandidate(work, remainder);
   }
   std::stable_sort(candidates.begin(), candidates.end(),
                    [](const Candidate& x, const Candidate& y) { return x.rankKey < y.rankKey; });

@@ -11,6 +11,7 @@
 
 #include "desia/disassembly.h"
 #include "desia/error.h"
+#include "voxel/voxel_removal.h"
 
 namespace desia {
 namespace {
@@ -317,6 +318,26 @@ bool findVoxelRemovalPath(const VoxelGrid& occupancy, int label, std::vector<Mov
   const bool found = search.findPath(path);
   if (limitReached) *limitReached = search.limitReached();
   return found;
+}
+
+bool findVoxelRemovalPathOf(const VoxelGrid& occupancy, int label, const std::vector<int64_t>& partVoxels,
+                            const Int3& obstaclesMin, const Int3& obstaclesMax, std::vector<Move>* path) {
+  const VoxelDisassemblyOptions options;
+  std::vector<Int3> voxels;
+  Box own, obstacles;
+  for (int64_t i : partVoxels) {
+    voxels.push_back(occupancy.coordinates(i));
+    own.add(voxels.back());
+  }
+  if (obstaclesMin.x <= obstaclesMax.x) {
+    obstacles.add(obstaclesMin);
+    obstacles.add(obstaclesMax);
+  }
+  if (voxels.empty()) return false;
+  RemovalSearch search(occupancy, label, voxels, own, options, std::min(options.maxVoxelTests, options.maxTotalVoxelTests));
+  if (!obstacles.empty() && !search.canTakeAnyStep()) return false;
+  search.setObstacles(obstacles);
+  return search.findPath(path);
 }
 
 // Greedy removal in id order (Section 3.3). Searching every remaining part after every removal

@@ -28,9 +28,9 @@ const char* designName(AxisDesign design) {
 // Does G contain a cycle P -> ... -> P of the design's shape? `part` and `remainder` are node
 // indices in A_i; earlier parts are 0..part-1; `reaches` is over earlier part labels (1-based).
 bool hasDesignCycle(AxisDesign design, const DirectedGraph& g, int part, int remainder,
-                    const std::vector<std::vector<bool>>& reaches) {
+                    const design::PartReachability& reaches) {
   auto edge = [&](int from, int to) { return g.hasEdge(from, to); };
-  auto path = [&](int from, int to) { return reaches[from + 1][to + 1]; };  // P_out ~> P_in
+  auto path = [&](int from, int to) { return reaches(from + 1, to + 1); };  // P_out ~> P_in
   for (int out = 0; out < part; ++out) {
     for (int in = 0; in < part; ++in) {
       if (!path(out, in)) continue;
@@ -134,6 +134,30 @@ TEST(GraphDesign, RecursiveModeClosesCyclesThroughThePreviousPartOnly) {
     const design::AxisInfo info = design::describeAxis(grid, 4, axis, graphs[axis].graph, true);
     for (const auto& contact : info.remainderBlockedBy) EXPECT_EQ(contact.part, 3);
     for (const auto& contact : info.blockingPart) EXPECT_EQ(contact.part, 3);
+  }
+}
+
+TEST(GraphDesign, ReachabilityRowsAreTheClosureWithoutTheRemainder) {
+  // Rows searched on demand (PartReachability) against the transitive closure of G(+e) with R
+  // removed, computed by repeated squaring over all pairs.
+  const VoxelGrid grid = cubeAfterThreeParts(eightPartOptions());
+  const int remainder = 4;
+  const auto graphs = buildBaseBlockingGraphs(assemblyFromVoxels(grid));
+  for (int axis = 0; axis < 3; ++axis) {
+    const design::PartReachability reaches(graphs[axis].graph, remainder);
+    std::vector<std::vector<bool>> closure(remainder, std::vector<bool>(remainder, false));
+    for (int a = 1; a < remainder; ++a) {
+      closure[a][a] = true;
+      for (int b = 1; b < remainder; ++b) closure[a][b] = closure[a][b] || graphs[axis].graph.hasEdge(a - 1, b - 1);
+    }
+    for (int k = 1; k < remainder; ++k) {
+      for (int a = 1; a < remainder; ++a) {
+        for (int b = 1; b < remainder; ++b) closure[a][b] = closure[a][b] || (closure[a][k] && closure[k][b]);
+      }
+    }
+    for (int a = 1; a < remainder; ++a) {
+      for (int b = 1; b < remainder; ++b) EXPECT_EQ(reaches(a, b), closure[a][b]) << axis << " " << a << " " << b;
+    }
   }
 }
 
