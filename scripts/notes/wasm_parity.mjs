@@ -1,9 +1,9 @@
 // Notes script (issue 10, scale-1500): designs shapes in WebAssembly and compares the puzzle with
-// the native CLI's, byte for byte. usage: node notes/wasm_parity.mjs SHAPE.puz PARTS SEED NATIVE_OUT.puz ...
+// the native CLI's, byte for byte. usage: node scripts/notes/wasm_parity.mjs SHAPE.puz PARTS SEED NATIVE_OUT.puz ...
 // (groups of four arguments; NATIVE_OUT from `desia design voxel ... --jobs 1 --output NATIVE_OUT.puz`).
 import fs from 'node:fs';
 
-import { loadDesiaModule } from '../wasm/index.js';
+import { loadDesiaModule } from '../../wasm/index.js';
 
 const core = await loadDesiaModule();
 const args = process.argv.slice(2);

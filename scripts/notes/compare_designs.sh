@@ -1,12 +1,12 @@
 #!/usr/bin/env bash
 # Byte-identity check for the scale-1500 work (issue 10): the same seeds and options must give the
-# same bytes before and after. usage: notes/compare_designs.sh BASE_DESIA NEW_DESIA [BASE_PARTIAL NEW_PARTIAL]
-# BASE_/NEW_PARTIAL: notes/partial_design.cpp built against each build's libdesia_core.a
-#   g++ -O2 -std=c++17 -Icore/include notes/partial_design.cpp build/native/core/libdesia_core.a -lglpk -lpolyclipping -o partial
+# same bytes before and after. usage: scripts/notes/compare_designs.sh BASE_DESIA NEW_DESIA [BASE_PARTIAL NEW_PARTIAL]
+# BASE_/NEW_PARTIAL: scripts/notes/partial_design.cpp built against each build's libdesia_core.a
+#   g++ -O2 -std=c++17 -Icore/include scripts/notes/partial_design.cpp build/native/core/libdesia_core.a -lglpk -lpolyclipping -o partial
 # (35^3 N=1500 cut at a node limit, compared by the hash of the deepest node).
 set -u
 base="$1" new="$2"
-root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 out="${TMPDIR:-/tmp}/desia-compare"
 mkdir -p "$out"
 cube() {  # a solid cube of side $1 as a .puz

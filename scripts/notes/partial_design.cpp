@@ -1,7 +1,7 @@
 // Notes tool (issue 10, scale-1500): designs with a node limit and prints the deepest node's
 // depth, an FNV-1a hash of its labels, and the time, so partial 35^3 runs can be compared byte
 // for byte between builds. Also prints parts reached per time checkpoint with --checkpoints.
-// Build: see notes/compare_designs.sh.
+// Build: see scripts/notes/compare_designs.sh.
 #include <chrono>
 #include <cstdio>
 #include <fstream>

@@ -3,7 +3,7 @@
 // X.puz`, beside desia_bench's "full work" rows on its generated (not interlocking) cube, in the
 // same process. Each time includes deriving the contacts from the voxels, as desia_bench's rows
 // do. Medians of CPU time (the machine is shared: wall time follows the load).
-// g++ -O2 -std=c++17 -Icore/include -Itests/benchmarks notes/time_tests.cpp \
+// g++ -O2 -std=c++17 -Icore/include -Itests/benchmarks scripts/notes/time_tests.cpp \
 //   build/native/tests/benchmarks/libdesia_bench_workloads.a build/native/core/libdesia_core.a -lglpk -lpolyclipping
 #include <time.h>
 
