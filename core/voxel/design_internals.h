@@ -158,16 +158,6 @@ std::vector<Candidate> generatePartCandidates(const VoxelGrid& grid, int remaind
 // The target size of the next part: what is left shared evenly over the parts still to make.
 int targetPartSize(int64_t remainderVoxels, int partsLeftIncludingRemainder);
 
-// The smallest size the random designs grow a part to (the lower end of the heuristic window,
-// before the size bounds): a quarter below the target, or only an eighth (at least one voxel)
-// once the target has drifted more than an eighth above the shape's mean part size. Growth stops
-// as soon as a part reaches this size, so parts average near it and what they leave grows against
-// the parts left: with a quarter throughout, the bunny at N=100 kept 116 voxels for its last 5
-// parts (2.4x the mean), too many for the last splits to be enumerated (final_split.h, at most 64
-// voxels) and too thick for the random designs (771 of 795 parts built there left R_i in two
-// pieces). Below the drift the window is as before (the hollow cube's designs are unchanged).
-int heuristicMinimumPartSize(int target, int64_t shapeVoxels, int parts);
-
 // A range of part sizes [min, max] in voxels; empty when min > max.
 struct SizeWindow {
   int min = 0;

@@ -130,7 +130,7 @@ class SplitEnumerator {
   void run(Accept accept, FinalSplitStats* stats) {
     const int n = static_cast<int>(local_.voxels.size());
     for (int root = 0; root < n; ++root) {
-      const Mask higher = ~(bit(root + 1) - 1) & local_.all;
+      const Mask higher = root == 63 ? 0 : ~(bit(root + 1) - 1) & local_.all;  // no shift by 64
       std::vector<Frame> stack{{bit(root), local_.adjacent[root] & higher}};
       if (!visit(bit(root), accept, stats)) return;
       while (!stack.empty()) {

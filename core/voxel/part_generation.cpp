@@ -282,10 +282,6 @@ bool enumeratedChildren(const VoxelGrid& grid, int remainder, const DesignContex
 
 }  // namespace
 
-int heuristicMinimumPartSize(int target, int64_t shapeVoxels, int parts) {
-  const bool drifted = 8 * static_cast<int64_t>(target) * parts > 9 * shapeVoxels;  // target > 9/8 of the mean
-  return drifted ? target - std::max(1, target / 8) : target - target / 4;
-}
 
 std::vector<Candidate> generatePartCandidates(const VoxelGrid& grid, int remainder, DesignContext& context,
                                               int targetSize, int partsStillToPlace) {
@@ -300,15 +296,14 @@ std::vector<Candidate> generatePartCandidates(const VoxelGrid& grid, int remaind
   int64_t remainderVoxels = 0;
   for (int64_t v = 0; v < grid.voxelCount(); ++v) remainderVoxels += grid.labelAt(v) == remainder ? 1 : 0;
 
-  // Part sizes from heuristicMinimumPartSize up to a quarter above the target, which keeps the
-  // search flexible; the final split (P_(N-1) and the last remainder) only needs both parts to be
-  // of a reasonable size. Both are moved into the sizes the bounds allow with R_i still splittable into the parts to come
+  // Part sizes within a quarter of the target, which keeps the search flexible; the final split
+  // (P_(N-1) and the last remainder) only needs both parts to be of a reasonable size. Both are
+  // moved into the sizes the bounds allow with R_i still splittable into the parts to come
   // (partSizeWindow: a part outside it is a dead branch, refused before it is built).
   const bool finalSplit = partsStillToPlace == 1;
   const SizeWindow allowed = partSizeWindow(remainderVoxels, partsStillToPlace + 1, partSizeBounds(options));
   if (allowed.empty()) return {};
-  const int partMin = heuristicMinimumPartSize(targetSize, context.shapeVoxels, options.parts);
-  const int heuristicMin = clampInto({finalSplit ? targetSize / 2 : partMin, 0}, allowed).min;
+  const int heuristicMin = clampInto({finalSplit ? targetSize / 2 : targetSize - targetSize / 4, 0}, allowed).min;
   const int heuristicMax = finalSplit ? static_cast<int>(remainderVoxels) - heuristicMin : targetSize + targetSize / 4 + 1;
   const SizeWindow size = clampInto({heuristicMin, std::max(heuristicMin, heuristicMax)}, allowed);
 

@@ -64,6 +64,21 @@ TEST(FinalSplit, VisitsEveryConnectedPartOnce) {
   EXPECT_EQ(stats.exactChecks, 0);  // nothing around: every part would be free alone
 }
 
+TEST(FinalSplit, SixtyFourVoxelsAreTheLimit) {
+  VoxelGrid grid(4, 4, 4);
+  for (int v = 0; v < 64; ++v) grid.setLabelAt(v, 1);
+  VoxelDesignOptions options = nineParts();
+  design::DesignContext context{options, {}, {}, 64, std::mt19937_64(1)};
+  design::FinalSplitStats stats;
+  design::enumerateSplits(grid, 1, context, {1, 2}, design::FinalSplitLimits{}, false, &stats);
+  EXPECT_EQ(stats.setsVisited, 64 + 144);  // single voxels and face-adjacent pairs, each once
+  EXPECT_TRUE(stats.exhausted);
+  VoxelGrid larger(5, 5, 5);
+  for (int v = 0; v < 65; ++v) larger.setLabelAt(v, 1);
+  EXPECT_TRUE(design::enumerateSplits(larger, 1, context, {1, 2}, design::FinalSplitLimits{}, false, &stats).empty());
+  EXPECT_FALSE(stats.exhausted);  // not enumerated: the random designs decide
+}
+
 TEST(FinalSplit, EverySplitFoundCompletesAVerifiedPuzzle) {
   const VoxelGrid node = mergedFrom(8);  // P1..P7 placed, R7 to split into P8 and R8
   const VoxelDesignOptions options = nineParts();

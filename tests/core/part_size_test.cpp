@@ -167,8 +167,8 @@ TEST(PartSizes, DefaultDesignsReportTheirSpread) {
   const VoxelDesignResult result = designVoxelPuzzle(cube4(), optionsFor(7, 3));
   ASSERT_EQ(result.status, DesignStatus::Success);
   EXPECT_EQ(result.seed, 3u);
-  EXPECT_EQ(result.partSizes.min, 5);  // 6 and 18 before issue 10's deep-end search (fallback enumeration, size drift)
-  EXPECT_EQ(result.partSizes.max, 17);
+  EXPECT_EQ(result.partSizes.min, 6);
+  EXPECT_EQ(result.partSizes.max, 18);
   EXPECT_NEAR(result.partSizes.mean, 64.0 / 7, 1e-12);
 }
 
