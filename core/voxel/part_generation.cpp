@@ -266,10 +266,12 @@ constexpr int kEnumeratedPartsStillToPlace = 3;
 // finds children at nodes where the random designs found none. With three parts left a child
 // also needs a last split of its own (look-ahead: a child without one is a dead branch the search
 // would otherwise descend into). Returns false when the enumeration was cut short by its limits
-// without a child.
+// without a child, or did not run.
 bool enumeratedChildren(const VoxelGrid& grid, int remainder, const DesignContext& context, const SizeWindow& allowed,
                         int partsStillToPlace, std::vector<Candidate>* children) {
-  if (partsStillToPlace > kEnumeratedPartsStillToPlace) return false;
+  // Recursive mode (Fig. 11) is the baseline of cycles through P_(i-1) only, which the
+  // enumeration (any interlocking split) does not respect: it keeps its random designs.
+  if (partsStillToPlace > kEnumeratedPartsStillToPlace || context.options.mode == DesignMode::Recursive) return false;
   FinalSplitLimits limits;
   limits.maxSplits = context.options.candidates;
   FinalSplitStats stats;
