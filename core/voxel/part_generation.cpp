@@ -17,6 +17,7 @@
 
 #include "desia/blocking_graph.h"
 #include "voxel/candidate_checks.h"
+#include "voxel/final_split.h"
 #include "voxel/design_internals.h"
 #include "voxel/graph_design.h"
 #include "voxel/split_evaluation.h"
@@ -261,7 +262,37 @@ Int3 removalDirectionFor(const VoxelGrid& grid, int remainder, int64_t seed, std
   return exposed[random() % exposed.size()];
 }
 
+// Parts still to place (after this one, the last remainder included) up to which children are
+// enumerated, not sampled: the last three splits.
+constexpr int kEnumeratedPartsStillToPlace = 3;
+
+// The deep end of Algorithm 1 (Section 4.1): for the last three splits, when the random graph
+// designs of Fig. 7 found no child and R_(i-1) has at most 64 voxels, the splits are enumerated
+// (final_split.h). Measured on the 5x5x5 cube at N=20 before this (seed 1, 40 s): 373 of 378 nodes
+// with three parts left and 507 of 648 with four got no child from their 1400 random attempts, and
+// the search could not tell bad luck from a dead node. The enumeration shows that the former are
+// dead (no split leaves a remainder with a last split of its own), while with four parts left it
+// finds children at nodes where the random designs found none. With three parts left a child
+// also needs a last split of its own (look-ahead: a child without one is a dead branch the search
+// would otherwise descend into). Returns false when the enumeration was cut short by its limits
+// without a child, or did not run.
+bool enumeratedChildren(const VoxelGrid& grid, int remainder, const DesignContext& context, const SizeWindow& allowed,
+                        int partsStillToPlace, std::vector<Candidate>* children) {
+  // Recursive mode (Fig. 11) is the baseline of cycles through P_(i-1) only, which the
+  // enumeration (any interlocking split) does not respect: it keeps its random designs.
+  if (partsStillToPlace > kEnumeratedPartsStillToPlace || context.options.mode == DesignMode::Recursive) return false;
+  FinalSplitLimits limits;
+  limits.maxSplits = context.options.candidates;
+  FinalSplitStats stats;
+  *children = enumerateSplits(grid, remainder, context, allowed, limits, partsStillToPlace == 2, &stats);
+  if (children->empty() && !stats.exhausted) return false;
+  std::stable_sort(children->begin(), children->end(),
+                   [](const Candidate& x, const Candidate& y) { return x.rankKey < y.rankKey; });
+  return true;
+}
+
 }  // namespace
+
 
 std::vector<Candidate> generatePartCandidates(const VoxelGrid& grid, int remainder, DesignContext& context,
                                               int targetSize, int partsStillToPlace) {
@@ -333,6 +364,16 @@ std::vector<Candidate> generatePartCandidates(const VoxelGrid& grid, int remaind
       candidate.rankKey = evaluator.rankKey(candidate);
       candidates.push_back(std::move(candidate));
     }
+  }
+  // The random designs found no child: at the deep end, enumerate the splits they missed (or
+  // learn that there are none). Where they found children, those are the node's children as
+  // before, so easy designs are searched as they were.
+  // With four parts left the enumeration keeps the random designs' size window (parts of any
+  // allowed size there leave remainders that are hard to finish); closer to the end any size the
+  // bounds allow is fine, as the look-ahead has checked the rest.
+  if (candidates.empty()) {
+    const SizeWindow window = partsStillToPlace == kEnumeratedPartsStillToPlace ? size : allowed;
+    enumeratedChildren(grid, remainder, context, window, partsStillToPlace, &candidates);
   }
   std::stable_sort(candidates.begin(), candidates.end(),
                    [](const Candidate& x, const Candidate& y) { return x.rankKey < y.rankKey; });
