@@ -97,7 +97,7 @@ test('designPlate and designFrame snapshots list the plates or beams placed, the
 });
 
 test('the difficulty line follows the measured table: below ~7 voxels per part is hard', () => {
-  assert.match(difficultyText(64, 10), /^~6\.4 voxels per part: hard, designs below ~7 voxels per part often fail$/);
+  assert.match(difficultyText(64, 10), /^~6\.4 voxels per part: hard, designs below ~7 voxels per part take long and may fail$/);
   assert.match(difficultyText(64, 9), /^~7\.1 voxels per part: fine for compact shapes/);
   assert.equal(difficultyText(966, 80), '~12 voxels per part: usually succeeds');
   assert.equal(difficultyText(0, 9), '');
