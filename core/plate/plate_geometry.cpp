@@ -342,6 +342,7 @@ std::optional<PlateContact> plateCrossing(const std::vector<Plate>& plates, int 
 // prisms (where they have their whole thickness, corePrism), which lie inside them. A refusal is
 // always a real overlap; one within the mitres alone can pass (the design's swept check finds it).
 void requireMitredPerpendicularApart(const Plate& a, const Plate& b, double tolerance) {
+  if (std::abs(dot(plateThicknessAxis(a), plateThicknessAxis(b))) > 1e-6 || (isPrism(a) && isPrism(b))) return;
   const std::vector<Plate> cores{corePrism(a), corePrism(b)};
   if (cores[0].bottom.empty() || cores[1].bottom.empty()) return;
   bool overlap = false;
@@ -365,10 +366,7 @@ std::optional<PlateContact> plateCrossing(const std::vector<Plate>& plates, int 
   const Vec3 ta = plateThicknessAxis(a), tb = plateThicknessAxis(b);
   if (std::abs(dot(ta, tb)) > 1e-6) return std::nullopt;
   const double ha = plateThickness(a), hb = plateThickness(b);
-  if (!isPrism(a) || !isPrism(b)) {
-    requireMitredPerpendicularApart(a, b, tolerance);
-    return std::nullopt;
-  }
+  if (!isPrism(a) || !isPrism(b)) return std::nullopt;  // requireMitredPerpendicularApart judges them
   const Vec3 line = canonicalSign(normalized(cross(ta, tb)));
   // On both first faces: the planes' common line, with (ta, tb, line) orthonormal.
   const Vec3 point = plus(scaled(ta, dot(a.bottom[0][0], ta)), scaled(tb, dot(b.bottom[0][0], tb)));
@@ -605,6 +603,7 @@ std::vector<PlateContact> contactsOfSolids(const std::vector<Plate>& plates, con
         contacts.push_back(*crossing);
       }
       requireNoSlantedOverlap(plates[p], plates[q], tolerance);
+      requireMitredPerpendicularApart(plates[p], plates[q], tolerance);
     }
   }
   return contacts;
