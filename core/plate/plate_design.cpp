@@ -29,6 +29,7 @@
 #include "analysis/part_motion.h"
 #include "analysis/vec3.h"
 #include "model/restarts.h"
+#include "plate/plan_squaring.h"
 #include "desia/cut_points.h"
 #include "desia/error.h"
 #include "desia/interlocking.h"
@@ -377,66 +378,6 @@ struct JointedPlan {
   Assembly assembly;
   std::vector<Vec3> directions;  // the plan's ways out, squared to the faces they slide along
 };
-
-// Jointed plates are cut from a design given to a micrometre (plates-from-mesh writes 6 decimals):
-// a face meant to slide along a plan direction can be off square to it by 1e-7 rad, past the blocking
-// tests' 1e-9 (README "Verdicts on computed normals"). A contact normal within 1e-6 of square to
-// plan directions is made exactly square to them; one that blocks a way out by more is kept, and
-// the swept check of every plate judges the shapes themselves.
-Vec3 squaredToPlan(Vec3 normal, const std::vector<Vec3>& directions) {
-  constexpr double kNearlySquare = 1e-6;
-  std::vector<Vec3> basis;  // orthonormal, spanning the directions the normal is nearly square to
-  for (const Vec3& d : directions) {
-    if (std::abs(dot(normal, d)) >= kNearlySquare) continue;
-    Vec3 e = d;
-    for (const Vec3& b : basis) e = minus(e, scaled(b, dot(e, b)));
-    if (norm(e) < kNearlySquare) continue;
-    basis.push_back(normalized(e));
-  }
-  for (const Vec3& b : basis) normal = minus(normal, scaled(b, dot(normal, b)));
-  return normalized(normal);
-}
-
-// The other half of the same rounding: a way out is itself one of the design's vectors (a shared
-// edge, a mitre's normal, a tenon's axis), off by as much. The LIZARD's plate 33 leaves across a
-// mitre along a vector 6.3e-9 out of the plane of plate 1, whose face its tenon slides along: no
-// normal can be squared to that and to the other ways out in that plane at once. So each way out
-// within 1e-6 of square to faces of its plate against plates still in place (the contacts in
-// `assembly`, part k leaving k-th) is first made exactly square to them; a way out that would turn
-// by more stays as it is (a real block is kept, and the swept check judges the shapes).
-std::vector<Vec3> directionsSquaredToFaces(const Assembly& assembly, std::vector<Vec3> directions) {
-  constexpr double kNearlySquare = 1e-6;
-  for (size_t k = 0; k < directions.size(); ++k) {
-    const int part = static_cast<int>(k);
-    std::vector<Vec3> basis;  // orthonormal, spanning the nearly square faces' normals
-    for (const Contact& contact : assembly.contacts) {
-      const bool mine = (contact.a == part && contact.b > part) || (contact.b == part && contact.a > part);
-      if (!mine || std::abs(dot(contact.normal, directions[k])) >= kNearlySquare) continue;
-      Vec3 e = contact.normal;
-      for (const Vec3& b : basis) e = minus(e, scaled(b, dot(e, b)));
-      if (norm(e) < kNearlySquare) continue;
-      basis.push_back(normalized(e));
-    }
-    Vec3 squared = directions[k];
-    for (const Vec3& b : basis) squared = minus(squared, scaled(b, dot(squared, b)));
-    if (norm(minus(squared, directions[k])) < kNearlySquare) directions[k] = normalized(squared);
-  }
-  return directions;
-}
-
-// The contacts of jointed plates (part k = the k-th to leave) as an assembly for the tests, with
-// the plan's ways out and the contacts' normals squared to each other where rounding of the
-// design's coordinates left them 1e-6 or less off square.
-Assembly jointedAssembly(const std::vector<PlateContact>& contacts, const std::vector<int>& position,
-                         std::vector<Part> parts, std::vector<Vec3>* directions) {
-  Assembly assembly;
-  assembly.parts = std::move(parts);
-  for (const PlateContact& contact : contacts)
-    assembly.contacts.push_back({position[contact.a], position[contact.b], contact.normal, contact.area});
-  *directions = directionsSquaredToFaces(assembly, *directions);
-  for (Contact& contact : assembly.contacts) contact.normal = squaredToPlan(contact.normal, *directions);
-  return assembly;
-}
 
 // The plates with the joints cut into them (and their milled solids attached).
 std::vector<Plate> jointedPlates(const std::vector<Plate>& plates, const PlateGraph& graph,

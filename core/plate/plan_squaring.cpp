@@ -1,0 +1,89 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Squaring a plan's ways out and its jointed plates' contact normals (plan_squaring.h).
+#include "plate/plan_squaring.h"
+
+#include <cmath>
+#include <utility>
+
+#include "analysis/vec3.h"
+
+namespace desia {
+
+// Jointed plates are cut from a design given to a micrometre (plates-from-mesh writes 6 decimals):
+// a face meant to slide along a plan direction can be off square to it by 1e-7 rad, past the blocking
+// tests' 1e-9 (README "Verdicts on computed normals"). A contact normal within 1e-6 of square to
+// plan directions is made exactly square to them; one that blocks a way out by more is kept, and
+// the swept check of every plate judges the shapes themselves.
+Vec3 squaredToPlan(Vec3 normal, const std::vector<Vec3>& directions) {
+  constexpr double kNearlySquare = 1e-6;
+  std::vector<Vec3> basis;  // orthonormal, spanning the directions the normal is nearly square to
+  for (const Vec3& d : directions) {
+    if (std::abs(dot(normal, d)) >= kNearlySquare) continue;
+    Vec3 e = d;
+    for (const Vec3& b : basis) e = minus(e, scaled(b, dot(e, b)));
+    if (norm(e) < kNearlySquare) continue;
+    basis.push_back(normalized(e));
+  }
+  for (const Vec3& b : basis) normal = minus(normal, scaled(b, dot(normal, b)));
+  return normalized(normal);
+}
+
+// The other half of the same rounding: a way out is itself one of the design's vectors (a shared
+// edge, a mitre's normal, a tenon's axis), off by as much. The LIZARD's plate 33 leaves across a
+// mitre along a vector 6.3e-9 out of the plane of plate 1, whose face its tenon slides along: no
+// normal can be squared to that and to the other ways out in that plane at once. So each way out
+// within 1e-6 of square to faces of its plate against plates still in place (the contacts in
+// `assembly`, part k leaving k-th) is first made exactly square to them; a way out that would turn
+// by more stays as it is (a real block is kept, and the swept check judges the shapes).
+// A way out several plates share (the planner makes them one vector) is squared once, to the faces
+// of all of them, and stays one vector: squared plate by plate, the LIZARD's plates 35 and 36 left
+// along two vectors 4e-9 apart, and a face of plate 1 squared to one of them blocked the other.
+std::vector<Vec3> directionsSquaredToFaces(const Assembly& assembly, std::vector<Vec3> directions) {
+  constexpr double kNearlySquare = 1e-6;
+  const std::vector<Vec3> planned = directions;
+  std::vector<bool> done(directions.size(), false);
+  for (size_t first = 0; first < directions.size(); ++first) {
+    if (done[first]) continue;
+    const Vec3 shared = planned[first];
+    std::vector<size_t> sharing;  // the plates leaving along this very vector
+    for (size_t k = first; k < planned.size(); ++k) {
+      if (planned[k][0] == shared[0] && planned[k][1] == shared[1] && planned[k][2] == shared[2]) sharing.push_back(k);
+    }
+    std::vector<Vec3> basis;  // orthonormal, spanning the nearly square faces' normals
+    for (size_t k : sharing) {
+      const int part = static_cast<int>(k);
+      for (const Contact& contact : assembly.contacts) {
+        const bool mine = (contact.a == part && contact.b > part) || (contact.b == part && contact.a > part);
+        if (!mine || std::abs(dot(contact.normal, shared)) >= kNearlySquare) continue;
+        Vec3 e = contact.normal;
+        for (const Vec3& b : basis) e = minus(e, scaled(b, dot(e, b)));
+        if (norm(e) < kNearlySquare) continue;
+        basis.push_back(normalized(e));
+      }
+    }
+    Vec3 squared = shared;
+    for (const Vec3& b : basis) squared = minus(squared, scaled(b, dot(squared, b)));
+    const bool nearby = norm(minus(squared, shared)) < kNearlySquare;
+    for (size_t k : sharing) {
+      done[k] = true;
+      if (nearby) directions[k] = normalized(squared);
+    }
+  }
+  return directions;
+}
+
+// The contacts of jointed plates (part k = the k-th to leave) as an assembly for the tests, with
+// the plan's ways out and the contacts' normals squared to each other where rounding of the
+// design's coordinates left them 1e-6 or less off square.
+Assembly jointedAssembly(const std::vector<PlateContact>& contacts, const std::vector<int>& position,
+                         std::vector<Part> parts, std::vector<Vec3>* directions) {
+  Assembly assembly;
+  assembly.parts = std::move(parts);
+  for (const PlateContact& contact : contacts)
+    assembly.contacts.push_back({position[contact.a], position[contact.b], contact.normal, contact.area});
+  *directions = directionsSquaredToFaces(assembly, *directions);
+  for (Contact& contact : assembly.contacts) contact.normal = squaredToPlan(contact.normal, *directions);
+  return assembly;
+}
+
+}  // namespace desia

@@ -1,0 +1,34 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// A plan's ways out and its jointed plates' contact normals, squared to each other where the
+// rounding of a design's coordinates left them off square by 1e-6 rad or less.
+//
+// Designs given to a micrometre (plates-from-mesh writes 6 decimals) have faces meant to slide along
+// a way out that are off square to it by 1e-9 to 1e-7 rad, and ways out (shared edges, mitre
+// normals, tenon axes) off by as much. The blocking tests count a contact as blocking a direction
+// when d·n > 1e-9 (README "Verdicts on computed normals"), so such a face holds a plate that slides
+// along it in the design. A real block (more than 1e-6 rad) is kept as it is, and the swept check
+// of every plate judges the shapes themselves.
+#pragma once
+
+#include <vector>
+
+#include "desia/assembly.h"
+#include "desia/plate.h"
+
+namespace desia {
+
+// The ways out (directions[k]: part k, the k-th to leave), each made exactly square to the faces
+// of its part against parts still in place (the contacts of `assembly` between part k and parts
+// after it) that are within 1e-6 of square to it, when that turns it by less than 1e-6. A vector
+// several parts share is squared once, to the faces of all of them, and stays one vector.
+std::vector<Vec3> directionsSquaredToFaces(const Assembly& assembly, std::vector<Vec3> directions);
+
+// `normal` made exactly square to every way out it is within 1e-6 of square to.
+Vec3 squaredToPlan(Vec3 normal, const std::vector<Vec3>& directions);
+
+// The contacts of jointed plates (part k = the k-th to leave: position[plate]) as an assembly for
+// the tests, the ways out squared to the faces and then the normals to the ways out.
+Assembly jointedAssembly(const std::vector<PlateContact>& contacts, const std::vector<int>& position,
+                         std::vector<Part> parts, std::vector<Vec3>* directions);
+
+}  // namespace desia

@@ -1,0 +1,78 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Squaring a plan's ways out and its jointed plates' contacts to each other (plan_squaring.h):
+// what rounding a design to a micrometre turns by 1e-9 rad is made square, a real block is kept.
+#include "plate/plan_squaring.h"
+
+#include <gtest/gtest.h>
+
+#include "analysis/part_motion.h"
+#include "analysis/vec3.h"
+
+namespace desia {
+namespace {
+
+PlateContact faceContact(int a, int b, const Vec3& normal) {
+  PlateContact contact;
+  contact.a = a;
+  contact.b = b;
+  contact.normal = normalized(normal);
+  contact.area = 100;
+  return contact;
+}
+
+// Plates 0 and 1 leave one after the other along the same way out (+x), each sliding along a face
+// of plate 2 that stays; rounding turned plate 0's face by +5e-9 rad and plate 1's by -5e-9 rad.
+struct TwoSlidesAlongOneVector {
+  std::vector<PlateContact> contacts;
+  std::vector<int> position{0, 1, 2};
+  std::vector<Part> parts{{1, "first"}, {2, "second"}, {3, "stays"}};
+  std::vector<Vec3> directions{{1, 0, 0}, {1, 0, 0}};
+  explicit TwoSlidesAlongOneVector(double secondFaceTurn = -5e-9) {
+    contacts.push_back(faceContact(0, 2, {5e-9, 1, 0}));
+    contacts.push_back(faceContact(1, 2, {secondFaceTurn, 1, 0}));
+  }
+};
+
+bool leavesInOrder(const Assembly& assembly, const std::vector<Vec3>& directions) {
+  std::vector<bool> present(assembly.parts.size(), true);
+  for (size_t k = 0; k < directions.size(); ++k) {
+    if (!isPartFreeAlong(assembly, &present, static_cast<int>(k), directions[k])) return false;
+    present[k] = false;
+  }
+  return true;
+}
+
+TEST(PlanSquaring, PlatesLeavingAlongOneVectorStayOnOneVector) {
+  // Squared plate by plate, the two ways out came apart by 1e-8 rad; plate 1's face, squared to
+  // plate 0's way out, then blocked plate 1's own by 1e-8 (the LIZARD's plates 35 and 36 on plate 1).
+  TwoSlidesAlongOneVector plan;
+  std::vector<Vec3> directions = plan.directions;
+  const Assembly assembly = jointedAssembly(plan.contacts, plan.position, plan.parts, &directions);
+  EXPECT_EQ(directions[0][0], directions[1][0]);
+  EXPECT_EQ(directions[0][1], directions[1][1]);
+  EXPECT_EQ(directions[0][2], directions[1][2]);
+  EXPECT_NEAR(directions[0][0], 1.0, 1e-12);  // turned by nanoradians only
+  for (const Contact& contact : assembly.contacts) EXPECT_LT(std::abs(dot(contact.normal, directions[0])), 1e-15);
+  EXPECT_TRUE(leavesInOrder(assembly, directions));
+}
+
+TEST(PlanSquaring, EachPlateAloneIsSquaredToItsOwnFaces) {
+  TwoSlidesAlongOneVector plan;
+  std::vector<Vec3> directions{{1, 0, 0}, normalized({1, 0, 1e-3})};  // two ways out
+  const Assembly assembly = jointedAssembly(plan.contacts, plan.position, plan.parts, &directions);
+  EXPECT_LT(std::abs(dot(directions[0], assembly.contacts[0].normal)), 1e-15);
+  EXPECT_LT(std::abs(dot(directions[1], assembly.contacts[1].normal)), 1e-15);
+  EXPECT_TRUE(leavesInOrder(assembly, directions));
+}
+
+TEST(PlanSquaring, AFaceTurnedByMoreThanAMicroradianStillBlocks) {
+  // Plate 1's face turned by 1e-4 rad into its way out is a real block: nothing is squared to it.
+  TwoSlidesAlongOneVector plan(1e-4);
+  std::vector<Vec3> directions = plan.directions;
+  const Assembly assembly = jointedAssembly(plan.contacts, plan.position, plan.parts, &directions);
+  EXPECT_GT(dot(directions[1], assembly.contacts[1].normal), 1e-5);
+  EXPECT_FALSE(leavesInOrder(assembly, directions));
+}
+
+}  // namespace
+}  // namespace desia
