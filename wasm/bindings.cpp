@@ -197,8 +197,7 @@ val designPlate(const std::string& text, const std::string& optionsJson, const s
         return !(onProgress(value).isFalse());
       };
     }
-    const std::vector<desia::PlateContact> contacts = desia::computePlateContacts(document.plates, document.plateOptions);
-    return parseJsonText(desia::plateDesignResultToJson(document, desia::designPlateJoints(document.plates, contacts, options)));
+    return parseJsonText(desia::plateDesignResultToJson(document, desia::designPlateJoints(document.plates, document.plateContacts, options)));
   });
 }
 
@@ -242,7 +241,7 @@ class DesignSession {
         frame_ = desia::parseFrameText(shapeText, source, options.jointSize);
         frames_ = std::make_unique<desia::FrameDesignSession>(frame_.layout, options.design);
       } else if (document_.kind == desia::AssemblyKind::Plate && document_.contactsFromGeometry) {
-        plates_ = std::make_unique<desia::PlateDesignSession>(document_.plates, desia::computePlateContacts(document_.plates, document_.plateOptions),
+        plates_ = std::make_unique<desia::PlateDesignSession>(document_.plates, document_.plateContacts,
                                                                plateOptions(optionsJson));
       } else if (document_.kind == desia::AssemblyKind::Voxel) {
         voxels_ = std::make_unique<desia::VoxelDesignSession>(document_.voxels, desia::parseDesignOptionsJson(optionsJson, document_.voxels));

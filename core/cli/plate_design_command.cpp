@@ -98,7 +98,6 @@ int runPlateDesignCommand(const std::vector<std::string>& args) {
   if (document.kind != desia::AssemblyKind::Plate || document.plates.empty()) {
     usage(input + ": design plate needs a plate design (kind \"plate\" with \"plates\" and no \"contacts\")");
   }
-  std::vector<desia::PlateContact> contacts = desia::computePlateContacts(document.plates, document.plateOptions);
   options.geometry = document.plateOptions;
   const bool live = !quiet && isatty(STDERR_FILENO);
   options.onProgress = [&](const desia::PlateDesignProgress& p) {
@@ -108,7 +107,7 @@ int runPlateDesignCommand(const std::vector<std::string>& args) {
     return interrupted == 0;
   };
   std::signal(SIGINT, onPlateDesignInterrupt);
-  const desia::PlateDesignResult result = desia::designPlateJoints(document.plates, contacts, options);
+  const desia::PlateDesignResult result = desia::designPlateJoints(document.plates, document.plateContacts, options);
   std::signal(SIGINT, SIG_DFL);
   if (live) std::fprintf(stderr, "\r%70s\r", "");
   if (result.status == desia::PlateDesignStatus::CutPoint)

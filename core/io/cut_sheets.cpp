@@ -505,7 +505,10 @@ std::vector<std::string> plateCutSheets(const AssemblyDocument& document, CutFil
                                         "stl or obj for the CNC, or design with joints 'cut'");
     }
   }
-  const std::vector<PlateContact> contacts = computePlateContacts(document.plates, document.plateOptions);
+  // A design read from its plates has them; a result's plates (its contacts are its joints') do not.
+  const std::vector<PlateContact> contacts = document.contactsFromGeometry
+                                                 ? document.plateContacts
+                                                 : computePlateContacts(document.plates, document.plateOptions);
   std::vector<FlatPlate> flats;
   for (size_t k = 0; k < plates.size(); ++k) flats.push_back(flatten(plates, k, contacts, options.kerf));
   std::vector<Sheet> sheets;

@@ -169,6 +169,7 @@ AssemblyDocument documentFromPlates(std::vector<Plate> plates, const PlateOption
   document.assembly = assemblyFromPlates(plates, contacts);
   document.plateCutPoints = plateCutPoints(static_cast<int>(plates.size()), contacts);
   document.contactsFromGeometry = true;
+  document.plateContacts = std::move(contacts);
   document.plates = std::move(plates);
   return document;
 }

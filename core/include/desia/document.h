@@ -24,6 +24,9 @@ struct AssemblyDocument {
   std::vector<Plate> plates;          // kind == Plate, read from geometry (then contacts are computed)
   std::vector<Plate> fabricationPlates;  // a design result with a clearance: the plates as they are cut
   std::vector<int> plateCutPoints;    // plates (internal indices) that are cut points of the parts-graph
+  // kind == Plate with contactsFromGeometry: the plates' contacts as computed when they were read
+  // (the designer and the cut sheets take them from here rather than computing them again).
+  std::vector<PlateContact> plateContacts;
   PlateOptions plateOptions;          // the contact tolerance the plates were read with
   bool contactsFromGeometry = false;  // the contacts were computed from `plates` (a design, not a plan)
 };
