@@ -360,6 +360,41 @@ bool innerCorners(const std::vector<Face>& faces, int f, double t, std::vector<V
   return true;
 }
 
+// The outer corners of face f: where its plane meets the mitres of the corner's two sides (its
+// inner corners at depth 0), not the mesh's vertices. A mesh written to a micrometre (an OBJ's 6
+// decimals, as Blender writes them) has faces that are planar to 1e-7 mm only: plates with those
+// vertices have faces whose normals, and mitres whose planes, disagree by 1e-9 rad, past the
+// blocking tests' 1e-9 (README "Verdicts on computed normals"); a slide along the LIZARD's mitres
+// pushed into the faces it runs along. From the planes, every face of a plate and every mitre is
+// planar to the rounding of doubles, and two plates' outer edges along a mitre lie on one line.
+// A corner the planes put further than the tolerance from its vertex (planes that meet at a
+// glancing angle there) keeps the vertex.
+Loop outerCorners(const TriangleMesh& mesh, const std::vector<Face>& faces, int f, double tolerance) {
+  const Face& face = faces[f];
+  std::vector<Vec3> fromPlanes;
+  size_t badCorner = 0;
+  const bool met = innerCorners(faces, f, 0, fromPlanes, badCorner);
+  Loop outer;
+  for (size_t k = 0; k < face.corners.size(); ++k) {
+    const Vec3& vertex = mesh.vertices[face.corners[k]];
+    outer.push_back(met && norm(minus(fromPlanes[k], vertex)) <= tolerance ? fromPlanes[k] : vertex);
+  }
+  return outer;
+}
+
+// Corners computed from planes carry the rounding of doubles (1e-14 mm): a symmetric shape's
+// equal coordinates come out unequal and its zeros as 1e-14, so that its normals, equal by
+// symmetry, differ in their last digits and the blocking graphs get thousands of base directions
+// instead of a few (the DODECAHEDRON's milled design took 269 nodes instead of 11). A nanometre
+// grid makes them equal again and turns a face by at most 1e-11 rad on a 100 mm plate, far below
+// the blocking tests' 1e-9.
+Loop onNanometreGrid(Loop loop) {
+  for (Vec3& point : loop) {
+    for (double& c : point) c = std::round(c * 1e9) / 1e9 + 0.0;  // + 0.0: no "-0"
+  }
+  return loop;
+}
+
 // What is wrong with an inner face (empty when nothing): a side that shrank to less than the
 // tolerance or turned over, or two sides that cross. Everything in the face's plane.
 std::string innerFaceProblem(const TriangleMesh& mesh, const Face& face, const std::vector<Vec3>& inner, double tolerance) {
@@ -547,10 +582,8 @@ MitredPlates mitredPlatesFromMesh(const TriangleMesh& input, const MitredPlateOp
   for (size_t f = 0; f < faces.size(); ++f) {
     Plate plate;
     plate.id = static_cast<int>(f) + 1;
-    Loop outer;
-    for (int v : faces[f].corners) outer.push_back(mesh.vertices[v]);
-    plate.bottom.push_back(outer);
-    plate.top.push_back(inner[f]);
+    plate.bottom.push_back(onNanometreGrid(outerCorners(mesh, faces, static_cast<int>(f), options.tolerance)));
+    plate.top.push_back(onNanometreGrid(inner[f]));
     result.plates.push_back(plate);
     result.sideNeighbours.push_back(faces[f].sideFace);
     result.cornerVertices.push_back(faces[f].corners);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Mitred plates from a closed low-poly mesh (plates-from-mesh): one plate per face whose outer face
-// is the mesh face and whose inner face lies the thickness inside it; the contacts computed from
+// is the mesh face (its corners where the face's fitted plane meets its neighbours') and whose
+// inner face lies the thickness inside it; the contacts computed from
 // the plates' geometry are exactly the mesh's edges, each along the mitre (the dihedral angle's
 // bisector); the result turns with the mesh; every refusal names what is wrong.
 #include <gtest/gtest.h>
@@ -192,7 +193,8 @@ void expectMitredPlates(const Solid& solid, double thickness, bool convex) {
     ASSERT_EQ(plate.top[0].size(), plate.bottom[0].size());
     const Vec3 normal = outwardNormal(solid, solid.faces[faceOf[p]]);
     for (size_t k = 0; k < plate.bottom[0].size(); ++k) {
-      EXPECT_EQ(plate.bottom[0][k], solid.points[result.cornerVertices[p][k]]);
+      // The corner where the fitted planes meet, on a nanometre grid: the vertex, to rounding.
+      EXPECT_LT(norm(minus(plate.bottom[0][k], solid.points[result.cornerVertices[p][k]])), 1e-8);
       EXPECT_NEAR(dot(normal, minus(plate.top[0][k], plate.bottom[0][0])), -thickness, 1e-9) << "plate " << plate.id << " corner " << k;
     }
     EXPECT_GT(dot(plateThicknessAxis(plate), negated(normal)), 1 - 1e-12) << "the plate lies inside the mesh";
@@ -277,8 +279,9 @@ TEST(MitredPlates, TurnsWithTheMesh) {
   for (size_t p = 0; p < original.plates.size(); ++p) {
     ASSERT_EQ(moved.plates[p].bottom[0].size(), original.plates[p].bottom[0].size());
     for (size_t k = 0; k < original.plates[p].bottom[0].size(); ++k) {
-      EXPECT_LT(norm(minus(moved.plates[p].bottom[0][k], turn(original.plates[p].bottom[0][k]))), 1e-9);
-      EXPECT_LT(norm(minus(moved.plates[p].top[0][k], turn(original.plates[p].top[0][k]))), 1e-9);
+      // (Both on their nanometre grid: apart by up to a grid cell's diagonal.)
+      EXPECT_LT(norm(minus(moved.plates[p].bottom[0][k], turn(original.plates[p].bottom[0][k]))), 2e-9);
+      EXPECT_LT(norm(minus(moved.plates[p].top[0][k], turn(original.plates[p].top[0][k]))), 2e-9);
     }
   }
   ASSERT_EQ(moved.contacts.size(), original.contacts.size());
@@ -498,6 +501,22 @@ TEST(MitredPlatesRefusals, FanOfANonConvexPolygonTurnsTrianglesOver) {
   expectRefusal(parseObj(obj, "shape.obj"), 5, "the surface folds back onto itself between face [0-9]+ .* triangulate the faces");
 }
 
+// How far a loop's points lie from the plane through their centre square to its Newell normal (mm).
+double largestOffPlane(const Loop& loop) {
+  Vec3 normal{0, 0, 0}, centre{0, 0, 0};
+  for (size_t k = 0; k < loop.size(); ++k) {
+    const Vec3& a = loop[k];
+    const Vec3& b = loop[(k + 1) % loop.size()];
+    normal = {normal[0] + (a[1] - b[1]) * (a[2] + b[2]), normal[1] + (a[2] - b[2]) * (a[0] + b[0]),
+              normal[2] + (a[0] - b[0]) * (a[1] + b[1])};
+    for (int i = 0; i < 3; ++i) centre[i] += a[i] / loop.size();
+  }
+  normal = normalized(normal);
+  double largest = 0;
+  for (const Vec3& p : loop) largest = std::max(largest, std::abs(dot(minus(p, centre), normal)));
+  return largest;
+}
+
 TEST(MitredPlates, TheExampleSculpturesReadFromTheirFiles) {
   // The sculptures of examples/plate/ (make_sculptures.py) as a user's files.
   for (const auto& [name, plates] : std::vector<std::pair<std::string, size_t>>{{"dodecahedron", 12}, {"lizard", 38}}) {
@@ -508,6 +527,24 @@ TEST(MitredPlates, TheExampleSculpturesReadFromTheirFiles) {
     EXPECT_EQ(result.plates.size(), plates) << name;
     EXPECT_EQ(result.contacts.size(), static_cast<size_t>(result.meshEdges)) << name;
     EXPECT_LT(result.largestCornerMismatch, 1e-4) << name;
+    // The OBJ is written to a micrometre, so its faces are planar to 1e-7 mm only; the plates'
+    // corners come from the fitted planes (on a nanometre grid), so every face of every plate, and
+    // so every mitre, is planar to a few nanometres (1e-11 rad on these plates: normals that the
+    // blocking tests' 1e-9 judge as the design means them), and stays within the file's rounding
+    // of its mesh vertex.
+    const TriangleMesh mesh = parseMesh(testing::readFileText(testing::projectPath(path)), path);
+    for (const Plate& plate : result.plates) {
+      EXPECT_LT(largestOffPlane(plate.bottom[0]), 5e-9) << name << " plate " << plate.id << " outer face";
+      EXPECT_LT(largestOffPlane(plate.top[0]), 5e-9) << name << " plate " << plate.id << " inner face";
+      for (size_t k = 0; k < plate.bottom[0].size(); ++k) {
+        const size_t next = (k + 1) % plate.bottom[0].size();
+        const Loop side{plate.bottom[0][k], plate.bottom[0][next], plate.top[0][next], plate.top[0][k]};
+        EXPECT_LT(largestOffPlane(side), 5e-9) << name << " plate " << plate.id << " side " << k;
+        double nearest = HUGE_VAL;
+        for (const Vec3& vertex : mesh.vertices) nearest = std::min(nearest, norm(minus(vertex, plate.bottom[0][k])));
+        EXPECT_LT(nearest, 1e-5) << name << " plate " << plate.id << " corner " << k;
+      }
+    }
   }
 }
 
