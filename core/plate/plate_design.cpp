@@ -425,14 +425,17 @@ JointedPlan cutPlan(const std::vector<Plate>& plates, const PlateGraph& graph, c
 }
 
 // The first plate that, swept along its direction, runs into a plate still in place, as a
-// sentence, or "" (plates[order[k]] leaves k-th along directions[k]).
+// sentence, or "" (plates[order[k]] leaves k-th along directions[k]). `hitPosition`, when given,
+// gets the position in `order` of the plate run into (-1 when none is).
 std::string sweepFailure(const std::vector<Plate>& plates, const std::vector<int>& order,
-                         const std::vector<Vec3>& directions, double tolerance) {
+                         const std::vector<Vec3>& directions, double tolerance, int* hitPosition = nullptr) {
+  if (hitPosition) *hitPosition = -1;
   std::vector<TriangleMesh> meshes;
   for (const Plate& plate : plates) meshes.push_back(plateMesh(plate));
   for (size_t k = 0; k < directions.size(); ++k) {
     for (size_t j = k + 1; j < order.size(); ++j) {
       if (meshCollidesAlong(meshes[order[k]], meshes[order[j]], directions[k], tolerance)) {
+        if (hitPosition) *hitPosition = static_cast<int>(j);
         return "plate " + std::to_string(plates[order[k]].id) + " runs into plate " +
                std::to_string(plates[order[j]].id) + " when it leaves";
       }
@@ -442,11 +445,14 @@ std::string sweepFailure(const std::vector<Plate>& plates, const std::vector<int
 }
 
 // Why the jointed plates fail, or "": both interlocking tests on their computed contacts, and
-// each plate swept along its direction past every plate still in place.
-std::string jointedFailure(const JointedPlan& plan, const std::vector<int>& order, double tolerance) {
+// each plate swept along its direction past every plate still in place (`hitPosition` as for
+// sweepFailure).
+std::string jointedFailure(const JointedPlan& plan, const std::vector<int>& order, double tolerance,
+                           int* hitPosition = nullptr) {
+  if (hitPosition) *hitPosition = -1;
   const std::string failure = planFailure(plan.assembly, plan.directions);
   if (!failure.empty()) return failure;
-  return sweepFailure(plan.plates, order, plan.directions, tolerance);
+  return sweepFailure(plan.plates, order, plan.directions, tolerance, hitPosition);
 }
 
 class PlateJointPlanner {
@@ -472,6 +478,7 @@ class PlateJointPlanner {
   PlateDesignResult run(const std::vector<Step>& prefix = {});
   enum class Outcome { Found, Exhausted, OutOfBudget, Stopped };
   Outcome searchTree(int64_t budget, const std::vector<Step>& prefix, PlateDesignResult* result);
+  void backjump(size_t prefixSize, std::vector<Step>* path, std::vector<std::vector<Step>>* pending) const;
 
   // What the search and a step-by-step session share.
   // A structure no joints can make interlocking (a cut point, fewer than 3 plates): its result.
@@ -505,6 +512,9 @@ class PlateJointPlanner {
   PlateDesignOptions options_;
   uint64_t random_;
   std::string lastRejection_;  // why the last complete plan failed
+  // When the last complete plan failed because a jointed plate, swept out, ran into the plate
+  // taken at this depth of the path: every plan through the path's first depth + 1 steps fails so.
+  int lastDoomedDepth_ = -1;
   std::vector<TriangleMesh> meshes_;  // the plates as given (cut joints: for the sweep of each step)
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
@@ -772,13 +782,35 @@ PlateJointPlanner::Outcome PlateJointPlanner::searchTree(int64_t budget, const s
     }
     if (static_cast<int>(path.size()) + 1 == graph_.plateCount) {
       // R is the last plate: a complete plan, accepted only if its jointed plates verify; else search on.
+      lastDoomedDepth_ = -1;
       if (acceptComplete(path, result)) return Outcome::Found;
       path.pop_back();
+      backjump(prefix.size(), &path, &pending);
       continue;
     }
     pending.push_back(childrenOf(path));
   }
   return Outcome::Exhausted;
+}
+
+// After a complete plan failed because plate i, swept out, ran into plate j taken at depth j of the
+// path (i < j): plate i's joints are made at steps 0..i, plate j's at steps 0..j, so every plan that
+// shares the path's first j + 1 steps fails the same way. Backjumping goes straight to the next
+// sibling of step j (the LIZARD: 28 complete plans in a row failed on one collision at depth 8
+// while the search tried orders of the plates after it). The pruned plans would all fail, so a
+// tree searched to its end still proves that no plan exists.
+void PlateJointPlanner::backjump(size_t prefixSize, std::vector<Step>* path,
+                                 std::vector<std::vector<Step>>* pending) const {
+  if (lastDoomedDepth_ < 0) return;
+  const size_t depth = static_cast<size_t>(lastDoomedDepth_);
+  if (depth >= path->size()) return;  // the last plate, or the step just undone
+  if (depth < prefixSize) {  // the given prefix itself is doomed: nothing below it can work
+    pending->clear();
+    return;
+  }
+  // pending[k] holds the siblings left at depth prefixSize + k; keep those up to `depth`.
+  pending->resize(depth - prefixSize + 1);
+  path->resize(depth);
 }
 
 PlateDesignResult PlateJointPlanner::run(const std::vector<Step>& prefix) {
@@ -839,7 +871,7 @@ bool PlateJointPlanner::cutAndVerify(const std::vector<PlateJoint>& joints, cons
                                      std::vector<Vec3>* directions, PlateDesignResult* result) {
   try {
     JointedPlan jointed = cutPlan(plates_, graph_, joints, order, *directions, options_.geometry, 0, options_.joints);
-    lastRejection_ = jointedFailure(jointed, order, options_.geometry.contactTolerance);
+    lastRejection_ = jointedFailure(jointed, order, options_.geometry.contactTolerance, &lastDoomedDepth_);
     if (!lastRejection_.empty()) return false;
     *directions = jointed.directions;  // squared to the faces they slide along
     result->jointedPlates = std::move(jointed.plates);
