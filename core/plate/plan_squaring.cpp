@@ -9,23 +9,54 @@
 
 namespace desia {
 
+namespace {
+
+constexpr double kNearlySquare = 1e-6;
+
+// An orthonormal basis of the span of `vectors`, to rounding: the vector that stands furthest out
+// of the span so far is taken next (pivoting), until every one lies within 1e-6 of it. Taken in
+// the order given, two vectors 0.09 rad apart whose rounding differs by 5e-9 span a plane tilted
+// by 5e-8: the LIZARD's horizontal faces, squared to such a plane, blocked the plates sliding
+// along them. Pivoting takes the two furthest apart first.
+std::vector<Vec3> spanningBasis(std::vector<Vec3> vectors) {
+  std::vector<Vec3> basis;
+  while (basis.size() < 3) {
+    double largest = kNearlySquare;
+    int pick = -1;
+    for (size_t k = 0; k < vectors.size(); ++k) {
+      Vec3 e = vectors[k];
+      for (const Vec3& b : basis) e = minus(e, scaled(b, dot(e, b)));
+      vectors[k] = e;  // what is left of it out of the span so far
+      if (norm(e) > largest) largest = norm(e), pick = static_cast<int>(k);
+    }
+    if (pick < 0) break;
+    basis.push_back(normalized(vectors[static_cast<size_t>(pick)]));
+  }
+  return basis;
+}
+
+// `v` with its components along the basis taken out, or `v` itself when the basis spans all of
+// space (nothing is square to three independent vectors).
+Vec3 squaredTo(const Vec3& v, const std::vector<Vec3>& basis) {
+  if (basis.size() >= 3) return v;
+  Vec3 squared = v;
+  for (const Vec3& b : basis) squared = minus(squared, scaled(b, dot(squared, b)));
+  return squared;
+}
+
+}  // namespace
+
 // Jointed plates are cut from a design given to a micrometre (plates-from-mesh writes 6 decimals):
 // a face meant to slide along a plan direction can be off square to it by 1e-7 rad, past the blocking
 // tests' 1e-9 (README "Verdicts on computed normals"). A contact normal within 1e-6 of square to
 // plan directions is made exactly square to them; one that blocks a way out by more is kept, and
 // the swept check of every plate judges the shapes themselves.
 Vec3 squaredToPlan(Vec3 normal, const std::vector<Vec3>& directions) {
-  constexpr double kNearlySquare = 1e-6;
-  std::vector<Vec3> basis;  // orthonormal, spanning the directions the normal is nearly square to
+  std::vector<Vec3> nearlySquare;
   for (const Vec3& d : directions) {
-    if (std::abs(dot(normal, d)) >= kNearlySquare) continue;
-    Vec3 e = d;
-    for (const Vec3& b : basis) e = minus(e, scaled(b, dot(e, b)));
-    if (norm(e) < kNearlySquare) continue;
-    basis.push_back(normalized(e));
+    if (std::abs(dot(normal, d)) < kNearlySquare) nearlySquare.push_back(d);
   }
-  for (const Vec3& b : basis) normal = minus(normal, scaled(b, dot(normal, b)));
-  return normalized(normal);
+  return normalized(squaredTo(normal, spanningBasis(nearlySquare)));
 }
 
 // The other half of the same rounding: a way out is itself one of the design's vectors (a shared
@@ -39,7 +70,6 @@ Vec3 squaredToPlan(Vec3 normal, const std::vector<Vec3>& directions) {
 // of all of them, and stays one vector: squared plate by plate, the LIZARD's plates 35 and 36 left
 // along two vectors 4e-9 apart, and a face of plate 1 squared to one of them blocked the other.
 std::vector<Vec3> directionsSquaredToFaces(const Assembly& assembly, std::vector<Vec3> directions) {
-  constexpr double kNearlySquare = 1e-6;
   const std::vector<Vec3> planned = directions;
   std::vector<bool> done(directions.size(), false);
   for (size_t first = 0; first < directions.size(); ++first) {
@@ -49,20 +79,15 @@ std::vector<Vec3> directionsSquaredToFaces(const Assembly& assembly, std::vector
     for (size_t k = first; k < planned.size(); ++k) {
       if (planned[k][0] == shared[0] && planned[k][1] == shared[1] && planned[k][2] == shared[2]) sharing.push_back(k);
     }
-    std::vector<Vec3> basis;  // orthonormal, spanning the nearly square faces' normals
+    std::vector<Vec3> nearlySquare;  // the faces' normals
     for (size_t k : sharing) {
       const int part = static_cast<int>(k);
       for (const Contact& contact : assembly.contacts) {
         const bool mine = (contact.a == part && contact.b > part) || (contact.b == part && contact.a > part);
-        if (!mine || std::abs(dot(contact.normal, shared)) >= kNearlySquare) continue;
-        Vec3 e = contact.normal;
-        for (const Vec3& b : basis) e = minus(e, scaled(b, dot(e, b)));
-        if (norm(e) < kNearlySquare) continue;
-        basis.push_back(normalized(e));
+        if (mine && std::abs(dot(contact.normal, shared)) < kNearlySquare) nearlySquare.push_back(contact.normal);
       }
     }
-    Vec3 squared = shared;
-    for (const Vec3& b : basis) squared = minus(squared, scaled(b, dot(squared, b)));
+    const Vec3 squared = squaredTo(shared, spanningBasis(nearlySquare));
     const bool nearby = norm(minus(squared, shared)) < kNearlySquare;
     for (size_t k : sharing) {
       done[k] = true;

@@ -76,3 +76,33 @@ TEST(PlanSquaring, AFaceTurnedByMoreThanAMicroradianStillBlocks) {
 
 }  // namespace
 }  // namespace desia
+
+namespace desia {
+namespace {
+
+TEST(PlanSquaring, AFaceIsSquaredToTheWaysOutFurthestApartFirst) {
+  // A horizontal face and three ways out nearly in its plane: two 0.09 rad apart, one of them off
+  // the plane by 5e-9 (rounding), and a third at 70 degrees. Taken in order, the first two span a
+  // plane tilted by 5e-8 and the face squared to it blocked the third way out (the LIZARD's plate
+  // 31 against plate 32); taken furthest apart first, the face is square to the plane to rounding.
+  const std::vector<Vec3> directions{normalized({1, 0, 0}), normalized({std::cos(0.09), std::sin(0.09), -5e-9}),
+                                     normalized({std::cos(1.2), -std::sin(1.2), 0})};
+  const Vec3 face = squaredToPlan(normalized({3e-9, -2e-8, -1}), directions);
+  EXPECT_LT(std::abs(dot(face, directions[0])), 1e-15);
+  EXPECT_LT(std::abs(dot(face, directions[2])), 1e-15);
+  EXPECT_LT(std::abs(dot(face, directions[1])), 6e-9);  // the rounding of that way out stays its own
+}
+
+TEST(PlanSquaring, AFaceNearlySquareToThreeIndependentWaysOutIsLeftAsItIs) {
+  // Nothing is square to three independent vectors: the face is kept (a real block is the tests'
+  // to judge), not replaced by the noise left after taking out all three.
+  const Vec3 face = normalized({1e-7, 2e-7, 1});
+  // The third is out of the plane of the first two by 1.1e-6, and within 1e-6 of square to the face.
+  const std::vector<Vec3> directions{{1, 0, 0}, {0, 1, 0}, normalized({std::sqrt(0.5), std::sqrt(0.5), -1.1e-6})};
+  for (const Vec3& d : directions) ASSERT_LT(std::abs(dot(face, d)), 1e-6);
+  const Vec3 squared = squaredToPlan(face, directions);
+  EXPECT_NEAR(dot(squared, face), 1, 1e-12);
+}
+
+}  // namespace
+}  // namespace desia
