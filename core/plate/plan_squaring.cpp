@@ -51,13 +51,15 @@ Vec3 squaredTo(const Vec3& v, const std::vector<Vec3>& basis) {
 // tests' 1e-9 (README "Verdicts on computed normals"). A contact normal within 1e-6 of square to
 // plan directions is made exactly square to them; one that blocks a way out by more is kept, and
 // the swept check of every plate judges the shapes themselves.
-Vec3 squaredToPlan(Vec3 normal, const std::vector<Vec3>& directions) {
+Vec3 squaredToNearlySquare(const Vec3& v, const std::vector<Vec3>& others) {
   std::vector<Vec3> nearlySquare;
-  for (const Vec3& d : directions) {
-    if (std::abs(dot(normal, d)) < kNearlySquare) nearlySquare.push_back(d);
+  for (const Vec3& other : others) {
+    if (std::abs(dot(v, other)) < kNearlySquare) nearlySquare.push_back(other);
   }
-  return normalized(squaredTo(normal, spanningBasis(nearlySquare)));
+  return normalized(squaredTo(v, spanningBasis(nearlySquare)));
 }
+
+Vec3 squaredToPlan(Vec3 normal, const std::vector<Vec3>& directions) { return squaredToNearlySquare(normal, directions); }
 
 // The other half of the same rounding: a way out is itself one of the design's vectors (a shared
 // edge, a mitre's normal, a tenon's axis), off by as much. The LIZARD's plate 33 leaves across a

@@ -23,6 +23,10 @@ namespace desia {
 // several parts share is squared once, to the faces of all of them, and stays one vector.
 std::vector<Vec3> directionsSquaredToFaces(const Assembly& assembly, std::vector<Vec3> directions);
 
+// The unit vector `v` made exactly square to every one of `others` it is within 1e-6 of square to
+// (those furthest apart first; `v` itself when they span all of space).
+Vec3 squaredToNearlySquare(const Vec3& v, const std::vector<Vec3>& others);
+
 // `normal` made exactly square to every way out it is within 1e-6 of square to.
 Vec3 squaredToPlan(Vec3 normal, const std::vector<Vec3>& directions);
 

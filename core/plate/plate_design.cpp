@@ -549,9 +549,16 @@ std::vector<Vec3> PlateJointPlanner::rawCandidateDirections(int plate) const {
     if (graph_.tenonSites[c]) {
       for (const Vec3& exit : graph_.tenonSites[c]->exits()) lines.push_back(exit);
     }
-    // Milled: straight away from a plate it meets at a mitre (a mitre tenon's way out).
+    // Milled: straight away from a plate it meets at a mitre (a mitre tenon's way out), made
+    // square to the plates around it that it all but lies along: a mitre's normal computed from
+    // its face is off by 5e-9, and the LIZARD's plate 33, leaving so along plate 1's face, had its
+    // tenon's faces in plate 1's pocket tilted by as much against every other way out in that plane.
     const PlateContact& contact = graph_.contacts[c];
-    if (options_.realization == JointRealization::Milled && !contact.crossing) lines.push_back(contact.normal);
+    if (options_.realization == JointRealization::Milled && !contact.crossing) {
+      std::vector<Vec3> axes{graph_.thicknessAxis[plate]};
+      for (int other : graph_.neighbours[plate]) axes.push_back(graph_.thicknessAxis[other]);
+      lines.push_back(squaredToNearlySquare(contact.normal, axes));
+    }
   }
   for (const Vec3& edge : lines) {
     for (const Vec3& d : {edge, negated(edge)}) {
