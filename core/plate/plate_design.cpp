@@ -656,9 +656,9 @@ bool PlateJointPlanner::acceptable(const std::vector<Step>& steps) const {
 // them can make room, so the step cannot be part of a plan that verifies: skip it now rather than
 // when a complete plan's sweep fails (the TABLE's divider would hit the back apron).
 bool PlateJointPlanner::runsIntoAStranger(int plate, const Vec3& d, const std::vector<int>& rest) const {
-  const std::vector<int>& touching = graph_.neighbours[plate];
   for (int q : rest) {
-    if (q == plate || std::binary_search(touching.begin(), touching.end(), q)) continue;
+    // Plates that cross part by their slots; the others, touching or not, must let it pass.
+    if (q == plate || crossingBetween(graph_, plate, q) >= 0) continue;
     if (meshCollidesAlong(meshes_[plate], meshes_[q], d, options_.geometry.contactTolerance)) return true;
   }
   return false;
