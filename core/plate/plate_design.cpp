@@ -491,6 +491,7 @@ class PlateJointPlanner {
  private:
   bool acceptable(const std::vector<Step>& steps) const;
   bool runsIntoAStranger(int plate, const Vec3& d, const std::vector<int>& rest) const;
+  bool runsIntoJointsSoFar(const std::vector<Step>& path) const;
   bool cutAndVerify(const std::vector<PlateJoint>& joints, const std::vector<int>& order,
                     std::vector<Vec3>* directions, PlateDesignResult* result);
   Step makeStep(const std::vector<Step>& steps, int plate, const Vec3& d) const;
@@ -664,6 +665,39 @@ bool PlateJointPlanner::runsIntoAStranger(int plate, const Vec3& d, const std::v
   return false;
 }
 
+// Would the plate just taken (the path's last step), with the joints made so far cut into it and
+// into the plates still in place, run into one of them as it leaves? Joints made at earlier steps
+// leave solids standing on plates still in place (a tenon or tongue whose partner has left, the
+// wood round a pocket), which the plates as given do not show: the LIZARD's plate 33 ran into such
+// a solid on plate 1, which stays to the end, and 64 complete plans failed on it. Later joints
+// only cut between plates still in place, so such a collision stays; the check is made when a node
+// is entered (its cut costs milliseconds, too much for every child ranked).
+bool PlateJointPlanner::runsIntoJointsSoFar(const std::vector<Step>& path) const {
+  std::vector<PlateJoint> joints;
+  std::vector<bool> taken(graph_.plateCount, false);
+  for (const Step& step : path) {
+    joints.insert(joints.end(), step.joints.begin(), step.joints.end());
+    taken[step.plate] = true;
+  }
+  const Step& last = path.back();
+  bool attaches = false;  // only solids attached by the joints can stand in the way
+  for (const PlateJoint& joint : joints) attaches = attaches || joint.type != JointType::Empty;
+  if (!attaches) return false;
+  std::vector<Plate> jointed;
+  try {
+    jointed = jointedPlates(plates_, graph_, joints, 0, options_.joints);
+  } catch (const Error&) {
+    return true;  // cuts that run into each other: no plan through here can be cut
+  }
+  const TriangleMesh mover = plateMesh(jointed[last.plate]);
+  for (int q = 0; q < graph_.plateCount; ++q) {
+    if (taken[q] || crossingBetween(graph_, last.plate, q) >= 0) continue;
+    if (jointed[q].attached.empty() && plates_[q].attached.empty() && jointed[last.plate].attached.empty()) continue;
+    if (meshCollidesAlong(mover, plateMesh(jointed[q]), last.direction, options_.geometry.contactTolerance)) return true;
+  }
+  return false;
+}
+
 // The ranked children of a node: every plate of R that is not a cut point of R's parts-graph,
 // with every direction it may leave in, kept if A_i passes; fewest empty joints first, ties in a
 // seeded random order; at most `candidates` of them.
@@ -779,6 +813,10 @@ PlateJointPlanner::Outcome PlateJointPlanner::searchTree(int64_t budget, const s
     }
     path.push_back(pending.back().front());
     pending.back().erase(pending.back().begin());
+    if (makesJoints(options_.realization) && runsIntoJointsSoFar(path)) {
+      path.pop_back();
+      continue;
+    }
     if (static_cast<int>(path.size()) + 1 > progress.bestDepth) {
       progress.bestDepth = static_cast<int>(path.size()) + 1;
       // A live view of the deepest node (on demand): read from the path, never fed back.
