@@ -23,8 +23,11 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <limits>
+#include <map>
 #include <optional>
+#include <string>
 
 #include "analysis/part_motion.h"
 #include "analysis/vec3.h"
@@ -492,6 +495,7 @@ class PlateJointPlanner {
   bool acceptable(const std::vector<Step>& steps) const;
   bool runsIntoAStranger(int plate, const Vec3& d, const std::vector<int>& rest) const;
   bool runsIntoJointsSoFar(const std::vector<Step>& path) const;
+  const Plate& jointedPlate(int plate, const std::vector<PlateJoint>& joints) const;
   bool cutAndVerify(const std::vector<PlateJoint>& joints, const std::vector<int>& order,
                     std::vector<Vec3>* directions, PlateDesignResult* result);
   Step makeStep(const std::vector<Step>& steps, int plate, const Vec3& d) const;
@@ -516,6 +520,9 @@ class PlateJointPlanner {
   // When the last complete plan failed because a jointed plate, swept out, ran into the plate
   // taken at this depth of the path: every plan through the path's first depth + 1 steps fails so.
   int lastDoomedDepth_ = -1;
+  // Plates with their joints cut (runsIntoJointsSoFar), by plate and the joints they have: a node
+  // changes only its plate and the plates it leaves; cleared when it grows large.
+  mutable std::map<std::string, Plate> jointedCache_;
   std::vector<TriangleMesh> meshes_;  // the plates as given (cut joints: for the sweep of each step)
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
@@ -680,22 +687,45 @@ bool PlateJointPlanner::runsIntoJointsSoFar(const std::vector<Step>& path) const
     taken[step.plate] = true;
   }
   const Step& last = path.back();
-  bool attaches = false;  // only solids attached by the joints can stand in the way
-  for (const PlateJoint& joint : joints) attaches = attaches || joint.type != JointType::Empty;
-  if (!attaches) return false;
-  std::vector<Plate> jointed;
   try {
-    jointed = jointedPlates(plates_, graph_, joints, 0, options_.joints);
+    const Plate& mover = jointedPlate(last.plate, joints);
+    std::optional<TriangleMesh> moverMesh;
+    for (int q = 0; q < graph_.plateCount; ++q) {
+      if (taken[q] || crossingBetween(graph_, last.plate, q) >= 0) continue;
+      const Plate& obstacle = jointedPlate(q, joints);
+      // Only solids the joints attach stand where the plates as given do not (runsIntoAStranger).
+      if (obstacle.attached.empty() && mover.attached.empty()) continue;
+      if (!moverMesh) moverMesh = plateMesh(mover);
+      if (meshCollidesAlong(*moverMesh, plateMesh(obstacle), last.direction, options_.geometry.contactTolerance))
+        return true;
+    }
   } catch (const Error&) {
     return true;  // cuts that run into each other: no plan through here can be cut
   }
-  const TriangleMesh mover = plateMesh(jointed[last.plate]);
-  for (int q = 0; q < graph_.plateCount; ++q) {
-    if (taken[q] || crossingBetween(graph_, last.plate, q) >= 0) continue;
-    if (jointed[q].attached.empty() && plates_[q].attached.empty() && jointed[last.plate].attached.empty()) continue;
-    if (meshCollidesAlong(mover, plateMesh(jointed[q]), last.direction, options_.geometry.contactTolerance)) return true;
-  }
   return false;
+}
+
+// `plate` with those of `joints` it has cut into it (and their solids attached).
+const Plate& PlateJointPlanner::jointedPlate(int plate, const std::vector<PlateJoint>& joints) const {
+  std::vector<PlateJoint> mine;
+  std::string key = std::to_string(plate);
+  for (const PlateJoint& joint : joints) {
+    if ((joint.mover != plate && joint.other != plate) || joint.type == JointType::Empty) continue;
+    mine.push_back(joint);
+    key += ' ' + std::to_string(joint.mover) + ',' + std::to_string(joint.other) + ',' +
+           std::to_string(static_cast<int>(joint.type)) + ',' + std::to_string(joint.contact);
+    for (double c : joint.direction) {
+      uint64_t bits = 0;
+      std::memcpy(&bits, &c, sizeof bits);
+      key += ',' + std::to_string(bits);
+    }
+  }
+  if (mine.empty()) return plates_[static_cast<size_t>(plate)];
+  const auto known = jointedCache_.find(key);
+  if (known != jointedCache_.end()) return known->second;
+  if (jointedCache_.size() > 20000) jointedCache_.clear();
+  Plate jointed = jointedPlates(plates_, graph_, mine, 0, options_.joints)[static_cast<size_t>(plate)];
+  return jointedCache_.emplace(key, std::move(jointed)).first->second;
 }
 
 // The ranked children of a node: every plate of R that is not a cut point of R's parts-graph,
