@@ -788,9 +788,15 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy, showL
      * An example that needs its own joints ('milled': the Bookshelf's dovetails; 'planned': the
      * mitred and flush designs) was loaded: Joints is set to them. null (an example without, or
      * the user's own file): Joints goes back to 'cut' if an example had set it; the user's own
-     * choice stays.
+     * choice stays. `timeLimit` (seconds): the least time limit the example needs.
      */
-    setExampleJoints(joints) {
+    setExampleJoints(joints, timeLimit = null) {
+      // An example that needs longer than the default limit (the LIZARD's milled joints: about
+      // 35 s in WebAssembly) raises it; a limit the user set higher stays.
+      if (timeLimit && Number(FIELDS.timeLimit.value) < timeLimit) {
+        FIELDS.timeLimit.value = String(timeLimit);
+        syncUrl();
+      }
       if (joints && [...FIELDS.joints.options].some((option) => option.value === joints)) {
         FIELDS.joints.value = joints;
         jointsFromExample = true;

@@ -56,7 +56,7 @@ const EXAMPLES = [
   { file: 'cabinet.json', label: 'Cabinet under a gable roof, 7 plates (milled)', plate: true, joints: 'milled' },
   { file: 'mitred_box.json', label: 'Mitred box, 6 plates (milled mitre tenons)', plate: true, joints: 'milled' },
   { file: 'dodecahedron.json', label: 'Dodecahedron, 12 mitred plates (milled mitre tenons)', plate: true, joints: 'milled' },
-  { file: 'lizard.json', label: 'Lizard, 38 mitred plates (milled mitre tenons and slides; about a minute)', plate: true, joints: 'milled' },
+  { file: 'lizard.json', label: 'Lizard, 38 mitred plates (milled mitre tenons and slides; about 40 s)', plate: true, joints: 'milled', timeLimit: 300 },
   // Flush boards that no mortise-and-tenon lets out: sliding dovetails, milled on a CNC.
   { file: 'bookshelf.json', label: 'Bookshelf, 12 plates (milled dovetails)', plate: true, joints: 'milled' },
   { file: 'bookcase_123.json', label: 'Bookcase, 123 plates (milled)', plate: true, joints: 'milled' },
@@ -365,7 +365,10 @@ async function fetchExampleText(file) {
  * `keepJoints` (the first load of a shared link that says which joints).
  */
 function loadExample(file, { keepJoints = false, first = false } = {}) {
-  if (!keepJoints) designPanel.setExampleJoints(EXAMPLES.find((example) => example.file === file)?.joints ?? null);
+  if (!keepJoints) {
+    const example = EXAMPLES.find((entry) => entry.file === file);
+    designPanel.setExampleJoints(example?.joints ?? null, example?.timeLimit ?? null);
+  }
   // Another input: the last run's message, progress and N belong to the previous one (a shared
   // link's N is kept for its first load).
   designPanel.inputChanged({ keepParts: first });

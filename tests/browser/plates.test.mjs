@@ -349,6 +349,21 @@ describe('plate structures in the playground (headless Chromium)', { timeout: 12
     assert.equal((await pageState(page)).source, BOOKCASE);
   });
 
+  it('loads the LIZARD with the milled joints and the time limit its design needs', async () => {
+    await page.fill('#design-time-limit', '60');
+    await page.selectOption('#example-select', 'lizard.json');
+    const loaded = await waitForReady(page, 'lizard.json');
+    assert.equal(loaded.parts, '38');
+    assert.equal(await page.inputValue('#design-joints'), 'milled', 'the example brings its joints');
+    assert.equal(await page.inputValue('#design-time-limit'), '300', 'and raises the time limit (about 35 s in WebAssembly)');
+    await page.fill('#design-time-limit', '900');
+    await page.selectOption('#example-select', TABLE);
+    await waitForReady(page, TABLE);
+    await page.selectOption('#example-select', 'lizard.json');
+    await waitForReady(page, 'lizard.json');
+    assert.equal(await page.inputValue('#design-time-limit'), '900', 'a higher limit the user set stays');
+  });
+
   it('designs the BOOKSHELF with milled dovetails: Joints follows the example, STL instead of cut sheets', async () => {
     await page.selectOption('#example-select', BOOKSHELF);
     const loaded = await waitForReady(page, BOOKSHELF);
