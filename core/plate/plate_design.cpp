@@ -493,7 +493,7 @@ class PlateJointPlanner {
 
  private:
   bool acceptable(const std::vector<Step>& steps) const;
-  bool runsIntoAStranger(int plate, const Vec3& d, const std::vector<int>& rest) const;
+  bool runsIntoARemainingPlate(int plate, const Vec3& d, const std::vector<int>& rest) const;
   bool runsIntoJointsSoFar(const std::vector<Step>& path) const;
   const Plate& jointedPlate(int plate, const std::vector<PlateJoint>& joints) const;
   bool cutAndVerify(const std::vector<PlateJoint>& joints, const std::vector<int>& order,
@@ -660,10 +660,11 @@ bool PlateJointPlanner::acceptable(const std::vector<Step>& steps) const {
   return result.verdict == Verdict::Interlocking && result.key == 0;
 }
 
-// Would the plate, leaving along d, run into a plate of R it does not touch? No joint between
-// them can make room, so the step cannot be part of a plan that verifies: skip it now rather than
-// when a complete plan's sweep fails (the TABLE's divider would hit the back apron).
-bool PlateJointPlanner::runsIntoAStranger(int plate, const Vec3& d, const std::vector<int>& rest) const {
+// Would the plate, as given, leaving along d run into a plate of R (touching it or not; plates that
+// cross part by their slots)? Joints only make room where plates meet, so the step cannot be part
+// of a plan that verifies: skip it now rather than when a complete plan's sweep fails (the TABLE's
+// divider would hit the back apron; the LIZARD's plate 34 ran 13 mm into plate 2 beyond their mitre).
+bool PlateJointPlanner::runsIntoARemainingPlate(int plate, const Vec3& d, const std::vector<int>& rest) const {
   for (int q : rest) {
     // Plates that cross part by their slots; the others, touching or not, must let it pass.
     if (q == plate || crossingBetween(graph_, plate, q) >= 0) continue;
@@ -693,7 +694,7 @@ bool PlateJointPlanner::runsIntoJointsSoFar(const std::vector<Step>& path) const
     for (int q = 0; q < graph_.plateCount; ++q) {
       if (taken[q] || crossingBetween(graph_, last.plate, q) >= 0) continue;
       const Plate& obstacle = jointedPlate(q, joints);
-      // Only solids the joints attach stand where the plates as given do not (runsIntoAStranger).
+      // Only solids the joints attach stand where the plates as given do not (runsIntoARemainingPlate).
       if (obstacle.attached.empty() && mover.attached.empty()) continue;
       if (!moverMesh) moverMesh = plateMesh(mover);
       if (meshCollidesAlong(*moverMesh, plateMesh(obstacle), last.direction, options_.geometry.contactTolerance))
@@ -757,7 +758,7 @@ std::vector<Step> PlateJointPlanner::childrenOf(const std::vector<Step>& steps) 
     for (int q : rest) others[q] = q != plate;
     for (const Vec3& d : candidateDirections(plate)) {
       if (!leavesWithoutPushing(graph_, plate, others, d)) continue;
-      if (makesJoints(options_.realization) && runsIntoAStranger(plate, d, rest)) continue;
+      if (makesJoints(options_.realization) && runsIntoARemainingPlate(plate, d, rest)) continue;
       std::vector<Step> next = steps;
       next.push_back(makeStep(steps, plate, d));
       if (next.back().blocked || !acceptable(next)) continue;
