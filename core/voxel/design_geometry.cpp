@@ -423,6 +423,14 @@ bool PartBuilder::growTo(int minSize, int maxSize, const Int3& direction, std::m
   return size() <= maxSize;
 }
 
+bool PartBuilder::absorb(const std::vector<int64_t>& voxels, const Int3& direction) {
+  const size_t first = part_.size();
+  for (int64_t v : voxels) {
+    if (!addToPart(v)) return false;
+  }
+  return clearPathFrom(first, direction);
+}
+
 std::vector<int64_t> PartBuilder::sortedPartVoxels() const {
   std::vector<int64_t> sorted = part_;
   std::sort(sorted.begin(), sorted.end());

@@ -113,6 +113,9 @@ class PartBuilder {
   // absorb), least accessible first, until it has at least `minSize` voxels; false if it cannot or
   // ends above `maxSize`.
   bool growTo(int minSize, int maxSize, const Int3& direction, std::mt19937_64& random);
+  // Takes `voxels` (remainder voxels) into the part, with what clearPathAlong(direction) then
+  // absorbs; false when one of them is forced into the remainder.
+  bool absorb(const std::vector<int64_t>& voxels, const Int3& direction);
 
   // May the voxel still go to the part / stay in the remainder?
   bool canBePart(int64_t voxel) const { return state_[voxel] == kFree || state_[voxel] == kPart; }

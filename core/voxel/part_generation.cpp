@@ -262,6 +262,9 @@ Int3 removalDirectionFor(const VoxelGrid& grid, int remainder, int64_t seed, std
   return exposed[random() % exposed.size()];
 }
 
+// The largest remainder the enumeration of the deep end takes (final_split.h: a 64-bit mask).
+constexpr int64_t kEnumerableVoxels = 64;
+
 // Parts still to place (after this one, the last remainder included) up to which children are
 // enumerated, not sampled: the last three splits.
 constexpr int kEnumeratedPartsStillToPlace = 3;
@@ -289,6 +292,19 @@ bool enumeratedChildren(const VoxelGrid& grid, int remainder, const DesignContex
   std::stable_sort(children->begin(), children->end(),
                    [](const Candidate& x, const Candidate& y) { return x.rankKey < y.rankKey; });
   return true;
+}
+
+// A part that cuts pieces off the remainder takes them in, when they fit within `maxSize` with
+// what clearing their way out adds (Section 4.1 requires R_i connected). Measured on the bunny
+// at N=120 (seed 1, 15 s): 17,112 of 19,630 candidates built were refused for cutting R apart,
+// and by the last ten parts R was one-voxel strands over the whole shape, which any part cuts
+// (a strand's end hangs off the part). Taking such pieces in turns those candidates into
+// children and eats the strands.
+bool absorbPiecesCutOff(SplitEvaluator& evaluator, int maxSize, const Int3& removal, PartBuilder& builder) {
+  const int room = maxSize - builder.size();
+  if (room <= 0) return true;  // nothing fits: the candidate is judged as it is
+  const std::vector<int64_t> pieces = evaluator.piecesCutOff(builder.sortedPartVoxels(), static_cast<size_t>(room));
+  return pieces.empty() || (builder.absorb(pieces, removal) && builder.size() <= maxSize);
 }
 
 }  // namespace
@@ -356,7 +372,8 @@ std::vector<Candidate> generatePartCandidates(const VoxelGrid& grid, int remaind
       }
     }
     ok = ok && someAxisFreeOfPairs && builder.connect() && builder.clearPathAlong(removal) &&
-         builder.growTo(size.min, size.max, removal, context.random);
+         builder.growTo(size.min, size.max, removal, context.random) &&
+         (remainderVoxels <= kEnumerableVoxels || absorbPiecesCutOff(evaluator, size.max, removal, builder));
     if (!ok) continue;
     Candidate candidate{builder.sortedPartVoxels(), 0};
     if (!seen.insert(candidate.partVoxels).second) continue;

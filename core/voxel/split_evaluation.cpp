@@ -218,13 +218,15 @@ int RemainderConnectivity::find(int region) {
   return region;
 }
 
-bool RemainderConnectivity::connectedWithout(const std::vector<int64_t>& part) {
-  if (size_ - static_cast<int64_t>(part.size()) <= 0) return false;
+void RemainderConnectivity::growRegions(const std::vector<int64_t>& part, int stopAtGrowing, size_t maxFinished,
+                                        size_t* finishedVoxels) {
   for (int64_t p : part) taken_[p] = 1;
   auto inRest = [&](int64_t v) { return v >= 0 && grid_.labelAt(v) == label_ && !taken_[v]; };
   parent_.clear();
   pending_.clear();
-  std::vector<int64_t> queue;  // every reached voxel, in lockstep order
+  size_of_.clear();
+  finished_.clear();
+  queue_.clear();
   for (int64_t p : part) {
     for (int step = 0; step < 6; ++step) {
       const int64_t w = steps_.neighbour(p, step);
@@ -232,35 +234,74 @@ bool RemainderConnectivity::connectedWithout(const std::vector<int64_t>& part) {
       owner_[w] = static_cast<int32_t>(parent_.size());
       parent_.push_back(static_cast<int>(parent_.size()));
       pending_.push_back(1);
-      queue.push_back(w);
+      size_of_.push_back(1);
+      finished_.push_back(0);
+      queue_.push_back(w);
     }
   }
-  int live = static_cast<int>(parent_.size());
-  bool connected = live <= 1;
-  for (size_t head = 0; head < queue.size() && !connected; ++head) {
-    const int64_t v = queue[head];
+  growing_ = static_cast<int>(parent_.size());
+  *finishedVoxels = 0;
+  for (size_t head = 0; head < queue_.size() && growing_ > stopAtGrowing && *finishedVoxels <= maxFinished; ++head) {
+    const int64_t v = queue_[head];
     const int region = find(owner_[v]);
     --pending_[region];
-    for (int step = 0; step < 6 && !connected; ++step) {
+    for (int step = 0; step < 6 && growing_ > stopAtGrowing; ++step) {
       const int64_t w = steps_.neighbour(v, step);
       if (!inRest(w)) continue;
       if (owner_[w] < 0) {
         owner_[w] = region;
         ++pending_[region];
-        queue.push_back(w);
+        ++size_of_[region];
+        queue_.push_back(w);
         continue;
       }
       const int other = find(owner_[w]);
       if (other == region) continue;
       parent_[other] = region;
       pending_[region] += pending_[other];
-      connected = --live == 1;
+      size_of_[region] += size_of_[other];
+      --growing_;
     }
-    if (!connected && pending_[region] == 0) break;  // a whole piece without the other regions
+    if (growing_ > stopAtGrowing && pending_[region] == 0) {  // a whole piece: no region reaches it any more
+      --growing_;
+      finished_[region] = 1;
+      *finishedVoxels += static_cast<size_t>(size_of_[region]);
+    }
   }
-  for (int64_t v : queue) owner_[v] = -1;
+}
+
+void RemainderConnectivity::clear(const std::vector<int64_t>& part) {
+  for (int64_t v : queue_) owner_[v] = -1;
   for (int64_t p : part) taken_[p] = 0;
+}
+
+bool RemainderConnectivity::connectedWithout(const std::vector<int64_t>& part) {
+  if (size_ - static_cast<int64_t>(part.size()) <= 0) return false;
+  // Connected exactly when the regions merge into one before any of them runs out.
+  size_t finished = 0;
+  growRegions(part, 1, 0, &finished);
+  const bool connected = growing_ <= 1 && finished == 0;
+  clear(part);
   return connected;
+}
+
+std::optional<std::vector<int64_t>> RemainderConnectivity::piecesCutOff(const std::vector<int64_t>& part,
+                                                                        size_t maxVoxels) {
+  if (size_ - static_cast<int64_t>(part.size()) <= 0) return std::nullopt;
+  size_t finished = 0;
+  growRegions(part, 1, maxVoxels, &finished);
+  std::optional<std::vector<int64_t>> pieces;
+  if (finished > 0 && growing_ == 1) {
+    std::vector<int64_t> cut;
+    for (int64_t v : queue_) {
+      if (finished_[find(owner_[v])]) cut.push_back(v);
+    }
+    if (cut.size() <= maxVoxels) pieces = std::move(cut);
+  } else if (finished == 0) {
+    pieces = std::vector<int64_t>{};
+  }
+  clear(part);
+  return pieces;
 }
 
 bool isListFaceConnected(const GridSteps& steps, const std::vector<int64_t>& voxels) {
@@ -367,6 +408,11 @@ bool SplitEvaluator::accepts(const Candidate& candidate) {
   const std::vector<int64_t>& part = candidate.partVoxels;
   return isListFaceConnected(steps_, part) && connectivity_.connectedWithout(part) &&
          splitInterlocks(assembly_.assemblyAfter(part), remainder_, keyDirection_) && partLeaves(part);
+}
+
+std::vector<int64_t> SplitEvaluator::piecesCutOff(const std::vector<int64_t>& part, size_t maxVoxels) {
+  if (!local_) return {};
+  return connectivity_.piecesCutOff(part, maxVoxels).value_or(std::vector<int64_t>{});
 }
 
 double SplitEvaluator::rankKey(const Candidate& candidate) {

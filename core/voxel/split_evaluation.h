@@ -83,9 +83,19 @@ class RemainderConnectivity {
  public:
   RemainderConnectivity(const VoxelGrid& grid, int label);
   bool connectedWithout(const std::vector<int64_t>& part);
+  // The pieces P cuts off R: the voxels of R \ P outside one piece that stays R_i (none when R \ P
+  // is one piece), if they number at most `maxVoxels`; nullopt when they are more, or when P takes
+  // all of R. The same lockstep growth: the pieces that run out first are found whole and cut
+  // off, the last one still growing stays, so the cost follows the small pieces, not R.
+  std::optional<std::vector<int64_t>> piecesCutOff(const std::vector<int64_t>& part, size_t maxVoxels);
 
  private:
   int find(int region);
+  // Grows regions of R \ P from P's neighbours in lockstep, merging those that meet, until at
+  // most `stopAtGrowing` regions are still growing or every region has run out. Fills queue_
+  // (every voxel reached) and marks owner_; the caller clears both with clear().
+  void growRegions(const std::vector<int64_t>& part, int stopAtGrowing, size_t maxFinished, size_t* finishedVoxels);
+  void clear(const std::vector<int64_t>& part);
 
   const VoxelGrid& grid_;
   int label_;
@@ -93,7 +103,10 @@ class RemainderConnectivity {
   GridSteps steps_;
   std::vector<uint8_t> taken_;
   std::vector<int32_t> owner_;  // region of a reached voxel, -1 unreached; cleared after a call
-  std::vector<int> parent_, pending_;
+  std::vector<int> parent_, pending_, size_of_;
+  std::vector<uint8_t> finished_;  // per region: ran out (a whole piece of R \ P)
+  std::vector<int64_t> queue_;  // every reached voxel, in lockstep order
+  int growing_ = 0;             // regions (roots) still growing
 };
 
 // Is a sorted voxel list face-connected (and non-empty)? Cost follows the list.
@@ -108,6 +121,9 @@ class SplitEvaluator {
   SplitEvaluator(const VoxelGrid& grid, int remainderLabel, const Int3& keyDirection, CandidateRanking ranking);
   // acceptsSplit(grid with `candidate` applied, remainderLabel, keyDirection)
   bool accepts(const Candidate& candidate);
+  // The pieces of R_(i-1) that `part` (sorted) would cut off R_i, when they are at most
+  // `maxVoxels` (RemainderConnectivity::piecesCutOff); none otherwise, or when R_i stays whole.
+  std::vector<int64_t> piecesCutOff(const std::vector<int64_t>& part, size_t maxVoxels);
   // rankingKey(grid with `candidate` applied, remainderLabel, remainderLabel + 1, ranking)
   double rankKey(const Candidate& candidate);
   // accessibility(grid, remainderLabel)

@@ -4,6 +4,7 @@
 // remainder of real construction-tree nodes.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 
 #include "desia/voxel_design.h"
@@ -77,6 +78,61 @@ void ExpectSameContacts(const Assembly& actual, const Assembly& expected) {
   }
 }
 
+// The face-connected pieces of `label` in `grid`, each a sorted voxel list (an independent
+// whole-grid flood fill).
+std::vector<std::vector<int64_t>> piecesOf(const VoxelGrid& grid, int label) {
+  std::vector<std::vector<int64_t>> pieces;
+  std::vector<bool> seen(static_cast<size_t>(grid.voxelCount()), false);
+  for (int64_t start = 0; start < grid.voxelCount(); ++start) {
+    if (seen[start] || grid.labelAt(start) != label) continue;
+    std::vector<int64_t> piece, stack{start};
+    seen[start] = true;
+    while (!stack.empty()) {
+      const int64_t v = stack.back();
+      stack.pop_back();
+      piece.push_back(v);
+      const Int3 c = grid.coordinates(v);
+      for (const Int3& d : design::kAxisSteps) {
+        const Int3 n{c.x + d.x, c.y + d.y, c.z + d.z};
+        if (!grid.inside(n.x, n.y, n.z)) continue;
+        const int64_t w = grid.index(n.x, n.y, n.z);
+        if (seen[w] || grid.labelAt(w) != label) continue;
+        seen[w] = true;
+        stack.push_back(w);
+      }
+    }
+    std::sort(piece.begin(), piece.end());
+    pieces.push_back(std::move(piece));
+  }
+  return pieces;
+}
+
+// piecesCutOff against the pieces of the split grid's rest (label `rest`): nothing when the rest is
+// one piece; otherwise, given room for the whole rest, every piece but one, whole.
+void ExpectPiecesCutOffAreWholePieces(const VoxelGrid& split, int rest, design::RemainderConnectivity& connectivity,
+                                      const std::vector<int64_t>& part) {
+  const std::vector<std::vector<int64_t>> pieces = piecesOf(split, rest);
+  const auto cut = connectivity.piecesCutOff(part, static_cast<size_t>(split.voxelCount()));
+  if (pieces.empty()) {
+    EXPECT_FALSE(cut.has_value());  // the part takes all of R
+    return;
+  }
+  ASSERT_TRUE(cut.has_value());
+  std::vector<int64_t> sortedCut = *cut;
+  std::sort(sortedCut.begin(), sortedCut.end());
+  size_t kept = 0;
+  std::vector<int64_t> expected;
+  for (const auto& piece : pieces) {
+    const bool inCut = std::binary_search(sortedCut.begin(), sortedCut.end(), piece.front());
+    if (!inCut) ++kept;
+    if (inCut) expected.insert(expected.end(), piece.begin(), piece.end());
+  }
+  std::sort(expected.begin(), expected.end());
+  EXPECT_EQ(kept, 1u);
+  EXPECT_EQ(sortedCut, expected);
+  if (pieces.size() == 1) EXPECT_TRUE(sortedCut.empty());
+}
+
 struct NodeCase {
   int side, totalParts, placed;
   uint64_t seed;
@@ -103,6 +159,7 @@ TEST_P(SplitEvaluation, AgreesWithTheWholeGridFunctionsOnRandomParts) {
     const bool restConnected = design::isFaceConnected(split, remainder + 1);
     connectedRests += restConnected ? 1 : 0;
     EXPECT_EQ(connectivity.connectedWithout(candidate.partVoxels), restConnected) << trial;
+    ExpectPiecesCutOffAreWholePieces(split, remainder + 1, connectivity, candidate.partVoxels);
     EXPECT_EQ(design::isListFaceConnected(steps, candidate.partVoxels), design::isFaceConnected(split, remainder));
     EXPECT_EQ(accessibility.sumWithout(candidate.partVoxels), compactnessSum(split, remainder + 1)) << trial;
     if (restConnected) ExpectSameContacts(assembly.assemblyAfter(candidate.partVoxels), assemblyFromVoxels(split));
@@ -122,6 +179,27 @@ TEST_P(SplitEvaluation, AgreesWithTheWholeGridFunctionsOnRandomParts) {
 INSTANTIATE_TEST_SUITE_P(Nodes, SplitEvaluation,
                          ::testing::Values(NodeCase{6, 12, 0, 1}, NodeCase{6, 12, 1, 2}, NodeCase{7, 20, 6, 3},
                                            NodeCase{8, 30, 14, 4}));
+
+TEST(SplitEvaluation, PiecesCutOffAreReturnedOnlyWhenTheyFit) {
+  // A row of seven remainder voxels; the part at x = 1 cuts off x = 0, the part at x = 2 cuts off
+  // x = 0..1, the part at x = 3 leaves two pieces of three.
+  VoxelGrid grid(7, 1, 1);
+  for (int64_t i = 0; i < 7; ++i) grid.setLabelAt(i, 1);
+  design::RemainderConnectivity connectivity(grid, 1);
+  EXPECT_EQ(connectivity.piecesCutOff({1}, 1), (std::vector<int64_t>{0}));
+  EXPECT_FALSE(connectivity.piecesCutOff({1}, 0).has_value());
+  EXPECT_FALSE(connectivity.piecesCutOff({2}, 1).has_value());
+  auto two = connectivity.piecesCutOff({2}, 2);
+  ASSERT_TRUE(two.has_value());
+  std::sort(two->begin(), two->end());
+  EXPECT_EQ(*two, (std::vector<int64_t>{0, 1}));
+  EXPECT_EQ(connectivity.piecesCutOff({3}, 3)->size(), 3u);
+  EXPECT_EQ(connectivity.piecesCutOff({0}, 0), (std::vector<int64_t>{}));  // the rest stays whole
+  EXPECT_FALSE(connectivity.piecesCutOff({0, 1, 2, 3, 4, 5, 6}, 7).has_value());
+  // The checks still agree after these calls (scratch state cleared).
+  EXPECT_TRUE(connectivity.connectedWithout({6}));
+  EXPECT_FALSE(connectivity.connectedWithout({5}));
+}
 
 TEST(SplitEvaluation, FallsBackToTheWholeGridWhereTheRemainderIsNotTheLastLabel) {
   // Remainder 1 in two pieces, with a part 2 beyond it: the local checks do not apply.
