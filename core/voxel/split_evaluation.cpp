@@ -224,7 +224,7 @@ void RemainderConnectivity::growRegions(const std::vector<int64_t>& part, int st
   auto inRest = [&](int64_t v) { return v >= 0 && grid_.labelAt(v) == label_ && !taken_[v]; };
   parent_.clear();
   pending_.clear();
-  size_of_.clear();
+  regionSize_.clear();
   finished_.clear();
   queue_.clear();
   for (int64_t p : part) {
@@ -234,7 +234,7 @@ void RemainderConnectivity::growRegions(const std::vector<int64_t>& part, int st
       owner_[w] = static_cast<int32_t>(parent_.size());
       parent_.push_back(static_cast<int>(parent_.size()));
       pending_.push_back(1);
-      size_of_.push_back(1);
+      regionSize_.push_back(1);
       finished_.push_back(0);
       queue_.push_back(w);
     }
@@ -251,7 +251,7 @@ void RemainderConnectivity::growRegions(const std::vector<int64_t>& part, int st
       if (owner_[w] < 0) {
         owner_[w] = region;
         ++pending_[region];
-        ++size_of_[region];
+        ++regionSize_[region];
         queue_.push_back(w);
         continue;
       }
@@ -259,13 +259,13 @@ void RemainderConnectivity::growRegions(const std::vector<int64_t>& part, int st
       if (other == region) continue;
       parent_[other] = region;
       pending_[region] += pending_[other];
-      size_of_[region] += size_of_[other];
+      regionSize_[region] += regionSize_[other];
       --growing_;
     }
     if (growing_ > stopAtGrowing && pending_[region] == 0) {  // a whole piece: no region reaches it any more
       --growing_;
       finished_[region] = 1;
-      *finishedVoxels += static_cast<size_t>(size_of_[region]);
+      *finishedVoxels += static_cast<size_t>(regionSize_[region]);
     }
   }
 }

@@ -103,7 +103,7 @@ class RemainderConnectivity {
   GridSteps steps_;
   std::vector<uint8_t> taken_;
   std::vector<int32_t> owner_;  // region of a reached voxel, -1 unreached; cleared after a call
-  std::vector<int> parent_, pending_, size_of_;
+  std::vector<int> parent_, pending_, regionSize_;
   std::vector<uint8_t> finished_;  // per region: ran out (a whole piece of R \ P)
   std::vector<int64_t> queue_;  // every reached voxel, in lockstep order
   int growing_ = 0;             // regions (roots) still growing
