@@ -81,12 +81,38 @@ bool isFaceConnected(const VoxelGrid& grid, int label) {
   return reached == total;
 }
 
+int shapeSurfaceVoxelCount(const VoxelGrid& grid, const std::vector<int64_t>& voxels) {
+  int count = 0;
+  for (int64_t v : voxels) {
+    const Int3 c = grid.coordinates(v);
+    bool onSurface = false;
+    for (int step = 0; step < 6 && !onSurface; ++step) {
+      const Int3 n{c.x + kAxisSteps[step].x, c.y + kAxisSteps[step].y, c.z + kAxisSteps[step].z};
+      onSurface = !grid.inside(n.x, n.y, n.z) || grid.label(n.x, n.y, n.z) == 0;
+    }
+    count += onSurface ? 1 : 0;
+  }
+  return count;
+}
+
 double rankingKey(const VoxelGrid& grid, int partLabel, int remainderLabel, CandidateRanking ranking) {
   if (ranking == CandidateRanking::Compactness) {
-    // Most compact remainder first: the largest accessibility sum ranks first.
+    // Most compact remainder first: the largest accessibility sum ranks first (Section 4.1, after
+    // Song et al. 2012). Parts that take the shape's surface rank higher: a part on the surface
+    // is blocked along its outward side only by neighbours that wrap around it, which a large
+    // remainder offers and a late one does not. Ranked by compactness alone, the bunny at N=120
+    // kept a one-voxel skin of its surface for last (80 voxels with 5 parts left at depth 115,
+    // where an exhaustive enumeration found no split at all), and 0 of 20 seeds got past 117
+    // parts within 250 nodes; with weight 3, 8 of 14 were designed within 250 nodes (weights 1,
+    // 2, 5 and 10: 1, 3, 2 and 0 of 6). Counting the surface beyond the part's share of it
+    // instead (no pull towards larger parts) designed 3 of 6.
     double sum = 0;
     for (double a : accessibility(grid, remainderLabel)) sum += a;
-    return -sum;
+    std::vector<int64_t> part;
+    for (int64_t i = 0; i < grid.voxelCount(); ++i) {
+      if (grid.labelAt(i) == partLabel) part.push_back(i);
+    }
+    return -sum - kShapeSurfaceWeight * shapeSurfaceVoxelCount(grid, part);
   }
   double sum = 0;
   int64_t count = 0;

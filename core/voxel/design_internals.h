@@ -68,8 +68,17 @@ std::vector<double> accessibility(const VoxelGrid& grid, int label);
 // Is the set of voxels with `label` one face-connected piece (and non-empty)?
 bool isFaceConnected(const VoxelGrid& grid, int label);
 
+// How many of `voxels` lie on the shape's surface: a face neighbour is empty (label 0) or beyond
+// the grid.
+int shapeSurfaceVoxelCount(const VoxelGrid& grid, const std::vector<int64_t>& voxels);
+
+// The weight of a part's shape-surface voxel in the compactness ranking, against the remainder's
+// accessibility sum (rankingKey; see design_geometry.cpp for why and what it changed).
+constexpr double kShapeSurfaceWeight = 3.0;
+
 // Ranking key of a candidate (smaller first) for the chosen ranking; `grid` is the state after
-// the split, `partLabel` the new part and `remainderLabel` the new remainder.
+// the split, `partLabel` the new part and `remainderLabel` the new remainder. Compactness: minus
+// the remainder's accessibility sum, minus kShapeSurfaceWeight per shape-surface voxel of the part.
 double rankingKey(const VoxelGrid& grid, int partLabel, int remainderLabel, CandidateRanking ranking);
 
 // Splits the remainder: the candidate's voxels keep `remainderLabel` (they become the new part

@@ -422,7 +422,10 @@ double SplitEvaluator::rankKey(const Candidate& candidate) {
     undoCandidate(*work_, remainder_);
     return key;
   }
-  if (ranking_ == CandidateRanking::Compactness) return -accessibility_.sumWithout(candidate.partVoxels);
+  if (ranking_ == CandidateRanking::Compactness) {
+    return -accessibility_.sumWithout(candidate.partVoxels) -
+           kShapeSurfaceWeight * shapeSurfaceVoxelCount(grid_, candidate.partVoxels);
+  }
   // The part's mean coordinate, its voxels summed in index order as rankingKey does.
   double sum = 0;
   for (int64_t v : candidate.partVoxels) {
