@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The voxel designer in WebAssembly (node), through the package API: the same cases as the native
-// desia_design_bench (desia mode), several seeds, success rate and median time beside the paper's.
-//   node tests/benchmarks/wasm_design_bench.mjs [--seeds N] [--time-limit S] [--only TEXT] [--modes desia,recursive]
+// desia_design_bench (desia mode), several seeds, success rate and median time beside the paper's;
+// --frontier adds issue 10's harder cases, as the native bench does.
+//   node tests/benchmarks/wasm_design_bench.mjs [--seeds N] [--time-limit S] [--only TEXT] [--frontier] [--modes desia,recursive]
 import fs from 'node:fs';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -22,6 +23,20 @@ const cases = [
   ['bunny, N=80', 'bunny_origin.puz', 80, 0.74 * 3600],
   ['cartoon dog, N=14', 'dog_origin.puz', 14, 23.3],
 ];
+const frontierCases = [
+  ['4x4x4 cube, N=10', 'Cube_4x4x4_origin.puz', 10, null],
+  ['5x5x5 cube, N=20', 'Cube_5x5x5_origin.puz', 20, null],
+  ['6x6x6 cube, N=30', 'generated-cube-6', 30, null],
+  ['bunny, N=100', 'bunny_origin.puz', 100, null],
+  ['bunny, N=120', 'bunny_origin.puz', 120, null],
+];
+
+// A solid cube as .puz text (the native bench's solidCube).
+function solidCubePuz(side) {
+  const row = Array(side).fill('1').join(' ');
+  const layer = Array(side).fill(row).join('\n');
+  return `${side} ${side} ${side}\n${Array(side).fill(layer).join('\n\n')}\n`;
+}
 
 function option(name, fallback) {
   const index = process.argv.indexOf(name);
@@ -61,9 +76,10 @@ function runCase(shape, parts, mode) {
   return { times, nodes, best };
 }
 
-for (const [name, file, parts, paper] of cases) {
+const frontier = process.argv.includes('--frontier');
+for (const [name, file, parts, paper] of frontier ? [...cases, ...frontierCases] : cases) {
   if (only && !name.includes(only)) continue;
-  const shape = fs.readFileSync(path.join(inputs, file), 'utf8');
+  const shape = file === 'generated-cube-6' ? solidCubePuz(6) : fs.readFileSync(path.join(inputs, file), 'utf8');
   for (const mode of modes) {
     const { times, nodes, best } = runCase(shape, parts, mode);
     console.log(`| ${name} | ${mode} | ${seconds(paper)} | ${times.length}/${seeds} | ${seconds(median(times))} | ${median(nodes)} | ${best} of ${parts} |`);
