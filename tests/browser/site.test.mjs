@@ -223,7 +223,8 @@ describe('the playground as a static site under a sub-path', { timeout: 180_000 
 
   it('cancels a longer design and keeps the page', async () => {
     const before_ = await pageState(page);
-    await page.fill('#design-form [name="parts"]', '9');
+    // N = 14 from the 4×4×4 cube runs for tens of seconds (N = 9 now designs within 10 nodes).
+    await page.fill('#design-form [name="parts"]', '14');
     await page.fill('#design-form [name="timeLimit"]', '120');
     await page.click('#design-button');
     await page.waitForFunction(() => Number(document.querySelector('#design-progress-box').dataset.updates) >= 3);

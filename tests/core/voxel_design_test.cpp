@@ -313,10 +313,10 @@ TEST(VoxelDesign, AppearanceGroupEndsUpInOnePart) {
 
 TEST(VoxelDesign, LimitsAndCancellationStopWithProgress) {
   // The hollow cube at seed 2 takes a few hundred nodes, so both stops come first.
-  const VoxelGrid cube = shape("Cube_hollow_4x4x4_origin.puz");
+  const VoxelGrid hollow = shape("Cube_hollow_4x4x4_origin.puz");
   VoxelDesignOptions options = optionsFor(7, 2);
   options.nodeLimit = 25;
-  const VoxelDesignResult limited = designVoxelPuzzle(cube, options);
+  const VoxelDesignResult limited = designVoxelPuzzle(hollow, options);
   EXPECT_EQ(limited.status, DesignStatus::LimitReached);
   EXPECT_EQ(limited.progress.nodesVisited, 25);
   EXPECT_NE(limited.message.find("node limit"), std::string::npos) << limited.message;
@@ -328,7 +328,7 @@ TEST(VoxelDesign, LimitsAndCancellationStopWithProgress) {
     EXPECT_LE(progress.depth, progress.bestDepth);
     return ++calls < 10;
   };
-  const VoxelDesignResult cancelled = designVoxelPuzzle(cube, options);
+  const VoxelDesignResult cancelled = designVoxelPuzzle(hollow, options);
   EXPECT_EQ(cancelled.status, DesignStatus::Cancelled);
   EXPECT_EQ(calls, 10);
   EXPECT_EQ(cancelled.progress.nodesVisited, 10);
