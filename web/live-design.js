@@ -7,17 +7,18 @@
 
 /**
  * Voxels per part below which designs get slow and may fail, from the README's measured tables
- * ("Measured (designer)", 2026-11-24, 3 seeds each): compact shapes succeed at 7.1-7.8 voxels per
- * part in well under a second (4x4x4 N=9: 64/9, 6x6x6 N=30: 216/30, 5x5x5 N=16: 125/16), and at
- * 6.25-6.4 only since issue 10's enumerated last splits, in 13 to 39 s (4x4x4 N=10: 6.4, 5x5x5
- * N=20: 6.25); below that nothing was measured. So about 7 separates easy from hard.
+ * ("Measured (designer)", 2026-11-24, 3 seeds each, 60 s): compact shapes succeed down to
+ * 6.25-6.4 voxels per part in a few seconds (4x4x4 N=10: 64/10 in 1.5 s, 5x5x5 N=20: 125/20 in
+ * 4.7 s) and fail at 5.8 (4x4x4 N=11: 10 of 11 parts for every seed). So about 6.2 separates easy
+ * from hard.
  */
-export const HARD_VOXELS_PER_PART = 7;
+export const HARD_VOXELS_PER_PART = 6.2;
 /**
- * Shapes with thin features need more: the bunny succeeds at 12 voxels per part (N=80, 966/80)
- * and fails at 9.7 and 8.1 (N=100, N=120); above about 10 a design usually succeeds.
+ * Shapes with thin features need more: the bunny succeeds at 8 voxels per part (N=120, 966/120:
+ * seeds 1-3 in about 4 s, 9 of seeds 1-14 within 60 s) and fails at 6.9 (N=140: 131-135 of 140);
+ * at 8 and above a design usually succeeds.
  */
-export const SAFE_VOXELS_PER_PART = 10;
+export const SAFE_VOXELS_PER_PART = 8;
 
 /** One line on the difficulty of splitting `voxels` voxels into `parts` parts. */
 export function difficultyText(voxels, parts) {

@@ -96,9 +96,11 @@ test('designPlate and designFrame snapshots list the plates or beams placed, the
   assert.deepEqual(frame.document, core.designFrame(scaffold, { source: 'scaffold_92.json' }).document);
 });
 
-test('the difficulty line follows the measured table: below ~7 voxels per part is hard', () => {
-  assert.match(difficultyText(64, 10), /^~6\.4 voxels per part: hard, designs below ~7 voxels per part take long and may fail$/);
-  assert.match(difficultyText(64, 9), /^~7\.1 voxels per part: fine for compact shapes/);
+test('the difficulty line follows the measured table: below ~6.2 voxels per part is hard', () => {
+  assert.match(difficultyText(64, 11), /^~5\.8 voxels per part: hard, designs below ~6\.2 voxels per part take long and may fail$/);
+  assert.match(difficultyText(64, 10), /^~6\.4 voxels per part: fine for compact shapes; thin ones \(the bunny\) often fail below ~8$/);
+  assert.match(difficultyText(966, 140), /^~6\.9 voxels per part: fine for compact shapes/);
+  assert.equal(difficultyText(966, 120), '~8.1 voxels per part: usually succeeds');
   assert.equal(difficultyText(966, 80), '~12 voxels per part: usually succeeds');
   assert.equal(difficultyText(0, 9), '');
 });
