@@ -81,14 +81,13 @@ bool isFaceConnected(const VoxelGrid& grid, int label) {
   return reached == total;
 }
 
-int shapeSurfaceVoxelCount(const VoxelGrid& grid, const std::vector<int64_t>& voxels) {
+int shapeSurfaceVoxelCount(const VoxelGrid& grid, const GridSteps& steps, const std::vector<int64_t>& voxels) {
   int count = 0;
   for (int64_t v : voxels) {
-    const Int3 c = grid.coordinates(v);
     bool onSurface = false;
     for (int step = 0; step < 6 && !onSurface; ++step) {
-      const Int3 n{c.x + kAxisSteps[step].x, c.y + kAxisSteps[step].y, c.z + kAxisSteps[step].z};
-      onSurface = !grid.inside(n.x, n.y, n.z) || grid.label(n.x, n.y, n.z) == 0;
+      const int64_t w = steps.neighbour(v, step);
+      onSurface = w < 0 || grid.labelAt(w) == 0;
     }
     count += onSurface ? 1 : 0;
   }
@@ -112,7 +111,7 @@ double rankingKey(const VoxelGrid& grid, int partLabel, int remainderLabel, Cand
     for (int64_t i = 0; i < grid.voxelCount(); ++i) {
       if (grid.labelAt(i) == partLabel) part.push_back(i);
     }
-    return -sum - kShapeSurfaceWeight * shapeSurfaceVoxelCount(grid, part);
+    return -sum - kShapeSurfaceWeight * shapeSurfaceVoxelCount(grid, GridSteps(grid), part);
   }
   double sum = 0;
   int64_t count = 0;

@@ -69,8 +69,8 @@ std::vector<double> accessibility(const VoxelGrid& grid, int label);
 bool isFaceConnected(const VoxelGrid& grid, int label);
 
 // How many of `voxels` lie on the shape's surface: a face neighbour is empty (label 0) or beyond
-// the grid.
-int shapeSurfaceVoxelCount(const VoxelGrid& grid, const std::vector<int64_t>& voxels);
+// the grid (`steps` are the grid's).
+int shapeSurfaceVoxelCount(const VoxelGrid& grid, const GridSteps& steps, const std::vector<int64_t>& voxels);
 
 // The weight of a part's shape-surface voxel in the compactness ranking, against the remainder's
 // accessibility sum (rankingKey; see design_geometry.cpp for why and what it changed).

@@ -424,7 +424,7 @@ double SplitEvaluator::rankKey(const Candidate& candidate) {
   }
   if (ranking_ == CandidateRanking::Compactness) {
     return -accessibility_.sumWithout(candidate.partVoxels) -
-           kShapeSurfaceWeight * shapeSurfaceVoxelCount(grid_, candidate.partVoxels);
+           kShapeSurfaceWeight * shapeSurfaceVoxelCount(grid_, steps_, candidate.partVoxels);
   }
   // The part's mean coordinate, its voxels summed in index order as rankingKey does.
   double sum = 0;

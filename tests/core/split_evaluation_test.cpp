@@ -130,7 +130,9 @@ void ExpectPiecesCutOffAreWholePieces(const VoxelGrid& split, int rest, design::
   std::sort(expected.begin(), expected.end());
   EXPECT_EQ(kept, 1u);
   EXPECT_EQ(sortedCut, expected);
-  if (pieces.size() == 1) EXPECT_TRUE(sortedCut.empty());
+  if (pieces.size() == 1) {
+    EXPECT_TRUE(sortedCut.empty());
+  }
 }
 
 struct NodeCase {

@@ -60,11 +60,11 @@ TEST(ShapeSurface, CountsVoxelsNextToEmptySpaceOrTheGridBorder) {
   VoxelGrid block = testing::gridFromLayers({full, full, full});
   std::vector<int64_t> all;
   for (int64_t v = 0; v < block.voxelCount(); ++v) all.push_back(v);
-  EXPECT_EQ(design::shapeSurfaceVoxelCount(block, all), 34);
-  EXPECT_EQ(design::shapeSurfaceVoxelCount(block, {block.index(1, 1, 1), block.index(2, 1, 1)}), 0);
+  EXPECT_EQ(design::shapeSurfaceVoxelCount(block, design::GridSteps(block), all), 34);
+  EXPECT_EQ(design::shapeSurfaceVoxelCount(block, design::GridSteps(block), {block.index(1, 1, 1), block.index(2, 1, 1)}), 0);
   // An enclosed cavity is empty space too: (1,1,1) now lies on the shape's surface.
   block.setLabelAt(block.index(2, 1, 1), 0);
-  EXPECT_EQ(design::shapeSurfaceVoxelCount(block, {block.index(1, 1, 1)}), 1);
+  EXPECT_EQ(design::shapeSurfaceVoxelCount(block, design::GridSteps(block), {block.index(1, 1, 1)}), 1);
 }
 
 TEST(Ranking, CompactnessTakesTheShapeSurfaceAsABonus) {
