@@ -91,12 +91,17 @@ int runFrameDesignCommand(const std::vector<std::string>& args) {
   }
   const std::string name = frame.name.empty() ? "" : frame.name;
   const std::string text = desia::frameResultToJson(frame.layout, result, name) + "\n";
-  desia::cli::writeOutputFile(output, text);
-  // What the user gets is checked again as written: the DBG test on its voxel contacts, and the
-  // swept removal of every beam in order.
+  // What the user gets is checked as it will be written, before anything is written: the DBG test
+  // on its voxel contacts, and the swept removal of every beam in order.
   const desia::AssemblyDocument written = desia::parseAssemblyText(text, output);
   const desia::CheckReport report = desia::checkDocument(written);
+  if (!desia::checkPassed(report) || !report.shapeRemoval) {
+    std::cerr << "desia: " << input << ": the design found did not verify, nothing written to " << output << ":\n"
+              << desia::checkReportToText(written, report);
+    return 1;
+  }
+  desia::cli::writeOutputFile(output, text);
   std::cout << result.message << " in " << result.progress.seconds << " s\n"
             << "verified: " << desia::checkReportToText(written, report) << "written: " << output << "\n";
-  return desia::checkPassed(report) && report.shapeRemoval ? 0 : 3;
+  return 0;
 }

@@ -2,7 +2,7 @@
 #include "desia/document_check.h"
 
 #include <cmath>
-#include <nlohmann/json.hpp>
+#include <map>
 
 #include "analysis/vec3.h"
 #include "desia/error.h"
@@ -14,51 +14,61 @@
 namespace desia {
 namespace {
 
-using nlohmann::json;
-
-// The planned directions of a plate result's `removal`: part k + 1 leaves along the k-th; the
-// last part stays (null). Plates are numbered in removal order by the designer.
-std::vector<Vec3> plateRemovalDirections(const json& removal, size_t plates) {
-  const std::string where = "removal";
-  if (!removal.is_array() || removal.size() != plates) {
-    throwBadInput("", where + ": expected one entry per plate (" + std::to_string(plates) + ")");
-  }
-  std::vector<Vec3> directions;
-  for (size_t k = 0; k + 1 < removal.size(); ++k) {
-    const json& entry = removal[k];
-    const std::string path = where + "[" + std::to_string(k) + "]";
-    if (!entry.is_object() || !entry.contains("part") || entry["part"] != static_cast<int>(k) + 1) {
-      throwBadInput("", path + ": expected part " + std::to_string(k + 1) + " (parts leave in id order)");
-    }
-    const json& d = entry.contains("direction") ? entry["direction"] : json();
-    if (!d.is_array() || d.size() != 3 || !d[0].is_number() || !d[1].is_number() || !d[2].is_number()) {
-      throwBadInput("", path + ".direction: expected [x, y, z], found " + d.dump());
-    }
-    Vec3 v{d[0].get<double>(), d[1].get<double>(), d[2].get<double>()};
-    const double length = std::sqrt(dot(v, v));
-    if (!(length > 1e-9) || !std::isfinite(length)) throwBadInput("", path + ".direction: not a direction");
-    directions.push_back(scaled(v, 1 / length));
-  }
-  return directions;
+// The plates in the order the plan takes them out (matched by id, whatever the file's order).
+std::vector<Plate> platesInRemovalOrder(const std::vector<Plate>& plates, const PlateResultPlan& plan) {
+  std::map<int, const Plate*> byId;
+  for (const Plate& plate : plates) byId[plate.id] = &plate;
+  std::vector<Plate> ordered;
+  for (int id : plan.removalOrder) ordered.push_back(*byId.at(id));  // one plate per part: read so
+  return ordered;
 }
 
-std::optional<ShapeRemovalCheck> plateShapeRemoval(const AssemblyDocument& document, const json& geometry) {
-  const std::string realization = geometry.value("jointGeometry", "");
-  if (!geometry.contains("removal") || (realization != "cut" && realization != "milled")) return std::nullopt;
-  std::vector<Plate> inOrder;  // plates by part id = removal order
-  for (const Part& part : document.assembly.parts) {
-    for (const Plate& plate : document.plates) {
-      if (plate.id == part.id) inOrder.push_back(plate);
-    }
+// The document's given contacts (a planned result's joint model) with part k = the k-th to leave.
+Assembly modelInRemovalOrder(const Assembly& assembly, const PlateResultPlan& plan) {
+  std::vector<int> position(assembly.parts.size(), 0);
+  Assembly model;
+  for (size_t k = 0; k < plan.removalOrder.size(); ++k) {
+    const int index = assembly.indexOfId(plan.removalOrder[k]);
+    position[static_cast<size_t>(index)] = static_cast<int>(k);
+    model.parts.push_back(assembly.parts[static_cast<size_t>(index)]);
   }
-  if (inOrder.size() != document.assembly.parts.size()) return std::nullopt;
+  for (const Contact& contact : assembly.contacts) {
+    model.contacts.push_back({position[static_cast<size_t>(contact.a)], position[static_cast<size_t>(contact.b)],
+                              contact.normal, contact.area});
+  }
+  return model;
+}
+
+// A plate result: the plan verified as the designer verified it (verifyJointedPlates or
+// verifyPlannedPlates), and the verdict reported on the contacts that verification judged.
+CheckReport checkPlateResult(const AssemblyDocument& document, const CheckOptions& options) {
+  const PlateResultPlan& plan = *document.plateResult;
+  const std::vector<Plate> plates = platesInRemovalOrder(document.plates, plan);
+  const bool planned = plan.jointGeometry == "planned";
+  const PlateRemovalVerification verification =
+      planned ? verifyPlannedPlates(modelInRemovalOrder(document.assembly, plan), plates, plan.directions,
+                                    document.plateOptions)
+              : verifyJointedPlates(plates, plan.directions, document.plateOptions);
+  AssemblyDocument judged = document;
+  judged.assembly = verification.assembly;
+  CheckReport report = checkAssembly(judged, options);
   ShapeRemovalCheck check;
   check.checked =
-      "contacts recomputed from the jointed plates (dbg and lp, key = part 1), and each plate swept along its "
-      "direction in the planned order";
-  check.failure = jointedPlatesFailure(inOrder, plateRemovalDirections(geometry["removal"], inOrder.size()),
-                                       document.plateOptions);
-  return check;
+      planned ? "nothing is cut (joints \"planned\"): the plan tested on the joint model's contacts (dbg and lp, key "
+                "= part " + std::to_string(plan.removalOrder.front()) + "), and the plates as given swept along their "
+                "directions in the planned order, plates that cross excepted; it holds only once the joints are made "
+                "as the model describes"
+              : "contacts recomputed from the jointed plates (dbg and lp, key = part " +
+                    std::to_string(plan.removalOrder.front()) +
+                    "), and each plate swept along its direction in the planned order";
+  check.failure = verification.failure;
+  if (check.failure.empty() && !document.fabricationPlates.empty()) {
+    check.failure = fabricationPlatesFailure(document.plates, document.fabricationPlates, plan.clearance,
+                                             document.plateOptions);
+    check.checked += "; fabricationPlates within the clearance of the verified plates";
+  }
+  report.shapeRemoval = check;
+  return report;
 }
 
 std::optional<ShapeRemovalCheck> frameShapeRemoval(const AssemblyDocument& document) {
@@ -83,10 +93,9 @@ std::optional<ShapeRemovalCheck> frameShapeRemoval(const AssemblyDocument& docum
 }  // namespace
 
 CheckReport checkDocument(const AssemblyDocument& document, const CheckOptions& options) {
+  if (document.kind == AssemblyKind::Plate && document.plateResult) return checkPlateResult(document, options);
   CheckReport report = checkAssembly(document, options);
-  if (document.kind == AssemblyKind::Plate && !document.plates.empty() && !document.geometryJson.empty()) {
-    report.shapeRemoval = plateShapeRemoval(document, json::parse(document.geometryJson));
-  } else if (document.kind == AssemblyKind::Frame && document.contactsFromGeometry) {
+  if (document.kind == AssemblyKind::Frame && document.contactsFromGeometry) {
     report.shapeRemoval = frameShapeRemoval(document);
   }
   return report;

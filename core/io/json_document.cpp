@@ -130,6 +130,90 @@ std::vector<Contact> parseContacts(const json& root, const Assembly& assembly, c
   return result;
 }
 
+
+// The ids of `plates` must be exactly the parts' ids: one plate per part, one part per plate.
+void requirePlatePerPart(const std::vector<Plate>& plates, const Assembly& assembly, const std::string& source,
+                         const std::string& section) {
+  std::set<int> plateIds;
+  for (const Plate& plate : plates) {
+    if (assembly.indexOfId(plate.id) < 0) fail(source, section, "plate " + std::to_string(plate.id) + " is not in 'parts'");
+    plateIds.insert(plate.id);
+  }
+  for (const Part& part : assembly.parts) {
+    if (!plateIds.count(part.id)) fail(source, section, "part " + std::to_string(part.id) + " has no plate");
+  }
+}
+
+Vec3 removalDirection(const json& entry, const std::string& source, const std::string& path) {
+  const json& d = require(entry, "direction", source, path);
+  if (!d.is_array() || d.size() != 3 || !d[0].is_number() || !d[1].is_number() || !d[2].is_number()) {
+    fail(source, path + ".direction", "expected [x, y, z], found " + d.dump().substr(0, 60));
+  }
+  const Vec3 v{d[0].get<double>(), d[1].get<double>(), d[2].get<double>()};
+  const std::optional<Vec3> unit = std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]) ? cleanedNormal(v) : std::nullopt;
+  if (!unit) fail(source, path + ".direction", "is not a direction: " + d.dump());
+  return *unit;
+}
+
+// A result's plan: `removal` lists every part once, by id, in the order they leave (the key
+// first), each with its direction but the last (null: it stays); `jointGeometry` says what the
+// plates are. Read by id, whatever the order of `parts` and `plates`.
+PlateResultPlan parsePlateResultPlan(const json& root, const Assembly& assembly, const std::string& source) {
+  PlateResultPlan plan;
+  const json& realization = require(root, "jointGeometry", source, "");
+  plan.jointGeometry = realization.is_string() ? realization.get<std::string>() : "";
+  if (plan.jointGeometry != "cut" && plan.jointGeometry != "milled" && plan.jointGeometry != "planned") {
+    fail(source, "jointGeometry", "expected \"cut\", \"milled\" or \"planned\", found " + realization.dump().substr(0, 60));
+  }
+  const json& removal = require(root, "removal", source, "");
+  if (!removal.is_array() || removal.size() != assembly.parts.size()) {
+    fail(source, "removal", "expected one entry per part (" + std::to_string(assembly.parts.size()) + ")");
+  }
+  std::set<int> seen;
+  for (size_t k = 0; k < removal.size(); ++k) {
+    const std::string path = "removal[" + std::to_string(k) + "]";
+    if (!removal[k].is_object()) fail(source, path, "expected {\"part\": id, \"direction\": [x, y, z] or null}");
+    const int id = static_cast<int>(integerField(require(removal[k], "part", source, path), source, path + ".part", 1, 1 << 30));
+    if (assembly.indexOfId(id) < 0) fail(source, path + ".part", "part " + std::to_string(id) + " is not in 'parts'");
+    if (!seen.insert(id).second) fail(source, path + ".part", "part " + std::to_string(id) + " leaves twice");
+    plan.removalOrder.push_back(id);
+    const bool last = k + 1 == removal.size();
+    if (last) {
+      if (!removal[k].contains("direction") || !removal[k]["direction"].is_null()) {
+        fail(source, path + ".direction", "the last part stays: expected null");
+      }
+    } else {
+      plan.directions.push_back(removalDirection(removal[k], source, path));
+    }
+  }
+  if (root.contains("clearance")) {
+    const json& clearance = root["clearance"];
+    if (!clearance.is_number() || !(clearance.get<double>() >= 0 && clearance.get<double>() <= 10)) {
+      fail(source, "clearance", "expected a number of millimetres from 0 to 10, found " + clearance.dump().substr(0, 60));
+    }
+    plan.clearance = clearance.get<double>();
+  }
+  return plan;
+}
+
+// A plan or result: its contacts are given (the joints'); its plates are what is made, one per part.
+void readPlatePlan(const json& root, const std::string& source, AssemblyDocument& document) {
+  document.plates = parsePlates(root["plates"], source);
+  validatePlates(document.plates, document.plateOptions, source);
+  requirePlatePerPart(document.plates, document.assembly, source, "plates");
+  if (root.contains("removal") || root.contains("jointGeometry")) {
+    document.plateResult = parsePlateResultPlan(root, document.assembly, source);
+  } else if (root.contains("fabricationPlates") || root.contains("clearance")) {
+    fail(source, "removal", "a result with fabricationPlates needs its plan (removal and jointGeometry)");
+  }
+  if (root.contains("fabricationPlates")) {
+    // The plates with the clearance cut into their mortises: what the cut files make.
+    document.fabricationPlates = parsePlates(root["fabricationPlates"], source);
+    validatePlates(document.fabricationPlates, document.plateOptions, source);
+    requirePlatePerPart(document.fabricationPlates, document.assembly, source, "fabricationPlates");
+  }
+}
+
 }  // namespace
 
 const char* assemblyKindName(AssemblyKind kind) {
@@ -198,41 +282,26 @@ AssemblyDocument parseJsonDocument(const std::string& text, const std::string& s
     // A frame (paper Section 5.3): parts are its beams, contacts come from its joint voxels.
     return frameAssemblyDocumentFromJson(root, source, document.name);
   }
+  PlateOptions plateOptions;
+  if (document.kind == AssemblyKind::Plate && root.contains("contactTolerance")) {
+    const json& tolerance = root["contactTolerance"];
+    if (!tolerance.is_number() || !(tolerance.get<double>() > 0) || tolerance.get<double>() > 10) {
+      fail(source, "contactTolerance", "expected a positive number of millimetres up to 10, found " + tolerance.dump());
+    }
+    plateOptions.contactTolerance = tolerance.get<double>();
+  }
   if (document.kind == AssemblyKind::Plate && root.contains("plates") && !root.contains("contacts")) {
     // A plate design: parts and contacts come from the geometry (paper Section 5.2).
-    PlateOptions options;
-    if (root.contains("contactTolerance")) {
-      const json& tolerance = root["contactTolerance"];
-      if (!tolerance.is_number() || !(tolerance.get<double>() > 0) || tolerance.get<double>() > 10) {
-        fail(source, "contactTolerance", "expected a positive number of millimetres up to 10, found " + tolerance.dump());
-      }
-      options.contactTolerance = tolerance.get<double>();
-    }
-    document = documentFromPlates(parsePlates(root["plates"], source), options, source, document.name);
+    document = documentFromPlates(parsePlates(root["plates"], source), plateOptions, source, document.name);
   } else {
+    document.plateOptions = plateOptions;
     document.assembly.parts = parseParts(root, source);
     document.assembly.contacts = parseContacts(root, document.assembly, source);
-    if (document.kind == AssemblyKind::Plate && root.contains("plates")) {
-      // A plan or result: its contacts are given (the joints'); the plates are read for drawing
-      // and exports, and must be the parts.
-      document.plates = parsePlates(root["plates"], source);
-      validatePlates(document.plates, document.plateOptions, source);
-      for (const Plate& plate : document.plates) {
-        if (document.assembly.indexOfId(plate.id) < 0) fail(source, "plates", "plate " + std::to_string(plate.id) + " is not in 'parts'");
-      }
-      if (root.contains("fabricationPlates")) {
-        // The plates with the clearance cut into their mortises: what the cut files make.
-        document.fabricationPlates = parsePlates(root["fabricationPlates"], source);
-        validatePlates(document.fabricationPlates, document.plateOptions, source);
-        if (document.fabricationPlates.size() != document.plates.size()) {
-          fail(source, "fabricationPlates", "expected one per plate (" + std::to_string(document.plates.size()) + "), found " +
-                                                std::to_string(document.fabricationPlates.size()));
-        }
-      }
-    }
+    if (document.kind == AssemblyKind::Plate && root.contains("plates")) readPlatePlan(root, source, document);
   }
   json geometry = json::object();
-  for (const char* section : {"plates", "frame", "joints", "removal", "jointGeometry", "clearance", "fabricationPlates"}) {
+  for (const char* section : {"plates", "frame", "joints", "removal", "jointGeometry", "clearance", "fabricationPlates",
+                              "contactTolerance"}) {
     if (root.contains(section)) geometry[section] = root[section];
   }
   if (!geometry.empty()) document.geometryJson = geometry.dump();

@@ -106,8 +106,18 @@ std::string plateDesignResultToJson(const AssemblyDocument& input, const PlateDe
     const AssemblyDocument plan = parseJsonDocument(planText, "plan");
     CheckOptions options;
     options.method = CheckMethod::Both;
-    root["document"] = json::parse(planText);
-    root["verification"] = json::parse(checkReportToJson(plan, checkDocument(plan, options), -1));
+    const CheckReport report = checkDocument(plan, options);
+    if (checkPassed(report)) {
+      root["document"] = json::parse(planText);
+      root["verification"] = json::parse(checkReportToJson(plan, report, -1));
+    } else {  // never offered: what is returned is what `desia check` passes
+      root["status"] = statusName(PlateDesignStatus::NotFound);
+      root["message"] = "the plan found did not verify: " +
+                        (report.shapeRemoval && !report.shapeRemoval->failure.empty() ? report.shapeRemoval->failure
+                                                                                      : report.result.reason);
+      root["document"] = nullptr;
+      root["verification"] = nullptr;
+    }
   } else {
     root["document"] = nullptr;
     root["verification"] = nullptr;

@@ -185,6 +185,9 @@ std::string plateDesignToJson(const AssemblyDocument& input, const PlateDesignRe
   root["version"] = 1;
   root["kind"] = "plate";
   root["name"] = (input.name.empty() ? std::string("plate structure") : input.name) + " - joint plan";
+  if (input.plateOptions.contactTolerance != PlateOptions{}.contactTolerance) {
+    root["contactTolerance"] = input.plateOptions.contactTolerance;  // the tolerance it was verified with
+  }
   const bool cut = result.realization != JointRealization::Planned;  // cut or milled: the jointed plates
   json parts = json::array(), platesJson = json::array();
   std::vector<Plate> ordered, fabrication;

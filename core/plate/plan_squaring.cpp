@@ -2,7 +2,9 @@
 // Squaring a plan's ways out and its jointed plates' contact normals (plan_squaring.h).
 #include "plate/plan_squaring.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <utility>
 
 #include "analysis/vec3.h"
@@ -61,6 +63,8 @@ Vec3 squaredToNearlySquare(const Vec3& v, const std::vector<Vec3>& others) {
 
 Vec3 squaredToPlan(Vec3 normal, const std::vector<Vec3>& directions) { return squaredToNearlySquare(normal, directions); }
 
+namespace {
+
 // The other half of the same rounding: a way out is itself one of the design's vectors (a shared
 // edge, a mitre's normal, a tenon's axis), off by as much. The LIZARD's plate 33 leaves across a
 // mitre along a vector 6.3e-9 out of the plane of plate 1, whose face its tenon slides along: no
@@ -99,18 +103,23 @@ std::vector<Vec3> directionsSquaredToFaces(const Assembly& assembly, std::vector
   return directions;
 }
 
-// The contacts of jointed plates (part k = the k-th to leave) as an assembly for the tests, with
-// the plan's ways out and the contacts' normals squared to each other where rounding of the
-// design's coordinates left them 1e-6 or less off square.
+}  // namespace
+
+Assembly squaredPlanAssembly(Assembly assembly, std::vector<Vec3>* directions) {
+  *directions = directionsSquaredToFaces(assembly, *directions);
+  for (Contact& contact : assembly.contacts) contact.normal = squaredToPlan(contact.normal, *directions);
+  return assembly;
+}
+
+// The contacts of jointed plates (part k = the k-th to leave) as an assembly for the tests, the
+// plan's ways out and the contact normals squared to each other (squaredPlanAssembly).
 Assembly jointedAssembly(const std::vector<PlateContact>& contacts, const std::vector<int>& position,
                          std::vector<Part> parts, std::vector<Vec3>* directions) {
   Assembly assembly;
   assembly.parts = std::move(parts);
   for (const PlateContact& contact : contacts)
     assembly.contacts.push_back({position[contact.a], position[contact.b], contact.normal, contact.area});
-  *directions = directionsSquaredToFaces(assembly, *directions);
-  for (Contact& contact : assembly.contacts) contact.normal = squaredToPlan(contact.normal, *directions);
-  return assembly;
+  return squaredPlanAssembly(std::move(assembly), directions);
 }
 
 }  // namespace desia

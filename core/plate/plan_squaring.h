@@ -17,11 +17,13 @@
 
 namespace desia {
 
-// The ways out (directions[k]: part k, the k-th to leave), each made exactly square to the faces
-// of its part against parts still in place (the contacts of `assembly` between part k and parts
-// after it) that are within 1e-6 of square to it, when that turns it by less than 1e-6. A vector
-// several parts share is squared once, to the faces of all of them, and stays one vector.
-std::vector<Vec3> directionsSquaredToFaces(const Assembly& assembly, std::vector<Vec3> directions);
+// The plan's ways out (directions[k]: part k, the k-th to leave) and the assembly's contact
+// normals squared to each other: each way out to the faces of its part against parts still in
+// place that it is within 1e-6 of square to (a way out several parts share, once, to the faces of
+// all of them), then each normal to every way out it is within 1e-6 of square to. The result
+// depends on the order of the parts, so the designer and `desia check` both give it the plates in
+// removal order (verifyJointedPlates).
+Assembly squaredPlanAssembly(Assembly assembly, std::vector<Vec3>* directions);
 
 // The unit vector `v` made exactly square to every one of `others` it is within 1e-6 of square to
 // (those furthest apart first; `v` itself when they span all of space).
@@ -31,7 +33,7 @@ Vec3 squaredToNearlySquare(const Vec3& v, const std::vector<Vec3>& others);
 Vec3 squaredToPlan(Vec3 normal, const std::vector<Vec3>& directions);
 
 // The contacts of jointed plates (part k = the k-th to leave: position[plate]) as an assembly for
-// the tests, the ways out squared to the faces and then the normals to the ways out.
+// the tests, its normals and the ways out squared to each other (squaredPlanAssembly).
 Assembly jointedAssembly(const std::vector<PlateContact>& contacts, const std::vector<int>& position,
                          std::vector<Part> parts, std::vector<Vec3>* directions);
 

@@ -33,6 +33,7 @@
 #include "analysis/vec3.h"
 #include "model/restarts.h"
 #include "plate/plan_squaring.h"
+#include "plate/plate_verification.h"
 #include "desia/cut_points.h"
 #include "desia/error.h"
 #include "desia/interlocking.h"
@@ -355,31 +356,12 @@ Assembly modelAssembly(const PlateGraph& graph, const std::vector<Step>& steps, 
   return assembly;
 }
 
-// Why a complete plan fails, or "" when it passes: both interlocking tests with the key (part 0)
-// as the only movable part (the DBG test is only necessary on non-orthogonal joints, so the LP
-// test has the last word), and every plate free to leave the ones after it along its direction.
-std::string planFailure(const Assembly& model, const std::vector<Vec3>& directions) {
-  const std::vector<BaseDirection> bases = computeBaseDirections(model);
-  const InterlockingResult byGraphs = testInterlockingByGraphs(model, bases);
-  if (byGraphs.verdict != Verdict::Interlocking || byGraphs.key != 0) return "dbg: " + byGraphs.reason;
-  const InterlockingResult byInequalities = testInterlockingByInequalities(model, bases);
-  if (byInequalities.verdict != Verdict::Interlocking || byInequalities.key != 0) return "lp: " + byInequalities.reason;
-  std::vector<bool> present(model.partCount(), true);
-  for (size_t k = 0; k < directions.size(); ++k) {
-    if (!isPartFreeAlong(model, &present, static_cast<int>(k), directions[k])) {
-      return "plate " + std::to_string(model.parts[k].id) + " cannot leave along its direction";
-    }
-    present[k] = false;
-  }
-  return "";
-}
-
 // A complete plan made real: its joints cut into the plates (no clearance: the geometry the tests
-// judge), their contacts computed from that geometry with part k = order[k].
+// judge), in input order, and its verification on them (in removal order, as `desia check` reads
+// the result: verifyJointedPlates).
 struct JointedPlan {
   std::vector<Plate> plates;
-  Assembly assembly;
-  std::vector<Vec3> directions;  // the plan's ways out, squared to the faces they slide along
+  PlateRemovalVerification verification;
 };
 
 // The plates with the joints cut into them (and their milled solids attached).
@@ -410,52 +392,24 @@ std::vector<Plate> jointedPlates(const std::vector<Plate>& plates, const PlateGr
   return cutTenonJoints(plates, sites, cut, slots, dovetails, mitreTenons, faceTenons, mitreSlides);
 }
 
+// The plates with the plan's joints cut, validated as any plate is.
+std::vector<Plate> cutPlates(const std::vector<Plate>& plates, const PlateGraph& graph,
+                             const std::vector<PlateJoint>& joints, const PlateOptions& geometry, double clearance,
+                             const JointCutOptions& options) {
+  std::vector<Plate> cut = jointedPlates(plates, graph, joints, clearance, options);
+  validatePlates(cut, geometry, "the jointed plates");
+  return cut;
+}
+
 JointedPlan cutPlan(const std::vector<Plate>& plates, const PlateGraph& graph, const std::vector<PlateJoint>& joints,
                     const std::vector<int>& order, const std::vector<Vec3>& directions, const PlateOptions& geometry,
-                    double clearance, const JointCutOptions& options) {
+                    const JointCutOptions& options) {
   JointedPlan plan;
-  plan.plates = jointedPlates(plates, graph, joints, clearance, options);
-  validatePlates(plan.plates, geometry, "the jointed plates");
-  std::vector<int> position(plates.size(), 0);
-  std::vector<Part> parts;
-  for (size_t k = 0; k < order.size(); ++k) {
-    position[order[k]] = static_cast<int>(k);
-    parts.push_back({plates[order[k]].id, plates[order[k]].name});
-  }
-  plan.directions = directions;
-  plan.assembly = jointedAssembly(computePlateContacts(plan.plates, geometry), position, std::move(parts), &plan.directions);
+  plan.plates = cutPlates(plates, graph, joints, geometry, 0, options);
+  std::vector<Plate> inRemovalOrder;
+  for (int plate : order) inRemovalOrder.push_back(plan.plates[plate]);
+  plan.verification = verifyJointedPlates(inRemovalOrder, directions, geometry);
   return plan;
-}
-
-// The first plate that, swept along its direction, runs into a plate still in place, as a
-// sentence, or "" (plates[order[k]] leaves k-th along directions[k]). `hitPosition`, when given,
-// gets the position in `order` of the plate run into (-1 when none is).
-std::string sweepFailure(const std::vector<Plate>& plates, const std::vector<int>& order,
-                         const std::vector<Vec3>& directions, double tolerance, int* hitPosition = nullptr) {
-  if (hitPosition) *hitPosition = -1;
-  std::vector<TriangleMesh> meshes;
-  for (const Plate& plate : plates) meshes.push_back(plateMesh(plate));
-  for (size_t k = 0; k < directions.size(); ++k) {
-    for (size_t j = k + 1; j < order.size(); ++j) {
-      if (meshCollidesAlong(meshes[order[k]], meshes[order[j]], directions[k], tolerance)) {
-        if (hitPosition) *hitPosition = static_cast<int>(j);
-        return "plate " + std::to_string(plates[order[k]].id) + " runs into plate " +
-               std::to_string(plates[order[j]].id) + " when it leaves";
-      }
-    }
-  }
-  return "";
-}
-
-// Why the jointed plates fail, or "": both interlocking tests on their computed contacts, and
-// each plate swept along its direction past every plate still in place (`hitPosition` as for
-// sweepFailure).
-std::string jointedFailure(const JointedPlan& plan, const std::vector<int>& order, double tolerance,
-                           int* hitPosition = nullptr) {
-  if (hitPosition) *hitPosition = -1;
-  const std::string failure = planFailure(plan.assembly, plan.directions);
-  if (!failure.empty()) return failure;
-  return sweepFailure(plan.plates, order, plan.directions, tolerance, hitPosition);
 }
 
 class PlateJointPlanner {
@@ -497,7 +451,7 @@ class PlateJointPlanner {
   bool runsIntoJointsSoFar(const std::vector<Step>& path) const;
   const Plate& jointedPlate(int plate, const std::vector<PlateJoint>& joints) const;
   bool cutAndVerify(const std::vector<PlateJoint>& joints, const std::vector<int>& order,
-                    std::vector<Vec3>* directions, PlateDesignResult* result);
+                    const std::vector<Vec3>& directions, PlateDesignResult* result);
   Step makeStep(const std::vector<Step>& steps, int plate, const Vec3& d) const;
   std::vector<CutFootprint> cutsOf(const std::vector<PlateJoint>& joints) const;
   bool cutsCollide(const std::vector<Step>& steps, const std::vector<CutFootprint>& cuts) const;
@@ -944,20 +898,18 @@ PlateDesignResult PlateJointPlanner::run(const std::vector<Step>& prefix) {
 
 // Cuts the joints into the plates and verifies the plan there; keeps the jointed plates on success.
 bool PlateJointPlanner::cutAndVerify(const std::vector<PlateJoint>& joints, const std::vector<int>& order,
-                                     std::vector<Vec3>* directions, PlateDesignResult* result) {
+                                     const std::vector<Vec3>& directions, PlateDesignResult* result) {
   try {
-    JointedPlan jointed = cutPlan(plates_, graph_, joints, order, *directions, options_.geometry, 0, options_.joints);
-    lastRejection_ = jointedFailure(jointed, order, options_.geometry.contactTolerance, &lastDoomedDepth_);
+    JointedPlan jointed = cutPlan(plates_, graph_, joints, order, directions, options_.geometry, options_.joints);
+    lastRejection_ = jointed.verification.failure;
+    lastDoomedDepth_ = jointed.verification.hitPosition;
     if (!lastRejection_.empty()) return false;
-    *directions = jointed.directions;  // squared to the faces they slide along
     result->jointedPlates = std::move(jointed.plates);
-    result->jointAssembly = std::move(jointed.assembly);
+    result->jointAssembly = std::move(jointed.verification.assembly);
     result->clearance = options_.joints.clearance;
     result->fabricationPlates =
         options_.joints.clearance > 0
-            ? cutPlan(plates_, graph_, joints, order, *directions, options_.geometry, options_.joints.clearance,
-                      options_.joints)
-                  .plates
+            ? cutPlates(plates_, graph_, joints, options_.geometry, options_.joints.clearance, options_.joints)
             : result->jointedPlates;
     return true;
   } catch (const Error& error) {  // cuts that split a plate or run into each other: not this plan
@@ -985,11 +937,15 @@ bool PlateJointPlanner::acceptComplete(const std::vector<Step>& path, PlateDesig
   lastRejection_ = planFailure(model, directions);
   if (!lastRejection_.empty()) return false;
   if (options_.realization == JointRealization::Planned) {
+    std::vector<Plate> inRemovalOrder;
+    for (int plate : order) inRemovalOrder.push_back(plates_[plate]);
+    lastRejection_ = verifyPlannedPlates(model, inRemovalOrder, directions, options_.geometry).failure;
+    if (!lastRejection_.empty()) return false;
     result->jointAssembly = model;
-  } else if (!cutAndVerify(joints, order, &directions, result)) {
+  } else if (!cutAndVerify(joints, order, directions, result)) {
     return false;
   }
-  // A joint leaves along its mover's way out as verified (squared to the faces it slides along).
+  // A joint leaves along its mover's way out.
   for (PlateJoint& joint : joints)
     joint.direction = directions[static_cast<size_t>(std::find(order.begin(), order.end(), joint.mover) - order.begin())];
   result->realization = options_.realization;
@@ -998,6 +954,19 @@ bool PlateJointPlanner::acceptComplete(const std::vector<Step>& path, PlateDesig
   result->joints = joints;
   result->status = PlateDesignStatus::Success;
   return true;
+}
+
+// A successful result verified once more, as `desia check` will read it (the plates in removal
+// order): a failure here is a bug, never the user's.
+void requireVerified(const std::vector<Plate>& plates, const PlateDesignResult& result, const PlateOptions& geometry) {
+  if (result.status != PlateDesignStatus::Success) return;
+  std::vector<Plate> inRemovalOrder;
+  const bool cut = result.realization != JointRealization::Planned;
+  for (int plate : result.order) inRemovalOrder.push_back(cut ? result.jointedPlates[plate] : plates[plate]);
+  const std::string failure =
+      cut ? verifyJointedPlates(inRemovalOrder, result.directions, geometry).failure
+          : verifyPlannedPlates(result.jointAssembly, inRemovalOrder, result.directions, geometry).failure;
+  if (!failure.empty()) throw Error(ErrorCode::Internal, "the plan did not verify: " + failure);
 }
 
 }  // namespace
@@ -1117,10 +1086,7 @@ PlateDesignResult PlateDesignSession::finish(const PlateDesignLimits& limits) {
   // and the session's own children stay as they are.
   PlateJointPlanner planner(state.plates, state.contacts, options);
   PlateDesignResult result = planner.run(state.path);
-  if (result.status == PlateDesignStatus::Success) {
-    const std::string failure = planFailure(result.jointAssembly, result.directions);
-    if (!failure.empty()) throw Error(ErrorCode::Internal, "the jointed plates did not verify: " + failure);
-  }
+  requireVerified(state.plates, result, options.geometry);
   return result;
 }
 
@@ -1168,30 +1134,9 @@ PlateDesignResult designPlateJoints(const std::vector<Plate>& plates, const std:
   if (options.candidates < 1) throwBadInput("", "candidates must be at least 1");
   PlateJointPlanner planner(plates, contacts, options);
   PlateDesignResult result = planner.run();
-  if (result.status == PlateDesignStatus::Success) {
-    // The search accepts only what passes; checking again guards the result, never a guess.
-    const std::string failure = planFailure(result.jointAssembly, result.directions);
-    if (!failure.empty()) throw Error(ErrorCode::Internal, "the jointed plates did not verify: " + failure);
-  }
+  // The search accepts only what passes; checking again guards the result, never a guess.
+  requireVerified(plates, result, options.geometry);
   return result;
-}
-
-std::string jointedPlatesFailure(const std::vector<Plate>& plates, const std::vector<Vec3>& directions,
-                                 const PlateOptions& geometry) {
-  if (plates.size() < 2 || directions.size() + 1 != plates.size()) {
-    return "every plate but the last needs a removal direction";
-  }
-  std::vector<Part> parts;
-  std::vector<int> order(plates.size());
-  for (size_t k = 0; k < order.size(); ++k) {
-    order[k] = static_cast<int>(k);
-    parts.push_back({plates[k].id, plates[k].name});
-  }
-  std::vector<Vec3> squared = directions;
-  const Assembly assembly = jointedAssembly(computePlateContacts(plates, geometry), order, std::move(parts), &squared);
-  const std::string failure = planFailure(assembly, squared);
-  if (!failure.empty()) return failure;
-  return sweepFailure(plates, order, squared, geometry.contactTolerance);
 }
 
 }  // namespace desia

@@ -48,7 +48,7 @@ PlateDesignResult designMilled(const std::vector<Plate>& plates, uint64_t seed =
   return designPlateJoints(plates, computePlateContacts(plates, {}), options);
 }
 
-// A result's jointed plates in removal order (what jointedPlatesFailure checks).
+// A result's jointed plates in removal order (what verifyJointedPlates checks).
 std::vector<Plate> jointedInRemovalOrder(const PlateDesignResult& result) {
   std::vector<Plate> inOrder;
   for (int index : result.order) inOrder.push_back(result.jointedPlates[static_cast<size_t>(index)]);
@@ -705,7 +705,7 @@ TEST(PlateDovetails, TheBookshelfDesignsWithMilledJointsOnlyAndReadsBack) {
   // Every jointed plate closed, the result verified again in removal order from its own plates.
   const std::vector<Plate> inOrder = jointedInRemovalOrder(result);
   for (const Plate& plate : inOrder) EXPECT_NO_THROW(checkClosedMesh(plateMesh(plate), plate.name));
-  EXPECT_EQ(jointedPlatesFailure(inOrder, result.directions), "");
+  EXPECT_EQ(verifyJointedPlates(inOrder, result.directions).failure, "");
   // Clearance narrows the tongues only: the made plates hold less wood than the verified ones.
   EXPECT_LT(totalVolume(result.fabricationPlates), totalVolume(result.jointedPlates));
   // The document keeps the attached solids: read back, the same plates.
@@ -727,7 +727,7 @@ TEST(PlateDovetails, TheBookshelfDesignsWithMilledJointsOnlyAndReadsBack) {
     }();
     if (first != JointType::Dovetail) continue;
     reversed[k] = negated(reversed[k]);
-    EXPECT_NE(jointedPlatesFailure(inOrder, reversed), "") << "plate " << inOrder[k].id;
+    EXPECT_NE(verifyJointedPlates(inOrder, reversed).failure, "") << "plate " << inOrder[k].id;
     reversed[k] = result.directions[k];
   }
 }
@@ -750,7 +750,7 @@ TEST(PlateDovetails, TheRepairedChairDesignsWithMilledJointsThroughRunOnHousings
     EXPECT_GT(runOn, 0) << "seed " << seed;
     const std::vector<Plate> inOrder = jointedInRemovalOrder(result);
     for (const Plate& plate : inOrder) EXPECT_NO_THROW(checkClosedMesh(plateMesh(plate), plate.name));
-    EXPECT_EQ(jointedPlatesFailure(inOrder, result.directions), "") << "seed " << seed;
+    EXPECT_EQ(verifyJointedPlates(inOrder, result.directions).failure, "") << "seed " << seed;
   }
 }
 
@@ -772,9 +772,9 @@ TEST(PlateDovetails, WaysOutAFewNanoradiansOffTheFacesTheySlideAlongAreSquaredTo
     }
     return directions;
   };
-  EXPECT_EQ(jointedPlatesFailure(inOrder, tilted(3e-9)), "");
-  EXPECT_EQ(jointedPlatesFailure(inOrder, tilted(-3e-9)), "");
-  EXPECT_NE(jointedPlatesFailure(inOrder, tilted(1e-3)), "");
+  EXPECT_EQ(verifyJointedPlates(inOrder, tilted(3e-9)).failure, "");
+  EXPECT_EQ(verifyJointedPlates(inOrder, tilted(-3e-9)).failure, "");
+  EXPECT_NE(verifyJointedPlates(inOrder, tilted(1e-3)).failure, "");
 }
 
 TEST(PlateDovetails, MilledIsAJointRealization) {
@@ -1014,11 +1014,11 @@ TEST(PlateMitreTenons, MitredBoxAndDodecahedronDesignWithMilledJointsAndVerify) 
       EXPECT_TRUE(joint.type == JointType::MitreTenon || joint.type == JointType::MitreSlide) << name;
     const std::vector<Plate> inOrder = jointedInRemovalOrder(result);
     for (const Plate& plate : inOrder) EXPECT_NO_THROW(checkClosedMesh(plateMesh(plate), name));
-    EXPECT_EQ(jointedPlatesFailure(inOrder, result.directions), "") << name;
+    EXPECT_EQ(verifyJointedPlates(inOrder, result.directions).failure, "") << name;
     // Reversing the key's way out runs it into its neighbours' pockets.
     std::vector<Vec3> reversed = result.directions;
     reversed[0] = negated(reversed[0]);
-    EXPECT_NE(jointedPlatesFailure(inOrder, reversed), "") << name;
+    EXPECT_NE(verifyJointedPlates(inOrder, reversed).failure, "") << name;
   }
 }
 
@@ -1084,7 +1084,7 @@ TEST(PlateJoints, CabinetDesignsWithMilledJointsOnExactFaces) {
   }
   const std::vector<Plate> inOrder = jointedInRemovalOrder(result);
   for (const Plate& plate : inOrder) EXPECT_NO_THROW(checkClosedMesh(plateMesh(plate), "cabinet"));
-  EXPECT_EQ(jointedPlatesFailure(inOrder, result.directions), "");
+  EXPECT_EQ(verifyJointedPlates(inOrder, result.directions).failure, "");
   for (CheckMethod method : {CheckMethod::Graphs, CheckMethod::Inequalities}) {
     AssemblyDocument jointed;
     jointed.kind = AssemblyKind::Plate;
@@ -1136,12 +1136,13 @@ TEST(PlateSessionFinish, FinishesBelowTheNodeVerifiedAndReproducible) {
     EXPECT_EQ(first.directions[k], chosen[k].direction);
   }
   EXPECT_EQ(first.jointedPlates.size(), 6u) << "the plan was cut and verified";
-  EXPECT_EQ(jointedPlatesFailure([&] {
+  EXPECT_EQ(verifyJointedPlates([&] {
               std::vector<Plate> ordered;
               for (int plate : first.order) ordered.push_back(first.jointedPlates[plate]);
               return ordered;
             }(),
-                                 first.directions, {}),
+                                first.directions, {})
+                .failure,
             "");
   EXPECT_EQ(session.steps().size(), 2u) << "the session stays where it is";
   EXPECT_FALSE(session.complete());
@@ -1241,7 +1242,7 @@ TEST(PlateMitreTenons, TheLizardDesignsWithMilledJointsVerifiedOnItsPlates) {
   EXPECT_GT(byType[JointType::MitreTenon], 0);
   EXPECT_GT(byType[JointType::MitreSlide], 0);
   const std::vector<Plate> inOrder = jointedInRemovalOrder(result);
-  EXPECT_EQ(jointedPlatesFailure(inOrder, result.directions), "");
+  EXPECT_EQ(verifyJointedPlates(inOrder, result.directions).failure, "");
   for (const Plate& plate : inOrder) EXPECT_NO_THROW(checkClosedMesh(plateMesh(plate), plate.name));
 }
 

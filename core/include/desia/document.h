@@ -3,6 +3,7 @@
 // frame assemblies, or bare contact graphs, optionally carrying analysis results.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,15 @@ namespace desia {
 
 enum class AssemblyKind { Voxel, Plate, Frame, Contacts };
 const char* assemblyKindName(AssemblyKind kind);
+
+// A plate design result's plan (docs/json-schema.md "Plate results"), read by part id with the
+// document: `removal` names every part once, the key first; the last part stays.
+struct PlateResultPlan {
+  std::string jointGeometry;      // "cut", "milled" (jointed plates) or "planned" (nothing cut)
+  std::vector<int> removalOrder;  // part ids in the order they leave
+  std::vector<Vec3> directions;   // unit vectors: removalOrder[k] leaves along directions[k]
+  double clearance = 0;           // mm of play in `fabricationPlates`
+};
 
 struct AssemblyDocument {
   AssemblyKind kind = AssemblyKind::Voxel;
@@ -29,6 +39,7 @@ struct AssemblyDocument {
   std::vector<PlateContact> plateContacts;
   PlateOptions plateOptions;          // the contact tolerance the plates were read with
   bool contactsFromGeometry = false;  // the contacts were computed from `plates` (a design, not a plan)
+  std::optional<PlateResultPlan> plateResult;  // kind == Plate with `removal`: a design result
 };
 
 // Reads .puz or JSON text (detected from the content). `source` names the input in messages.

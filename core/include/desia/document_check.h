@@ -10,12 +10,13 @@
 namespace desia {
 
 // checkAssembly, plus for results that carry a removal plan:
-// - plates whose joints were cut: the contacts recomputed from the jointed plates pass the DBG
-//   and LP tests with part 1 as the only movable part, and each plate swept along its direction
-//   misses every plate after it (jointedPlatesFailure);
+// - plate results (read by part id, whatever the file's order): the verification the designer
+//   ran before writing the result (verifyJointedPlates for cut and milled joints, verifyPlannedPlates
+//   for a plan with nothing cut), the verdict reported on the contacts it judged, and the
+//   fabrication plates compared with the verified ones (fabricationPlatesFailure);
 // - frames with designed joints: each beam, body and joint voxels, swept along its axis misses
 //   every beam still in place.
-// The plan is read from the document's `removal`; a result with a malformed plan is BadInput.
+// The plan is read with the document (PlateResultPlan); a malformed plan is BadInput there.
 CheckReport checkDocument(const AssemblyDocument& document, const CheckOptions& options = {});
 
 // True when the report passes on the contacts and, where it ran, on the shapes.

@@ -172,11 +172,36 @@ const char* jointRealizationName(JointRealization realization);
 PlateDesignResult designPlateJoints(const std::vector<Plate>& plates, const std::vector<PlateContact>& contacts,
                                     const PlateDesignOptions& options = {});
 
-// Why jointed plates (a design result's, in removal order: plates[0] is the key) fail, or "":
-// their contacts, computed from the geometry, must be interlocking with the key as the only
-// movable part by both the DBG and the LP test, and each plate, swept along directions[k], must
-// miss every plate after it. The same verification the designer applies, for `desia check`.
-std::string jointedPlatesFailure(const std::vector<Plate>& plates, const std::vector<Vec3>& directions,
-                                 const PlateOptions& geometry = {});
+// What a plan's verification found: "" or why it fails, and what it judged.
+struct PlateRemovalVerification {
+  std::string failure;
+  int hitPosition = -1;          // when a plate ran into another: that one's place in the order
+  Assembly assembly;             // the contacts judged, part k = the k-th to leave (normals squared)
+  std::vector<Vec3> directions;  // the ways out judged (squared to the contacts)
+};
+
+// One verification for the designer (before it reports a plan) and `desia check` (of a file)
+// alike. Jointed plates (a cut or milled result), in removal order, plates[0] the key: their
+// contacts computed from the geometry, normals and ways out squared to each other (plan_squaring.h),
+// interlocking with the key as the only movable part by both the DBG and the LP test, each plate
+// free along directions[k] of the plates after it, and each plate, swept along its direction,
+// missing every plate after it. The result depends on the plates and their removal order, not on
+// how the document lists them.
+PlateRemovalVerification verifyJointedPlates(const std::vector<Plate>& plates, const std::vector<Vec3>& directions,
+                                             const PlateOptions& geometry = {});
+
+// A planned result (nothing cut): the same tests on the joint model's contacts (`model`, part k =
+// plates[k] = the k-th to leave), and the plates as they are swept along their directions, pairs
+// that cross excepted (their slots are not cut).
+PlateRemovalVerification verifyPlannedPlates(const Assembly& model, const std::vector<Plate>& plates,
+                                             const std::vector<Vec3>& directions, const PlateOptions& geometry = {});
+
+// Why a result's `fabricationPlates` (what the cut files and meshes make) are not its verified
+// `plates` with play cut into their joints, or "": plates matched by id, each fabrication plate's
+// faces in its plate's planes, its solid within its plate's (only wood removed) and its plate's
+// within `clearance` of it; attached solids the same in number, each within the clearance of its
+// own.
+std::string fabricationPlatesFailure(const std::vector<Plate>& plates, const std::vector<Plate>& fabrication,
+                                     double clearance, const PlateOptions& geometry = {});
 
 }  // namespace desia
