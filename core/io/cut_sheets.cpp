@@ -66,6 +66,44 @@ ClipperLib::Paths withKerf(const ClipperLib::Paths& region, double kerf) {
   return grown;
 }
 
+std::string mm(double value);
+
+// The kerf offset must not erase a cut: an opening of the blank (a mortise, a slot, a notch)
+// narrower than the kerf closes when the blank is grown by half the kerf and shrunk back (a
+// morphological closing). Refused, with the opening's width (about: its area over half its
+// perimeter, exact for a long slot) and the kerf named.
+void requireOpeningsWiderThanKerf(const Plate& plate, const ClipperLib::Paths& blank, double kerf,
+                                  const std::string& source) {
+  if (kerf <= 0) return;
+  ClipperLib::ClipperOffset shrink;
+  shrink.AddPaths(withKerf(blank, kerf), ClipperLib::jtMiter, ClipperLib::etClosedPolygon);
+  ClipperLib::Paths closed;
+  shrink.Execute(closed, -kerf / 2 * kScale);
+  ClipperLib::Clipper clipper;
+  clipper.AddPaths(closed, ClipperLib::ptSubject, true);
+  clipper.AddPaths(blank, ClipperLib::ptClip, true);
+  ClipperLib::Paths filled;
+  clipper.Execute(ClipperLib::ctDifference, filled, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+  double widest = 0, narrowest = HUGE_VAL;
+  for (const ClipperLib::Path& piece : filled) {
+    const double area = std::abs(ClipperLib::Area(piece)) / (kScale * kScale);
+    if (area <= 0.01) continue;  // mm^2: Clipper's rounding at a corner, not an opening
+    double perimeter = 0;
+    for (size_t k = 0; k < piece.size(); ++k) {
+      const ClipperLib::IntPoint& a = piece[k];
+      const ClipperLib::IntPoint& b = piece[(k + 1) % piece.size()];
+      perimeter += std::hypot(static_cast<double>(b.X - a.X), static_cast<double>(b.Y - a.Y)) / kScale;
+    }
+    narrowest = std::min(narrowest, 2 * area / perimeter);
+    widest = std::max(widest, area);
+  }
+  if (widest > 0) {
+    throwBadInput(source, "plate " + std::to_string(plate.id) + ": an opening about " + mm(narrowest) +
+                          " mm wide (a mortise, slot or notch) is narrower than the kerf (" + mm(kerf) +
+                          " mm): the cut would erase it; give a smaller kerf");
+  }
+}
+
 bool insideRings(const std::vector<Ring>& rings, const Point2& q) {
   bool inside = false;
   for (const Ring& ring : rings) {
@@ -197,12 +235,14 @@ std::vector<Mark> matingMarks(const std::vector<Plate>& plates, size_t index, co
 }
 
 FlatPlate flatten(const std::vector<Plate>& plates, size_t index, const std::vector<PlateContact>& contacts,
-                  double kerf) {
+                  double kerf, const std::string& source) {
   const Plate& plate = plates[index];
   const PlaneFrame frame(plate.bottom[0][0], plateThicknessAxis(plate));
   FlatPlate flat;
   flat.id = plate.id;
-  for (const ClipperLib::Path& path : withKerf(blankOf(plate, frame), kerf)) {
+  const ClipperLib::Paths blank = blankOf(plate, frame);
+  requireOpeningsWiderThanKerf(plate, blank, kerf, source);
+  for (const ClipperLib::Path& path : withKerf(blank, kerf)) {
     Ring ring;
     for (const ClipperLib::IntPoint& p : path) ring.push_back(toPoint(p));
     (ClipperLib::Orientation(path) ? flat.outlines : flat.holes).push_back(ring);
@@ -510,7 +550,7 @@ std::vector<std::string> plateCutSheets(const AssemblyDocument& document, CutFil
                                                  ? document.plateContacts
                                                  : computePlateContacts(document.plates, document.plateOptions);
   std::vector<FlatPlate> flats;
-  for (size_t k = 0; k < plates.size(); ++k) flats.push_back(flatten(plates, k, contacts, options.kerf));
+  for (size_t k = 0; k < plates.size(); ++k) flats.push_back(flatten(plates, k, contacts, options.kerf, options.source));
   std::vector<Sheet> sheets;
   const std::vector<Placement> placements = pack(flats, options, &sheets);
   std::vector<std::string> files;

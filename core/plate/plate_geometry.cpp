@@ -36,6 +36,15 @@ std::string millimetres(double value) {
   return out.str();
 }
 
+// Enough digits to tell apart values that differ by more than a micrometre.
+std::string preciseMillimetres(double value) {
+  std::ostringstream out;
+  out.setf(std::ios::fixed);
+  out.precision(std::abs(value) < 1 ? 6 : 4);
+  out << value << " mm";
+  return out.str();
+}
+
 // One planar face of a plate solid: its loops (outline and holes, or one side quad) and its
 // outward unit normal.
 struct SolidFace {
@@ -204,6 +213,68 @@ void requireSimpleLoop(const Plate& plate, const Loop& loop, size_t loopIndex, c
   }
 }
 
+double clipperArea(const ClipperLib::Paths& paths) {
+  double area = 0;
+  for (const ClipperLib::Path& path : paths) area += ClipperLib::Area(path);
+  return std::abs(area) / (kClipperScale * kClipperScale);
+}
+
+ClipperLib::Paths grownBy(const ClipperLib::Paths& paths, double millimetres) {
+  ClipperLib::ClipperOffset offset;
+  offset.AddPaths(paths, ClipperLib::jtMiter, ClipperLib::etClosedPolygon);
+  ClipperLib::Paths grown;
+  offset.Execute(grown, millimetres * kClipperScale);
+  return grown;
+}
+
+ClipperLib::Paths clipped(const ClipperLib::Paths& a, const ClipperLib::Paths& b, ClipperLib::ClipType operation) {
+  ClipperLib::Clipper clipper;
+  clipper.AddPaths(a, ClipperLib::ptSubject, true);
+  clipper.AddPaths(b, ClipperLib::ptClip, true);
+  ClipperLib::Paths result;
+  clipper.Execute(operation, result, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+  return result;
+}
+
+// A plate's holes (loops 1.. of its first face) must each have an area, lie inside its outline
+// without touching it, and neither overlap nor touch each other (within the tolerance): else the
+// cut files would make an extra piece, a tab or a loose island, and the meshes would not close.
+// Clipper's booleans keep this O(n log n) in the vertices.
+void requireHolesInside(const Plate& plate, double tolerance, const std::string& source) {
+  if (plate.bottom.size() < 2) return;
+  const PlaneFrame frame(centroidOf(plate.bottom[0]), loopNormal(plate.bottom[0]));
+  const ClipperLib::Paths outline{clipperPath(plate.bottom[0], frame)};
+  const double sliver = 1e-6;  // mm^2
+  std::vector<ClipperLib::Paths> holes;
+  double separateArea = 0;
+  for (size_t h = 1; h < plate.bottom.size(); ++h) {
+    const std::string hole = plateName(plate) + ": hole " + std::to_string(h);
+    ClipperLib::Paths path{clipperPath(plate.bottom[h], frame)};
+    if (clipperArea(path) <= tolerance * tolerance) throwBadInput(source, hole + " has no area");
+    const ClipperLib::Paths grown = grownBy(path, tolerance / 2);
+    if (clipperArea(clipped(grown, outline, ClipperLib::ctDifference)) > sliver) {
+      throwBadInput(source, hole + " is not inside the plate's outline (it crosses or touches it, or lies outside)");
+    }
+    separateArea += clipperArea(grown);
+    holes.push_back(grown);
+  }
+  ClipperLib::Paths all;
+  for (const ClipperLib::Paths& hole : holes) all.insert(all.end(), hole.begin(), hole.end());
+  ClipperLib::Clipper clipper;
+  clipper.AddPaths(all, ClipperLib::ptSubject, true);
+  ClipperLib::Paths united;
+  clipper.Execute(ClipperLib::ctUnion, united, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+  if (clipperArea(united) + sliver * static_cast<double>(holes.size()) >= separateArea) return;
+  for (size_t a = 0; a < holes.size(); ++a) {  // only when some overlap: name the first pair
+    for (size_t b = a + 1; b < holes.size(); ++b) {
+      if (clipperArea(clipped(holes[a], holes[b], ClipperLib::ctIntersection)) > sliver) {
+        throwBadInput(source, plateName(plate) + ": holes " + std::to_string(a + 1) + " and " + std::to_string(b + 1) +
+                                  " overlap or touch");
+      }
+    }
+  }
+}
+
 void validatePlate(const Plate& plate, double tolerance, const std::string& source) {
   if (plate.bottom.empty() || plate.bottom.size() != plate.top.size()) {
     throwBadInput(source, plateName(plate) + ": its two faces have different numbers of loops");
@@ -218,6 +289,7 @@ void validatePlate(const Plate& plate, double tolerance, const std::string& sour
   requirePlanar(plate, plate.bottom, "first", tolerance, source);
   requirePlanar(plate, plate.top, "second", tolerance, source);
   for (size_t l = 0; l < plate.bottom.size(); ++l) requireSimpleLoop(plate, plate.bottom[l], l, source);
+  requireHolesInside(plate, tolerance, source);
   // Parallel faces a positive distance apart: every vertex of the second face at the same height
   // above the first face's plane.
   const PlaneFrame bottom(centroidOf(plate.bottom[0]), loopNormal(plate.bottom[0]));
@@ -230,10 +302,15 @@ void validatePlate(const Plate& plate, double tolerance, const std::string& sour
     }
   }
   if (hi - lo > tolerance) {
-    throwBadInput(source, plateName(plate) + ": its faces are not parallel: the second face is " + millimetres(lo) +
-                              " to " + millimetres(hi) + " from the first");
+    throwBadInput(source, plateName(plate) + ": its faces are not parallel: the second face's vertices are " +
+                              preciseMillimetres(lo) + " to " + preciseMillimetres(hi) +
+                              " from the first face's plane, more than the contact tolerance (" +
+                              preciseMillimetres(tolerance) + ") apart");
   }
-  if (std::abs(lo) <= tolerance) throwBadInput(source, plateName(plate) + ": its thickness is zero");
+  if (std::abs(lo) <= tolerance) {
+    throwBadInput(source, plateName(plate) + ": its thickness (" + preciseMillimetres(std::abs(lo)) +
+                              ") is not more than the contact tolerance (" + preciseMillimetres(tolerance) + ")");
+  }
   // Every side face (one per edge) must be planar: the faces match vertex for vertex.
   const Vec3 axis = thicknessAxis(plate);
   for (size_t l = 0; l < plate.bottom.size(); ++l) {

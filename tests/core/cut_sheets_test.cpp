@@ -165,3 +165,33 @@ TEST(CutSheets, DxfInMillimetresWithOneLayerPerKindOfLine) {
 
 }  // namespace
 }  // namespace desia
+
+namespace desia {
+namespace {
+
+// A kerf wider than an opening would erase it (the cut closes it): refused, naming the plate,
+// about how wide the opening is and the kerf. Before, every such mortise was silently dropped.
+TEST(CutSheets, AKerfWiderThanAnOpeningIsRefused) {
+  const AssemblyDocument plan = parseAssemblyText(R"({"kind":"plate","plates":[
+    {"id":1,"outline":[[0,0,0],[100,0,0],[100,100,0],[0,100,0]],"thickness":10,
+     "holes":[[[40,30,0],[43,30,0],[43,70,0],[40,70,0]]]},
+    {"id":2,"outline":[[0,0,10],[100,0,10],[100,100,10],[0,100,10]],"thickness":10}]})",
+                                                  "slot.json");
+  CutSheetOptions options;
+  options.source = "slot.json";
+  options.kerf = 2.8;
+  EXPECT_NO_THROW(plateCutSheets(plan, CutFileFormat::Svg, options));
+  options.kerf = 3.2;
+  try {
+    plateCutSheets(plan, CutFileFormat::Svg, options);
+    ADD_FAILURE() << "a 3 mm slot cut with a 3.2 mm kerf";
+  } catch (const Error& error) {
+    EXPECT_EQ(error.code(), ErrorCode::BadInput);
+    const std::string what = error.what();
+    EXPECT_NE(what.find("slot.json: plate 1: an opening about 2.7"), std::string::npos) << what;
+    EXPECT_NE(what.find("narrower than the kerf (3.2 mm)"), std::string::npos) << what;
+  }
+}
+
+}  // namespace
+}  // namespace desia

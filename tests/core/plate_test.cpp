@@ -501,3 +501,39 @@ TEST(PlateInput, ObjectsOfAnObjAndSlabsOfAnStlArePlates) {
 
 }  // namespace
 }  // namespace desia
+
+namespace desia {
+namespace {
+
+// A plate's holes must be holes: inside its outline without touching it, apart from each other,
+// with an area. Each bad hole is named with its plate (before: an extra piece, a tab or a loose
+// island in the cut sheets, and meshes that did not close).
+TEST(PlateValidation, HolesOutsideCrossingOverlappingOrFlatAreNamed) {
+  const std::string plate = R"([{"id":1,"outline":[[0,0,0],[100,0,0],[100,100,0],[0,100,0]],"thickness":10,"holes":[)";
+  const auto bad = [&](const std::string& holes, const std::string& message) {
+    ExpectBadPlates(plate + holes + "]}]", message);
+  };
+  bad(R"([[200,200,0],[210,200,0],[210,210,0]])", "plate 1: hole 1 is not inside the plate's outline");
+  bad(R"([[90,40,0],[110,40,0],[110,60,0],[90,60,0]])", "plate 1: hole 1 is not inside the plate's outline");
+  bad(R"([[0,40,0],[10,40,0],[10,60,0],[0,60,0]])", "plate 1: hole 1 is not inside the plate's outline");
+  bad(R"([[10,10,0],[30,10,0],[30,30,0],[10,30,0]],[[20,20,0],[40,20,0],[40,40,0],[20,40,0]])",
+      "plate 1: holes 1 and 2 overlap or touch");
+  bad(R"([[10,10,0],[30,10,0],[30,30,0],[10,30,0]],[[30,10,0],[50,10,0],[50,30,0],[30,30,0]])",
+      "plate 1: holes 1 and 2 overlap or touch");
+  bad(R"([[10,10,0],[30,10,0],[50,10,0]])", "plate 1: hole 1 has no area");
+  EXPECT_NO_THROW(parseAssemblyText(
+      plateDocument(plate + R"([[10,10,0],[30,10,0],[30,30,0],[10,30,0]],[[40,10,0],[50,10,0],[50,30,0],[40,30,0]]]}])"),
+      "design.json"));
+}
+
+TEST(PlateValidation, MessagesSayWhatIsTrue) {
+  const std::string square = "[[0,0,0],[100,0,0],[100,100,0],[0,100,0]]";
+  ExpectBadPlates(R"([{"id":1,"outline":)" + square + R"(,"thickness":0.018}])",
+                  "its thickness (0.018000 mm) is not more than the contact tolerance (0.050000 mm)");
+  ExpectBadPlates(
+      R"([{"id":1,"faces":[)" + square + R"(,[[0,0,12],[100,0,12],[100,100,12.2],[0,100,12]]]}])",
+      "its faces are not parallel");
+}
+
+}  // namespace
+}  // namespace desia
