@@ -420,9 +420,7 @@ class PlateJointPlanner {
         graph_(buildPlateGraph(plates, contacts, options.joints, options.realization)),
         options_(options),
         random_(options.seed * 0x9E3779B97F4A7C15ull + 1) {
-    if (makesJoints(options.realization)) {
-      for (const Plate& plate : plates) meshes_.push_back(plateMesh(plate));
-    }
+    for (const Plate& plate : plates) meshes_.push_back(plateMesh(plate));
     for (int plate = 0; plate < graph_.plateCount; ++plate) {
       std::vector<Vec3> ways;
       for (const Vec3& d : rawCandidateDirections(plate)) ways.push_back(canonical(d));
@@ -477,7 +475,7 @@ class PlateJointPlanner {
   // Plates with their joints cut (runsIntoJointsSoFar), by plate and the joints they have: a node
   // changes only its plate and the plates it leaves; cleared when it grows large.
   mutable std::map<std::string, Plate> jointedCache_;
-  std::vector<TriangleMesh> meshes_;  // the plates as given (cut joints: for the sweep of each step)
+  std::vector<TriangleMesh> meshes_;  // the plates as given (for the sweep of each step)
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
@@ -712,7 +710,7 @@ std::vector<Step> PlateJointPlanner::childrenOf(const std::vector<Step>& steps) 
     for (int q : rest) others[q] = q != plate;
     for (const Vec3& d : candidateDirections(plate)) {
       if (!leavesWithoutPushing(graph_, plate, others, d)) continue;
-      if (makesJoints(options_.realization) && runsIntoARemainingPlate(plate, d, rest)) continue;
+      if (runsIntoARemainingPlate(plate, d, rest)) continue;
       std::vector<Step> next = steps;
       next.push_back(makeStep(steps, plate, d));
       if (next.back().blocked || !acceptable(next)) continue;
@@ -939,7 +937,9 @@ bool PlateJointPlanner::acceptComplete(const std::vector<Step>& path, PlateDesig
   if (options_.realization == JointRealization::Planned) {
     std::vector<Plate> inRemovalOrder;
     for (int plate : order) inRemovalOrder.push_back(plates_[plate]);
-    lastRejection_ = verifyPlannedPlates(model, inRemovalOrder, directions, options_.geometry).failure;
+    const PlateRemovalVerification verification = verifyPlannedPlates(model, inRemovalOrder, directions, options_.geometry);
+    lastRejection_ = verification.failure;
+    lastDoomedDepth_ = verification.hitPosition;
     if (!lastRejection_.empty()) return false;
     result->jointAssembly = model;
   } else if (!cutAndVerify(joints, order, directions, result)) {
