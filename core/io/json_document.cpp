@@ -200,6 +200,7 @@ PlateResultPlan parsePlateResultPlan(const json& root, const Assembly& assembly,
 void readPlatePlan(const json& root, const std::string& source, AssemblyDocument& document) {
   document.plates = parsePlates(root["plates"], source);
   validatePlates(document.plates, document.plateOptions, source);
+  document.plates = regularizedPlates(document.plates, document.plateOptions);
   requirePlatePerPart(document.plates, document.assembly, source, "plates");
   if (root.contains("removal") || root.contains("jointGeometry")) {
     document.plateResult = parsePlateResultPlan(root, document.assembly, source);
@@ -210,6 +211,7 @@ void readPlatePlan(const json& root, const std::string& source, AssemblyDocument
     // The plates with the clearance cut into their mortises: what the cut files make.
     document.fabricationPlates = parsePlates(root["fabricationPlates"], source);
     validatePlates(document.fabricationPlates, document.plateOptions, source);
+    document.fabricationPlates = regularizedPlates(document.fabricationPlates, document.plateOptions);
     requirePlatePerPart(document.fabricationPlates, document.assembly, source, "fabricationPlates");
   }
 }
@@ -242,6 +244,7 @@ AssemblyDocument documentFromPlates(std::vector<Plate> plates, const PlateOption
   document.name = std::move(name);
   document.plateOptions = options;
   validatePlates(plates, options, source);
+  plates = regularizedPlates(plates, options);
   std::vector<PlateContact> contacts;
   try {
     contacts = computePlateContacts(plates, options);

@@ -12,6 +12,7 @@
 #include "desia/cut_points.h"
 #include "desia/error.h"
 #include "desia/plate.h"
+#include "plate/normal_classes.h"
 #include "plate/plane_frame.h"
 #include "plate/plate_shape.h"
 
@@ -599,6 +600,7 @@ std::vector<PlateContact> computePlateContacts(const std::vector<Plate>& plates,
     }
   }
   std::vector<PlateContact> contacts = contactsOfSolids(solids, owner, plates.size(), options);
+  snapContactNormals(&contacts);
   if (solids.size() == plates.size()) return contacts;
   for (PlateContact& contact : contacts) {
     contact.a = owner[contact.a];

@@ -72,6 +72,23 @@ struct PlateContact {
 // cross themselves) and throws BadInput naming the plate and the problem.
 void validatePlates(const std::vector<Plate>& plates, const PlateOptions& options, const std::string& source);
 
+// Plates snapped to their design, once, on reading (readers call it after validatePlates): a design turned by any rotation or
+// written to 6 decimals (as CAD tools write) has faces meant to be parallel 1e-9 to 1e-7 rad apart
+// and faces meant to be square as far off square. Every normal the designer and `desia check`
+// derive (contact normals, ways out, joint faces) inherits that noise, and the blocking tests
+// decide d·n > 1e-9 (README "Verdicts on computed normals"): turned and rounded, the MITRED BOX
+// had 72 base directions instead of 7 and the TABLE found no plan. Snapped, every plane of the
+// design is exact to rounding (1e-14) and the same design gives the same verdict in any turn.
+//
+// The plates with every face plane (both faces and every side, of the plates and of their attached
+// solids) snapped: normals within 1e-6 rad of parallel made one normal, pairs within 1e-6 of square
+// made square (snappedDirections), each plane through the mean of its vertices, and every vertex
+// recomputed as the crossing of its face's plane and its two sides' planes (on their shared line
+// where the sides are within 0.01 rad of parallel). A plate whose vertices would move further than
+// 0.01 mm (or the contact tolerance, if smaller) is kept as given: a shape no plane fits, which
+// validatePlates judges.
+std::vector<Plate> regularizedPlates(const std::vector<Plate>& plates, const PlateOptions& options);
+
 // All contacts between the plates, in a fixed order (by plate pair, then faces), and the crossings
 // of perpendicular prism plates that pass through each other (each plate's material fills the
 // other's thickness over the crossing). Throws BadInput naming both plates when such plates
