@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: GPL-3.0-or-later
 # The full metamorphic sweep of one plate example (issue 24): the 24 right-angle turns, 8 random
-# turns x 3 scales (1, 0.001 = metres, 25.4 = inches) x 6 and 9 decimals; each designed with the
+# turns x 3 units (the design written in mm, in m and in inches, with "unit") x 6 and 9 decimals; each designed with the
 # CLI and the result checked with `desia check`. The unit tests run a subset of it
 # (tests/core/plate_turns_test.cpp); this prints every failure.
 #   python3 scripts/plate-turns.py examples/plate/table.json cut [right,random]
@@ -47,20 +47,22 @@ def run(args, timeout=120):
 if __name__ == '__main__':
     ex, joints = sys.argv[1], sys.argv[2]
     kinds = sys.argv[3].split(',') if len(sys.argv) > 3 else ['right','random']
-    scales = [1.0, 0.001, 25.4] ; decs = [6, 9]
+    scales = [(1.0, None), (0.001, 'm'), (1 / 25.4, 'in')]; decs = [6, 9]  # the file in mm, m, inches
     doc = json.load(open(ex))
     cases = []
     if 'right' in kinds:
-        for k, R in enumerate(right_angle_turns()): cases.append((f'r{k}', R, 0, 1.0))
+        for k, R in enumerate(right_angle_turns()): cases.append((f'r{k}', R, 0, 1.0, None))
     if 'random' in kinds:
         for s in range(1, 9):
-            for sc in scales:
-                for d in decs: cases.append((f'q{s}x{sc}d{d}', rot_random(s), d, sc))
+            for sc, unit in scales:
+                for d in decs: cases.append((f'q{s}{unit or "mm"}d{d}', rot_random(s), d, sc, unit))
     fails = []
     base = os.path.basename(ex)
-    for name, R, dec, sc in cases:
+    for name, R, dec, sc, unit in cases:
         inp = os.path.join(WORK, f'in_{base}_{name}.json'); out = os.path.join(WORK, f'out_{base}_{name}.json')
-        json.dump(turn(doc, R, dec, sc), open(inp, 'w'))
+        moved = turn(doc, R, dec, sc)
+        if unit: moved['unit'] = unit
+        json.dump(moved, open(inp, 'w'))
         if os.path.exists(out): os.remove(out)
         rc, txt = run(['design','plate','--input',inp,'--joints',joints,'--seed','1','--output',out])
         crc = '-'

@@ -68,7 +68,11 @@ int platesFromMesh(const std::vector<std::string>& args) {
       (shape.empty() ? std::string("mesh") : shape) + ": " + std::to_string(plates.plates.size()) + " mitred plates, " +
           shortNumber(options.thickness) + " mm");
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  desia::cli::writeOutputFile(output, desia::documentToJson(document) + "\n");
+  // The file holds the plates as built, on the nanometre grid; whoever reads it snaps them
+  // (regularizedPlates), as `document` here did.
+  desia::AssemblyDocument asBuilt = document;
+  asBuilt.plates = plates.plates;
+  desia::cli::writeOutputFile(output, desia::documentToJson(asBuilt) + "\n");
 
   std::cout << input << ": " << mesh.triangles.size() << " triangles -> " << plates.plates.size() << " faces, "
             << plates.meshEdges << " edges" << (plates.reoriented ? " (the mesh was inside out: faces turned outward)" : "") << "\n"

@@ -197,8 +197,42 @@ PlateResultPlan parsePlateResultPlan(const json& root, const Assembly& assembly,
 }
 
 // A plan or result: its contacts are given (the joints'); its plates are what is made, one per part.
+// Millimetres per unit of a plate document's coordinates: "unit" is "mm" (the default), "cm", "m"
+// or "in" (CAD tools export in any of them). Plates are read into millimetres, in which every
+// tolerance and joint size is given, so a design in metres designs as the same design in mm.
+double millimetresPerUnit(const json& root, const std::string& source) {
+  if (!root.contains("unit")) return 1;
+  const json& unit = root["unit"];
+  if (unit == "mm") return 1;
+  if (unit == "cm") return 10;
+  if (unit == "m") return 1000;
+  if (unit == "in") return 25.4;
+  fail(source, "unit", "expected \"mm\", \"cm\", \"m\" or \"in\", found " + unit.dump());
+  return 1;
+}
+
+std::vector<Plate> scaledPlates(std::vector<Plate> plates, double factor) {
+  if (factor == 1) return plates;
+  const auto scaleSolid = [factor](Plate* solid) {
+    for (std::vector<Loop>* face : {&solid->bottom, &solid->top}) {
+      for (Loop& loop : *face) {
+        for (Vec3& p : loop) p = {p[0] * factor, p[1] * factor, p[2] * factor};
+      }
+    }
+  };
+  for (Plate& plate : plates) {
+    scaleSolid(&plate);
+    for (Plate& attached : plate.attached) scaleSolid(&attached);
+  }
+  return plates;
+}
+
+std::vector<Plate> readPlates(const json& root, const char* section, const std::string& source) {
+  return scaledPlates(parsePlates(root[section], source), millimetresPerUnit(root, source));
+}
+
 void readPlatePlan(const json& root, const std::string& source, AssemblyDocument& document) {
-  document.plates = parsePlates(root["plates"], source);
+  document.plates = readPlates(root, "plates", source);
   validatePlates(document.plates, document.plateOptions, source);
   document.plates = regularizedPlates(document.plates, document.plateOptions);
   requirePlatePerPart(document.plates, document.assembly, source, "plates");
@@ -209,7 +243,7 @@ void readPlatePlan(const json& root, const std::string& source, AssemblyDocument
   }
   if (root.contains("fabricationPlates")) {
     // The plates with the clearance cut into their mortises: what the cut files make.
-    document.fabricationPlates = parsePlates(root["fabricationPlates"], source);
+    document.fabricationPlates = readPlates(root, "fabricationPlates", source);
     validatePlates(document.fabricationPlates, document.plateOptions, source);
     document.fabricationPlates = regularizedPlates(document.fabricationPlates, document.plateOptions);
     requirePlatePerPart(document.fabricationPlates, document.assembly, source, "fabricationPlates");
@@ -295,7 +329,7 @@ AssemblyDocument parseJsonDocument(const std::string& text, const std::string& s
   }
   if (document.kind == AssemblyKind::Plate && root.contains("plates") && !root.contains("contacts")) {
     // A plate design: parts and contacts come from the geometry (paper Section 5.2).
-    document = documentFromPlates(parsePlates(root["plates"], source), plateOptions, source, document.name);
+    document = documentFromPlates(readPlates(root, "plates", source), plateOptions, source, document.name);
   } else {
     document.plateOptions = plateOptions;
     document.assembly.parts = parseParts(root, source);

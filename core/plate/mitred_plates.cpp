@@ -591,7 +591,6 @@ MitredPlates mitredPlatesFromMesh(const TriangleMesh& input, const MitredPlateOp
   }
   const PlateOptions plateOptions{options.tolerance};
   validatePlates(result.plates, plateOptions, source);
-  result.plates = regularizedPlates(result.plates, plateOptions);
   result.contacts = computePlateContacts(result.plates, plateOptions);
   // Every mitre must have become a contact; otherwise the structure would silently lose a joint.
   std::map<std::pair<int, int>, int> contactsOfPair, sidesOfPair;

@@ -310,7 +310,8 @@ void validatePlate(const Plate& plate, double tolerance, const std::string& sour
   }
   if (std::abs(lo) <= tolerance) {
     throwBadInput(source, plateName(plate) + ": its thickness (" + preciseMillimetres(std::abs(lo)) +
-                              ") is not more than the contact tolerance (" + preciseMillimetres(tolerance) + ")");
+                              ") is not more than the contact tolerance (" + preciseMillimetres(tolerance) +
+                              "); coordinates are millimetres unless the document gives \"unit\" (\"cm\", \"m\" or \"in\")");
   }
   // Every side face (one per edge) must be planar: the faces match vertex for vertex.
   const Vec3 axis = thicknessAxis(plate);

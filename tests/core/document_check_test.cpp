@@ -254,3 +254,30 @@ TEST(DocumentCheck, WhatTheDesignerWritesTheCheckPasses) {
 
 }  // namespace
 }  // namespace desia
+
+namespace desia {
+namespace {
+
+// The seed corpus of the plate_result fuzz harness is real: its results pass `desia check` and
+// its tampered copies (ids swapped, a plate deleted, the key's way out reversed, a fabrication
+// plate moved 300 mm, jointGeometry "CUT") never do, refused (exit 2) or failing.
+TEST(DocumentCheck, ThePlateResultFuzzSeedsPassOrFailAsTheyShould) {
+  const std::string folder = "tests/fuzz/corpus/plate_result/";
+  for (const char* passing : {"table_cut.json", "mitred_box_milled.json", "bookshelf_planned.json",
+                              "turned_table_6_decimals.json"}) {
+    EXPECT_TRUE(checkPassed(checkText(exampleText(folder + passing)))) << passing;
+  }
+  for (const char* tampered : {"table_ids_swapped.json", "table_plate_deleted.json", "table_key_reversed.json",
+                               "table_fabrication_moved.json", "table_joint_geometry_case.json"}) {
+    bool passed = false;
+    try {
+      passed = checkPassed(checkText(exampleText(folder + tampered)));
+    } catch (const Error&) {
+      passed = false;  // refused as bad input
+    }
+    EXPECT_FALSE(passed) << tampered;
+  }
+}
+
+}  // namespace
+}  // namespace desia

@@ -8,12 +8,16 @@
 // std::logic_error) or a timeout — is a finding.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "desia/check.h"
 #include "desia/document_check.h"
@@ -231,6 +235,54 @@ inline void plateInputTarget(const uint8_t* data, size_t size) {
   });
 }
 
+// Plate results as `desia check RESULT.json` reads them (issue 24: results that never lie). A
+// result that passes must pass whatever the order of its arrays (parts, plates, contacts are
+// matched by id), and must not pass with its key's way out reversed unless the key is free that
+// way too. Results of up to 16 plates.
+inline void plateResultTarget(const uint8_t* data, size_t size) {
+  if (size > 131072) return;
+  const std::string text = detail::textOf(data, size);
+  CheckOptions options;
+  options.method = CheckMethod::Both;
+  detail::refusalsAllowed([&] {
+    const AssemblyDocument document = parseAssemblyText(text, "fuzz.json");
+    if (!document.plateResult || document.plates.size() > 16) return;
+    const CheckReport report = checkDocument(document, options);
+    checkReportToText(document, report);
+    if (!checkPassed(report)) return;
+    const nlohmann::json root = nlohmann::json::parse(text);  // the reader accepted it: JSON
+    nlohmann::json reordered = root;
+    for (const char* key : {"parts", "plates", "contacts", "fabricationPlates", "joints"}) {
+      if (reordered.contains(key) && reordered[key].is_array()) {
+        std::reverse(reordered[key].begin(), reordered[key].end());
+      }
+    }
+    try {
+      if (!checkPassed(checkDocument(parseAssemblyText(reordered.dump(), "fuzz-reordered"), options)))
+        detail::broken("a passing plate result fails with its arrays reversed");
+    } catch (const desia::Error& e) {
+      detail::broken(std::string("a passing plate result is refused with its arrays reversed: ") + e.what());
+    }
+    nlohmann::json tampered = root;
+    nlohmann::json& direction = tampered["removal"][0]["direction"];
+    if (!direction.is_array() || direction.size() != 3) return;
+    Vec3 reversed{};
+    for (size_t k = 0; k < 3; ++k) {
+      if (!direction[k].is_number()) return;
+      reversed[k] = -direction[k].get<double>();
+      direction[k] = reversed[k];
+    }
+    const AssemblyDocument turned = parseAssemblyText(tampered.dump(), "fuzz-reversed");
+    if (!checkPassed(checkDocument(turned, options))) return;
+    const double length = std::sqrt(reversed[0] * reversed[0] + reversed[1] * reversed[1] + reversed[2] * reversed[2]);
+    for (const Vec3& free : report.result.keyDirections) {
+      const double along = (free[0] * reversed[0] + free[1] * reversed[1] + free[2] * reversed[2]) / length;
+      if (along > 1 - 1e-9) return;  // the key is free that way too
+    }
+    detail::broken("a plate result passes with its key's way out reversed");
+  });
+}
+
 inline const std::vector<Target>& targets() {
   static const std::vector<Target> kTargets = {
       {"assembly_text", assemblyTextTarget},
@@ -240,6 +292,7 @@ inline const std::vector<Target>& targets() {
       {"design", designTarget},
       {"frame_text", frameTextTarget},
       {"plate_input", plateInputTarget},
+      {"plate_result", plateResultTarget},
   };
   return kTargets;
 }
