@@ -12,7 +12,10 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "desia/document_check.h"
+#include "desia/error.h"
 #include "desia/plate_design.h"
 #include "desia/plate_design_io.h"
 #include "test_support.h"
@@ -126,6 +129,44 @@ TEST_P(TurnedPlateDesigns, DesignAndCheckTurnedScaledAndWrittenToAMicrometre) {
             << decimals << " decimals";
       }
     }
+  }
+}
+
+// A design written in metres or inches ("unit") reads into the same plates in millimetres, and
+// designs as the same design; an unknown unit is refused naming it.
+TEST(PlateUnits, AMetreOrInchDesignReadsIntoMillimetres) {
+  const std::string text = testing::readFileText(testing::projectPath("examples/plate/table.json"));
+  const AssemblyDocument inMillimetres = parseAssemblyText(text, "table.json");
+  for (const auto& [unit, perUnit] : std::vector<std::pair<std::string, double>>{{"m", 1000}, {"in", 25.4}, {"cm", 10}}) {
+    nlohmann::json root = nlohmann::json::parse(text);
+    root["unit"] = unit;
+    for (nlohmann::json& plate : root["plates"]) {
+      for (nlohmann::json& point : plate["outline"]) {
+        for (nlohmann::json& c : point) c = c.get<double>() / perUnit;
+      }
+      plate["thickness"] = plate["thickness"].get<double>() / perUnit;
+    }
+    const AssemblyDocument read = parseAssemblyText(root.dump(), "table-" + unit + ".json");
+    ASSERT_EQ(read.plates.size(), inMillimetres.plates.size());
+    for (size_t p = 0; p < read.plates.size(); ++p) {
+      for (size_t i = 0; i < read.plates[p].bottom[0].size(); ++i) {
+        for (int k = 0; k < 3; ++k) {
+          EXPECT_NEAR(read.plates[p].bottom[0][i][k], inMillimetres.plates[p].bottom[0][i][k], 1e-9) << unit;
+          EXPECT_NEAR(read.plates[p].top[0][i][k], inMillimetres.plates[p].top[0][i][k], 1e-9) << unit;
+        }
+      }
+    }
+    EXPECT_EQ(read.assembly.contacts.size(), inMillimetres.assembly.contacts.size()) << unit;
+  }
+  nlohmann::json root = nlohmann::json::parse(text);
+  root["unit"] = "yd";
+  try {
+    parseAssemblyText(root.dump(), "table-yd.json");
+    ADD_FAILURE() << "an unknown unit was read";
+  } catch (const Error& error) {
+    EXPECT_NE(std::string(error.what()).find("unit: expected \"mm\", \"cm\", \"m\" or \"in\", found \"yd\""),
+              std::string::npos)
+        << error.what();
   }
 }
 
