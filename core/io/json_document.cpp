@@ -196,7 +196,6 @@ PlateResultPlan parsePlateResultPlan(const json& root, const Assembly& assembly,
   return plan;
 }
 
-// A plan or result: its contacts are given (the joints'); its plates are what is made, one per part.
 // Millimetres per unit of a plate document's coordinates: "unit" is "mm" (the default), "cm", "m"
 // or "in" (CAD tools export in any of them). Plates are read into millimetres, in which every
 // tolerance and joint size is given, so a design in metres designs as the same design in mm.
@@ -231,10 +230,11 @@ std::vector<Plate> readPlates(const json& root, const char* section, const std::
   return scaledPlates(parsePlates(root[section], source), millimetresPerUnit(root, source));
 }
 
+// A plan or result: its contacts are given (the joints'); its plates are what is made, one per part.
 void readPlatePlan(const json& root, const std::string& source, AssemblyDocument& document) {
   document.plates = readPlates(root, "plates", source);
   validatePlates(document.plates, document.plateOptions, source);
-  document.plates = regularizedPlates(document.plates, document.plateOptions);
+  document.plates = regularizedPlates(document.plates, document.plateOptions, PlateOrigin::Computed);
   requirePlatePerPart(document.plates, document.assembly, source, "plates");
   if (root.contains("removal") || root.contains("jointGeometry")) {
     document.plateResult = parsePlateResultPlan(root, document.assembly, source);
@@ -245,7 +245,7 @@ void readPlatePlan(const json& root, const std::string& source, AssemblyDocument
     // The plates with the clearance cut into their mortises: what the cut files make.
     document.fabricationPlates = readPlates(root, "fabricationPlates", source);
     validatePlates(document.fabricationPlates, document.plateOptions, source);
-    document.fabricationPlates = regularizedPlates(document.fabricationPlates, document.plateOptions);
+    document.fabricationPlates = regularizedPlates(document.fabricationPlates, document.plateOptions, PlateOrigin::Computed);
     requirePlatePerPart(document.fabricationPlates, document.assembly, source, "fabricationPlates");
   }
 }
@@ -278,7 +278,7 @@ AssemblyDocument documentFromPlates(std::vector<Plate> plates, const PlateOption
   document.name = std::move(name);
   document.plateOptions = options;
   validatePlates(plates, options, source);
-  plates = regularizedPlates(plates, options);
+  plates = regularizedPlates(plates, options, PlateOrigin::Drawn);
   std::vector<PlateContact> contacts;
   try {
     contacts = computePlateContacts(plates, options);

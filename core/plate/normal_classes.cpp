@@ -26,7 +26,7 @@ int rootOf(std::vector<int>* parent, int k) {
 
 // Groups of parallel normals, up to sign: each normal's group root (single linkage within the
 // angle; sorted by |x| first so that only neighbours in |x| are compared).
-std::vector<int> parallelGroups(const std::vector<Vec3>& normals) {
+std::vector<int> parallelGroups(const std::vector<Vec3>& normals, double angle) {
   const size_t n = normals.size();
   std::vector<int> byX(n);
   std::iota(byX.begin(), byX.end(), 0);
@@ -35,8 +35,8 @@ std::vector<int> parallelGroups(const std::vector<Vec3>& normals) {
   std::iota(parent.begin(), parent.end(), 0);
   for (size_t i = 0; i < n; ++i) {
     const Vec3& u = normals[byX[i]];
-    for (size_t j = i + 1; j < n && std::abs(normals[byX[j]][0]) - std::abs(u[0]) <= kSameDirectionAngle; ++j) {
-      if (apartUpToSign(u, normals[byX[j]]) > kSameDirectionAngle) continue;
+    for (size_t j = i + 1; j < n && std::abs(normals[byX[j]][0]) - std::abs(u[0]) <= angle; ++j) {
+      if (apartUpToSign(u, normals[byX[j]]) > angle) continue;
       const int a = rootOf(&parent, byX[i]), b = rootOf(&parent, byX[j]);
       parent[std::max(a, b)] = std::min(a, b);
     }
@@ -80,12 +80,12 @@ std::vector<Vec3> groupDirections(const std::vector<Vec3>& normals, const std::v
 // 1e-14 (a gradient step on the sum of the squared cosines). Each direction's turn is the mean of
 // its pairs' half-turns: summed instead, a direction square to several nearly parallel others
 // overshoots, and the rounds grow instead of settling (seen on milled joints: 13 groups, 16 pairs).
-void squareNearlySquarePairs(std::vector<Vec3>* directions) {
+void squareNearlySquarePairs(std::vector<Vec3>* directions, double angle) {
   std::vector<std::pair<size_t, size_t>> pairs;
   std::vector<int> pairCount(directions->size(), 0);
   for (size_t i = 0; i < directions->size(); ++i) {
     for (size_t j = i + 1; j < directions->size(); ++j) {
-      if (std::abs(dot((*directions)[i], (*directions)[j])) < kSameDirectionAngle) {
+      if (std::abs(dot((*directions)[i], (*directions)[j])) < angle) {
         pairs.push_back({i, j});
         ++pairCount[i], ++pairCount[j];
       }
@@ -107,9 +107,9 @@ void squareNearlySquarePairs(std::vector<Vec3>* directions) {
 
 }  // namespace
 
-std::vector<Vec3> snappedDirections(const std::vector<Vec3>& normals) {
+std::vector<Vec3> snappedDirections(const std::vector<Vec3>& normals, double angle) {
   std::vector<int> groupIndex;
-  std::vector<Vec3> directions = groupDirections(normals, parallelGroups(normals), &groupIndex);
+  std::vector<Vec3> directions = groupDirections(normals, parallelGroups(normals, angle), &groupIndex);
   // The groups in the order of their directions, not of the input (the squaring sums in it).
   std::vector<int> byDirection(directions.size());
   std::iota(byDirection.begin(), byDirection.end(), 0);
@@ -120,7 +120,7 @@ std::vector<Vec3> snappedDirections(const std::vector<Vec3>& normals) {
   for (int g : byDirection) sorted.push_back(directions[g]);
   directions = sorted;
   for (int& g : groupIndex) g = rank[g];
-  squareNearlySquarePairs(&directions);
+  squareNearlySquarePairs(&directions, angle);
   std::vector<Vec3> snapped;
   for (size_t k = 0; k < normals.size(); ++k) {
     const Vec3& d = directions[groupIndex[k]];
@@ -134,7 +134,7 @@ void snapContactNormals(std::vector<PlateContact>* contacts) {
   for (const PlateContact& contact : *contacts) {
     if (!contact.crossing) normals.push_back(contact.normal);
   }
-  const std::vector<Vec3> snapped = snappedDirections(normals);
+  const std::vector<Vec3> snapped = snappedDirections(normals, kComputedDirectionAngle);
   size_t next = 0;
   for (PlateContact& contact : *contacts) {
     if (!contact.crossing) contact.normal = snapped[next++];

@@ -399,7 +399,7 @@ std::vector<Plate> cutPlates(const std::vector<Plate>& plates, const PlateGraph&
                              const JointCutOptions& options) {
   std::vector<Plate> cut = jointedPlates(plates, graph, joints, clearance, options);
   validatePlates(cut, geometry, "the jointed plates");
-  return regularizedPlates(cut, geometry);
+  return regularizedPlates(cut, geometry, PlateOrigin::Computed);
 }
 
 JointedPlan cutPlan(const std::vector<Plate>& plates, const PlateGraph& graph, const std::vector<PlateJoint>& joints,

@@ -133,7 +133,7 @@ bool stillValid(const Plate& solid, const PlateOptions& options) {
 
 }  // namespace
 
-std::vector<Plate> regularizedPlates(const std::vector<Plate>& plates, const PlateOptions& options) {
+std::vector<Plate> regularizedPlates(const std::vector<Plate>& plates, const PlateOptions& options, PlateOrigin origin) {
   // Every solid's planes, all plates at once: parallel faces of different plates become one normal.
   std::vector<const Plate*> solids;
   for (const Plate& plate : plates) {
@@ -152,7 +152,8 @@ std::vector<Plate> regularizedPlates(const std::vector<Plate>& plates, const Pla
     degenerate[s] = bad;
   }
   for (Vec3& n : normals) n = norm(n) > 0 ? normalized(n) : n;
-  const std::vector<Vec3> snapped = snappedDirections(normals);
+  const std::vector<Vec3> snapped =
+      snappedDirections(normals, origin == PlateOrigin::Drawn ? kDrawnDirectionAngle : kComputedDirectionAngle);
   std::vector<Plate> result;
   size_t s = 0;
   for (const Plate& plate : plates) {

@@ -123,7 +123,7 @@ TEST_P(TurnedPlateDesigns, DesignAndCheckTurnedScaledAndWrittenToAMicrometre) {
   const std::array<std::array<double, 3>, 2> angles{{{0.2, 0, 0}, {0.3, 1.1, -0.7}}};
   for (const auto& a : angles) {
     for (const double scale : {1.0, 25.4}) {
-      for (const int decimals : {6, 9}) {
+      for (const int decimals : {3, 6, 9}) {  // 3: a micrometre, as a file in metres to 6 decimals
         EXPECT_EQ(designAndCheckFailure(example.file, example.joints, eulerTurn(a[0], a[1], a[2]), scale, decimals), "")
             << example.file << " turned (" << a[0] << ", " << a[1] << ", " << a[2] << "), x" << scale << ", "
             << decimals << " decimals";
@@ -174,7 +174,9 @@ INSTANTIATE_TEST_SUITE_P(Examples, TurnedPlateDesigns,
                          ::testing::Values(TurnedExample{"table.json", JointRealization::Cut},
                                            TurnedExample{"mitred_box.json", JointRealization::Milled},
                                            TurnedExample{"dodecahedron.json", JointRealization::Milled},
-                                           TurnedExample{"bookshelf.json", JointRealization::Planned}),
+                                           TurnedExample{"bookshelf.json", JointRealization::Planned},
+                                           TurnedExample{"cabinet.json", JointRealization::Milled},
+                                           TurnedExample{"icosahedron.json", JointRealization::Planned}),
                          [](const ::testing::TestParamInfo<TurnedExample>& info) {
                            std::string name = info.param.file.substr(0, info.param.file.find('.'));
                            return name;

@@ -81,13 +81,17 @@ void validatePlates(const std::vector<Plate>& plates, const PlateOptions& option
 // design is exact to rounding (1e-14) and the same design gives the same verdict in any turn.
 //
 // The plates with every face plane (both faces and every side, of the plates and of their attached
-// solids) snapped: normals within 1e-6 rad of parallel made one normal, pairs within 1e-6 of square
-// made square (snappedDirections), each plane through the mean of its vertices, and every vertex
+// solids) snapped: normals within 1e-4 or 1e-6 rad (below) of parallel made one normal, pairs as
+// close to square made square (snappedDirections), each plane through the mean of its vertices, and every vertex
 // recomputed as the crossing of its face's plane and its two sides' planes (on their shared line
 // where the sides are within 0.01 rad of parallel). A plate whose vertices would move further than
 // 0.01 mm (or the contact tolerance, if smaller) is kept as given: a shape no plane fits, which
 // validatePlates judges.
-std::vector<Plate> regularizedPlates(const std::vector<Plate>& plates, const PlateOptions& options);
+// Drawn: a design from a file or a modelling tool (directions within 1e-4 rad snapped: a CAD file
+// in metres to 6 decimals). Computed: plates desia made or wrote at full precision (the designer's
+// jointed plates, a result's plates; within 1e-6, as finer cuts are real). normal_classes.h.
+enum class PlateOrigin { Drawn, Computed };
+std::vector<Plate> regularizedPlates(const std::vector<Plate>& plates, const PlateOptions& options, PlateOrigin origin);
 
 // All contacts between the plates, in a fixed order (by plate pair, then faces), and the crossings
 // of perpendicular prism plates that pass through each other (each plate's material fills the
