@@ -95,21 +95,30 @@ bool insideBottomFace(const Plate& plate, const PlaneFrame& frame, const Vec3& p
 
 // A side face's normal points out of the solid: a step from the middle of its bottom edge along
 // the normal (projected into the bottom plane) must leave the bottom face. Loop orientation and
-// holes need no separate rules this way.
+// holes need no separate rules this way. The quads of one loop all turn the same way about it,
+// so the step is taken once per loop, from its longest edge: a step per edge made this quadratic
+// (each a point-in-polygon test; a 30,000-vertex outline: 1.8 s of a 2 s check).
 std::vector<Vec3> plateSideNormals(const Plate& plate, size_t loopIndex) {
   const Vec3 axis = plateThicknessAxis(plate);
-  const PlaneFrame bottomFrame(centroidOf(plate.bottom[0]), axis);
-  constexpr double kStep = 1e-3;  // mm
   const Loop& bottom = plate.bottom[loopIndex];
   const Loop& top = plate.top[loopIndex];
   std::vector<Vec3> normals;
+  size_t longest = 0;
   for (size_t k = 0; k < bottom.size(); ++k) {
     const size_t next = (k + 1) % bottom.size();
-    Vec3 n = normalized(loopNormal(Loop{bottom[k], bottom[next], top[next], top[k]}));
-    const Vec3 inPlane = normalized(minus(n, scaled(axis, dot(n, axis))));
-    const Vec3 middle = scaled(plus(bottom[k], bottom[next]), 0.5);
-    if (insideBottomFace(plate, bottomFrame, plus(middle, scaled(inPlane, kStep)))) n = negated(n);
-    normals.push_back(n);
+    normals.push_back(normalized(loopNormal(Loop{bottom[k], bottom[next], top[next], top[k]})));
+    if (norm(minus(bottom[next], bottom[k])) >
+        norm(minus(bottom[(longest + 1) % bottom.size()], bottom[longest])))
+      longest = k;
+  }
+  if (normals.empty()) return normals;
+  const PlaneFrame bottomFrame(centroidOf(plate.bottom[0]), axis);
+  constexpr double kStep = 1e-3;  // mm
+  const Vec3& n = normals[longest];
+  const Vec3 inPlane = normalized(minus(n, scaled(axis, dot(n, axis))));
+  const Vec3 middle = scaled(plus(bottom[longest], bottom[(longest + 1) % bottom.size()]), 0.5);
+  if (insideBottomFace(plate, bottomFrame, plus(middle, scaled(inPlane, kStep)))) {
+    for (Vec3& normal : normals) normal = negated(normal);
   }
   return normals;
 }
@@ -199,18 +208,39 @@ void requireSimpleLoop(const Plate& plate, const Loop& loop, size_t loopIndex, c
     return value > rounding ? 1 : (value < -rounding ? -1 : 0);
   };
   const size_t n = p.size();
-  for (size_t i = 0; i < n; ++i) {
-    for (size_t j = i + 1; j < n; ++j) {
-      const size_t i2 = (i + 1) % n, j2 = (j + 1) % n;
-      if (i2 == j || j2 == i) continue;  // adjacent edges share a vertex
-      const int o1 = orient(i, i2, j), o2 = orient(i, i2, j2), o3 = orient(j, j2, i), o4 = orient(j, j2, i2);
-      if (o1 * o2 <= 0 && o3 * o4 <= 0 && !(o1 == 0 && o2 == 0)) {
-        throwBadInput(source, plateName(plate) + ": its " +
-                                  (loopIndex ? "hole " + std::to_string(loopIndex) : std::string("outline")) +
-                                  " crosses itself: edge " + std::to_string(i + 1) + "-" + std::to_string(i2 + 1) +
-                                  " meets edge " + std::to_string(j + 1) + "-" + std::to_string(j2 + 1));
-      }
+  const auto crosses = [&](size_t i, size_t j) {  // edges i and j (i < j), not adjacent
+    const size_t i2 = (i + 1) % n, j2 = (j + 1) % n;
+    if (i2 == j || j2 == i) return false;  // adjacent edges share a vertex
+    const int o1 = orient(i, i2, j), o2 = orient(i, i2, j2), o3 = orient(j, j2, i), o4 = orient(j, j2, i2);
+    return o1 * o2 <= 0 && o3 * o4 <= 0 && !(o1 == 0 && o2 == 0);
+  };
+  // Only edges whose spans along u overlap can meet: the edges sorted by where they start along u,
+  // each compared with those still open there (a sweep; a 30,000-vertex outline took 19.7 s by
+  // comparing every pair). The first crossing pair in edge order is named, as before.
+  std::vector<size_t> byStart(n);
+  std::vector<double> low(n), high(n);
+  for (size_t k = 0; k < n; ++k) {
+    byStart[k] = k;
+    low[k] = std::min(p[k][0], p[(k + 1) % n][0]);
+    high[k] = std::max(p[k][0], p[(k + 1) % n][0]);
+  }
+  std::sort(byStart.begin(), byStart.end(), [&](size_t a, size_t b) { return low[a] < low[b] || (low[a] == low[b] && a < b); });
+  std::vector<size_t> open;
+  std::pair<size_t, size_t> first{n, n};
+  for (size_t edge : byStart) {
+    open.erase(std::remove_if(open.begin(), open.end(), [&](size_t other) { return high[other] < low[edge]; }), open.end());
+    for (size_t other : open) {
+      const std::pair<size_t, size_t> pair{std::min(edge, other), std::max(edge, other)};
+      if (pair < first && crosses(pair.first, pair.second)) first = pair;
     }
+    open.push_back(edge);
+  }
+  if (first.first < n) {
+    const size_t i = first.first, j = first.second;
+    throwBadInput(source, plateName(plate) + ": its " +
+                              (loopIndex ? "hole " + std::to_string(loopIndex) : std::string("outline")) +
+                              " crosses itself: edge " + std::to_string(i + 1) + "-" + std::to_string((i + 1) % n + 1) +
+                              " meets edge " + std::to_string(j + 1) + "-" + std::to_string((j + 1) % n + 1));
   }
 }
 

@@ -10,6 +10,7 @@
 
 #include "desia/blocking_graph.h"
 #include "desia/check.h"
+#include "desia/document.h"
 #include "desia/directed_graph.h"
 #include "desia/interlocking.h"
 #include "desia/puz_format.h"
@@ -158,7 +159,32 @@ int64_t ringCheck(const WorkloadInputs& inputs, CheckMethod method, const char* 
   return static_cast<int64_t>(report.baseDirectionCount);
 }
 
+// The round plate read as `desia check` reads it: parsed, every outline validated (its edges
+// checked for crossings), the plates snapped and their contacts computed.
+int64_t plateOutlineRead(const WorkloadInputs& inputs) {
+  const AssemblyDocument document = parseAssemblyText(inputs.roundPlate(), "round-table.json");
+  if (document.assembly.contacts.size() != 1) {
+    throw WrongVerdict("plate outline read: expected one contact, got " + std::to_string(document.assembly.contacts.size()));
+  }
+  return static_cast<int64_t>(document.plates[0].bottom[0].size());
+}
+
 }  // namespace
+
+std::string roundPlateDocument(int vertices) {
+  std::ostringstream out;
+  out.setf(std::ios::fixed);
+  out.precision(6);
+  out << "{\"kind\": \"plate\", \"plates\": [{\"id\": 1, \"name\": \"round top\", \"thickness\": 18, \"outline\": [";
+  const double pi = std::acos(-1.0);
+  for (int k = 0; k < vertices; ++k) {
+    const double angle = 2 * pi * k / vertices;
+    out << (k ? ", " : "") << "[" << 500 * std::cos(angle) << ", " << 500 * std::sin(angle) << ", 0]";
+  }
+  out << "]}, {\"id\": 2, \"name\": \"board\", \"thickness\": 18, \"outline\": "
+         "[[-600, -600, 18], [600, -600, 18], [600, 600, 18], [-600, 600, 18]]}]}";
+  return out.str();
+}
 
 Assembly generateNormalRing(int parts, int contacts, uint64_t seed) {
   Assembly assembly;
@@ -200,6 +226,8 @@ const std::vector<WorkloadSpec>& workloadSpecs() {
        "checkAssembly --method dbg of 10 parts with 800 distinct normals (319,600 base DBGs) and its plan; target 1000 ms", true},
       {Workload::RingLpCheck, "ring10-800 normals lp (check)", kNoPaperFigure,
        "checkAssembly --method lp of the same ring (base directions, LPs, plan); target 1000 ms", true},
+      {Workload::PlateOutlineRead, "plate outline 30000 vertices (read)", kNoPaperFigure,
+       "parseAssemblyText of a round top (30,000-vertex outline) on a board: validation, snapping, contacts; target 500 ms", true},
   };
   return specs;
 }
@@ -267,7 +295,8 @@ std::string describeStats(const std::string& what, const GridStats& stats) {
 WorkloadInputs::WorkloadInputs(const std::string& bunnyPuzText, const std::string& bunnySource)
     : bunny_(parsePuz(bunnyPuzText, bunnySource)),
       cube_(generateCubePartition(kCubeSide, kCubeParts, kCubeSeed)),
-      ring_(generateNormalRing(kRingParts, kRingContacts, kCubeSeed)) {
+      ring_(generateNormalRing(kRingParts, kRingContacts, kCubeSeed)),
+      roundPlate_(roundPlateDocument(kOutlineVertices)) {
   // Throws BadInput if a region were empty or split; the generator guarantees neither happens.
   validateVoxelParts(cube_, "generated cube");
 }
@@ -292,6 +321,8 @@ int64_t runWorkload(Workload workload, const WorkloadInputs& inputs) {
       return ringCheck(inputs, CheckMethod::Graphs, "ring10-800 normals dbg (check)");
     case Workload::RingLpCheck:
       return ringCheck(inputs, CheckMethod::Inequalities, "ring10-800 normals lp (check)");
+    case Workload::PlateOutlineRead:
+      return plateOutlineRead(inputs);
   }
   throw std::invalid_argument("unknown workload");
 }

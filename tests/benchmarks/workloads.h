@@ -35,6 +35,8 @@ enum class Workload {
   // Issue 14: many distinct normals (curved plate structures have hundreds).
   RingDbgCheck,
   RingLpCheck,
+  // Issue 24: reading a plate with a finely drawn outline (validation, snapping, contacts).
+  PlateOutlineRead,
 };
 
 struct WorkloadSpec {
@@ -80,6 +82,11 @@ Assembly generateNormalRing(int parts, int contacts, uint64_t seed);
 constexpr int kRingParts = 10;
 constexpr int kRingContacts = 800;
 
+// A round table top of this many outline vertices (radius 500 mm, 18 mm) on a square board.
+constexpr int kOutlineVertices = 30000;
+// The plate document of that design, as a CAD tool would write it (coordinates to 6 decimals).
+std::string roundPlateDocument(int vertices);
+
 // The prepared inputs. Construction parses the BUNNY (parsePuz also validates it) and generates
 // and validates the CUBE; neither step is timed.
 class WorkloadInputs {
@@ -88,11 +95,13 @@ class WorkloadInputs {
   const VoxelGrid& bunny() const { return bunny_; }
   const VoxelGrid& cube() const { return cube_; }
   const Assembly& ring() const { return ring_; }
+  const std::string& roundPlate() const { return roundPlate_; }
 
  private:
   VoxelGrid bunny_;
   VoxelGrid cube_;
   Assembly ring_;
+  std::string roundPlate_;
 };
 
 // Runs one workload once. Throws WrongVerdict when the result is not the expected one. The
