@@ -2,6 +2,7 @@
 // `desia export`: a voxel assembly as part meshes (STL, OBJ), print-ready parts (a clearance, one
 // STL per part in a ZIP, a build plate) or a BurrTools .xmpuzzle; a plate structure as meshes or cut
 // files (SVG, DXF); a frame as meshes, .fpuz or a cut list.
+#include <algorithm>
 #include <cstdint>
 #include <iostream>
 #include <optional>
@@ -98,8 +99,23 @@ int exportFile(const std::vector<std::string>& args) {
   if (input.empty()) throw UsageError{"export needs a FILE (.puz or JSON voxel assembly)"};
   if (format.empty()) throw UsageError{"export needs --format stl|stl-ascii|obj|xmpuzzle|stl-zip|build-plate-stl"};
   if (output.empty()) throw UsageError{"export needs --output OUT"};
+  static const std::vector<std::string> kFormats{"stl", "stl-ascii", "obj", "xmpuzzle", "stl-zip", "build-plate-stl", "svg",
+                                                 "dxf", "fpuz", "csv", "puz", "voxel-json", "pieces-obj", "joint-pieces-stl"};
+  if (std::find(kFormats.begin(), kFormats.end(), format) == kFormats.end()) {
+    std::string known;
+    for (const std::string& name : kFormats) known += (known.empty() ? "" : ", ") + name;
+    throw desia::Error(desia::ErrorCode::BadInput, "unknown export format '" + format + "' (expected one of: " + known +
+                                                       "; svg and dxf are plate cut sheets, fpuz to joint-pieces-stl frames)");
+  }
   if (format == "svg" || format == "dxf") {
-    // Cut files of a plate structure (core/io/cut_sheets.cpp).
+    // Cut files of a plate structure (core/io/cut_sheets.cpp): a voxel size, a part or a
+    // clearance would silently change nothing there.
+    for (const auto& [flag, value] : arguments.named) {
+      if (flag == "--part" || flag == "--voxel-size" || flag == "--clearance") {
+        throw desia::Error(desia::ErrorCode::BadInput, input + ": " + flag + " does not apply to " + format +
+                                                           " cut sheets (they hold every plate as designed; the clearance is the design's --clearance)");
+      }
+    }
     cut.source = input;
     return exportCutSheets(desia::parseAssemblyText(desia::cli::readInputFile(input), input), input, format, cut, output);
   }

@@ -539,10 +539,11 @@ std::vector<std::string> plateCutSheets(const AssemblyDocument& document, CutFil
   const std::vector<Plate>& plates = document.fabricationPlates.empty() ? document.plates : document.fabricationPlates;
   for (const Plate& plate : plates) {
     if (!plate.attached.empty()) {
-      // Milled joints (sliding dovetails): the tongue and the housing are not 2D cuts.
-      throwBadInput(options.source, "plate " + std::to_string(plate.id) +
-                                        " has milled joints (a sliding dovetail), which cut sheets cannot hold: export "
-                                        "stl or obj for the CNC, or design with joints 'cut'");
+      // Milled joints (dovetails, mitre tenons and slides, face tenons): their solids are not 2D cuts.
+      throwBadInput(options.source, "plate " + std::to_string(plate.id) + " carries " + std::to_string(plate.attached.size()) +
+                                        " solid(s) of milled joints (its \"attached\": tongues, tenons, housing walls), "
+                                        "which cut sheets cannot hold: export stl or obj for the CNC, or design with "
+                                        "joints 'cut'");
     }
   }
   // A design read from its plates has them; a result's plates (its contacts are its joints') do not.

@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <cstdint>
 #include <map>
 #include <numeric>
@@ -36,6 +37,17 @@ std::string number(double value) {
   out.precision(4);
   out << value;
   return out.str();
+}
+
+// An option as given, with enough digits that a value refused is not printed as the limit it
+// passed (a merge angle of 30.0001 as "30").
+std::string givenNumber(double value) {
+  for (int digits = 4;; ++digits) {  // the fewest digits that read back as the value
+    std::ostringstream out;
+    out.precision(digits);
+    out << value;
+    if (digits >= 17 || std::strtod(out.str().c_str(), nullptr) == value) return out.str();
+  }
 }
 
 std::string pointText(const Vec3& p) {
@@ -460,13 +472,17 @@ double windingNumber(const TriangleMesh& mesh, const Vec3& point) {
 
 MitredPlates mitredPlatesFromMesh(const TriangleMesh& input, const MitredPlateOptions& options, const std::string& source) {
   if (!(options.thickness > 0) || !std::isfinite(options.thickness)) {
-    throwBadInput(source, "the thickness must be a positive number of millimetres, found " + number(options.thickness));
+    throwBadInput(source, "the thickness must be a positive number of millimetres, found " + givenNumber(options.thickness));
   }
   if (!(options.tolerance > 0) || !(options.tolerance <= 10)) {
-    throwBadInput(source, "the tolerance must be a positive number of millimetres up to 10, found " + number(options.tolerance));
+    throwBadInput(source, "the tolerance must be a positive number of millimetres up to 10, found " + givenNumber(options.tolerance));
+  }
+  if (!(options.thickness > options.tolerance)) {
+    throwBadInput(source, "the thickness (" + givenNumber(options.thickness) + " mm) must be more than the tolerance (" +
+                              givenNumber(options.tolerance) + " mm): give a larger thickness");
   }
   if (!(options.mergeAngleDegrees > 0) || !(options.mergeAngleDegrees <= 30)) {
-    throwBadInput(source, "the merge angle must be more than 0 and at most 30 degrees, found " + number(options.mergeAngleDegrees));
+    throwBadInput(source, "the merge angle must be more than 0 and at most 30 degrees, found " + givenNumber(options.mergeAngleDegrees));
   }
   TriangleMesh mesh = weldedMesh(input, source);
   requireManifold(mesh, source);
@@ -590,7 +606,15 @@ MitredPlates mitredPlatesFromMesh(const TriangleMesh& input, const MitredPlateOp
     result.faceTriangles.push_back(faces[f].triangles);
   }
   const PlateOptions plateOptions{options.tolerance};
-  validatePlates(result.plates, plateOptions, source);
+  try {
+    validatePlates(result.plates, plateOptions, "");
+  } catch (const Error& error) {
+    // The plates are built here, not given: say what in the mesh they come from.
+    if (error.code() != ErrorCode::BadInput) throw;
+    throwBadInput(source, std::string("the plates built for the mesh's faces (plate k for face k) do not hold together: ") +
+                              error.what() + "; the faces meeting there do not make one shape at a thickness of " +
+                              number(options.thickness) + " mm: give a smaller thickness or flatten the mesh there");
+  }
   result.contacts = computePlateContacts(result.plates, plateOptions);
   // Every mitre must have become a contact; otherwise the structure would silently lose a joint.
   std::map<std::pair<int, int>, int> contactsOfPair, sidesOfPair;

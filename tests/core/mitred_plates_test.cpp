@@ -382,6 +382,22 @@ TEST(MitredPlatesRefusals, ThicknessNotPositive) {
   expectRefusal(mesh, std::nan(""), "found nan$");
 }
 
+// Issue 24: a thickness below the tolerance asked for a smaller one; a merge angle just over the
+// limit was printed as the limit ("at most 30, found 30").
+TEST(MitredPlatesRefusals, MessagesSayWhatIsTrue) {
+  const TriangleMesh mesh = triangulated(cube());
+  expectRefusal(mesh, 1e-9, "^shape\\.obj: the thickness \\(1e-09 mm\\) must be more than the tolerance \\(0\\.05 mm\\): give a larger thickness$");
+  MitredPlateOptions options;
+  options.thickness = 10;
+  options.mergeAngleDegrees = 30.0001;
+  try {
+    mitredPlatesFromMesh(mesh, options, "shape.obj");
+    ADD_FAILURE() << "a merge angle of 30.0001 was accepted";
+  } catch (const Error& e) {
+    EXPECT_STREQ(e.what(), "shape.obj: the merge angle must be more than 0 and at most 30 degrees, found 30.0001");
+  }
+}
+
 TEST(MitredPlatesRefusals, ThicknessTooLargeForAFaceNamesItAndTheLargestThatFits) {
   // A 200 mm cube's faces keep an inner face up to just under 100 mm (less the tolerance).
   expectRefusal(triangulated(cube()), 120,

@@ -325,7 +325,7 @@ test('designPlate with joints \'milled\' gives the CLI\'s BOOKSHELF: sliding dov
   assert.equal(report.shapeRemoval.clear, true, report.shapeRemoval.failure);
   assert.equal(report.shapeRemoval.failure, '');
   // Cut sheets cannot hold a dovetail: the core's message, in the worker and the sync core.
-  const milledMessage = /plate \d+ has milled joints \(a sliding dovetail\), which cut sheets cannot hold: export stl or obj for the CNC, or design with joints 'cut'/;
+  const milledMessage = /plate \d+ carries \d+ solid\(s\) of milled joints \(its "attached": tongues, tenons, housing walls\), which cut sheets cannot hold: export stl or obj for the CNC, or design with joints 'cut'/;
   await assert.rejects(desia.cutSheets(document), (error) => error instanceof DesiaError && error.code === 'bad-input' && milledMessage.test(error.message));
   await assert.rejects(desia.exportAssembly(document, { format: 'dxf' }), (error) => error.code === 'bad-input' && milledMessage.test(error.message));
   assert.throws(() => core.cutSheets(cliText), (error) => error.code === 'bad-input' && milledMessage.test(error.message));

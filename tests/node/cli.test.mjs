@@ -165,4 +165,10 @@ test('export a designed plate structure as SVG and DXF cut sheets; a sheet too s
   assert.equal(small.status, 2);
   assert.match(small.stderr, /table-cut\.json: plate 1 \(1050 x 650 mm\) does not fit on a 600 x 400 mm sheet/);
   assert.equal(runCli(['export', result, '--format', 'svg', '--sheet', '600by400', '--output', path.join(tmp, 'bad.svg')]).status, 2);
+  // Options that change nothing on cut sheets are refused, not silently ignored (issue 24).
+  for (const [flag, value] of [['--voxel-size', '3'], ['--part', '2'], ['--clearance', '0.3']]) {
+    const ignored = runCli(['export', result, '--format', 'svg', flag, value, '--output', path.join(tmp, 'ignored.svg')]);
+    assert.equal(ignored.status, 2, `${flag}: ${ignored.stdout}`);
+    assert.match(ignored.stderr, new RegExp(`table-cut\\.json: ${flag} does not apply to svg cut sheets`));
+  }
 });

@@ -228,7 +228,7 @@ test('the WebAssembly binding gives the same bytes as the CLI, as a Uint8Array',
 
 const badRequests = [
   ['an unknown format', [k9File, '--format', 'step'],
-    /^desia: error: unknown export format 'step' \(expected stl, stl-ascii, obj, xmpuzzle, stl-zip or build-plate-stl\)$/m,
+    /^desia: error: unknown export format 'step' \(expected one of: stl, stl-ascii, obj, xmpuzzle, stl-zip, build-plate-stl, svg, dxf, fpuz, csv, puz, voxel-json, pieces-obj, joint-pieces-stl; svg and dxf are plate cut sheets, fpuz to joint-pieces-stl frames\)$/m,
     ['step', 0, 1], /^unknown export format 'step'/],
   ['a part that does not exist', [k9File, '--format', 'stl', '--part', '12'],
     /Cube_4x4x4_K9\.puz: part 12 does not exist: the assembly has parts 1 to 9 \(0 = all parts\)$/m,
