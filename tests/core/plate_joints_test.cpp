@@ -407,6 +407,54 @@ TEST(PlateRepair, TheChairGetsOneBarFromLegToBackAndNoCutPointIsLeft) {
   EXPECT_FALSE(proposeCutPointRepair(loadPlateExample("table.json").plates).has_value());
 }
 
+// Issue 24: the repair works in the chair's own frame. In world axes, the chair turned 0.3 rad
+// about y found no bar, and turned 0.01 rad about z got a bar square to the world, skewed to the
+// chair, which then did not design (521,622 nodes in 60 s).
+TEST(PlateRepair, ATurnedChairGetsABarSquareToItselfAndDesigns) {
+  const AssemblyDocument chair = loadPlateExample("chair_cut_point.json");
+  for (const auto& [axis, angle] : std::vector<std::pair<int, double>>{{1, 0.3}, {2, 0.01}, {0, -0.7}}) {
+    const double c = std::cos(angle), s = std::sin(angle);
+    const int i = (axis + 1) % 3, j = (axis + 2) % 3;
+    std::vector<Plate> turned = chair.plates;
+    for (Plate& plate : turned) {
+      for (std::vector<Loop>* face : {&plate.bottom, &plate.top}) {
+        for (Loop& loop : *face) {
+          for (Vec3& p : loop) {
+            const double a = p[i], b = p[j];
+            p[i] = c * a - s * b;
+            p[j] = s * a + c * b;
+          }
+        }
+      }
+    }
+    const AssemblyDocument input = documentFromPlates(turned, {}, "turned chair");
+    const std::optional<PlateRepair> repair = proposeCutPointRepair(input.plates);
+    ASSERT_TRUE(repair.has_value()) << "axis " << axis << ", " << angle << " rad";
+    ASSERT_EQ(repair->added.size(), 1u);
+    // The bar's edges run along the chair's: each is parallel to an edge of one of its plates.
+    const Plate& bar = repair->plates.back();
+    for (size_t k = 0; k < bar.bottom[0].size(); ++k) {
+      const Vec3 edge = normalized(minus(bar.bottom[0][(k + 1) % bar.bottom[0].size()], bar.bottom[0][k]));
+      double closest = 0;
+      for (const Plate& plate : input.plates) {
+        const Loop& outline = plate.bottom[0];
+        for (size_t e = 0; e < outline.size(); ++e) {
+          const Vec3 other = normalized(minus(outline[(e + 1) % outline.size()], outline[e]));
+          closest = std::max(closest, std::abs(dot(edge, other)));
+        }
+      }
+      EXPECT_GT(closest, 1 - 1e-9) << "axis " << axis << ": bar edge " << k << " is skewed to the chair";
+    }
+    const AssemblyDocument repaired = documentFromPlates(repair->plates, {}, "repaired turned chair");
+    PlateDesignOptions milled;
+    milled.realization = JointRealization::Milled;
+    milled.timeLimitSeconds = 0;
+    milled.nodeLimit = 5000;
+    const PlateDesignResult result = designPlateJoints(repaired.plates, repaired.plateContacts, milled);
+    EXPECT_EQ(result.status, PlateDesignStatus::Success) << "axis " << axis << ": " << result.message;
+  }
+}
+
 }  // namespace
 }  // namespace desia
 
