@@ -63,6 +63,26 @@
 namespace desia {
 namespace {
 
+// Said when a search finds nothing and no beam meets its joints along an axis: the joint cubes are
+// square to x, y and z, so a frame turned off them (a design turned in a modelling tool) meets
+// every cube at an angle, where joints rarely interlock.
+std::string offTheAxesNote(const Frame& frame) {
+  for (const FrameBeam& beam : frame.beams) {
+    for (int end = 0; end < 2; ++end) {
+      const Vec3& at = frame.joints[beam.joints[end]].position;
+      const Vec3& next = beam.path.empty() ? frame.joints[beam.joints[1 - end]].position
+                                           : (end == 0 ? beam.path.front() : beam.path.back());
+      const Vec3 d = normalized(minus(next, at));
+      for (const double c : d) {
+        if (std::abs(c) > 1 - 1e-9) return "";  // a beam end along an axis: the frame is on the grid
+      }
+    }
+  }
+  return "; no beam meets its joints along the x, y or z axis, and the joint cubes are square to those "
+         "axes: a frame turned off them meets every cube at an angle, so turn it square to the axes";
+}
+
+
 using Mask = uint32_t;  // a set of the 27 voxels of a joint cube
 
 // The random state of restart `attempt` for the user's seed (core/model/restarts.h).
@@ -785,7 +805,7 @@ FrameDesignResult FrameDesigner::run(const std::vector<Step>& prefix) {
                                             : "no interlocking joints exist below this node (") +
                      std::to_string(progress.nodes) +
                      " nodes; deepest " + std::to_string(progress.bestDepth) + " of " + std::to_string(beams) +
-                     " beams)";
+                     " beams)" + offTheAxesNote(frame_);
     return result;
   }
   result.message = "designed the joints of " + std::to_string(beams) + " beams (key: beam " +

@@ -171,6 +171,23 @@ int faceOfTangent(const FrameLayout& layout, int beam, int end, const std::strin
   return face;
 }
 
+// Two joints at one place: named (the default joint size would come out as 0).
+void requireJointsApart(const Frame& frame, const std::string& source) {
+  std::vector<int> order(frame.joints.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](int a, int b) {
+    return frame.joints[a].position < frame.joints[b].position || (frame.joints[a].position == frame.joints[b].position && a < b);
+  });
+  for (size_t k = 1; k < order.size(); ++k) {
+    const Vec3& p = frame.joints[order[k - 1]].position;
+    if (p != frame.joints[order[k]].position) continue;
+    const int first = std::min(order[k - 1], order[k]), second = std::max(order[k - 1], order[k]);
+    throwBadInput(source, jointName(frame, first) + " and " + jointName(frame, second) + " are at the same place (" +
+                              number(p[0]) + ", " + number(p[1]) + ", " + number(p[2]) +
+                              "): merge them, or move one; a joint cube needs room between them");
+  }
+}
+
 }  // namespace
 
 const char* cubeFaceName(int face) {
@@ -285,8 +302,12 @@ FrameLayout layoutFrame(Frame frame, const std::string& source) {
       }
     }
   }
-  // Sizes.
-  if (frame.jointSize == 0) frame.jointSize = defaultJointSize(frame);
+  // Sizes. Two joints at one place leave no room for a joint cube: named here, before the default
+  // size (half the closest pair's distance) comes out as 0 and is refused as a size nobody gave.
+  if (frame.jointSize == 0) {
+    requireJointsApart(frame, source);
+    frame.jointSize = defaultJointSize(frame);
+  }
   if (!(frame.jointSize > 0) || !std::isfinite(frame.jointSize)) {
     throwBadInput(source, "the joint size must be a positive number, got " + number(frame.jointSize));
   }
