@@ -440,6 +440,8 @@ class PlateJointPlanner {
   // A structure no joints can make interlocking (a cut point, fewer than 3 plates): its result.
   std::optional<PlateDesignResult> refusal() const;
   std::vector<Step> childrenOf(const std::vector<Step>& steps);
+  std::vector<Step> candidatesOf(const std::vector<Step>& steps);
+  std::optional<Step> nextChild(const std::vector<Step>& steps, std::vector<Step>* candidates, int* accepted);
   bool acceptComplete(const std::vector<Step>& path, PlateDesignResult* result);
   int plateCount() const { return graph_.plateCount; }
   const std::string& lastRejection() const { return lastRejection_; }
@@ -726,7 +728,9 @@ const Plate& PlateJointPlanner::jointedPlate(int plate, const std::vector<PlateJ
 // The ranked children of a node: every plate of R that is not a cut point of R's parts-graph,
 // with every direction it may leave in, kept if A_i passes; fewest empty joints first, ties in a
 // seeded random order; at most `candidates` of them.
-std::vector<Step> PlateJointPlanner::childrenOf(const std::vector<Step>& steps) {
+// Every way the next plate can leave, ranked: the paper's preference (below), then a random order
+// from the seed. The node test is left to nextChild.
+std::vector<Step> PlateJointPlanner::candidatesOf(const std::vector<Step>& steps) {
   std::vector<bool> taken(graph_.plateCount, false);
   for (const Step& s : steps) taken[s.plate] = true;
   std::vector<int> rest, index(graph_.plateCount, -1);
@@ -753,10 +757,9 @@ std::vector<Step> PlateJointPlanner::childrenOf(const std::vector<Step>& steps) 
     for (const Vec3& d : candidateDirections(plate)) {
       if (!leavesWithoutPushing(graph_, plate, others, d)) continue;
       if (runsIntoARemainingPlate(plate, d, rest)) continue;
-      std::vector<Step> next = steps;
-      next.push_back(makeStep(steps, plate, d));
-      if (next.back().blocked || !acceptable(next)) continue;
-      ranked.push_back({nextRandom(), next.back()});
+      Step step = makeStep(steps, plate, d);
+      if (step.blocked) continue;
+      ranked.push_back({nextRandom(), std::move(step)});
     }
   }
   // The paper picks the key with the most edges parallel to d_1, for its halved joints (planned
@@ -772,10 +775,40 @@ std::vector<Step> PlateJointPlanner::childrenOf(const std::vector<Step>& steps) 
     return x.second.emptyJoints != y.second.emptyJoints ? x.second.emptyJoints < y.second.emptyJoints
                                                         : x.first < y.first;
   });
+  std::vector<Step> candidates;
+  for (auto& [key, step] : ranked) candidates.push_back(std::move(step));
+  return candidates;
+}
+
+// The node's children as the paper keeps them: its ranked candidates that pass the node test
+// (acceptable), the first m (options_.candidates) of them.
+std::vector<Step> PlateJointPlanner::childrenOf(const std::vector<Step>& steps) {
+  std::vector<Step> candidates = candidatesOf(steps);
   std::vector<Step> children;
-  for (size_t k = 0; k < ranked.size() && static_cast<int>(k) < options_.candidates; ++k)
-    children.push_back(ranked[k].second);
+  int accepted = 0;
+  while (std::optional<Step> child = nextChild(steps, &candidates, &accepted)) children.push_back(std::move(*child));
   return children;
+}
+
+// The next of `candidates` (ranked, taken from the front) that passes the node test, while fewer
+// than m have passed (`accepted`); none when none is left. The search asks for children one at a
+// time: the node test (a model of all contacts and its DBGs, milliseconds on 400 plates) is then
+// made only for the children it enters, not for every candidate of every node it passes (the
+// LONG TABLE of 402 plates: 39 s -> see the commit).
+std::optional<Step> PlateJointPlanner::nextChild(const std::vector<Step>& steps, std::vector<Step>* candidates,
+                                                 int* accepted) {
+  std::vector<Step> next = steps;
+  while (!candidates->empty() && *accepted < options_.candidates) {
+    next.push_back(std::move(candidates->front()));
+    candidates->erase(candidates->begin());
+    if (acceptable(next)) {
+      ++*accepted;
+      return std::move(next.back());
+    }
+    next.pop_back();
+  }
+  candidates->clear();
+  return std::nullopt;
 }
 
 std::optional<PlateDesignResult> PlateJointPlanner::refusal() const {
@@ -809,7 +842,9 @@ PlateJointPlanner::Outcome PlateJointPlanner::searchTree(int64_t budget, const s
                                                          PlateDesignResult* result) {
   PlateDesignProgress& progress = result->progress;
   const int64_t first = progress.nodes;
-  std::vector<std::vector<Step>> pending{childrenOf(prefix)};
+  // pending[k]: the candidates left at depth prefix + k; accepted[k]: how many of them passed.
+  std::vector<std::vector<Step>> pending{candidatesOf(prefix)};
+  std::vector<int> accepted{0};
   std::vector<Step> path = prefix;
   while (!pending.empty()) {
     if (progress.nodes - first >= budget) return Outcome::OutOfBudget;
@@ -831,13 +866,14 @@ PlateJointPlanner::Outcome PlateJointPlanner::searchTree(int64_t budget, const s
           (lastRejection_.empty() ? std::string(")") : "; the last complete plan failed: " + lastRejection_ + ")");
       return Outcome::Stopped;
     }
-    if (pending.back().empty()) {  // no child left here: back to the parent's next sibling
+    std::optional<Step> child = nextChild(path, &pending.back(), &accepted.back());
+    if (!child) {  // no child left here: back to the parent's next sibling
       pending.pop_back();
+      accepted.pop_back();
       if (path.size() > prefix.size()) path.pop_back();
       continue;
     }
-    path.push_back(pending.back().front());
-    pending.back().erase(pending.back().begin());
+    path.push_back(std::move(*child));
     if ((makesJoints(options_.realization) && runsIntoJointsSoFar(path)) || !heldByInequalities(path)) {
       path.pop_back();
       continue;
@@ -856,9 +892,11 @@ PlateJointPlanner::Outcome PlateJointPlanner::searchTree(int64_t budget, const s
       if (acceptComplete(path, result)) return Outcome::Found;
       path.pop_back();
       backjump(prefix.size(), &path, &pending);
+      accepted.resize(pending.size());
       continue;
     }
-    pending.push_back(childrenOf(path));
+    pending.push_back(candidatesOf(path));
+    accepted.push_back(0);
   }
   return Outcome::Exhausted;
 }
