@@ -413,21 +413,9 @@ TEST(PlateRepair, TheChairGetsOneBarFromLegToBackAndNoCutPointIsLeft) {
 TEST(PlateRepair, ATurnedChairGetsABarSquareToItselfAndDesigns) {
   const AssemblyDocument chair = loadPlateExample("chair_cut_point.json");
   for (const auto& [axis, angle] : std::vector<std::pair<int, double>>{{1, 0.3}, {2, 0.01}, {0, -0.7}}) {
-    const double c = std::cos(angle), s = std::sin(angle);
-    const int i = (axis + 1) % 3, j = (axis + 2) % 3;
-    std::vector<Plate> turned = chair.plates;
-    for (Plate& plate : turned) {
-      for (std::vector<Loop>* face : {&plate.bottom, &plate.top}) {
-        for (Loop& loop : *face) {
-          for (Vec3& p : loop) {
-            const double a = p[i], b = p[j];
-            p[i] = c * a - s * b;
-            p[j] = s * a + c * b;
-          }
-        }
-      }
-    }
-    const AssemblyDocument input = documentFromPlates(turned, {}, "turned chair");
+    const std::array<Vec3, 3> r =
+        testing::rotation(axis == 0 ? angle : 0, axis == 1 ? angle : 0, axis == 2 ? angle : 0);
+    const AssemblyDocument input = documentFromPlates(testing::turnedPlates(chair.plates, r), {}, "turned chair");
     const std::optional<PlateRepair> repair = proposeCutPointRepair(input.plates);
     ASSERT_TRUE(repair.has_value()) << "axis " << axis << ", " << angle << " rad";
     ASSERT_EQ(repair->added.size(), 1u);

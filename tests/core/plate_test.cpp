@@ -183,20 +183,6 @@ TEST(PlateInput, DocumentsRoundTripThroughTheWriter) {
   }
 }
 
-// Rotations about several axes computed with cos/sin, like a modelling tool's export.
-std::array<Vec3, 3> rotation(double ax, double ay, double az) {
-  auto mul = [](const std::array<Vec3, 3>& a, const std::array<Vec3, 3>& b) {
-    std::array<Vec3, 3> r{};
-    for (int i = 0; i < 3; ++i) {
-      for (int j = 0; j < 3; ++j) r[i][j] = a[i][0] * b[0][j] + a[i][1] * b[1][j] + a[i][2] * b[2][j];
-    }
-    return r;
-  };
-  const std::array<Vec3, 3> x{{{1, 0, 0}, {0, std::cos(ax), -std::sin(ax)}, {0, std::sin(ax), std::cos(ax)}}};
-  const std::array<Vec3, 3> y{{{std::cos(ay), 0, std::sin(ay)}, {0, 1, 0}, {-std::sin(ay), 0, std::cos(ay)}}};
-  const std::array<Vec3, 3> z{{{std::cos(az), -std::sin(az), 0}, {std::sin(az), std::cos(az), 0}, {0, 0, 1}}};
-  return mul(z, mul(y, x));
-}
 
 TEST(PlateRobustness, VerdictsAndContactsSurviveTurningTheWholeDesign) {
   const double q = M_PI / 2;
@@ -215,7 +201,7 @@ TEST(PlateRobustness, VerdictsAndContactsSurviveTurningTheWholeDesign) {
     options.method = CheckMethod::Both;
     const CheckReport base = checkAssembly(original, options);
     for (const auto& [ax, ay, az] : angles) {
-      const std::array<Vec3, 3> r = rotation(ax, ay, az);
+      const std::array<Vec3, 3> r = testing::rotation(ax, ay, az);
       AssemblyDocument turned = original;
       for (Plate& plate : turned.plates) {
         for (auto* face : {&plate.bottom, &plate.top}) {
@@ -319,14 +305,7 @@ TEST(PlateJointPlan, SameSeedSamePlanAndTurnedDesignsPlanToo) {
   for (size_t k = 0; k < first.directions.size(); ++k) EXPECT_EQ(first.directions[k], again.directions[k]);
   // Turned by a rotation computed in floating point, the design still plans and verifies.
   AssemblyDocument turned = loadExample("mitred_box.json");
-  const std::array<Vec3, 3> r = rotation(0.3, 1.1, -0.7);
-  for (Plate& plate : turned.plates) {
-    for (auto* face : {&plate.bottom, &plate.top}) {
-      for (Loop& loop : *face) {
-        for (Vec3& p : loop) p = {dot(r[0], p), dot(r[1], p), dot(r[2], p)};
-      }
-    }
-  }
+  turned.plates = testing::turnedPlates(turned.plates, testing::rotation(0.3, 1.1, -0.7));
   PlateDesignOptions planned;
   planned.realization = JointRealization::Planned;
   const PlateDesignResult result = designPlateJoints(turned.plates, computePlateContacts(turned.plates, turned.plateOptions), planned);

@@ -42,42 +42,6 @@ std::vector<Rotation> rightAngleTurns() {
   return turns;
 }
 
-// A rotation about the axes by angles a, b, c (rad), computed in floating point.
-Rotation eulerTurn(double a, double b, double c) {
-  const Rotation x{{{1, 0, 0}, {0, std::cos(a), -std::sin(a)}, {0, std::sin(a), std::cos(a)}}};
-  const Rotation y{{{std::cos(b), 0, std::sin(b)}, {0, 1, 0}, {-std::sin(b), 0, std::cos(b)}}};
-  const Rotation z{{{std::cos(c), -std::sin(c), 0}, {std::sin(c), std::cos(c), 0}, {0, 0, 1}}};
-  const auto times = [](const Rotation& p, const Rotation& q) {
-    Rotation r{};
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j)
-        for (int k = 0; k < 3; ++k) r[i][j] += p[i][k] * q[k][j];
-    return r;
-  };
-  return times(z, times(y, x));
-}
-
-// Each vertex turned, scaled and rounded to `decimals` (0: not rounded).
-Vec3 moved(const Vec3& p, const Rotation& r, double scale, int decimals) {
-  Vec3 q{};
-  for (int i = 0; i < 3; ++i) {
-    q[i] = (r[i][0] * p[0] + r[i][1] * p[1] + r[i][2] * p[2]) * scale;
-    if (decimals > 0) q[i] = std::round(q[i] * std::pow(10.0, decimals)) / std::pow(10.0, decimals);
-  }
-  return q;
-}
-
-std::vector<Plate> movedPlates(std::vector<Plate> plates, const Rotation& r, double scale, int decimals) {
-  for (Plate& plate : plates) {
-    for (std::vector<Loop>* face : {&plate.bottom, &plate.top}) {
-      for (Loop& loop : *face) {
-        for (Vec3& p : loop) p = moved(p, r, scale, decimals);
-      }
-    }
-  }
-  return plates;
-}
-
 // The design of the moved example, written as the CLI writes it and checked as `desia check` does:
 // "" when both pass, else what failed.
 std::string designAndCheckFailure(const std::string& example, JointRealization joints, const Rotation& r, double scale,
@@ -85,7 +49,7 @@ std::string designAndCheckFailure(const std::string& example, JointRealization j
   const AssemblyDocument exact =
       parseAssemblyText(testing::readFileText(testing::projectPath("examples/plate/" + example)), example);
   const AssemblyDocument input =
-      documentFromPlates(movedPlates(exact.plates, r, scale, decimals), exact.plateOptions, example, exact.name);
+      documentFromPlates(testing::turnedPlates(exact.plates, r, scale, decimals), exact.plateOptions, example, exact.name);
   PlateDesignOptions options;
   options.realization = joints;
   options.seed = 1;
@@ -124,7 +88,7 @@ TEST_P(TurnedPlateDesigns, DesignAndCheckTurnedScaledAndWrittenToAMicrometre) {
   for (const auto& a : angles) {
     for (const double scale : {1.0, 25.4}) {
       for (const int decimals : {3, 6, 9}) {  // 3: a micrometre, as a file in metres to 6 decimals
-        EXPECT_EQ(designAndCheckFailure(example.file, example.joints, eulerTurn(a[0], a[1], a[2]), scale, decimals), "")
+        EXPECT_EQ(designAndCheckFailure(example.file, example.joints, testing::rotation(a[0], a[1], a[2]), scale, decimals), "")
             << example.file << " turned (" << a[0] << ", " << a[1] << ", " << a[2] << "), x" << scale << ", "
             << decimals << " decimals";
       }

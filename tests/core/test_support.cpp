@@ -4,6 +4,7 @@
 #include "desia/error.h"
 
 #include <array>
+#include <cmath>
 #include <cctype>
 #include <fstream>
 #include <map>
@@ -191,6 +192,39 @@ uint32_t bitwiseCrc32(const std::string& data) {
     for (int k = 0; k < 8; ++k) crc = (crc >> 1) ^ (0xEDB88320u & (0u - (crc & 1u)));
   }
   return ~crc;
+}
+
+std::array<Vec3, 3> rotation(double ax, double ay, double az) {
+  auto mul = [](const std::array<Vec3, 3>& a, const std::array<Vec3, 3>& b) {
+    std::array<Vec3, 3> r{};
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) r[i][j] = a[i][0] * b[0][j] + a[i][1] * b[1][j] + a[i][2] * b[2][j];
+    }
+    return r;
+  };
+  const std::array<Vec3, 3> x{{{1, 0, 0}, {0, std::cos(ax), -std::sin(ax)}, {0, std::sin(ax), std::cos(ax)}}};
+  const std::array<Vec3, 3> y{{{std::cos(ay), 0, std::sin(ay)}, {0, 1, 0}, {-std::sin(ay), 0, std::cos(ay)}}};
+  const std::array<Vec3, 3> z{{{std::cos(az), -std::sin(az), 0}, {std::sin(az), std::cos(az), 0}, {0, 0, 1}}};
+  return mul(z, mul(y, x));
+}
+
+std::vector<Plate> turnedPlates(std::vector<Plate> plates, const std::array<Vec3, 3>& r, double scale, int decimals) {
+  const double unit = std::pow(10.0, decimals);
+  for (Plate& plate : plates) {
+    for (std::vector<Loop>* face : {&plate.bottom, &plate.top}) {
+      for (Loop& loop : *face) {
+        for (Vec3& p : loop) {
+          Vec3 q{};
+          for (int i = 0; i < 3; ++i) {
+            q[i] = (r[i][0] * p[0] + r[i][1] * p[1] + r[i][2] * p[2]) * scale;
+            if (decimals > 0) q[i] = std::round(q[i] * unit) / unit;
+          }
+          p = q;
+        }
+      }
+    }
+  }
+  return plates;
 }
 
 }  // namespace desia::testing

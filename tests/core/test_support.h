@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cstdint>
 #include <random>
 #include <string>
@@ -12,6 +13,7 @@
 #include "desia/check.h"
 #include "desia/document.h"
 #include "desia/mesh.h"
+#include "desia/plate.h"
 #include "desia/puz_format.h"
 
 namespace desia::testing {
@@ -36,6 +38,15 @@ std::vector<std::vector<std::string>> sChannelLayers();
 // Moves one random voxel to a face-adjacent different part; returns false (grid unchanged) if
 // that is impossible or the result is not a valid assembly (a part emptied or split).
 bool tradeOneVoxel(VoxelGrid& grid, std::mt19937& random);
+
+// Rotations about x, then y, then z by these angles (rad), computed with cos/sin, like a
+// modelling tool's export.
+std::array<Vec3, 3> rotation(double ax, double ay, double az);
+
+// The plates' vertices turned by `r`, scaled, and rounded to `decimals` (0: not rounded), as a
+// CAD tool writes them.
+std::vector<Plate> turnedPlates(std::vector<Plate> plates, const std::array<Vec3, 3>& r, double scale = 1,
+                                int decimals = 0);
 
 // User-visible ids of internal part indices.
 std::vector<int> idsOf(const Assembly& assembly, const std::vector<int>& parts);
