@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,7 @@
 #include "desia/plate_design.h"
 #include "desia/plate_design_io.h"
 #include "desia/design_io.h"
+#include "desia/design_session.h"
 #include "desia/document.h"
 #include "desia/error.h"
 #include "desia/export.h"
@@ -132,12 +134,12 @@ class SnapshotGate {
   int sentDepth_ = -1;
 };
 
-// { depth, labels }: the deepest node's voxel labels (parts 1..depth, depth + 1 the remainder) as
+// { depth, labels }: the deepest node's voxel labels (parts 1..depth placed, depth + 1 the remainder) as
 // an Int32Array copied out of the heap, in the shape's grid order (x fastest, as documents).
 val voxelSnapshot(const desia::DesignProgress& progress) {
-  const std::vector<int>& labels = progress.deepest->labels();
+  const std::vector<int>& labels = progress.deepestGrid->labels();
   val snapshot = val::object();
-  snapshot.set("depth", progress.bestDepth);
+  snapshot.set("depth", progress.bestDepth - 1);  // parts placed, as the plates' and beams' snapshots
   snapshot.set("labels", val(emscripten::typed_memory_view(labels.size(), labels.data())).call<val>("slice"));
   return snapshot;
 }
@@ -150,15 +152,27 @@ val placedSnapshot(const std::vector<int>& placed) {
   return snapshot;
 }
 
-// The voxel designer's progress as a plain object for a JS function, which may return false to stop
-// the search. Holds `onProgress` by reference: use it within the call that received it.
+// A designer's progress (any kind) as a plain object for a JS function, which may return false to
+// stop the search; the deepest node rides along as `snapshot` when it is new. Holds `onProgress` by
+// reference: use it within the call that received it.
 std::function<bool(const desia::DesignProgress&)> progressCallback(const val& onProgress) {
   return [&onProgress, gate = SnapshotGate()](const desia::DesignProgress& progress) mutable {
     val value = parseJsonText(desia::designProgressToJson(progress));
-    if (progress.deepest && gate.isNew(progress.bestDepth)) value.set("snapshot", voxelSnapshot(progress));
-    const val answer = onProgress(value);
-    return !(answer.isFalse());
+    if (progress.deepestGrid && gate.isNew(progress.bestDepth)) {
+      value.set("snapshot", voxelSnapshot(progress));
+    } else if (!progress.deepestGrid && !progress.deepestPlaced.empty() &&
+               gate.isNew(static_cast<int>(progress.deepestPlaced.size()))) {
+      value.set("snapshot", placedSnapshot(progress.deepestPlaced));
+    }
+    return !onProgress(value).isFalse();
   };
+}
+
+// Asks for progress (and the live view) when `onProgress` is a JS function.
+void listen(desia::DesignLimits& limits, const val& onProgress) {
+  if (onProgress.typeOf().as<std::string>() != "function") return;
+  limits.onProgress = progressCallback(onProgress);
+  limits.deepestSnapshots = true;  // a listener gets the live view too
 }
 
 // Designs a voxel puzzle. `optionsJson` is the package's options object as JSON text (parsed by the
@@ -172,10 +186,7 @@ val designVoxel(const std::string& shapeText, const std::string& optionsJson, co
                                                          std::string(desia::assemblyKindName(document.kind)) + " document");
     }
     desia::VoxelDesignOptions options = desia::parseDesignOptionsJson(optionsJson, document.voxels);
-    if (onProgress.typeOf().as<std::string>() == "function") {
-      options.onProgress = progressCallback(onProgress);
-      options.deepestSnapshots = true;  // a listener gets the live view too
-    }
+    listen(options.limits, onProgress);
     return parseJsonText(desia::designResultToJson(desia::designVoxelPuzzle(document.voxels, options)));
   });
 }
@@ -188,15 +199,7 @@ val designPlate(const std::string& text, const std::string& optionsJson, const s
       throw desia::Error(desia::ErrorCode::BadInput, source + ": designPlate needs a plate design (kind \"plate\" with \"plates\" and no \"contacts\")");
     }
     desia::PlateDesignOptions options = desia::parsePlateDesignOptionsJson(optionsJson);
-    if (onProgress.typeOf().as<std::string>() == "function") {
-      options.deepestSnapshots = true;
-      options.onProgress = [&onProgress, gate = SnapshotGate()](const desia::PlateDesignProgress& progress) mutable {
-        val value = parseJsonText(desia::plateDesignProgressToJson(progress));
-        const int placed = static_cast<int>(progress.deepestPlaced.size());
-        if (placed > 0 && gate.isNew(placed)) value.set("snapshot", placedSnapshot(progress.deepestPlaced));
-        return !(onProgress(value).isFalse());
-      };
-    }
+    listen(options.limits, onProgress);
     return parseJsonText(desia::plateDesignResultToJson(document, desia::designPlateJoints(document.plates, document.plateContacts, options)));
   });
 }
@@ -207,15 +210,7 @@ val designFrame(const std::string& text, const std::string& optionsJson, const s
   return guarded([&] {
     desia::FramePackageOptions options = desia::parseFrameDesignOptionsJson(optionsJson);
     const desia::FrameDocument frame = desia::parseFrameText(text, source, options.jointSize);
-    if (onProgress.typeOf().as<std::string>() == "function") {
-      options.design.deepestSnapshots = true;
-      options.design.onProgress = [&onProgress, gate = SnapshotGate()](const desia::FrameDesignProgress& progress) mutable {
-        val value = parseJsonText(desia::frameDesignProgressToJson(progress));
-        const int placed = static_cast<int>(progress.deepestPlaced.size());
-        if (placed > 0 && gate.isNew(placed)) value.set("snapshot", placedSnapshot(progress.deepestPlaced));
-        return !(onProgress(value).isFalse());
-      };
-    }
+    listen(options.design.limits, onProgress);
     return parseJsonText(desia::frameDesignResultToJson(frame, desia::designFrame(frame.layout, options.design)));
   });
 }
@@ -227,130 +222,33 @@ val parseFrame(const std::string& text, const std::string& source, double jointS
 }
 
 // The interactive design session (a long-lived handle: JS must call delete(), which the facade's
-// dispose() does), for a voxel shape, a plate design or a frame (JSON, .fpuz, or OBJ by the
-// extension of `source`; the kind of the document decides). Every method returns plain data.
+// dispose() does), for a voxel shape, a plate design or a frame (desia/design_session.h: the kind
+// of the document decides). Every method returns plain data.
 class DesignSession {
  public:
-  DesignSession(const std::string& shapeText, const std::string& optionsJson, const std::string& source) {
-    guarded([&] {
-      const bool obj = source.size() >= 4 && (source.compare(source.size() - 4, 4, ".obj") == 0 ||
-                                              source.compare(source.size() - 4, 4, ".OBJ") == 0);
-      if (!obj) document_ = desia::parseAssemblyText(shapeText, source);
-      if (obj || desia::isFrameDocument(document_)) {
-        const desia::FramePackageOptions options = desia::parseFrameDesignOptionsJson(optionsJson);
-        frame_ = desia::parseFrameText(shapeText, source, options.jointSize);
-        frames_ = std::make_unique<desia::FrameDesignSession>(frame_.layout, options.design);
-      } else if (document_.kind == desia::AssemblyKind::Plate && document_.contactsFromGeometry) {
-        plates_ = std::make_unique<desia::PlateDesignSession>(document_.plates, document_.plateContacts,
-                                                               plateOptions(optionsJson));
-      } else if (document_.kind == desia::AssemblyKind::Voxel) {
-        voxels_ = std::make_unique<desia::VoxelDesignSession>(document_.voxels, desia::parseDesignOptionsJson(optionsJson, document_.voxels));
-      } else {
-        throw desia::Error(desia::ErrorCode::BadInput, source + ": a design session needs a voxel shape, a plate design or a frame");
-      }
-    });
+  DesignSession(const std::string& text, const std::string& optionsJson, const std::string& source) {
+    guarded([&] { session_ = desia::openDesignSession(text, optionsJson, source); });
   }
 
-  val state() const {
-    return guarded([&] {
-      if (frames_) return parseJsonText(desia::frameSessionStateToJson(frame_, *frames_));
-      if (plates_) return parseJsonText(desia::plateSessionStateToJson(document_, *plates_));
-      val result = val::object();
-      result.set("partsPlaced", voxels_->partsPlaced() + 1);  // parts in the current assembly
-      result.set("targetParts", voxels_->targetParts());
-      result.set("complete", voxels_->complete());
-      result.set("document", parseJsonText(desia::documentToJson(desia::documentFromVoxels(voxels_->current()), -1)));
-      return result;
-    });
-  }
-  int childCount() {
-    return guarded([&] { return frames_ ? frames_->childCount() : plates_ ? plates_->childCount() : voxels_->childCount(); });
-  }
-  val preview(int n) {
-    return guarded([&] {
-      if (frames_) return parseJsonText(desia::frameStepToJson(frame_, frames_->childPreview(n)));
-      if (plates_) return parseJsonText(desia::plateStepToJson(document_, plates_->childPreview(n)));
-      return parseJsonText(desia::documentToJson(desia::documentFromVoxels(voxels_->childPreview(n)), -1));
-    });
-  }
-  void choose(int n) {
-    guarded([&] { frames_ ? frames_->chooseChild(n) : plates_ ? plates_->chooseChild(n) : voxels_->chooseChild(n); });
-  }
-  bool next() { return guarded([&] { return frames_ ? frames_->next() : plates_ ? plates_->next() : voxels_->generateNextPart(); }); }
-  bool back() { return guarded([&] { return frames_ ? frames_->back() : plates_ ? plates_->back() : voxels_->goBack(); }); }
+  val state() const { return guarded([&] { return parseJsonText(session_->stateJson()); }); }
+  int childCount() { return guarded([&] { return session_->childCount(); }); }
+  val preview(int n) { return guarded([&] { return parseJsonText(session_->previewJson(n)); }); }
+  void choose(int n) { guarded([&] { session_->choose(n); }); }
+  bool next() { return guarded([&] { return session_->next(); }); }
+  bool back() { return guarded([&] { return session_->back(); }); }
   // "Finish automatically from here": the designer's search below the current node; the same
   // result object as designVoxel / designPlate / designFrame, with their onProgress.
   val finish(const std::string& limitsJson, val onProgress) {
     return guarded([&] {
       desia::DesignLimits limits = desia::parseDesignLimitsJson(limitsJson);
-      if (frames_) {
-        desia::FrameDesignLimits frameLimits;
-        frameLimits.timeLimitSeconds = limits.timeLimitSeconds;
-        frameLimits.nodeLimit = limits.nodeLimit;
-        if (onProgress.typeOf().as<std::string>() == "function") {
-          frameLimits.deepestSnapshots = true;
-          frameLimits.onProgress = [&onProgress, gate = SnapshotGate()](const desia::FrameDesignProgress& progress) mutable {
-            val value = parseJsonText(desia::frameDesignProgressToJson(progress));
-            const int placed = static_cast<int>(progress.deepestPlaced.size());
-            if (placed > 0 && gate.isNew(placed)) value.set("snapshot", placedSnapshot(progress.deepestPlaced));
-            return !(onProgress(value).isFalse());
-          };
-        }
-        return parseJsonText(desia::frameDesignResultToJson(frame_, frames_->finish(frameLimits)));
-      }
-      if (plates_) {
-        desia::PlateDesignLimits plateLimits;
-        plateLimits.timeLimitSeconds = limits.timeLimitSeconds;
-        plateLimits.nodeLimit = limits.nodeLimit;
-        if (onProgress.typeOf().as<std::string>() == "function") {
-          plateLimits.deepestSnapshots = true;
-          plateLimits.onProgress = [&onProgress, gate = SnapshotGate()](const desia::PlateDesignProgress& progress) mutable {
-            val value = parseJsonText(desia::plateDesignProgressToJson(progress));
-            const int placed = static_cast<int>(progress.deepestPlaced.size());
-            if (placed > 0 && gate.isNew(placed)) value.set("snapshot", placedSnapshot(progress.deepestPlaced));
-            return !(onProgress(value).isFalse());
-          };
-        }
-        return parseJsonText(desia::plateDesignResultToJson(document_, plates_->finish(plateLimits)));
-      }
-      if (onProgress.typeOf().as<std::string>() == "function") {
-        limits.onProgress = progressCallback(onProgress);
-        limits.deepestSnapshots = true;
-      }
-      return parseJsonText(desia::designResultToJson(voxels_->finish(limits)));
+      listen(limits, onProgress);
+      return parseJsonText(session_->finishJson(limits));
     });
   }
-  val check() const {
-    return guarded([&] {
-      desia::CheckOptions options;
-      if (frames_) {
-        // The verified result once complete (as designFrame's verification), else the frame as given.
-        const desia::AssemblyDocument current = desia::parseAssemblyText(
-            frames_->complete() ? desia::frameResultToJson(frame_.layout, frames_->result(), frame_.name, -1)
-                                : desia::frameDocumentToJson(frame_, -1),
-            "result");
-        return parseJsonText(desia::checkReportToJson(current, desia::checkDocument(current, options), -1));
-      }
-      if (plates_) {
-        // The verified result once complete (both tests, as designPlate), else the design as given.
-        const desia::AssemblyDocument current =
-            plates_->complete() ? desia::parseJsonDocument(desia::plateDesignToJson(document_, plates_->result(), -1), "plan") : document_;
-        if (plates_->complete()) options.method = desia::CheckMethod::Both;
-        return parseJsonText(desia::checkReportToJson(current, desia::checkDocument(current, options), -1));
-      }
-      const desia::AssemblyDocument document = desia::documentFromVoxels(voxels_->current());
-      return parseJsonText(desia::checkReportToJson(document, voxels_->check(), -1));
-    });
-  }
+  val check() const { return guarded([&] { return parseJsonText(session_->checkJson()); }); }
 
  private:
-  static desia::PlateDesignOptions plateOptions(const std::string& optionsJson) { return desia::parsePlateDesignOptionsJson(optionsJson); }
-
-  desia::AssemblyDocument document_;
-  desia::FrameDocument frame_;
-  std::unique_ptr<desia::VoxelDesignSession> voxels_;
-  std::unique_ptr<desia::PlateDesignSession> plates_;
-  std::unique_ptr<desia::FrameDesignSession> frames_;
+  std::unique_ptr<desia::DesignSession> session_;
 };
 
 // A voxel assembly (.puz or JSON text) as file bytes: "stl", "stl-ascii", "obj", "xmpuzzle",

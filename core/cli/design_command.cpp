@@ -73,8 +73,8 @@ DesignArguments parseArguments(const std::vector<std::string>& args) {
     else if (flag == "--min-part-size") parsed.options.minPartSize = static_cast<int>(desia::cli::integerOption(flag, value, 1, 1000000));
     else if (flag == "--max-part-size") parsed.options.maxPartSize = static_cast<int>(desia::cli::integerOption(flag, value, 1, 1000000));
     else if (flag == "--jobs") parsed.jobs = static_cast<int>(desia::cli::integerOption(flag, value, 1, 256));
-    else if (flag == "--time-limit") parsed.options.timeLimitSeconds = secondsArgument(flag, value);
-    else if (flag == "--node-limit") parsed.options.nodeLimit = desia::cli::integerOption(flag, value, 1, 1LL << 50);
+    else if (flag == "--time-limit") parsed.options.limits.timeLimitSeconds = secondsArgument(flag, value);
+    else if (flag == "--node-limit") parsed.options.limits.nodeLimit = desia::cli::integerOption(flag, value, 1, 1LL << 50);
     else if (flag == "--key-direction") parsed.options.keyDirection = desia::parseAxisDirection(value, "--key-direction");
     else usage("unknown option " + flag);
   }
@@ -107,11 +107,11 @@ int runDesignCommand(const std::vector<std::string>& args) {
   if (!parsed.groupsFile.empty()) parsed.options.groups = desia::parseVoxelGroupsJson(desia::cli::readInputFile(parsed.groupsFile), document.voxels, parsed.groupsFile);
   const bool live = !parsed.quiet && isatty(STDERR_FILENO);
   double lastShown = -1;
-  parsed.options.onProgress = [&](const desia::DesignProgress& p) {
-    if (live && p.elapsedSeconds - lastShown > 0.2) {
-      lastShown = p.elapsedSeconds;
-      std::fprintf(stderr, "\r%lld nodes, depth %d/%d, best %d/%d, %.1f s%s   ", static_cast<long long>(p.nodesVisited),
-                   p.depth + 1, p.targetParts, p.bestDepth + 1, p.targetParts, p.elapsedSeconds,
+  parsed.options.limits.onProgress = [&](const desia::DesignProgress& p) {
+    if (live && p.seconds - lastShown > 0.2) {
+      lastShown = p.seconds;
+      std::fprintf(stderr, "\r%lld nodes, depth %d/%d, best %d/%d, %.1f s%s   ", static_cast<long long>(p.nodes),
+                   p.depth, p.targetParts, p.bestDepth, p.targetParts, p.seconds,
                    parsed.jobs > 1 ? (", " + std::to_string(parsed.jobs) + " seeds").c_str() : "");
     }
     return !interrupted;
@@ -128,7 +128,7 @@ int runDesignCommand(const std::vector<std::string>& args) {
                                ? desia::documentToJson(desia::documentFromVoxels(result.puzzle)) + "\n"
                                : desia::formatPuz(result.puzzle);
   desia::cli::writeOutputFile(parsed.output, text);
-  std::cout << result.message << " in " << result.progress.elapsedSeconds << " s\n"
+  std::cout << result.message << " in " << result.progress.seconds << " s\n"
             << "seed: " << result.seed;
   if (parsed.jobs > 1) std::cout << " won (" << seedsText(parsed) << "; --jobs 1 --seed " << result.seed << " gives this puzzle)";
   std::cout << "\npart sizes: min " << result.partSizes.min << ", max " << result.partSizes.max << ", mean "

@@ -40,7 +40,7 @@ class Portfolio {
   void runJob(const VoxelGrid& shape, size_t job) {
     VoxelDesignOptions options = options_;
     options.seed = options_.seed + job;
-    options.onProgress = [this, job](const DesignProgress& progress) { return onJobProgress(job, progress); };
+    options.limits.onProgress = [this, job](const DesignProgress& progress) { return onJobProgress(job, progress); };
     try {
       VoxelDesignResult result = designVoxelPuzzle(shape, options);
       std::lock_guard<std::mutex> lock(mutex_);
@@ -60,17 +60,17 @@ class Portfolio {
     if (stop_) return false;
     std::lock_guard<std::mutex> lock(mutex_);
     progress_[job] = progress;
-    if (options_.onProgress && !options_.onProgress(combinedProgress())) stop_ = true;
+    if (options_.limits.onProgress && !options_.limits.onProgress(combinedProgress())) stop_ = true;
     return !stop_;
   }
 
   // What the caller sees: the work of all searches, the depths of the deepest one.
   DesignProgress combinedProgress() const {
     DesignProgress combined = progress_[deepestOf(progress_)];
-    combined.nodesVisited = 0;
+    combined.nodes = 0;
     for (const DesignProgress& progress : progress_) {
-      combined.nodesVisited += progress.nodesVisited;
-      combined.elapsedSeconds = std::max(combined.elapsedSeconds, progress.elapsedSeconds);
+      combined.nodes += progress.nodes;
+      combined.seconds = std::max(combined.seconds, progress.seconds);
     }
     return combined;
   }

@@ -62,9 +62,9 @@ int runFrameDesignCommand(const std::vector<std::string>& args) {
     else if (flag == "--candidates")
       options.candidates = static_cast<int>(desia::cli::integerOption(flag, value, 1, 10000));
     else if (flag == "--node-limit")
-      options.nodeLimit = desia::cli::integerOption(flag, value, 1, 1LL << 50);
+      options.limits.nodeLimit = desia::cli::integerOption(flag, value, 1, 1LL << 50);
     else if (flag == "--time-limit")
-      options.timeLimitSeconds = positiveNumber(flag, value, 0, 1e7);
+      options.limits.timeLimitSeconds = positiveNumber(flag, value, 0, 1e7);
     else if (flag == "--joint-size")
       jointSize = positiveNumber(flag, value, 1e-9, 1e9);
     else
@@ -74,7 +74,7 @@ int runFrameDesignCommand(const std::vector<std::string>& args) {
   if (output.empty() || !desia::cli::hasExtension(output, ".json")) usage("design frame needs --output RESULT.json");
   const desia::FrameDocument frame = desia::parseFrameText(desia::cli::readInputFile(input), input, jointSize);
   const bool live = !quiet && isatty(STDERR_FILENO);
-  options.onProgress = [&](const desia::FrameDesignProgress& p) {
+  options.limits.onProgress = [&](const desia::DesignProgress& p) {
     if (live && p.nodes % 16 == 0) {
       std::fprintf(stderr, "\r%lld nodes, depth %d/%d, %.1f s   ", static_cast<long long>(p.nodes), p.depth + 1,
                    p.targetParts, p.seconds);
@@ -85,7 +85,7 @@ int runFrameDesignCommand(const std::vector<std::string>& args) {
   const desia::FrameDesignResult result = desia::designFrame(frame.layout, options);
   std::signal(SIGINT, SIG_DFL);
   if (live) std::fprintf(stderr, "\r%70s\r", "");
-  if (result.status != desia::FrameDesignStatus::Success) {
+  if (result.status != desia::DesignStatus::Success) {
     std::cerr << "desia: " << input << ": " << result.message << "\n";
     return 1;
   }

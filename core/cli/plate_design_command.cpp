@@ -70,9 +70,9 @@ int runPlateDesignCommand(const std::vector<std::string>& args) {
     else if (flag == "--candidates")
       options.candidates = static_cast<int>(desia::cli::integerOption(flag, value, 1, 10000));
     else if (flag == "--node-limit")
-      options.nodeLimit = desia::cli::integerOption(flag, value, 1, 1LL << 50);
+      options.limits.nodeLimit = desia::cli::integerOption(flag, value, 1, 1LL << 50);
     else if (flag == "--time-limit")
-      options.timeLimitSeconds = static_cast<double>(desia::cli::integerOption(flag, value, 1, 10000000));
+      options.limits.timeLimitSeconds = static_cast<double>(desia::cli::integerOption(flag, value, 1, 10000000));
     else if (flag == "--repair")
       repairOutput = value;
     else if (flag == "--joints")
@@ -100,7 +100,7 @@ int runPlateDesignCommand(const std::vector<std::string>& args) {
   }
   options.geometry = document.plateOptions;
   const bool live = !quiet && isatty(STDERR_FILENO);
-  options.onProgress = [&](const desia::PlateDesignProgress& p) {
+  options.limits.onProgress = [&](const desia::DesignProgress& p) {
     if (live)
       std::fprintf(stderr, "\r%lld nodes, depth %d/%d, %.1f s   ", static_cast<long long>(p.nodes), p.depth + 1,
                    p.targetParts, p.seconds);
@@ -110,9 +110,9 @@ int runPlateDesignCommand(const std::vector<std::string>& args) {
   const desia::PlateDesignResult result = desia::designPlateJoints(document.plates, document.plateContacts, options);
   std::signal(SIGINT, SIG_DFL);
   if (live) std::fprintf(stderr, "\r%70s\r", "");
-  if (result.status == desia::PlateDesignStatus::CutPoint)
+  if (result.status == desia::DesignStatus::CutPoint)
     return reportCutPoint(document, input, result.message, repairOutput);
-  if (result.status != desia::PlateDesignStatus::Success) {
+  if (result.status != desia::DesignStatus::Success) {
     std::cerr << "desia: " << input << ": " << result.message << "\n";
     return 1;
   }

@@ -49,13 +49,13 @@
 
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <optional>
 
 #include "analysis/vec3.h"
-#include "model/restarts.h"
+#include "search/construction_search.h"
+#include "search/restarts.h"
 #include "desia/cut_points.h"
 #include "desia/error.h"
 #include "desia/interlocking.h"
@@ -85,7 +85,7 @@ std::string offTheAxesNote(const Frame& frame) {
 
 using Mask = uint32_t;  // a set of the 27 voxels of a joint cube
 
-// The random state of restart `attempt` for the user's seed (core/model/restarts.h).
+// The random state of restart `attempt` for the user's seed (search/restarts.h).
 uint64_t attemptSeed(uint64_t seed, int64_t attempt) {
   return restartState(seed, attempt, seed * 0x9E3779B97F4A7C15ull + 7);
 }
@@ -225,6 +225,7 @@ class FrameDesigner {
   // The restarted search below the node `prefix` (the root: a whole design); the prefix's steps
   // stay, restarts re-seed below that node.
   FrameDesignResult run(const std::vector<Step>& prefix = {});
+  class SearchTree;
 
   // For the session (FrameDesignSession): why no design can exist (a cut point, too few beams);
   // the ranked children of the current node; moving down and up the tree; and a complete design
@@ -256,7 +257,6 @@ class FrameDesigner {
     random_ = random_ * 6364136223846793005ull + 1442695040888963407ull;
     return random_ >> 11;
   }
-  double seconds() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
   int endOf(int beam, int joint) const { return frame_.beams[beam].joints[0] == joint ? 0 : 1; }
   bool inRest(int beam) const { return stepOf_[beam] < 0; }
   int width_ = 1;     // children kept per node in the current search
@@ -271,7 +271,6 @@ class FrameDesigner {
   std::vector<JointLabels> labels_;
   std::vector<int> stepOf_;  // per beam: its step in path_, or -1 while in R
   std::vector<Step> path_;
-  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
   std::string lastRejection_;  // why the last complete design failed verification
   // Scratch for the graph test.
   std::vector<std::pair<int, int>> edges_;
@@ -674,7 +673,7 @@ std::optional<FrameDesignResult> FrameDesigner::refusal() const {
   result.progress.targetParts = beams;
   const std::vector<int> cuts = frameCutBeams(layout_);
   if (!cuts.empty()) {
-    result.status = FrameDesignStatus::CutPoint;
+    result.status = DesignStatus::CutPoint;
     result.message =
         "beam " + std::to_string(frame_.beams[cuts[0]].id) +
         " is a cut point of the parts-graph: taking it away splits the other beams, and no joints can make such "
@@ -708,14 +707,93 @@ bool FrameDesigner::completeHere(FrameDesignResult* result) {
   result->directions = directions;
   result->labels = labels;
   result->assembly = frameAssembly(layout_, result->labels, result->order);
-  result->status = FrameDesignStatus::Success;
+  result->status = DesignStatus::Success;
   return true;
 }
+
+// The construction tree below the node `prefix` (the root for a whole design) as the shared search
+// walks it (search/construction_search.h): an explicit stack of each node's ranked children. Within
+// a restart, iterative widening: a tree searched to the end with m children per node is searched
+// again with 2m (up to 32), so a narrow first search costs little; a tree exhausted at the widest
+// means no design.
+class FrameDesigner::SearchTree : public search::ConstructionTree {
+ public:
+  SearchTree(FrameDesigner& designer, size_t floor, FrameDesignResult& result)
+      : designer_(designer), floor_(floor), result_(result),
+        remaining_(designer.beamCount() - static_cast<int>(floor)) {}
+
+  void restart(int64_t attempt) override {
+    backToFloor();
+    designer_.random_ = attemptSeed(designer_.options_.seed, attempt);
+    designer_.width_ = designer_.options_.candidates;
+    workAtStart_ = designer_.work_;
+    pending_ = {designer_.childrenOfCurrent()};
+  }
+
+  // Restart k may spend restartUnit * luby(k) work, and 12 nodes per beam (at least 1,000) times
+  // luby(k): dead ends near the last beam are cheap, and thousands of them there mean a choice
+  // far above went wrong.
+  bool budgetSpent(int64_t attempt, int64_t nodes) const override {
+    const int64_t luby = lubyTerm(attempt);
+    return designer_.work_ - workAtStart_ >= restartUnit(remaining_) * luby ||
+           nodes >= std::max<int64_t>(1000, 12 * int64_t(remaining_)) * luby;
+  }
+
+  bool exhausted() const override { return pending_.empty(); }
+
+  bool widen() override {
+    backToFloor();
+    designer_.width_ *= 2;
+    if (designer_.width_ > std::max(32, designer_.options_.candidates)) return false;
+    pending_ = {designer_.childrenOfCurrent()};
+    return true;
+  }
+
+  search::Move step() override {
+    if (pending_.back().empty()) {  // no child left here: back to the parent's next sibling
+      pending_.pop_back();
+      if (designer_.path_.size() > floor_) designer_.undo(designer_.path_.back());
+      return search::Move::Returned;
+    }
+    const Step step = pending_.back().front();
+    pending_.back().erase(pending_.back().begin());
+    designer_.apply(step);
+    if (!complete()) pending_.push_back(designer_.childrenOfCurrent());
+    return search::Move::Entered;
+  }
+
+  int depth() const override { return static_cast<int>(designer_.path_.size()) + 1; }  // R counts as one
+  bool complete() const override { return depth() == designer_.beamCount(); }
+
+  // R is the last beam: it owns every voxel still free. Accepted only if it verifies.
+  bool acceptComplete() override {
+    if (designer_.completeHere(&result_)) return true;
+    designer_.undo(designer_.path_.back());
+    return false;
+  }
+
+  void snapshotDeepest(DesignProgress& progress) const override {
+    progress.deepestPlaced.clear();
+    for (const Step& s : designer_.path_) progress.deepestPlaced.push_back(s.beam);
+  }
+
+ private:
+  void backToFloor() {
+    while (designer_.path_.size() > floor_) designer_.undo(designer_.path_.back());
+  }
+
+  FrameDesigner& designer_;
+  size_t floor_;
+  FrameDesignResult& result_;
+  int remaining_;  // beams the search still decides
+  int64_t workAtStart_ = 0;
+  std::vector<std::vector<Step>> pending_;
+};
 
 FrameDesignResult FrameDesigner::run(const std::vector<Step>& prefix) {
   if (std::optional<FrameDesignResult> refused = refusal()) return *refused;
   FrameDesignResult result;
-  FrameDesignProgress& progress = result.progress;
+  DesignProgress& progress = result.progress;
   const int beams = static_cast<int>(frame_.beams.size());
   progress.targetParts = beams;
   // The floor: the search never goes above the prefix's node.
@@ -724,83 +802,29 @@ FrameDesignResult FrameDesigner::run(const std::vector<Step>& prefix) {
   if (static_cast<int>(floor) + 1 >= beams) {  // a complete node: nothing left to search
     progress.depth = progress.bestDepth = beams;
     if (!completeHere(&result)) {
-      result.status = FrameDesignStatus::NotFound;
+      result.status = DesignStatus::NotFound;
       result.message = "this complete design fails: " + lastRejection_;
     }
     return result;
   }
-  const int remaining = beams - static_cast<int>(floor);  // beams the search still decides
-  // Restarts (see the top): attempt k searches with the random state attemptSeed(seed, k) for at
-  // most restartUnit * luby(k) work (and 12 nodes per beam times luby(k)). Within an attempt, iterative widening: a tree searched to
-  // the end with m children per node is searched again with 2m (up to 32), so a narrow first
-  // search costs little; a tree exhausted at the widest means no design (not a budget out).
-  bool complete = false, exhausted = false;
-  for (int64_t attempt = 0; !complete && !exhausted; ++attempt) {
-    random_ = attemptSeed(options_.seed, attempt);
-    const int64_t budget = restartUnit(remaining) * lubyTerm(attempt);
-    // Nodes too: dead ends near the last beam are cheap, and thousands of them there mean a choice
-    // far above went wrong.
-    const int64_t nodeBudget = std::max<int64_t>(1000, 12 * int64_t(remaining)) * lubyTerm(attempt);
-    const int64_t attemptStart = work_, attemptNodes = progress.nodes;
-    bool outOfBudget = false;
-  for (width_ = options_.candidates; !complete && !outOfBudget; width_ *= 2) {
-    if (width_ > std::max(32, options_.candidates)) {
-      exhausted = true;
-      break;
-    }
-    std::vector<std::vector<Step>> pending{childrenOfCurrent()};
-    while (!pending.empty()) {
-      if (work_ - attemptStart >= budget || progress.nodes - attemptNodes >= nodeBudget) {
-        outOfBudget = true;
-        break;
-      }
-      ++progress.nodes;
-      progress.depth = static_cast<int>(path_.size());
-      progress.seconds = seconds();
-      if (options_.onProgress && !options_.onProgress(progress)) {
-        result.status = FrameDesignStatus::Cancelled;
-        result.message = "cancelled after " + std::to_string(progress.nodes) + " nodes";
-        return result;
-      }
-      if ((options_.timeLimitSeconds > 0 && progress.seconds > options_.timeLimitSeconds) ||
-          progress.nodes > options_.nodeLimit) {
-        result.status = FrameDesignStatus::LimitReached;
-        result.message = "no design within the limits (" + std::to_string(progress.nodes) + " nodes; deepest " +
-                         std::to_string(progress.bestDepth) + " of " + std::to_string(beams) + " beams)";
-        return result;
-      }
-      if (pending.back().empty()) {  // no child left here: back to the parent's next sibling
-        pending.pop_back();
-        if (path_.size() > floor) undo(path_.back());
-        continue;
-      }
-      const Step step = pending.back().front();
-      pending.back().erase(pending.back().begin());
-      apply(step);
-      if (static_cast<int>(path_.size()) + 1 > progress.bestDepth) {
-        progress.bestDepth = static_cast<int>(path_.size()) + 1;
-        // A live view of the deepest node (on demand): read from the path, never fed back.
-        if (options_.deepestSnapshots) {
-          progress.deepestPlaced.clear();
-          for (const Step& s : path_) progress.deepestPlaced.push_back(s.beam);
-        }
-      }
-      if (static_cast<int>(path_.size()) + 1 == beams) {
-        // R is the last beam: it owns every voxel still free. Accepted only if it verifies.
-        if (completeHere(&result)) {
-          complete = true;
-          break;
-        }
-        undo(step);
-        continue;
-      }
-      pending.push_back(childrenOfCurrent());
-    }
-    while (path_.size() > floor && !complete) undo(path_.back());
+  SearchTree tree(*this, floor, result);
+  search::ConstructionSearch search(tree, options_.limits, search::SearchRules{/*returnsAreNodes=*/true});
+  const search::SearchEnd end = search.run(progress);
+  progress.seconds = search.seconds();
+  if (end == search::SearchEnd::Cancelled) {
+    result.status = DesignStatus::Cancelled;
+    result.message = "cancelled after " + std::to_string(progress.nodes) + " nodes";
+    return result;
   }
+  if (end == search::SearchEnd::NodeLimit || end == search::SearchEnd::TimeLimit) {
+    result.status = DesignStatus::LimitReached;
+    result.message = "no design within the limits (" + std::to_string(progress.nodes) + " nodes; deepest " +
+                     std::to_string(progress.bestDepth) + " of " + std::to_string(beams) + " beams)";
+    return result;
   }
+  const bool complete = end == search::SearchEnd::Found;
   if (!complete) {
-    result.status = FrameDesignStatus::NotFound;
+    result.status = DesignStatus::NotFound;
     result.message = std::string(floor == 0 ? "no interlocking joints exist within the search ("
                                             : "no interlocking joints exist below this node (") +
                      std::to_string(progress.nodes) +
@@ -836,7 +860,7 @@ struct FrameDesignSession::State {
   }
   void showProgress() {
     result = FrameDesignResult{};
-    result.status = FrameDesignStatus::NotFound;
+    result.status = DesignStatus::NotFound;
     result.progress.targetParts = designer.beamCount();
     result.message = std::to_string(path.size()) + " of " + std::to_string(designer.beamCount()) +
                      " beams taken (the last one stays): choose the next";
@@ -861,7 +885,7 @@ FrameDesignSession::~FrameDesignSession() = default;
 
 const std::vector<FrameDesignStep>& FrameDesignSession::steps() const { return state_->steps; }
 int FrameDesignSession::targetBeams() const { return state_->designer.beamCount(); }
-bool FrameDesignSession::complete() const { return state_->result.status == FrameDesignStatus::Success; }
+bool FrameDesignSession::complete() const { return state_->result.status == DesignStatus::Success; }
 const FrameDesignResult& FrameDesignSession::result() const { return state_->result; }
 
 int FrameDesignSession::childCount() { return complete() ? 0 : static_cast<int>(state_->childrenHere().size()); }
@@ -925,39 +949,20 @@ bool FrameDesignSession::back() {
   return true;
 }
 
-FrameDesignResult FrameDesignSession::finish(const FrameDesignLimits& limits) {
+FrameDesignResult FrameDesignSession::finish(const DesignLimits& limits) {
   const State& state = *state_;
   if (complete()) return state.result;  // a complete node: its verified design
   FrameDesignOptions options = state.options;
-  options.timeLimitSeconds = limits.timeLimitSeconds;
-  options.nodeLimit = limits.nodeLimit > 0 ? limits.nodeLimit : std::numeric_limits<int64_t>::max();
-  options.onProgress = limits.onProgress;
-  options.deepestSnapshots = limits.deepestSnapshots;
+  options.limits = limits;
   // A designer of its own: its random state does not depend on what this session explored before,
   // and the session's labels and children stay as they are.
   FrameDesigner designer(state.layout, options);
   FrameDesignResult result = designer.run(state.path);
-  if (result.status == FrameDesignStatus::Success) {
+  if (result.status == DesignStatus::Success) {
     const std::string failure = frameDesignFailure(state.layout, result.labels, result.order, result.directions);
     if (!failure.empty()) throw Error(ErrorCode::Internal, "the frame design did not verify: " + failure);
   }
   return result;
-}
-
-const char* frameDesignStatusName(FrameDesignStatus status) {
-  switch (status) {
-    case FrameDesignStatus::Success:
-      return "success";
-    case FrameDesignStatus::NotFound:
-      return "not-found";
-    case FrameDesignStatus::LimitReached:
-      return "limit-reached";
-    case FrameDesignStatus::Cancelled:
-      return "cancelled";
-    case FrameDesignStatus::CutPoint:
-      return "cut-point";
-  }
-  return "not-found";
 }
 
 std::string frameDesignFailure(const FrameLayout& layout, const std::vector<JointLabels>& labels,
@@ -996,7 +1001,7 @@ FrameDesignResult designFrame(const FrameLayout& layout, const FrameDesignOption
   if (options.candidates < 1) throwBadInput("", "candidates must be at least 1");
   FrameDesigner designer(layout, options);
   FrameDesignResult result = designer.run();
-  if (result.status == FrameDesignStatus::Success) {
+  if (result.status == DesignStatus::Success) {
     // The search accepts only what passes; checking again guards the result, never a guess.
     const std::string failure = frameDesignFailure(layout, result.labels, result.order, result.directions);
     if (!failure.empty()) throw Error(ErrorCode::Internal, "the frame design did not verify: " + failure);

@@ -84,12 +84,12 @@ VoxelDesignOptions parseDesignOptionsJson(const std::string& text, const VoxelGr
       if (!value.is_boolean()) throwBadInput("", "design option 'evenParts' must be true or false, got " + value.dump());
       options.evenParts = value.get<bool>();
     }
-    else if (key == "nodeLimit") options.nodeLimit = integerOption(value, "nodeLimit", 0, int64_t(1) << 52);
+    else if (key == "nodeLimit") options.limits.nodeLimit = integerOption(value, "nodeLimit", 0, int64_t(1) << 52);
     else if (key == "keyDirection") options.keyDirection = parseAxisDirection(stringOption(value, "keyDirection"));
     else if (key == "groups") options.groups = groupsFromJson(value, shape, "design options");
     else if (key == "timeLimit") {
       if (!value.is_number() || !(value.get<double>() >= 0)) throwBadInput("", "design option 'timeLimit' must be seconds >= 0, got " + value.dump());
-      options.timeLimitSeconds = value.get<double>();
+      options.limits.timeLimitSeconds = value.get<double>();
     } else {
       throwBadInput("", "unknown design option '" + key +
                             "' (expected parts, seed, candidates, rank, mode, minPartSize, maxPartSize, evenParts, "
@@ -100,11 +100,11 @@ VoxelDesignOptions parseDesignOptionsJson(const std::string& text, const VoxelGr
 }
 
 std::string designProgressToJson(const DesignProgress& progress) {
-  return json{{"nodesVisited", progress.nodesVisited},
-              {"depth", progress.depth + 1},  // parts placed, the remainder counted: as users count
-              {"bestDepth", progress.bestDepth + 1},
+  return json{{"nodesVisited", progress.nodes},
+              {"depth", progress.depth},
+              {"bestDepth", progress.bestDepth},
               {"targetParts", progress.targetParts},
-              {"elapsedSeconds", progress.elapsedSeconds}}
+              {"elapsedSeconds", progress.seconds}}
       .dump();
 }
 

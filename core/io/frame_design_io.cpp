@@ -46,9 +46,9 @@ FramePackageOptions parseFrameDesignOptionsJson(const std::string& text) {
     } else if (name == "candidates") {
       options.design.candidates = static_cast<int>(integerOption(value, name, 1, 10000));
     } else if (name == "nodeLimit") {
-      options.design.nodeLimit = integerOption(value, name, 1, int64_t(1) << 50);
+      options.design.limits.nodeLimit = integerOption(value, name, 1, int64_t(1) << 50);
     } else if (name == "timeLimit") {
-      options.design.timeLimitSeconds = numberOption(value, name, 0, 1e7, " (seconds, 0 = none)");
+      options.design.limits.timeLimitSeconds = numberOption(value, name, 0, 1e7, " (seconds, 0 = none)");
     } else if (name == "jointSize") {
       // Like --joint-size: the edge of a joint cube in the frame's units.
       if (!value.is_number() || !(value.get<double>() > 0 && value.get<double>() <= 1e9)) {
@@ -64,25 +64,16 @@ FramePackageOptions parseFrameDesignOptionsJson(const std::string& text) {
   return options;
 }
 
-std::string frameDesignProgressToJson(const FrameDesignProgress& progress) {
-  return json{{"nodesVisited", progress.nodes},
-              {"depth", progress.depth},
-              {"bestDepth", progress.bestDepth},
-              {"targetParts", progress.targetParts},
-              {"elapsedSeconds", progress.seconds}}
-      .dump();
-}
-
 std::string frameDesignResultToJson(const FrameDocument& input, const FrameDesignResult& result) {
   json root;
-  root["status"] = frameDesignStatusName(result.status);
+  root["status"] = designStatusName(result.status);
   root["message"] = result.message;
   // Timing differs between runs; keep results reproducible.
   root["progress"] = {{"nodesVisited", result.progress.nodes},
                       {"bestDepth", result.progress.bestDepth},
                       {"targetParts", result.progress.targetParts}};
   root["puz"] = nullptr;
-  if (result.status == FrameDesignStatus::Success) {
+  if (result.status == DesignStatus::Success) {
     // The same text `desia design frame` writes (before its final newline), checked as written.
     const std::string text = frameResultToJson(input.layout, result, input.name);
     const AssemblyDocument written = parseAssemblyText(text, "result");

@@ -449,7 +449,7 @@ std::string frameDocumentToJson(const FrameDocument& document, int indent) {
 
 std::string frameResultToJson(const FrameLayout& layout, const FrameDesignResult& result, const std::string& name,
                               int indent) {
-  if (result.status != FrameDesignStatus::Success)
+  if (result.status != DesignStatus::Success)
     throwBadInput("", "only a successful frame design has a result document");
   // Beams renumbered in removal order: part 1 is the key.
   Frame frame = layout.frame;

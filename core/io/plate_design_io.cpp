@@ -17,22 +17,6 @@ namespace {
 
 using nlohmann::json;
 
-const char* statusName(PlateDesignStatus status) {
-  switch (status) {
-    case PlateDesignStatus::Success:
-      return "success";
-    case PlateDesignStatus::NotFound:
-      return "not-found";
-    case PlateDesignStatus::LimitReached:
-      return "limit-reached";
-    case PlateDesignStatus::Cancelled:
-      return "cancelled";
-    case PlateDesignStatus::CutPoint:
-      return "cut-point";
-  }
-  return "not-found";
-}
-
 int64_t integerOption(const json& value, const std::string& name, int64_t lo, int64_t hi) {
   if (!value.is_number_integer() || value.get<int64_t>() < lo || value.get<int64_t>() > hi) {
     throwBadInput("", "design option '" + name + "' must be an integer from " + std::to_string(lo) + " to " +
@@ -63,9 +47,9 @@ PlateDesignOptions parsePlateDesignOptionsJson(const std::string& text) {
     else if (name == "candidates")
       options.candidates = static_cast<int>(integerOption(value, name, 1, 10000));
     else if (name == "nodeLimit")
-      options.nodeLimit = integerOption(value, name, 1, int64_t(1) << 50);
+      options.limits.nodeLimit = integerOption(value, name, 1, int64_t(1) << 50);
     else if (name == "timeLimit")
-      options.timeLimitSeconds = static_cast<double>(integerOption(value, name, 1, 10000000));
+      options.limits.timeLimitSeconds = static_cast<double>(integerOption(value, name, 1, 10000000));
     else if (name == "joints")
       options.realization = parseJointRealization(value.is_string() ? value.get<std::string>() : value.dump());
     else if (name == "clearance")
@@ -83,25 +67,16 @@ PlateDesignOptions parsePlateDesignOptionsJson(const std::string& text) {
   return options;
 }
 
-std::string plateDesignProgressToJson(const PlateDesignProgress& progress) {
-  return json{{"nodesVisited", progress.nodes},
-              {"depth", progress.depth},
-              {"bestDepth", progress.bestDepth},
-              {"targetParts", progress.targetParts},
-              {"elapsedSeconds", progress.seconds}}
-      .dump();
-}
-
 std::string plateDesignResultToJson(const AssemblyDocument& input, const PlateDesignResult& result) {
   json root;
-  root["status"] = statusName(result.status);
+  root["status"] = designStatusName(result.status);
   root["message"] = result.message;
   // Timing differs between runs; keep results reproducible.
   root["progress"] = {{"nodesVisited", result.progress.nodes},
                       {"bestDepth", result.progress.bestDepth},
                       {"targetParts", result.progress.targetParts}};
   root["puz"] = nullptr;
-  if (result.status == PlateDesignStatus::Success) {
+  if (result.status == DesignStatus::Success) {
     const std::string planText = plateDesignToJson(input, result, -1);
     const AssemblyDocument plan = parseJsonDocument(planText, "plan");
     CheckOptions options;
@@ -111,7 +86,7 @@ std::string plateDesignResultToJson(const AssemblyDocument& input, const PlateDe
       root["document"] = json::parse(planText);
       root["verification"] = json::parse(checkReportToJson(plan, report, -1));
     } else {  // never offered: what is returned is what `desia check` passes
-      root["status"] = statusName(PlateDesignStatus::NotFound);
+      root["status"] = designStatusName(DesignStatus::NotFound);
       root["message"] = "the plan found did not verify: " +
                         (report.shapeRemoval && !report.shapeRemoval->failure.empty() ? report.shapeRemoval->failure
                                                                                       : report.result.reason);
@@ -124,7 +99,7 @@ std::string plateDesignResultToJson(const AssemblyDocument& input, const PlateDe
   }
   // A cut point: the repair the core proposes (bars that bypass it, Fig. 18) as a design to open.
   root["repair"] = nullptr;
-  if (result.status == PlateDesignStatus::CutPoint && !input.plates.empty()) {
+  if (result.status == DesignStatus::CutPoint && !input.plates.empty()) {
     if (const std::optional<PlateRepair> repair = proposeCutPointRepair(input.plates, input.plateOptions)) {
       const AssemblyDocument repaired =
           documentFromPlates(repair->plates, input.plateOptions, "repair", input.name + " (repaired)");

@@ -21,7 +21,6 @@
 #include "desia/plate_design.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -31,7 +30,8 @@
 
 #include "analysis/part_motion.h"
 #include "analysis/vec3.h"
-#include "model/restarts.h"
+#include "search/construction_search.h"
+#include "search/restarts.h"
 #include "plate/plan_squaring.h"
 #include "plate/plate_verification.h"
 #include "desia/cut_points.h"
@@ -432,8 +432,7 @@ class PlateJointPlanner {
   // The restarted search below the node `prefix` (the root: a whole design); the prefix's steps
   // stay, restarts re-seed below that node.
   PlateDesignResult run(const std::vector<Step>& prefix = {});
-  enum class Outcome { Found, Exhausted, OutOfBudget, Stopped };
-  Outcome searchTree(int64_t budget, const std::vector<Step>& prefix, PlateDesignResult* result);
+  class SearchTree;
   void backjump(size_t prefixSize, std::vector<Step>* path, std::vector<std::vector<Step>>* pending) const;
 
   // What the search and a step-by-step session share.
@@ -466,7 +465,6 @@ class PlateJointPlanner {
     random_ = random_ * 6364136223846793005ull + 1442695040888963407ull;
     return random_ >> 11;
   }
-  double seconds() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
 
   const std::vector<Plate>& plates_;
   PlateGraph graph_;
@@ -480,7 +478,6 @@ class PlateJointPlanner {
   // changes only its plate and the plates it leaves; cleared when it grows large.
   mutable std::map<std::string, Plate> jointedCache_;
   std::vector<TriangleMesh> meshes_;  // the plates as given (for the sweep of each step)
-  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
 // The edge vectors the plate shares with its neighbours (paper Section 5.2), both signs, and, beyond
@@ -829,7 +826,7 @@ std::optional<PlateDesignResult> PlateJointPlanner::refusal() const {
     return edges;
   }());
   if (!cuts.empty()) {
-    result.status = PlateDesignStatus::CutPoint;
+    result.status = DesignStatus::CutPoint;
     result.message =
         "plate " + std::to_string(plates_[cuts[0]].id) +
         " is a cut point of the parts-graph: taking it away splits the other plates, and no joints can make such "
@@ -844,71 +841,84 @@ std::optional<PlateDesignResult> PlateJointPlanner::refusal() const {
   return std::nullopt;
 }
 
-// One search tree of the restarts (see run): depth first over the subtree of the node `prefix`
-// (the root for a whole design), kept on an explicit stack of ranked children, for at most `budget`
-// nodes. It never ascends above `prefix`.
-PlateJointPlanner::Outcome PlateJointPlanner::searchTree(int64_t budget, const std::vector<Step>& prefix,
-                                                         PlateDesignResult* result) {
-  PlateDesignProgress& progress = result->progress;
-  const int64_t first = progress.nodes;
-  // pending[k]: the candidates left at depth prefix + k; accepted[k]: how many of them passed.
-  std::vector<std::vector<Step>> pending{candidatesOf(prefix)};
-  std::vector<int> accepted{0};
-  std::vector<Step> path = prefix;
-  while (!pending.empty()) {
-    if (progress.nodes - first >= budget) return Outcome::OutOfBudget;
-    ++progress.nodes;
-    progress.depth = static_cast<int>(path.size());
-    progress.seconds = seconds();
-    // Nodes are few and each costs far more than a report (a full graph test per child).
-    if (options_.onProgress && !options_.onProgress(progress)) {
-      result->status = PlateDesignStatus::Cancelled;
-      result->message = "cancelled after " + std::to_string(progress.nodes) + " nodes";
-      return Outcome::Stopped;
-    }
-    if ((options_.timeLimitSeconds > 0 && progress.seconds > options_.timeLimitSeconds) ||
-        progress.nodes > options_.nodeLimit) {
-      result->status = PlateDesignStatus::LimitReached;
-      result->message =
-          "no plan within the limits (" + std::to_string(progress.nodes) + " nodes; deepest " +
-          std::to_string(progress.bestDepth) + " of " + std::to_string(graph_.plateCount) + " plates" +
-          (lastRejection_.empty() ? std::string(")") : "; the last complete plan failed: " + lastRejection_ + ")");
-      return Outcome::Stopped;
-    }
-    std::optional<Step> child = nextChild(path, &pending.back(), &accepted.back());
-    if (!child) {  // no child left here: back to the parent's next sibling
-      pending.pop_back();
-      accepted.pop_back();
-      if (path.size() > prefix.size()) path.pop_back();
-      continue;
-    }
-    path.push_back(std::move(*child));
-    if ((makesJoints(options_.realization) && runsIntoJointsSoFar(path)) || !heldByInequalities(path)) {
-      path.pop_back();
-      continue;
-    }
-    if (static_cast<int>(path.size()) + 1 > progress.bestDepth) {
-      progress.bestDepth = static_cast<int>(path.size()) + 1;
-      // A live view of the deepest node (on demand): read from the path, never fed back.
-      if (options_.deepestSnapshots) {
-        progress.deepestPlaced.clear();
-        for (const Step& step : path) progress.deepestPlaced.push_back(step.plate);
-      }
-    }
-    if (static_cast<int>(path.size()) + 1 == graph_.plateCount) {
-      // R is the last plate: a complete plan, accepted only if its jointed plates verify; else search on.
-      lastDoomedDepth_ = -1;
-      if (acceptComplete(path, result)) return Outcome::Found;
-      path.pop_back();
-      backjump(prefix.size(), &path, &pending);
-      accepted.resize(pending.size());
-      continue;
-    }
-    pending.push_back(candidatesOf(path));
-    accepted.push_back(0);
+// The construction tree below the node `prefix` (the root for a whole design) as the shared search
+// walks it (search/construction_search.h): an explicit stack of each node's ranked candidates, of
+// which the paper's m per node are tested and entered lazily (nextChild). A child whose plate runs
+// into the joints made so far or that the LP test (paper Section 4.2) lets more than one part move
+// is refused; a complete plan is accepted only if its jointed plates verify, else the search
+// backjumps past the step it collided with.
+class PlateJointPlanner::SearchTree : public search::ConstructionTree {
+ public:
+  SearchTree(PlateJointPlanner& planner, const std::vector<Step>& prefix, PlateDesignResult& result)
+      : planner_(planner), prefix_(prefix), result_(result) {}
+
+  // Each tree has its own tie-breaking order (restarts.h); the ties only order the children.
+  void restart(int64_t attempt) override {
+    const uint64_t seed = planner_.options_.seed;
+    planner_.random_ = restartState(seed, attempt, seed * 0x9E3779B97F4A7C15ull + 1);
+    path_ = prefix_;
+    pending_ = {planner_.candidatesOf(prefix_)};
+    accepted_ = {0};
   }
-  return Outcome::Exhausted;
-}
+
+  // Tree k gets luby(k) units of nodes; the unit counts the plates still to take (at least 64). A
+  // wrong choice near the root (the CABINET's shelf as the key: 5,811 nodes of plans whose roof
+  // cannot close) is left for another tree.
+  bool budgetSpent(int64_t attempt, int64_t nodes) const override {
+    const int64_t left = planner_.graph_.plateCount - static_cast<int>(prefix_.size());
+    return nodes >= std::max<int64_t>(64, 4 * left) * lubyTerm(attempt);
+  }
+
+  bool exhausted() const override { return pending_.empty(); }
+
+  search::Move step() override {
+    std::optional<Step> child = planner_.nextChild(path_, &pending_.back(), &accepted_.back());
+    if (!child) {  // no child left here: back to the parent's next sibling
+      pending_.pop_back();
+      accepted_.pop_back();
+      if (path_.size() > prefix_.size()) path_.pop_back();
+      return search::Move::Returned;
+    }
+    path_.push_back(std::move(*child));
+    if ((makesJoints(planner_.options_.realization) && planner_.runsIntoJointsSoFar(path_)) ||
+        !planner_.heldByInequalities(path_)) {
+      path_.pop_back();
+      return search::Move::Returned;
+    }
+    if (!complete()) {
+      pending_.push_back(planner_.candidatesOf(path_));
+      accepted_.push_back(0);
+    }
+    return search::Move::Entered;
+  }
+
+  int depth() const override { return static_cast<int>(path_.size()) + 1; }  // R counts as one
+  // R is the last plate: a complete plan.
+  bool complete() const override { return depth() == planner_.graph_.plateCount; }
+
+  bool acceptComplete() override {
+    planner_.lastDoomedDepth_ = -1;
+    if (planner_.acceptComplete(path_, &result_)) return true;
+    path_.pop_back();
+    planner_.backjump(prefix_.size(), &path_, &pending_);
+    accepted_.resize(pending_.size());
+    return false;
+  }
+
+  void snapshotDeepest(DesignProgress& progress) const override {
+    progress.deepestPlaced.clear();
+    for (const Step& step : path_) progress.deepestPlaced.push_back(step.plate);
+  }
+
+ private:
+  PlateJointPlanner& planner_;
+  const std::vector<Step>& prefix_;
+  PlateDesignResult& result_;
+  std::vector<Step> path_;
+  // pending_[k]: the candidates left at depth prefix + k; accepted_[k]: how many of them passed.
+  std::vector<std::vector<Step>> pending_;
+  std::vector<int> accepted_;
+};
 
 // After a complete plan failed because plate i, swept out, ran into plate j taken at depth j of the
 // path (i < j): plate i's joints are made at steps 0..i, plate j's at steps 0..j, so every plan that
@@ -933,32 +943,37 @@ void PlateJointPlanner::backjump(size_t prefixSize, std::vector<Step>* path,
 PlateDesignResult PlateJointPlanner::run(const std::vector<Step>& prefix) {
   if (std::optional<PlateDesignResult> refused = refusal()) return *refused;
   PlateDesignResult result;
-  PlateDesignProgress& progress = result.progress;
+  DesignProgress& progress = result.progress;
   progress.targetParts = graph_.plateCount;
   if (static_cast<int>(prefix.size()) + 1 >= graph_.plateCount) {  // a complete node: nothing left to search
     progress.depth = progress.bestDepth = graph_.plateCount;
     if (!acceptComplete(prefix, &result)) {
-      result.status = PlateDesignStatus::NotFound;
+      result.status = DesignStatus::NotFound;
       result.message = "this complete plan fails: " + lastRejection_;
       return result;
     }
     result.message = "designed " + std::to_string(result.joints.size()) + " joints";
     return result;
   }
-  // Restarts (core/model/restarts.h): a wrong choice near the root (the CABINET's shelf as the
-  // key: 5,811 nodes of plans whose roof cannot close) is searched to its end by one depth-first
-  // tree; tree k gets luby(k) units of nodes and its own tie-breaking order. A tree searched to
-  // its end within its budget proves that no plan exists: the ties only order the children.
-  // Below a prefix the unit counts the plates still to take (the same for a whole design).
-  const int64_t unit = std::max<int64_t>(64, 4 * int64_t(graph_.plateCount - static_cast<int>(prefix.size())));
-  Outcome outcome = Outcome::OutOfBudget;
-  for (int64_t attempt = 0; outcome == Outcome::OutOfBudget; ++attempt) {
-    random_ = restartState(options_.seed, attempt, options_.seed * 0x9E3779B97F4A7C15ull + 1);
-    outcome = searchTree(unit * lubyTerm(attempt), prefix, &result);
+  SearchTree tree(*this, prefix, result);
+  search::ConstructionSearch search(tree, options_.limits, search::SearchRules{/*returnsAreNodes=*/true});
+  const search::SearchEnd end = search.run(progress);
+  progress.seconds = search.seconds();
+  if (end == search::SearchEnd::Cancelled) {
+    result.status = DesignStatus::Cancelled;
+    result.message = "cancelled after " + std::to_string(progress.nodes) + " nodes";
+    return result;
   }
-  if (outcome == Outcome::Stopped) return result;
-  if (outcome == Outcome::Exhausted) {
-    result.status = PlateDesignStatus::NotFound;
+  if (end == search::SearchEnd::NodeLimit || end == search::SearchEnd::TimeLimit) {
+    result.status = DesignStatus::LimitReached;
+    result.message =
+        "no plan within the limits (" + std::to_string(progress.nodes) + " nodes; deepest " +
+        std::to_string(progress.bestDepth) + " of " + std::to_string(graph_.plateCount) + " plates" +
+        (lastRejection_.empty() ? std::string(")") : "; the last complete plan failed: " + lastRejection_ + ")");
+    return result;
+  }
+  if (end == search::SearchEnd::Exhausted) {
+    result.status = DesignStatus::NotFound;
     result.message =
         std::string(prefix.empty() ? "no interlocking joint plan exists within the search ("
                                    : "no interlocking joint plan exists below this node (") +
@@ -977,7 +992,6 @@ PlateDesignResult PlateJointPlanner::run(const std::vector<Step>& prefix) {
                    : "");
     return result;
   }
-  progress.seconds = seconds();  // the cut and its verification included
   result.message =
       "designed " + std::to_string(result.joints.size()) + " joints in " + std::to_string(progress.nodes) + " nodes";
   return result;
@@ -1043,14 +1057,14 @@ bool PlateJointPlanner::acceptComplete(const std::vector<Step>& path, PlateDesig
   result->order = order;
   result->directions = directions;
   result->joints = joints;
-  result->status = PlateDesignStatus::Success;
+  result->status = DesignStatus::Success;
   return true;
 }
 
 // A successful result verified once more, as `desia check` will read it (the plates in removal
 // order): a failure here is a bug, never the user's.
 void requireVerified(const std::vector<Plate>& plates, const PlateDesignResult& result, const PlateOptions& geometry) {
-  if (result.status != PlateDesignStatus::Success) return;
+  if (result.status != DesignStatus::Success) return;
   std::vector<Plate> inRemovalOrder;
   const bool cut = result.realization != JointRealization::Planned;
   for (int plate : result.order) inRemovalOrder.push_back(cut ? result.jointedPlates[plate] : plates[plate]);
@@ -1081,7 +1095,7 @@ struct PlateDesignSession::State {
     return *children.back();
   }
   void showProgress() {
-    result.status = PlateDesignStatus::NotFound;
+    result.status = DesignStatus::NotFound;
     result.message = std::to_string(path.size()) + " of " + std::to_string(planner.plateCount()) +
                      " plates taken (the last one stays): choose the next";
   }
@@ -1105,7 +1119,7 @@ PlateDesignSession::~PlateDesignSession() = default;
 
 const std::vector<PlateDesignStep>& PlateDesignSession::steps() const { return state_->steps; }
 int PlateDesignSession::targetPlates() const { return state_->planner.plateCount(); }
-bool PlateDesignSession::complete() const { return state_->result.status == PlateDesignStatus::Success; }
+bool PlateDesignSession::complete() const { return state_->result.status == DesignStatus::Success; }
 const PlateDesignResult& PlateDesignSession::result() const { return state_->result; }
 
 int PlateDesignSession::childCount() {
@@ -1165,14 +1179,11 @@ bool PlateDesignSession::back() {
   return true;
 }
 
-PlateDesignResult PlateDesignSession::finish(const PlateDesignLimits& limits) {
+PlateDesignResult PlateDesignSession::finish(const DesignLimits& limits) {
   const State& state = *state_;
   if (complete()) return state.result;  // a complete node: its verified plan
   PlateDesignOptions options = state.options;
-  options.timeLimitSeconds = limits.timeLimitSeconds;
-  options.nodeLimit = limits.nodeLimit > 0 ? limits.nodeLimit : std::numeric_limits<int64_t>::max();
-  options.onProgress = limits.onProgress;
-  options.deepestSnapshots = limits.deepestSnapshots;
+  options.limits = limits;
   // A planner of its own: its tie-breaking does not depend on what this session explored before,
   // and the session's own children stay as they are.
   PlateJointPlanner planner(state.plates, state.contacts, options);

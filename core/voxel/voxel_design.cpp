@@ -4,13 +4,12 @@
 // small and N can be in the thousands). A level stores its children as the voxels of the new part
 // only, so memory grows with N times m small lists, not with N grids.
 #include <algorithm>
-#include <chrono>
-#include <optional>
 #include <sstream>
 
 #include "desia/error.h"
 #include "desia/voxel_design.h"
-#include "model/restarts.h"
+#include "search/construction_search.h"
+#include "search/restarts.h"
 #include "voxel/design_internals.h"
 
 namespace desia {
@@ -46,16 +45,6 @@ DesignMode parseDesignMode(const std::string& name) {
 }
 
 const char* designModeName(DesignMode mode) { return mode == DesignMode::Recursive ? "recursive" : "desia"; }
-
-const char* designStatusName(DesignStatus status) {
-  switch (status) {
-    case DesignStatus::Success: return "success";
-    case DesignStatus::NotFound: return "not-found";
-    case DesignStatus::LimitReached: return "limit-reached";
-    case DesignStatus::Cancelled: return "cancelled";
-  }
-  return "not-found";
-}
 
 PartSizeBounds evenPartBounds(int64_t voxels, int parts) {
   const int64_t n = std::max(1, parts);
@@ -152,9 +141,9 @@ bool verifyPuzzle(const VoxelGrid& grid, int parts, CheckReport* report) {
 // each with its ranked children (generated when first needed) and the next one to try. The grid
 // always holds the current node's assembly. A search may be confined to the subtree of one node
 // (the floor: a session's "finish from here"); it never ascends above it.
-class ConstructionTree {
+class VoxelConstructionTree {
  public:
-  ConstructionTree(VoxelGrid grid, const VoxelDesignOptions& options, DesignContext& context)
+  VoxelConstructionTree(VoxelGrid grid, const VoxelDesignOptions& options, DesignContext& context)
       : grid_(std::move(grid)), options_(options), context_(context), levels_(1) {
     levels_[0].seed = options.seed;
   }
@@ -253,154 +242,120 @@ class ConstructionTree {
   size_t floor_ = 0;  // the level searches never ascend above
 };
 
-// The root seed of restart `attempt` for the user's seed: attempt 0 is the seed itself (the tree
-// searched before restarts existed); later attempts mix the attempt in (SplitMix64), so their
-// trees differ from every other seed's first tree.
-uint64_t attemptSeed(uint64_t seed, int64_t attempt) {
-  if (attempt == 0) return seed;
-  return splitMix64(seed + 0x9E3779B97F4A7C15ull * static_cast<uint64_t>(attempt + 1) + 0x5851F42D4C957F2Dull);
-}
-
-
-class Search {
+// The construction tree as the shared search walks it (search/construction_search.h): a step
+// tries the next untried child of the current node, else goes back to the parent; a complete
+// puzzle is accepted once the project's own check verified it.
+class VoxelSearchTree : public search::ConstructionTree {
  public:
-  Search(VoxelGrid grid, const VoxelDesignOptions& options, DesignContext& context)
-      : Search(ConstructionTree(std::move(grid), options, context), options) {}
-
   // A search of `tree`'s subtree below its floor (its root unless confined); `options` gives the
-  // parts, seed and limits (the tree's own options may differ only in limits and progress).
-  Search(ConstructionTree tree, const VoxelDesignOptions& options)
-      : tree_(std::move(tree)), options_(options), floorSeed_(tree_.floorSeed()), start_(std::chrono::steady_clock::now()) {
-    progress_.bestDepth = tree_.depth();  // the floor's parts are placed already
-    snapshotDeepest();
-  }
+  // parts and the seed.
+  VoxelSearchTree(VoxelConstructionTree& tree, const VoxelDesignOptions& options, VoxelDesignResult& result)
+      : tree_(tree), options_(options), result_(result), floorSeed_(tree.floorSeed()) {}
 
-  VoxelDesignResult run() {
-    VoxelDesignResult result;
-    // A floor that is already complete (a finished session) has nothing left to search.
-    if (tree_.depth() == options_.parts - 1) {
-      const bool verified = verifyPuzzle(tree_.grid(), options_.parts, &result.verification);
-      if (verified) result.puzzle = tree_.grid();
-      return finish(verified ? DesignStatus::Success : DesignStatus::NotFound, result);
-    }
-    int64_t attempt = 0, attemptStart = 0;
-    while (true) {
-      if (const auto stop = stopReason()) return finish(*stop, result);
-      if (progress_.nodesVisited - attemptStart >= attemptBudget(attempt)) {
-        // Restarts: the depth-first search is heavy tailed (a poor choice high in the tree is
-        // paid for with thousands of dead ends near the last parts, which chronological
-        // backtracking explores before it gets back up there), so a tree that spends its node
-        // budget is abandoned for a new one from another seed derived from the user's.
-        tree_.restart(attemptSeed(floorSeed_, ++attempt));
-        attemptStart = progress_.nodesVisited;
-        ++restarts_;
-        continue;
-      }
-      if (!tree_.descendToNextUntriedChild()) {
-        // Algorithm 1 lines 18-29: siblings first, then the nearest ancestor's next sibling.
-        // A tree searched to the end within its budget: no puzzle in it. (Luby budgets grow
-        // without bound, so some tree is always searched to the end: the search terminates.)
-        if (!tree_.ascend()) return finish(DesignStatus::NotFound, result);
-        ++backtracks_;
-        continue;
-      }
-      ++progress_.nodesVisited;
-      if (tree_.depth() > progress_.bestDepth) {
-        progress_.bestDepth = tree_.depth();
-        snapshotDeepest();
-      }
-      if (!report()) return finish(DesignStatus::Cancelled, result);
-      if (tree_.depth() == options_.parts - 1) {
-        if (verifyPuzzle(tree_.grid(), options_.parts, &result.verification)) {
-          result.puzzle = tree_.grid();
-          return finish(DesignStatus::Success, result);
-        }
-        ++verificationFailures_;  // never expected: every level was checked exactly
-      }
-    }
-  }
-
- private:
-  double elapsed() const {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  // Attempt 0 is the tree as it stands (the floor's own seed); later attempts re-seed the floor.
+  void restart(int64_t attempt) override {
+    if (attempt > 0) tree_.restart(restartState(floorSeed_, attempt, floorSeed_, kVoxelRestartSalt));
   }
 
   // Nodes restart `attempt` may visit: the path to a complete puzzle (N - 1 nodes) plus room to
-  // backtrack that grows with N, times the Luby term. Counted in nodes, never time, so the same
-  // seed gives the same puzzle on every machine and in WebAssembly.
-  int64_t attemptBudget(int64_t attempt) const {
+  // backtrack that grows with N, times the Luby term.
+  bool budgetSpent(int64_t attempt, int64_t nodes) const override {
     const int64_t n = options_.parts - tree_.floorDepth();  // the parts the subtree still decides
-    return (n - 1) + kRestartUnitPerPart * n * lubyTerm(attempt);
+    return nodes >= (n - 1) + kRestartUnitPerPart * n * lubyTerm(attempt);
   }
 
-  std::optional<DesignStatus> stopReason() const {
-    if (options_.timeLimitSeconds > 0 && elapsed() > options_.timeLimitSeconds) return DesignStatus::LimitReached;
-    if (options_.nodeLimit > 0 && progress_.nodesVisited >= options_.nodeLimit) return DesignStatus::LimitReached;
-    return std::nullopt;
+  search::Move step() override {
+    if (tree_.descendToNextUntriedChild()) return search::Move::Entered;
+    return tree_.ascend() ? search::Move::Returned : search::Move::Exhausted;
   }
 
-  // A copy of the current node, the deepest so far, for a live view (on demand only). Reads the
-  // tree, never the random state or the stack, so the search is the same with or without it.
-  void snapshotDeepest() {
-    if (options_.deepestSnapshots) progress_.deepest = std::make_shared<const VoxelGrid>(tree_.grid());
+  int depth() const override { return tree_.depth() + 1; }  // parts placed and the remainder
+  bool complete() const override { return tree_.depth() == options_.parts - 1; }
+
+  bool acceptComplete() override {
+    if (!verifyPuzzle(tree_.grid(), options_.parts, &result_.verification)) return false;  // never expected
+    result_.puzzle = tree_.grid();
+    return true;
   }
 
-  void updateProgress() {
-    progress_.depth = tree_.depth();
-    progress_.targetParts = options_.parts;
-    progress_.elapsedSeconds = elapsed();
+  // A copy of the current node, the deepest so far, for a live view. Reads the tree, never the
+  // random state or the stack, so the search is the same with or without it.
+  void snapshotDeepest(DesignProgress& progress) const override {
+    progress.deepestGrid = std::make_shared<const VoxelGrid>(tree_.grid());
   }
 
-  bool report() {
-    updateProgress();
-    return !options_.onProgress || options_.onProgress(progress_);
-  }
-
-  VoxelDesignResult& finish(DesignStatus status, VoxelDesignResult& result) {
-    updateProgress();
-    result.status = status;
-    result.progress = progress_;
-    result.seed = options_.seed;
-    if (status == DesignStatus::Success) result.partSizes = partSizeSpread(result.puzzle);
-    std::ostringstream message;
-    const std::string reached = "the deepest node had " + std::to_string(progress_.bestDepth + 1) + " of " +
-                                std::to_string(options_.parts) + " parts (" + std::to_string(progress_.nodesVisited) +
-                                " nodes visited, " + std::to_string(backtracks_) + " backtracks, " +
-                                std::to_string(restarts_) + " restarts)";
-    switch (status) {
-      case DesignStatus::Success:
-        message << "designed and verified a " << options_.parts << "-part interlocking puzzle (" << progress_.nodesVisited
-                << " nodes visited, " << backtracks_ << " backtracks, " << restarts_
-                << " restarts)";
-        break;
-      case DesignStatus::NotFound:
-        message << "no " << options_.parts << "-part interlocking puzzle exists in the explored space (m = "
-                << options_.candidates << ", seed " << options_.seed << "): " << reached;
-        break;
-      case DesignStatus::LimitReached:
-        message << "stopped at the " << (options_.nodeLimit > 0 && progress_.nodesVisited >= options_.nodeLimit ? "node" : "time")
-                << " limit: " << reached;
-        break;
-      case DesignStatus::Cancelled:
-        message << "cancelled: " << reached;
-        break;
-    }
-    if (verificationFailures_ > 0) message << "; " << verificationFailures_ << " complete candidates failed verification";
-    result.message = message.str();
-    return result;
-  }
-
+ private:
   static constexpr int64_t kRestartUnitPerPart = 8;
 
-  ConstructionTree tree_;
+  VoxelConstructionTree& tree_;
   const VoxelDesignOptions& options_;
+  VoxelDesignResult& result_;
   uint64_t floorSeed_;  // restarts derive their seeds from it (the user's seed for a whole design)
-  std::chrono::steady_clock::time_point start_;
-  int64_t backtracks_ = 0;
-  int64_t restarts_ = 0;
-  int64_t verificationFailures_ = 0;
-  DesignProgress progress_;
 };
+
+std::string reachedText(const VoxelDesignOptions& options, const DesignProgress& progress, const search::SearchCounts& counts) {
+  return "the deepest node had " + std::to_string(progress.bestDepth) + " of " + std::to_string(options.parts) +
+         " parts (" + std::to_string(progress.nodes) + " nodes visited, " + std::to_string(counts.backtracks) +
+         " backtracks, " + std::to_string(counts.restarts) + " restarts)";
+}
+
+std::string outcomeMessage(DesignStatus status, bool nodeLimit, const VoxelDesignOptions& options,
+                           const DesignProgress& progress, const search::SearchCounts& counts) {
+  std::ostringstream message;
+  switch (status) {
+    case DesignStatus::Success:
+      message << "designed and verified a " << options.parts << "-part interlocking puzzle (" << progress.nodes
+              << " nodes visited, " << counts.backtracks << " backtracks, " << counts.restarts << " restarts)";
+      break;
+    case DesignStatus::LimitReached:
+      message << "stopped at the " << (nodeLimit ? "node" : "time") << " limit: " << reachedText(options, progress, counts);
+      break;
+    case DesignStatus::Cancelled:
+      message << "cancelled: " << reachedText(options, progress, counts);
+      break;
+    default:
+      message << "no " << options.parts << "-part interlocking puzzle exists in the explored space (m = "
+              << options.candidates << ", seed " << options.seed << "): " << reachedText(options, progress, counts);
+  }
+  if (counts.rejectedComplete > 0) message << "; " << counts.rejectedComplete << " complete candidates failed verification";
+  return message.str();
+}
+
+DesignStatus statusOf(search::SearchEnd end) {
+  switch (end) {
+    case search::SearchEnd::Found: return DesignStatus::Success;
+    case search::SearchEnd::NodeLimit:
+    case search::SearchEnd::TimeLimit: return DesignStatus::LimitReached;
+    case search::SearchEnd::Cancelled: return DesignStatus::Cancelled;
+    case search::SearchEnd::Exhausted: break;
+  }
+  return DesignStatus::NotFound;
+}
+
+// The search of `tree`'s subtree below its floor; a floor that is already complete (a finished
+// session) has nothing left to search and is only verified.
+VoxelDesignResult searchPuzzle(VoxelConstructionTree& tree, const VoxelDesignOptions& options) {
+  VoxelDesignResult result;
+  result.seed = options.seed;
+  DesignProgress& progress = result.progress;
+  progress.targetParts = options.parts;
+  progress.bestDepth = progress.depth = tree.depth() + 1;  // the floor's parts are placed already
+  if (options.limits.deepestSnapshots) progress.deepestGrid = std::make_shared<const VoxelGrid>(tree.grid());
+  VoxelSearchTree searchTree(tree, options, result);
+  search::ConstructionSearch search(searchTree, options.limits, search::SearchRules{});
+  search::SearchEnd end = search::SearchEnd::Exhausted;
+  if (tree.depth() == options.parts - 1) {
+    if (searchTree.acceptComplete()) end = search::SearchEnd::Found;
+  } else {
+    end = search.run(progress);
+  }
+  progress.depth = tree.depth() + 1;
+  progress.seconds = search.seconds();
+  result.status = statusOf(end);
+  if (result.status == DesignStatus::Success) result.partSizes = partSizeSpread(result.puzzle);
+  result.message = outcomeMessage(result.status, end == search::SearchEnd::NodeLimit, options, progress, search.counts());
+  return result;
+}
 
 std::string sizeText(const char* what, int size) { return std::string(what) + " part size " + std::to_string(size); }
 
@@ -446,13 +401,14 @@ VoxelDesignResult designVoxelPuzzle(const VoxelGrid& shape, const VoxelDesignOpt
   VoxelGrid grid = normalizedShape(shape, options, &voxelCount);
   const VoxelDesignOptions effective = effectiveOptions(options, voxelCount);
   DesignContext context = makeContext(grid, effective, voxelCount);
-  return Search(std::move(grid), effective, context).run();
+  VoxelConstructionTree tree(std::move(grid), effective, context);
+  return searchPuzzle(tree, effective);
 }
 
 struct VoxelDesignSession::State {
   VoxelDesignOptions options;
   DesignContext context;
-  ConstructionTree tree;
+  VoxelConstructionTree tree;
   State(VoxelGrid grid, VoxelDesignOptions effective, int64_t voxelCount)
       : options(std::move(effective)), context(makeContext(grid, options, voxelCount)), tree(std::move(grid), options, context) {}
 };
@@ -491,14 +447,11 @@ bool VoxelDesignSession::goBack() { return state_->tree.ascend(); }
 
 VoxelDesignResult VoxelDesignSession::finish(const DesignLimits& limits) {
   VoxelDesignOptions options = state_->options;
-  options.timeLimitSeconds = limits.timeLimitSeconds;
-  options.nodeLimit = limits.nodeLimit;
-  options.onProgress = limits.onProgress;
-  options.deepestSnapshots = limits.deepestSnapshots;
+  options.limits = limits;
   // A copy of the path: the session stays where it is, and its explored children stay explored.
-  ConstructionTree subtree = state_->tree;
+  VoxelConstructionTree subtree = state_->tree;
   subtree.makeCurrentTheFloor();
-  return Search(std::move(subtree), options).run();
+  return searchPuzzle(subtree, options);
 }
 
 CheckReport VoxelDesignSession::check() const { return checkAssembly(documentFromVoxels(state_->tree.grid())); }

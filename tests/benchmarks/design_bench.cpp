@@ -143,11 +143,11 @@ int main(int argc, char** argv) {
         options.parts = c.parts;
         options.seed = static_cast<uint64_t>(seed);
         options.mode = mode;
-        options.timeLimitSeconds = timeLimit;
+        options.limits.timeLimitSeconds = timeLimit;
         if (c.dogGroups) options.groups = dogFeatureGroups(referenceDir);
         const VoxelDesignResult result = designVoxelPuzzle(shape, options);
-        runs.push_back({result.status == DesignStatus::Success, result.progress.elapsedSeconds, result.progress.nodesVisited,
-                        result.progress.bestDepth + 1});
+        runs.push_back({result.status == DesignStatus::Success, result.progress.seconds, result.progress.nodes,
+                        result.progress.bestDepth});
       }
       std::vector<double> times, nodes;
       int successes = 0, best = 0;
@@ -173,11 +173,11 @@ int main(int argc, char** argv) {
     for (int parts : {50, 100, 200, 400, 800, 1500}) {
       VoxelDesignOptions options;
       options.parts = parts;
-      options.timeLimitSeconds = timeLimit;
+      options.limits.timeLimitSeconds = timeLimit;
       const VoxelDesignResult result = designVoxelPuzzle(cube, options);
       std::printf("| 35x35x35 cube, N=%d | desia | %s | %s | %s | %lld | %d of %d |\n", parts, parts == 1500 ? "3.33 h" : "—",
-                  result.status == DesignStatus::Success ? "1/1" : "0/1", seconds(result.progress.elapsedSeconds).c_str(),
-                  static_cast<long long>(result.progress.nodesVisited), result.progress.bestDepth + 1, parts);
+                  result.status == DesignStatus::Success ? "1/1" : "0/1", seconds(result.progress.seconds).c_str(),
+                  static_cast<long long>(result.progress.nodes), result.progress.bestDepth, parts);
       std::fflush(stdout);
       if (result.status != DesignStatus::Success) break;
       reached = parts;

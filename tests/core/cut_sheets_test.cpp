@@ -53,7 +53,7 @@ std::string designedTable(double clearance) {
   PlateDesignOptions options;
   options.joints.clearance = clearance;
   const PlateDesignResult result = designPlateJoints(table.plates, computePlateContacts(table.plates, {}), options);
-  EXPECT_EQ(result.status, PlateDesignStatus::Success) << result.message;
+  EXPECT_EQ(result.status, DesignStatus::Success) << result.message;
   return plateDesignToJson(table, result);
 }
 

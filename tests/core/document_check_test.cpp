@@ -25,7 +25,7 @@ std::string exampleText(const std::string& path) { return testing::readFileText(
 json tableResult() {
   const AssemblyDocument input = parseAssemblyText(exampleText("examples/plate/table.json"), "table.json");
   const PlateDesignResult result = designPlateJoints(input.plates, computePlateContacts(input.plates, {}), {});
-  EXPECT_EQ(result.status, PlateDesignStatus::Success) << result.message;
+  EXPECT_EQ(result.status, DesignStatus::Success) << result.message;
   return json::parse(plateDesignToJson(input, result));
 }
 
@@ -82,7 +82,7 @@ json plannedCabinet() {
   PlateDesignOptions options;
   options.realization = JointRealization::Planned;
   const PlateDesignResult result = designPlateJoints(input.plates, computePlateContacts(input.plates, {}), options);
-  EXPECT_EQ(result.status, PlateDesignStatus::Success) << result.message;
+  EXPECT_EQ(result.status, DesignStatus::Success) << result.message;
   return json::parse(plateDesignToJson(input, result));
 }
 
@@ -163,7 +163,7 @@ TEST(DocumentCheck, FabricationPlatesThatAreNotTheVerifiedOnesFail) {
   PlateDesignOptions options;
   options.joints.clearance = 0.2;
   const PlateDesignResult designed = designPlateJoints(input.plates, computePlateContacts(input.plates, {}), options);
-  ASSERT_EQ(designed.status, PlateDesignStatus::Success) << designed.message;
+  ASSERT_EQ(designed.status, DesignStatus::Success) << designed.message;
   const json result = json::parse(plateDesignToJson(input, designed));
   ASSERT_TRUE(result.contains("fabricationPlates"));
   EXPECT_TRUE(checkPassed(checkText(result.dump())));
@@ -242,10 +242,10 @@ TEST(DocumentCheck, WhatTheDesignerWritesTheCheckPasses) {
     PlateDesignOptions options;
     options.realization = JointRealization::Milled;
     options.seed = seed;
-    options.timeLimitSeconds = 0;
-    options.nodeLimit = 5000;
+    options.limits.timeLimitSeconds = 0;
+    options.limits.nodeLimit = 5000;
     const PlateDesignResult result = designPlateJoints(input.plates, input.plateContacts, options);
-    ASSERT_EQ(result.status, PlateDesignStatus::Success) << "seed " << seed << ": " << result.message;
+    ASSERT_EQ(result.status, DesignStatus::Success) << "seed " << seed << ": " << result.message;
     const CheckReport report = checkText(plateDesignToJson(input, result));
     EXPECT_TRUE(checkPassed(report)) << "seed " << seed << ": "
                                      << (report.shapeRemoval ? report.shapeRemoval->failure : report.result.reason);

@@ -28,14 +28,14 @@ FrameDocument loadFrameExample(const std::string& name) {
 FrameDesignResult design(const FrameDocument& frame, uint64_t seed = 1) {
   FrameDesignOptions options;
   options.seed = seed;
-  options.timeLimitSeconds = 120;
+  options.limits.timeLimitSeconds = 120;
   return designFrame(frame.layout, options);
 }
 
 // The written result, read back as desia check reads it: interlocking with part 1 as the key, and
 // every beam leaving along its planned axis in id order without hitting the beams after it.
 void ExpectVerifiedResult(const FrameDocument& frame, const FrameDesignResult& result, int beams) {
-  ASSERT_EQ(result.status, FrameDesignStatus::Success) << result.message;
+  ASSERT_EQ(result.status, DesignStatus::Success) << result.message;
   EXPECT_EQ(static_cast<int>(result.order.size()), beams);
   EXPECT_EQ(frameDesignFailure(frame.layout, result.labels, result.order, result.directions), "");
   const std::string text = frameResultToJson(frame.layout, result, "result");
@@ -84,10 +84,10 @@ TEST(FrameDesign, ScaffoldOf92BeamsDesignsForSeedsOneToThree) {
     SCOPED_TRACE("seed " + std::to_string(seed));
     FrameDesignOptions options;
     options.seed = seed;
-    options.timeLimitSeconds = 0;  // the node limit alone: the same outcome on every machine
-    options.nodeLimit = 20000;
+    options.limits.timeLimitSeconds = 0;  // the node limit alone: the same outcome on every machine
+    options.limits.nodeLimit = 20000;
     const FrameDesignResult result = designFrame(scaffold.layout, options);
-    ASSERT_EQ(result.status, FrameDesignStatus::Success) << result.message;
+    ASSERT_EQ(result.status, DesignStatus::Success) << result.message;
     EXPECT_EQ(result.order.size(), 92u);
     EXPECT_EQ(frameDesignFailure(scaffold.layout, result.labels, result.order, result.directions), "");
   }
@@ -130,10 +130,10 @@ TEST(FrameDesign, LatticeOfThreeCellsCubedEndsAtTheFarCornerInOneDescent) {
   const FrameDocument lattice = latticeFrame(3);
   ASSERT_EQ(lattice.layout.frame.beams.size(), 144u);
   FrameDesignOptions options;
-  options.timeLimitSeconds = 0;  // the node limit alone: the same outcome on every machine
-  options.nodeLimit = 2 * 144;
+  options.limits.timeLimitSeconds = 0;  // the node limit alone: the same outcome on every machine
+  options.limits.nodeLimit = 2 * 144;
   const FrameDesignResult result = designFrame(lattice.layout, options);
-  ASSERT_EQ(result.status, FrameDesignStatus::Success) << result.message;
+  ASSERT_EQ(result.status, DesignStatus::Success) << result.message;
   EXPECT_EQ(frameDesignFailure(lattice.layout, result.labels, result.order, result.directions), "");
   const FrameBeam& last = lattice.layout.frame.beams[result.order.back()];
   const Vec3& a = lattice.layout.frame.joints[last.joints[0]].position;
@@ -154,10 +154,10 @@ TEST(FrameDesign, Scaffold300DesignsForSeedsOneToThree) {
     SCOPED_TRACE("seed " + std::to_string(seed));
     FrameDesignOptions options;
     options.seed = seed;
-    options.timeLimitSeconds = 0;
-    options.nodeLimit = 400;
+    options.limits.timeLimitSeconds = 0;
+    options.limits.nodeLimit = 400;
     const FrameDesignResult result = designFrame(scaffold.layout, options);
-    ASSERT_EQ(result.status, FrameDesignStatus::Success) << result.message;
+    ASSERT_EQ(result.status, DesignStatus::Success) << result.message;
     EXPECT_EQ(result.order.size(), 300u);
     EXPECT_EQ(frameDesignFailure(scaffold.layout, result.labels, result.order, result.directions), "");
   }
@@ -184,7 +184,7 @@ TEST(FrameDesign, CutPointBeamIsRefusedByName) {
   const FrameDocument frame = loadFrameExample("cut_point.json");
   EXPECT_EQ(frameCutBeams(frame.layout), std::vector<int>{8});
   const FrameDesignResult result = design(frame);
-  EXPECT_EQ(result.status, FrameDesignStatus::CutPoint);
+  EXPECT_EQ(result.status, DesignStatus::CutPoint);
   EXPECT_NE(result.message.find("beam 9 is a cut point"), std::string::npos) << result.message;
 }
 
@@ -192,11 +192,11 @@ TEST(FrameDesign, ProgressCanCancel) {
   const FrameDocument cube = loadFrameExample("frame_cube.json");
   FrameDesignOptions options;
   int calls = 0;
-  options.onProgress = [&](const FrameDesignProgress& progress) {
+  options.limits.onProgress = [&](const DesignProgress& progress) {
     EXPECT_EQ(progress.targetParts, 12);
     return ++calls < 3;
   };
-  EXPECT_EQ(designFrame(cube.layout, options).status, FrameDesignStatus::Cancelled);
+  EXPECT_EQ(designFrame(cube.layout, options).status, DesignStatus::Cancelled);
   EXPECT_EQ(calls, 3);
 }
 
@@ -476,7 +476,7 @@ TEST(FrameSessionFinish, FinishesBelowTheNodeVerifiedAndReproducible) {
   session.chooseChild(session.childCount() > 1 ? 1 : 0);
   const std::vector<FrameDesignStep> chosen = session.steps();
   ASSERT_EQ(chosen.size(), 2u);
-  FrameDesignLimits limits;
+  DesignLimits limits;
   limits.nodeLimit = 200000;
   const FrameDesignResult first = session.finish(limits);
   ExpectVerifiedResult(cube, first, 12);
@@ -491,9 +491,9 @@ TEST(FrameSessionFinish, FinishesBelowTheNodeVerifiedAndReproducible) {
   // The session still walks on as before.
   ASSERT_TRUE(session.next());
   EXPECT_EQ(session.steps().size(), 3u);
-  FrameDesignLimits tiny;
+  DesignLimits tiny;
   tiny.nodeLimit = 1;
-  EXPECT_EQ(session.finish(tiny).status, FrameDesignStatus::LimitReached);
+  EXPECT_EQ(session.finish(tiny).status, DesignStatus::LimitReached);
 }
 
 }  // namespace

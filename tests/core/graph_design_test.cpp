@@ -167,10 +167,10 @@ TEST(Backtracking, HardDesignsSucceedAfterBacktracking) {
   VoxelDesignOptions options;
   options.parts = 7;
   options.seed = 1;
-  options.timeLimitSeconds = 120;
+  options.limits.timeLimitSeconds = 120;
   const VoxelDesignResult result = designVoxelPuzzle(hollow, options);
   ASSERT_EQ(result.status, DesignStatus::Success) << result.message;
-  EXPECT_GT(result.progress.nodesVisited, options.parts - 1);  // more nodes than the path: it backtracked
+  EXPECT_GT(result.progress.nodes, options.parts - 1);  // more nodes than the path: it backtracked
   EXPECT_EQ(result.message.find(" 0 backtracks"), std::string::npos) << result.message;
 }
 

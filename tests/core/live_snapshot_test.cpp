@@ -23,8 +23,8 @@ VoxelGrid referenceShape(const char* file) {
   return testing::loadReference(std::string("input_puz/") + file).voxels;
 }
 
-// Parts placed in a snapshot grid: its labels 1..bestDepth are parts, bestDepth + 1 the remainder.
-int partsIn(const VoxelGrid& grid) { return grid.maxLabel() - 1; }
+// Parts in a snapshot grid: its labels 1..bestDepth - 1 are parts placed, bestDepth the remainder.
+int partsIn(const VoxelGrid& grid) { return grid.maxLabel(); }
 
 TEST(LiveSnapshots, VoxelDesignIsTheSameWithSnapshotsAndTheyOnlyGetDeeper) {
   // The hollow cube restarts once for seed 1 (see VoxelDesign.RestartsGiveVerifiedReproduciblePuzzles):
@@ -34,21 +34,21 @@ TEST(LiveSnapshots, VoxelDesignIsTheSameWithSnapshotsAndTheyOnlyGetDeeper) {
     VoxelDesignOptions plain;
     plain.parts = 7;
     plain.seed = 1;
-    plain.timeLimitSeconds = 120;
+    plain.limits.timeLimitSeconds = 120;
     const VoxelDesignResult without = designVoxelPuzzle(shape, plain);
 
     VoxelDesignOptions live = plain;
-    live.deepestSnapshots = true;
+    live.limits.deepestSnapshots = true;
     std::vector<int> depths;  // the snapshot's parts each time a new snapshot arrives
     const VoxelGrid* last = nullptr;
-    live.onProgress = [&](const DesignProgress& progress) {
-      EXPECT_NE(progress.deepest, nullptr);
-      if (progress.deepest && progress.deepest.get() != last) {
-        last = progress.deepest.get();
-        EXPECT_EQ(partsIn(*progress.deepest), progress.bestDepth) << file;
+    live.limits.onProgress = [&](const DesignProgress& progress) {
+      EXPECT_NE(progress.deepestGrid, nullptr);
+      if (progress.deepestGrid && progress.deepestGrid.get() != last) {
+        last = progress.deepestGrid.get();
+        EXPECT_EQ(partsIn(*progress.deepestGrid), progress.bestDepth) << file;
         // Same voxels as the shape: a labelling of it, nothing more.
         for (int64_t i = 0; i < shape.voxelCount(); ++i)
-          EXPECT_EQ(progress.deepest->labelAt(i) != 0, shape.labelAt(i) != 0) << file << " voxel " << i;
+          EXPECT_EQ(progress.deepestGrid->labelAt(i) != 0, shape.labelAt(i) != 0) << file << " voxel " << i;
         depths.push_back(progress.bestDepth);
       }
       return true;
@@ -56,14 +56,14 @@ TEST(LiveSnapshots, VoxelDesignIsTheSameWithSnapshotsAndTheyOnlyGetDeeper) {
     const VoxelDesignResult with = designVoxelPuzzle(shape, live);
     ASSERT_EQ(with.status, DesignStatus::Success) << file << ": " << with.message;
     EXPECT_EQ(with.puzzle.labels(), without.puzzle.labels()) << file;
-    EXPECT_EQ(with.progress.nodesVisited, without.progress.nodesVisited) << file;
+    EXPECT_EQ(with.progress.nodes, without.progress.nodes) << file;
     EXPECT_EQ(with.message, without.message) << file;
     ASSERT_FALSE(depths.empty());
     for (size_t k = 1; k < depths.size(); ++k) EXPECT_GT(depths[k], depths[k - 1]) << file;
     // The final progress holds the complete puzzle: the deepest node is the result.
-    ASSERT_NE(with.progress.deepest, nullptr);
-    EXPECT_EQ(with.progress.deepest->labels(), with.puzzle.labels()) << file;
-    EXPECT_EQ(without.progress.deepest, nullptr) << "snapshots are on demand only";
+    ASSERT_NE(with.progress.deepestGrid, nullptr);
+    EXPECT_EQ(with.progress.deepestGrid->labels(), with.puzzle.labels()) << file;
+    EXPECT_EQ(without.progress.deepestGrid, nullptr) << "snapshots are on demand only";
   }
 }
 
@@ -97,20 +97,20 @@ TEST(LiveSnapshots, PlateDesignIsTheSameWithSnapshotsAndTheyOnlyGetDeeper) {
   const PlateDesignResult without = designPlateJoints(table.plates, contacts, {});
 
   PlateDesignOptions live;
-  live.deepestSnapshots = true;
+  live.limits.deepestSnapshots = true;
   std::vector<std::vector<int>> snapshots;
-  live.onProgress = [&](const PlateDesignProgress& progress) {
+  live.limits.onProgress = [&](const DesignProgress& progress) {
     if (snapshots.empty() || progress.deepestPlaced != snapshots.back()) snapshots.push_back(progress.deepestPlaced);
     return true;
   };
   const PlateDesignResult with = designPlateJoints(table.plates, contacts, live);
-  ASSERT_EQ(with.status, PlateDesignStatus::Success) << with.message;
+  ASSERT_EQ(with.status, DesignStatus::Success) << with.message;
   EXPECT_EQ(with.order, without.order);
   EXPECT_EQ(with.message, without.message);
   EXPECT_EQ(with.progress.nodes, without.progress.nodes);
   // The first report comes before any plate is taken: an empty snapshot, then deeper ones.
   snapshots.erase(snapshots.begin());
-  ExpectGrowingPlacements<PlateDesignProgress>(snapshots, static_cast<int>(table.plates.size()));
+  ExpectGrowingPlacements<DesignProgress>(snapshots, static_cast<int>(table.plates.size()));
   // The last snapshot is a prefix of the deepest path; the final progress holds the whole plan but the last plate.
   const std::vector<int>& final = with.progress.deepestPlaced;
   ASSERT_EQ(final.size() + 1, with.order.size());
@@ -122,21 +122,21 @@ TEST(LiveSnapshots, FrameDesignIsTheSameWithSnapshotsAndTheyOnlyGetDeeper) {
   const std::string path = "examples/frame/scaffold_92.json";
   const FrameDocument scaffold = parseFrameText(testing::readFileText(testing::projectPath(path)), path);
   FrameDesignOptions plain;
-  plain.timeLimitSeconds = 120;
+  plain.limits.timeLimitSeconds = 120;
   const FrameDesignResult without = designFrame(scaffold.layout, plain);
 
   FrameDesignOptions live = plain;
-  live.deepestSnapshots = true;
+  live.limits.deepestSnapshots = true;
   std::vector<std::vector<int>> snapshots;
-  live.onProgress = [&](const FrameDesignProgress& progress) {
+  live.limits.onProgress = [&](const DesignProgress& progress) {
     if (!progress.deepestPlaced.empty() && (snapshots.empty() || progress.deepestPlaced != snapshots.back()))
       snapshots.push_back(progress.deepestPlaced);
     return true;
   };
   const FrameDesignResult with = designFrame(scaffold.layout, live);
-  ASSERT_EQ(with.status, FrameDesignStatus::Success) << with.message;
+  ASSERT_EQ(with.status, DesignStatus::Success) << with.message;
   EXPECT_EQ(frameResultToJson(scaffold.layout, with), frameResultToJson(scaffold.layout, without));
-  ExpectGrowingPlacements<FrameDesignProgress>(snapshots, static_cast<int>(scaffold.layout.frame.beams.size()));
+  ExpectGrowingPlacements<DesignProgress>(snapshots, static_cast<int>(scaffold.layout.frame.beams.size()));
   const std::vector<int>& final = with.progress.deepestPlaced;
   ASSERT_EQ(final.size() + 1, with.order.size());
   EXPECT_TRUE(std::equal(final.begin(), final.end(), with.order.begin()));

@@ -23,7 +23,7 @@ VoxelDesignOptions optionsFor(int parts, uint64_t seed) {
   VoxelDesignOptions options;
   options.parts = parts;
   options.seed = seed;
-  options.timeLimitSeconds = 120;
+  options.limits.timeLimitSeconds = 120;
   return options;
 }
 

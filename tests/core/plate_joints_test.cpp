@@ -71,7 +71,7 @@ double totalVolume(const std::vector<Plate>& plates) {
 TEST(PlateJoints, TheTableGetsThroughTenonsVerifiedOnTheCutPlates) {
   const AssemblyDocument table = loadPlateExample("table.json");
   const PlateDesignResult result = designCut(table.plates);
-  ASSERT_EQ(result.status, PlateDesignStatus::Success) << result.message;
+  ASSERT_EQ(result.status, DesignStatus::Success) << result.message;
   EXPECT_EQ(result.realization, JointRealization::Cut);
   ASSERT_EQ(result.joints.size(), 10u);
   for (const PlateJoint& joint : result.joints)
@@ -103,7 +103,7 @@ TEST(PlateJoints, TheClearanceGrowsEveryMortiseAndNothingElse) {
   JointCutOptions joints;
   joints.clearance = 0.2;
   const PlateDesignResult result = designCut(table.plates, joints);
-  ASSERT_EQ(result.status, PlateDesignStatus::Success) << result.message;
+  ASSERT_EQ(result.status, DesignStatus::Success) << result.message;
   EXPECT_NEAR(totalVolume(result.jointedPlates), totalVolume(table.plates), 1e-2) << "verified without play";
   // Every mortise of the 18 mm boards is (width + 0.2) x (18 + 0.2) instead of width x 18, through 18 mm.
   double play = 0;
@@ -256,7 +256,7 @@ bool sampledCollision(const PrismInside& mover, const std::vector<Vec3>& samples
 TEST(PlateJoints, SweptRemovalAgreesWithSamplingOnTheJointedTable) {
   const AssemblyDocument table = loadPlateExample("table.json");
   const PlateDesignResult result = designCut(table.plates);
-  ASSERT_EQ(result.status, PlateDesignStatus::Success) << result.message;
+  ASSERT_EQ(result.status, DesignStatus::Success) << result.message;
   const std::vector<Plate>& plates = result.jointedPlates;
   std::vector<PrismInside> insides;
   for (const Plate& plate : plates) insides.emplace_back(plate);
@@ -283,7 +283,7 @@ TEST(PlateJoints, SweptRemovalAgreesWithSamplingOnTheJointedTable) {
 TEST(PlateJoints, ATurnedTableDesignsTheSameJoints) {
   const AssemblyDocument table = loadPlateExample("table.json");
   const PlateDesignResult straight = designCut(table.plates);
-  ASSERT_EQ(straight.status, PlateDesignStatus::Success);
+  ASSERT_EQ(straight.status, DesignStatus::Success);
   std::vector<Plate> turned = table.plates;
   const double a = 0.7, b = -0.4;
   for (Plate& plate : turned) {
@@ -297,7 +297,7 @@ TEST(PlateJoints, ATurnedTableDesignsTheSameJoints) {
     }
   }
   const PlateDesignResult result = designCut(turned);
-  ASSERT_EQ(result.status, PlateDesignStatus::Success) << result.message;
+  ASSERT_EQ(result.status, DesignStatus::Success) << result.message;
   EXPECT_EQ(result.order, straight.order);
   EXPECT_EQ(result.joints.size(), straight.joints.size());
   // Clipper's 1e-4 mm grid in the turned plates' own frames: a millionth of the volume at most.
@@ -357,7 +357,7 @@ TEST(PlateJoints, OpposingTenonsTakeTurnsInAMiddlePanel) {
     EXPECT_GE(heights[k].first, heights[k - 1].second - 1e-9) << "tenons from the two sides do not overlap";
   }
   const PlateDesignResult result = designCut(bench.plates);
-  ASSERT_EQ(result.status, PlateDesignStatus::Success) << result.message;
+  ASSERT_EQ(result.status, DesignStatus::Success) << result.message;
   EXPECT_EQ(result.jointedPlates[middle].bottom.size(), 1u + 12u) << "12 separate mortises";
   EXPECT_NEAR(totalVolume(result.jointedPlates), totalVolume(bench.plates), 1e-2);
 }
@@ -365,7 +365,7 @@ TEST(PlateJoints, OpposingTenonsTakeTurnsInAMiddlePanel) {
 TEST(PlateJoints, DesignsThatNeedOtherJointsSaySoAndPlanWithThePaperAlone) {
   const AssemblyDocument box = loadPlateExample("mitred_box.json");
   const PlateDesignResult cut = designCut(box.plates);
-  EXPECT_EQ(cut.status, PlateDesignStatus::NotFound);
+  EXPECT_EQ(cut.status, DesignStatus::NotFound);
   EXPECT_NE(cut.message.find("joints 'planned'"), std::string::npos) << cut.message;
   EXPECT_THROW(parseJointRealization("glued"), Error);
   EXPECT_EQ(parseJointRealization("planned"), JointRealization::Planned);
@@ -402,7 +402,7 @@ TEST(PlateRepair, TheChairGetsOneBarFromLegToBackAndNoCutPointIsLeft) {
   // The repaired chair designs (the paper's plan; its boards meet flush, see the README).
   PlateDesignOptions planned;
   planned.realization = JointRealization::Planned;
-  EXPECT_EQ(designPlateJoints(repair->plates, contacts, planned).status, PlateDesignStatus::Success);
+  EXPECT_EQ(designPlateJoints(repair->plates, contacts, planned).status, DesignStatus::Success);
   // Nothing to repair without a cut point.
   EXPECT_FALSE(proposeCutPointRepair(loadPlateExample("table.json").plates).has_value());
 }
@@ -436,10 +436,10 @@ TEST(PlateRepair, ATurnedChairGetsABarSquareToItselfAndDesigns) {
     const AssemblyDocument repaired = documentFromPlates(repair->plates, {}, "repaired turned chair");
     PlateDesignOptions milled;
     milled.realization = JointRealization::Milled;
-    milled.timeLimitSeconds = 0;
-    milled.nodeLimit = 5000;
+    milled.limits.timeLimitSeconds = 0;
+    milled.limits.nodeLimit = 5000;
     const PlateDesignResult result = designPlateJoints(repaired.plates, repaired.plateContacts, milled);
-    EXPECT_EQ(result.status, PlateDesignStatus::Success) << "axis " << axis << ": " << result.message;
+    EXPECT_EQ(result.status, DesignStatus::Success) << "axis " << axis << ": " << result.message;
   }
 }
 
@@ -488,7 +488,7 @@ TEST(PlateCrossings, TheTableWithADividerGetsAHalvedJointCutAndVerified) {
   for (const PlateContact& contact : computePlateContacts(table.plates, {})) crossings += contact.crossing ? 1 : 0;
   EXPECT_EQ(crossings, 1) << "the divider passes through the shelf";
   const PlateDesignResult result = designCut(table.plates);
-  ASSERT_EQ(result.status, PlateDesignStatus::Success) << result.message;
+  ASSERT_EQ(result.status, DesignStatus::Success) << result.message;
   int halved = 0;
   for (const PlateJoint& joint : result.joints) halved += joint.type == JointType::Halved ? 1 : 0;
   EXPECT_EQ(halved, 1);
@@ -520,7 +520,7 @@ TEST(PlateSession, StepByStepGivesTheSearchsDesignAndGoesBack) {
   const AssemblyDocument table = loadPlateExample("table.json");
   const std::vector<PlateContact> contacts = computePlateContacts(table.plates, {});
   const PlateDesignResult search = designPlateJoints(table.plates, contacts, {});
-  ASSERT_EQ(search.status, PlateDesignStatus::Success);
+  ASSERT_EQ(search.status, DesignStatus::Success);
   PlateDesignSession session(table.plates, contacts, {});
   EXPECT_EQ(session.targetPlates(), 6);
   EXPECT_FALSE(session.back()) << "at the root";
@@ -732,9 +732,9 @@ TEST(PlateDovetails, TheTongueFillsItsHousingAndLeavesOnlyThroughTheOpenEnd) {
 
 TEST(PlateDovetails, TheBookshelfDesignsWithMilledJointsOnlyAndReadsBack) {
   const AssemblyDocument shelf = loadPlateExample("bookshelf.json");
-  EXPECT_EQ(designCut(shelf.plates).status, PlateDesignStatus::NotFound);
+  EXPECT_EQ(designCut(shelf.plates).status, DesignStatus::NotFound);
   const PlateDesignResult result = designMilled(shelf.plates, 1, 0.2);
-  ASSERT_EQ(result.status, PlateDesignStatus::Success) << result.message;
+  ASSERT_EQ(result.status, DesignStatus::Success) << result.message;
   int dovetails = 0;
   for (const PlateJoint& joint : result.joints) dovetails += joint.type == JointType::Dovetail ? 1 : 0;
   EXPECT_GT(dovetails, 0);
@@ -775,7 +775,7 @@ TEST(PlateDovetails, TheRepairedChairDesignsWithMilledJointsThroughRunOnHousings
   const AssemblyDocument chair = loadPlateExample("chair_repaired.json");
   for (uint64_t seed : {1u, 2u, 3u}) {
     const PlateDesignResult result = designMilled(chair.plates, seed);
-    ASSERT_EQ(result.status, PlateDesignStatus::Success) << "seed " << seed << ": " << result.message;
+    ASSERT_EQ(result.status, DesignStatus::Success) << "seed " << seed << ": " << result.message;
     int runOn = 0;
     for (const PlateJoint& joint : result.joints) {
       if (joint.type != JointType::Dovetail) continue;
@@ -798,7 +798,7 @@ TEST(PlateDovetails, WaysOutAFewNanoradiansOffTheFacesTheySlideAlongAreSquaredTo
   // plate 1's face by 6.3e-9); a way out turned by more is a real block and still fails.
   const AssemblyDocument chair = loadPlateExample("chair_repaired.json");
   const PlateDesignResult result = designMilled(chair.plates);
-  ASSERT_EQ(result.status, PlateDesignStatus::Success) << result.message;
+  ASSERT_EQ(result.status, DesignStatus::Success) << result.message;
   const std::vector<Plate> inOrder = jointedInRemovalOrder(result);
   auto tilted = [&](double by) {
     std::vector<Vec3> directions = result.directions;
@@ -1043,9 +1043,9 @@ TEST(PlateMitreSlides, EverySlideOfTheLizardCutsIntoValidPlates) {
 TEST(PlateMitreTenons, MitredBoxAndDodecahedronDesignWithMilledJointsAndVerify) {
   for (const char* name : {"mitred_box.json", "dodecahedron.json", "cube.json"}) {
     const AssemblyDocument shape = loadPlateExample(name);
-    EXPECT_EQ(designCut(shape.plates).status, PlateDesignStatus::NotFound) << name;  // nothing to cut
+    EXPECT_EQ(designCut(shape.plates).status, DesignStatus::NotFound) << name;  // nothing to cut
     const PlateDesignResult result = designMilled(shape.plates);
-    ASSERT_EQ(result.status, PlateDesignStatus::Success) << name << ": " << result.message;
+    ASSERT_EQ(result.status, DesignStatus::Success) << name << ": " << result.message;
     for (const PlateJoint& joint : result.joints)
       EXPECT_TRUE(joint.type == JointType::MitreTenon || joint.type == JointType::MitreSlide) << name;
     const std::vector<Plate> inOrder = jointedInRemovalOrder(result);
@@ -1105,7 +1105,7 @@ TEST(PlateJoints, ExactVerticesRecoverInputVerticesAndCrossings) {
 TEST(PlateJoints, CabinetDesignsWithMilledJointsOnExactFaces) {
   const AssemblyDocument shape = loadPlateExample("cabinet.json");
   const PlateDesignResult result = designMilled(shape.plates);
-  ASSERT_EQ(result.status, PlateDesignStatus::Success) << result.message;
+  ASSERT_EQ(result.status, DesignStatus::Success) << result.message;
   EXPECT_LT(result.progress.nodes, 2000);  // restarts: 182 nodes for seed 1 (7,902 in one tree)
   std::set<JointType> types;
   for (const PlateJoint& joint : result.joints) types.insert(joint.type);
@@ -1162,10 +1162,10 @@ TEST(PlateSessionFinish, FinishesBelowTheNodeVerifiedAndReproducible) {
   EXPECT_NE(session.steps()[1].plate, searchs.plate);
   const std::vector<PlateDesignStep> chosen = session.steps();
   ASSERT_EQ(chosen.size(), 2u);
-  PlateDesignLimits limits;
+  DesignLimits limits;
   limits.nodeLimit = 200000;
   const PlateDesignResult first = session.finish(limits);
-  ASSERT_EQ(first.status, PlateDesignStatus::Success) << first.message;
+  ASSERT_EQ(first.status, DesignStatus::Success) << first.message;
   ASSERT_GE(first.order.size(), 2u);
   for (size_t k = 0; k < 2; ++k) {
     EXPECT_EQ(first.order[k], chosen[k].plate);
@@ -1190,15 +1190,15 @@ TEST(PlateSessionFinish, FinishesBelowTheNodeVerifiedAndReproducible) {
   EXPECT_EQ(plateDesignResultToJson(table, session.finish(limits)),
             plateDesignResultToJson(table, designPlateJoints(table.plates, contacts, [] {
                                       PlateDesignOptions options;
-                                      options.nodeLimit = 200000;
-                                      options.timeLimitSeconds = 0;
+                                      options.limits.nodeLimit = 200000;
+                                      options.limits.timeLimitSeconds = 0;
                                       return options;
                                     }())));
   // A node limit that stops the search at once is a limit, never an unverified plan.
   session.chooseChild(0);
-  PlateDesignLimits tiny;
+  DesignLimits tiny;
   tiny.nodeLimit = 1;
-  EXPECT_EQ(session.finish(tiny).status, PlateDesignStatus::LimitReached);
+  EXPECT_EQ(session.finish(tiny).status, DesignStatus::LimitReached);
 }
 
 }  // namespace
@@ -1268,10 +1268,10 @@ TEST(PlateMitreTenons, TheLizardDesignsWithMilledJointsVerifiedOnItsPlates) {
   const AssemblyDocument lizard = loadPlateExample("lizard.json");
   PlateDesignOptions options;
   options.realization = JointRealization::Milled;
-  options.timeLimitSeconds = 0;
-  options.nodeLimit = 2000;
+  options.limits.timeLimitSeconds = 0;
+  options.limits.nodeLimit = 2000;
   const PlateDesignResult result = designPlateJoints(lizard.plates, lizard.plateContacts, options);
-  ASSERT_EQ(result.status, PlateDesignStatus::Success) << result.message;
+  ASSERT_EQ(result.status, DesignStatus::Success) << result.message;
   std::map<JointType, int> byType;
   for (const PlateJoint& joint : result.joints) ++byType[joint.type];
   EXPECT_EQ(result.joints.size(), 90u);

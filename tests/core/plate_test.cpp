@@ -259,7 +259,7 @@ TEST(PlateJointPlan, ExamplesGetVerifiedPlans) {
   for (const auto& [name, realization] : cases) {
     const AssemblyDocument document = loadExample(name);
     const PlateDesignResult result = planExample(name, 1, realization);
-    ASSERT_EQ(result.status, PlateDesignStatus::Success) << name << ": " << result.message;
+    ASSERT_EQ(result.status, DesignStatus::Success) << name << ": " << result.message;
     ASSERT_EQ(result.order.size(), document.plates.size()) << name;
     EXPECT_EQ(std::set<int>(result.order.begin(), result.order.end()).size(), document.plates.size()) << name;
     EXPECT_EQ(result.directions.size(), document.plates.size() - 1) << name;
@@ -279,7 +279,7 @@ TEST(PlateJointPlan, ExamplesGetVerifiedPlans) {
 
 TEST(PlateJointPlan, OrthogonalPlansUseSlotsAndTenonsWhereTheEdgesSay) {
   const PlateDesignResult result = planExample("table.json", 1, JointRealization::Planned);
-  ASSERT_EQ(result.status, PlateDesignStatus::Success);
+  ASSERT_EQ(result.status, DesignStatus::Success);
   int halved = 0, tenons = 0;
   for (const PlateJoint& joint : result.joints) {
     halved += joint.type == JointType::Halved ? 1 : 0;
@@ -292,14 +292,14 @@ TEST(PlateJointPlan, OrthogonalPlansUseSlotsAndTenonsWhereTheEdgesSay) {
 
 TEST(PlateJointPlan, ACutPointIsRefusedWithThePlateNamed) {
   const PlateDesignResult result = planExample("chair_cut_point.json");
-  EXPECT_EQ(result.status, PlateDesignStatus::CutPoint);
+  EXPECT_EQ(result.status, DesignStatus::CutPoint);
   EXPECT_EQ(result.message.rfind("plate 5 is a cut point of the parts-graph", 0), 0u) << result.message;
 }
 
 TEST(PlateJointPlan, SameSeedSamePlanAndTurnedDesignsPlanToo) {
   const PlateDesignResult first = planExample("bookshelf.json", 7);
   const PlateDesignResult again = planExample("bookshelf.json", 7);
-  ASSERT_EQ(first.status, PlateDesignStatus::Success);
+  ASSERT_EQ(first.status, DesignStatus::Success);
   EXPECT_EQ(first.order, again.order);
   ASSERT_EQ(first.directions.size(), again.directions.size());
   for (size_t k = 0; k < first.directions.size(); ++k) EXPECT_EQ(first.directions[k], again.directions[k]);
@@ -309,7 +309,7 @@ TEST(PlateJointPlan, SameSeedSamePlanAndTurnedDesignsPlanToo) {
   PlateDesignOptions planned;
   planned.realization = JointRealization::Planned;
   const PlateDesignResult result = designPlateJoints(turned.plates, computePlateContacts(turned.plates, turned.plateOptions), planned);
-  ASSERT_EQ(result.status, PlateDesignStatus::Success) << result.message;
+  ASSERT_EQ(result.status, DesignStatus::Success) << result.message;
   EXPECT_EQ(result.joints.size(), 12u);
 }
 
@@ -319,19 +319,19 @@ TEST(PlateJointPlan, CancellationAndLimitsStopTheSearch) {
   PlateDesignOptions options;
   options.realization = JointRealization::Planned;
   int calls = 0;
-  options.onProgress = [&](const PlateDesignProgress& p) {
+  options.limits.onProgress = [&](const DesignProgress& p) {
     EXPECT_EQ(p.targetParts, 123);
     return ++calls < 3;
   };
   const PlateDesignResult cancelled = designPlateJoints(document.plates, contacts, options);
-  EXPECT_EQ(cancelled.status, PlateDesignStatus::Cancelled);
+  EXPECT_EQ(cancelled.status, DesignStatus::Cancelled);
   EXPECT_EQ(calls, 3);
   EXPECT_EQ(cancelled.progress.nodes, 3);
   PlateDesignOptions limited;
   limited.realization = JointRealization::Planned;
-  limited.nodeLimit = 10;
+  limited.limits.nodeLimit = 10;
   const PlateDesignResult result = designPlateJoints(document.plates, contacts, limited);
-  EXPECT_EQ(result.status, PlateDesignStatus::LimitReached);
+  EXPECT_EQ(result.status, DesignStatus::LimitReached);
   EXPECT_NE(result.message.find("of 123 plates"), std::string::npos) << result.message;
 }
 
@@ -398,7 +398,7 @@ TEST(PlateMesh, EveryPlateIsAClosedOutwardSolidOfItsVolume) {
 TEST(PlateJointPlan, APlanDocumentKeepsItsContactsPlatesAndJointsWhenRewritten) {
   const AssemblyDocument input = loadExample("table.json");
   const PlateDesignResult result = planExample("table.json");
-  ASSERT_EQ(result.status, PlateDesignStatus::Success);
+  ASSERT_EQ(result.status, DesignStatus::Success);
   const AssemblyDocument plan = parseJsonDocument(plateDesignToJson(input, result), "plan.json");
   EXPECT_FALSE(plan.contactsFromGeometry);
   EXPECT_EQ(plan.plates.size(), 6u);
@@ -463,7 +463,7 @@ TEST(PlateInput, ObjectsOfAnObjAndSlabsOfAnStlArePlates) {
       planned.realization = JointRealization::Planned;
       const PlateDesignResult a = designPlateJoints(original.plates, computePlateContacts(original.plates, {}), planned);
       const PlateDesignResult b = designPlateJoints(reread.plates, computePlateContacts(reread.plates, {}), planned);
-      ASSERT_EQ(b.status, PlateDesignStatus::Success) << source << ": " << b.message;
+      ASSERT_EQ(b.status, DesignStatus::Success) << source << ": " << b.message;
       EXPECT_EQ(b.order, a.order) << source;
       EXPECT_EQ(b.joints.size(), a.joints.size()) << source;
     }

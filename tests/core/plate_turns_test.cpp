@@ -53,10 +53,10 @@ std::string designAndCheckFailure(const std::string& example, JointRealization j
   PlateDesignOptions options;
   options.realization = joints;
   options.seed = 1;
-  options.timeLimitSeconds = 0;
-  options.nodeLimit = 20000;
+  options.limits.timeLimitSeconds = 0;
+  options.limits.nodeLimit = 20000;
   const PlateDesignResult result = designPlateJoints(input.plates, input.plateContacts, options);
-  if (result.status != PlateDesignStatus::Success) return "design: " + result.message;
+  if (result.status != DesignStatus::Success) return "design: " + result.message;
   CheckOptions check;
   check.method = CheckMethod::Both;
   const CheckReport report = checkDocument(parseAssemblyText(plateDesignToJson(input, result), "result.json"), check);

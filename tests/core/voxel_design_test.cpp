@@ -22,7 +22,7 @@ VoxelDesignOptions optionsFor(int parts, uint64_t seed) {
   VoxelDesignOptions options;
   options.parts = parts;
   options.seed = seed;
-  options.timeLimitSeconds = 120;
+  options.limits.timeLimitSeconds = 120;
   return options;
 }
 
@@ -254,8 +254,8 @@ INSTANTIATE_TEST_SUITE_P(Desia, SmallDesigns,
 void ExpectBunnyWithinNodes(int parts, uint64_t seed, int64_t nodeLimit) {
   const VoxelGrid bunny = shape("bunny_origin.puz");
   VoxelDesignOptions options = optionsFor(parts, seed);
-  options.timeLimitSeconds = 0;
-  options.nodeLimit = nodeLimit;
+  options.limits.timeLimitSeconds = 0;
+  options.limits.nodeLimit = nodeLimit;
   ExpectVerifiedPuzzle(bunny, designVoxelPuzzle(bunny, options), parts);
 }
 
@@ -275,7 +275,7 @@ TEST(VoxelDesign, SameSeedSameResultOtherSeedOtherResult) {
   const VoxelDesignResult again = designVoxelPuzzle(cube, optionsFor(7, 11));
   ASSERT_EQ(first.status, DesignStatus::Success);
   EXPECT_EQ(first.puzzle.labels(), again.puzzle.labels());
-  EXPECT_EQ(first.progress.nodesVisited, again.progress.nodesVisited);
+  EXPECT_EQ(first.progress.nodes, again.progress.nodes);
   const VoxelDesignResult other = designVoxelPuzzle(cube, optionsFor(7, 12));
   ASSERT_EQ(other.status, DesignStatus::Success);
   EXPECT_NE(first.puzzle.labels(), other.puzzle.labels());
@@ -290,7 +290,7 @@ TEST(VoxelDesign, RestartsGiveVerifiedReproduciblePuzzles) {
   EXPECT_NE(first.message.find(", 1 restarts)"), std::string::npos) << first.message;
   const VoxelDesignResult again = designVoxelPuzzle(hollow, optionsFor(7, 15));
   EXPECT_EQ(first.puzzle.labels(), again.puzzle.labels());
-  EXPECT_EQ(first.progress.nodesVisited, again.progress.nodesVisited);
+  EXPECT_EQ(first.progress.nodes, again.progress.nodes);
 }
 
 TEST(VoxelDesign, RecursiveModeGivesVerifiedPuzzles) {
@@ -315,15 +315,15 @@ TEST(VoxelDesign, LimitsAndCancellationStopWithProgress) {
   // The hollow cube at seed 2 takes a few hundred nodes, so both stops come first.
   const VoxelGrid hollow = shape("Cube_hollow_4x4x4_origin.puz");
   VoxelDesignOptions options = optionsFor(7, 2);
-  options.nodeLimit = 25;
+  options.limits.nodeLimit = 25;
   const VoxelDesignResult limited = designVoxelPuzzle(hollow, options);
   EXPECT_EQ(limited.status, DesignStatus::LimitReached);
-  EXPECT_EQ(limited.progress.nodesVisited, 25);
+  EXPECT_EQ(limited.progress.nodes, 25);
   EXPECT_NE(limited.message.find("node limit"), std::string::npos) << limited.message;
 
-  options.nodeLimit = 0;
+  options.limits.nodeLimit = 0;
   int calls = 0;
-  options.onProgress = [&](const DesignProgress& progress) {
+  options.limits.onProgress = [&](const DesignProgress& progress) {
     EXPECT_EQ(progress.targetParts, 7);
     EXPECT_LE(progress.depth, progress.bestDepth);
     return ++calls < 10;
@@ -331,7 +331,7 @@ TEST(VoxelDesign, LimitsAndCancellationStopWithProgress) {
   const VoxelDesignResult cancelled = designVoxelPuzzle(hollow, options);
   EXPECT_EQ(cancelled.status, DesignStatus::Cancelled);
   EXPECT_EQ(calls, 10);
-  EXPECT_EQ(cancelled.progress.nodesVisited, 10);
+  EXPECT_EQ(cancelled.progress.nodes, 10);
 }
 
 TEST(VoxelDesign, ExhaustedSearchSaysHowFarItGot) {
@@ -419,7 +419,7 @@ TEST(DesignSession, SameSeedSameChildrenAsTheAutomaticSearch) {
   options.seed = 1;
   const VoxelDesignResult automatic = designVoxelPuzzle(cube, options);
   ASSERT_EQ(automatic.status, DesignStatus::Success);
-  ASSERT_EQ(automatic.progress.nodesVisited, 4);  // no backtracking: always the best child
+  ASSERT_EQ(automatic.progress.nodes, 4);  // no backtracking: always the best child
   VoxelDesignSession session(cube, options);
   while (session.generateNextPart() && !session.complete()) {
   }
@@ -499,7 +499,7 @@ TEST(DesignSessionFinish, SamePathSameSeedSamePuzzle) {
   ASSERT_EQ(first.status, DesignStatus::Success) << first.message;
   EXPECT_EQ(again.puzzle.labels(), first.puzzle.labels());
   EXPECT_EQ(other.puzzle.labels(), first.puzzle.labels());
-  EXPECT_EQ(other.progress.nodesVisited, first.progress.nodesVisited);
+  EXPECT_EQ(other.progress.nodes, first.progress.nodes);
 }
 
 TEST(DesignSessionFinish, FromTheRootIsTheAutomaticDesign) {
@@ -510,7 +510,7 @@ TEST(DesignSessionFinish, FromTheRootIsTheAutomaticDesign) {
   const VoxelDesignResult finished = session.finish({120, 0, {}});
   ASSERT_EQ(finished.status, DesignStatus::Success) << finished.message;
   EXPECT_EQ(finished.puzzle.labels(), automatic.puzzle.labels());
-  EXPECT_EQ(finished.progress.nodesVisited, automatic.progress.nodesVisited);
+  EXPECT_EQ(finished.progress.nodes, automatic.progress.nodes);
 }
 
 TEST(DesignSessionFinish, StopsAtLimitsAndOnCancelAndTakesACompleteNodeAsItIs) {
@@ -530,7 +530,7 @@ TEST(DesignSessionFinish, StopsAtLimitsAndOnCancelAndTakesACompleteNodeAsItIs) {
   const VoxelDesignResult done = session.finish({});
   ASSERT_EQ(done.status, DesignStatus::Success) << done.message;
   EXPECT_EQ(done.puzzle.labels(), session.current().labels());
-  EXPECT_EQ(done.progress.nodesVisited, 0);
+  EXPECT_EQ(done.progress.nodes, 0);
 }
 
 }  // namespace

@@ -178,7 +178,7 @@ inline void designTarget(const uint8_t* data, size_t size) {
     if ((header[2] & 0x40) && shapeVoxels.size() >= 2) options.groups = {{shapeVoxels[0], shapeVoxels[1]}};
     options.ranking = parseCandidateRanking(kRankings[header[3] % 7]);
     options.keyDirection = parseAxisDirection(kDirections[(header[3] / 7) % 6]);
-    options.nodeLimit = DesignLimits::kNodeLimit;
+    options.limits.nodeLimit = DesignLimits::kNodeLimit;
 
     const VoxelDesignResult result = designVoxelPuzzle(document.voxels, options);
     designResultToJson(result);

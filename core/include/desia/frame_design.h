@@ -12,51 +12,25 @@
 #include <vector>
 
 #include "desia/assembly.h"
+#include "desia/design_search.h"
 #include "desia/frame.h"
 
 namespace desia {
 
-struct FrameDesignProgress {
-  int64_t nodes = 0;  // construction-tree nodes visited
-  int depth = 0;      // beams placed in the current node
-  int bestDepth = 0;
-  int targetParts = 0;  // the number of beams
-  double seconds = 0;
-  // With FrameDesignOptions::deepestSnapshots: the beams taken at the deepest node so far (input
-  // indices, the key first), for a live view; replaced only when bestDepth grows.
-  std::vector<int> deepestPlaced;
-};
-
 struct FrameDesignOptions {
   uint64_t seed = 1;
   int candidates = 2;            // children kept per node (the paper's m; FrameInterlock keeps 2)
-  double timeLimitSeconds = 60;  // 0 = none
-  int64_t nodeLimit = 1'000'000;
-  // Called at every node of the search; return false to cancel.
-  std::function<bool(const FrameDesignProgress&)> onProgress;
-  bool deepestSnapshots = false;  // fill FrameDesignProgress::deepestPlaced (never changes the search)
-};
-
-enum class FrameDesignStatus { Success, NotFound, LimitReached, Cancelled, CutPoint };
-const char* frameDesignStatusName(FrameDesignStatus status);  // "success", "not-found", ...
-
-// The limits and progress callback of a session's finish() (0: no limit; the same meaning as in
-// FrameDesignOptions otherwise).
-struct FrameDesignLimits {
-  double timeLimitSeconds = 0;
-  int64_t nodeLimit = 0;
-  std::function<bool(const FrameDesignProgress&)> onProgress;
-  bool deepestSnapshots = false;
+  DesignLimits limits{60, 1'000'000, {}, false};  // time, nodes, progress and cancellation
 };
 
 struct FrameDesignResult {
-  FrameDesignStatus status = FrameDesignStatus::NotFound;
+  DesignStatus status = DesignStatus::NotFound;
   std::string message;              // one sentence for the user
   std::vector<int> order;           // beam indices: the key first, the last beam last
   std::vector<Vec3> directions;     // axis direction order[k] leaves along (none for the last beam)
   std::vector<JointLabels> labels;  // per joint, the owning beam of each voxel (internal indices)
   Assembly assembly;                // parts = beams in `order` (part 1 = key), voxel contacts
-  FrameDesignProgress progress;
+  DesignProgress progress;
 };
 
 // One step of a frame design: the beam taken (an index), the axis direction it leaves along, and
@@ -98,7 +72,7 @@ class FrameDesignSession {
   // so the beams taken so far stay, first in the order with their directions and voxels; restarts
   // re-seed below this node. A success is verified like any design. The session does not move.
   // Deterministic: the same path and seed give the same result.
-  FrameDesignResult finish(const FrameDesignLimits& limits);
+  FrameDesignResult finish(const DesignLimits& limits);
 
  private:
   struct State;

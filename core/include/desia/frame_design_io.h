@@ -21,7 +21,6 @@ struct FramePackageOptions {
 // Options as the package passes them ({seed, candidates, nodeLimit, timeLimit, jointSize}); unknown
 // names and values out of range are BadInput.
 FramePackageOptions parseFrameDesignOptionsJson(const std::string& text);
-std::string frameDesignProgressToJson(const FrameDesignProgress& progress);
 // {status, message, progress, puz: null, document: the result document (frameResultToJson) or
 // null, verification: its DBG check report (what `desia check RESULT.json` prints) or null}.
 std::string frameDesignResultToJson(const FrameDocument& input, const FrameDesignResult& result);

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "desia/assembly.h"
+#include "desia/design_search.h"
 #include "desia/plate.h"
 #include "desia/plate_joints.h"
 
@@ -63,43 +64,17 @@ struct PlateJoint {
   int contact = -1;  // the contact the tenons, slots or dovetail are cut in, an index into the contacts
 };
 
-struct PlateDesignProgress {
-  int64_t nodes = 0;  // construction-tree nodes visited
-  int depth = 0;      // plates placed in the current node
-  int bestDepth = 0;
-  int targetParts = 0;  // the number of plates
-  double seconds = 0;
-  // With PlateDesignOptions::deepestSnapshots: the plates taken at the deepest node so far (input
-  // indices, the key first), for a live view; replaced only when bestDepth grows.
-  std::vector<int> deepestPlaced;
-};
-
 struct PlateDesignOptions {
   uint64_t seed = 1;
   int candidates = 30;  // children kept per node (the paper's m)
-  double timeLimitSeconds = 60;
-  int64_t nodeLimit = 1'000'000;
+  DesignLimits limits{60, 1'000'000, {}, false};  // time, nodes, progress and cancellation
   JointRealization realization = JointRealization::Cut;
   JointCutOptions joints;  // tenon sizes and the clearance cut into the result
   PlateOptions geometry;   // the contact tolerance for the jointed plates' contacts
-  // Called at every node of the search; return false to cancel.
-  std::function<bool(const PlateDesignProgress&)> onProgress;
-  bool deepestSnapshots = false;  // fill PlateDesignProgress::deepestPlaced (never changes the search)
-};
-
-enum class PlateDesignStatus { Success, NotFound, LimitReached, Cancelled, CutPoint };
-
-// The limits and progress callback of a session's finish() (0: no limit; the same meaning as in
-// PlateDesignOptions otherwise).
-struct PlateDesignLimits {
-  double timeLimitSeconds = 0;
-  int64_t nodeLimit = 0;
-  std::function<bool(const PlateDesignProgress&)> onProgress;
-  bool deepestSnapshots = false;
 };
 
 struct PlateDesignResult {
-  PlateDesignStatus status = PlateDesignStatus::NotFound;
+  DesignStatus status = DesignStatus::NotFound;
   std::string message;           // one sentence for the user
   std::vector<int> order;        // plate indices: the key first, the last plate last
   std::vector<Vec3> directions;  // removal direction of order[k] (none for the last plate)
@@ -113,7 +88,7 @@ struct PlateDesignResult {
   // The contacts of the jointed plates, computed from their geometry (Planned: the joints' model
   // contacts); part k = order[k].
   Assembly jointAssembly;
-  PlateDesignProgress progress;
+  DesignProgress progress;
 };
 
 // One step of a plate design: the plate taken (an index) and the direction it leaves along, with
@@ -154,7 +129,7 @@ class PlateDesignSession {
   // re-seed below this node. A success is verified like any design. The session does not move.
   // Deterministic: the same path and seed give the same result; from the root it is
   // designPlateJoints with the session's options and these limits.
-  PlateDesignResult finish(const PlateDesignLimits& limits);
+  PlateDesignResult finish(const DesignLimits& limits);
 
  private:
   struct State;

@@ -18,7 +18,6 @@ std::string plateDesignToJson(const AssemblyDocument& input, const PlateDesignRe
 // Options as the package passes them ({seed, candidates, nodeLimit, timeLimit}); unknown names
 // and values out of range are BadInput.
 PlateDesignOptions parsePlateDesignOptionsJson(const std::string& text);
-std::string plateDesignProgressToJson(const PlateDesignProgress& progress);
 // {status, message, progress, puz: null, document: the plan or null, verification: its check with
 // both tests or null, repair: for a cut point, {message, document} of the design with the bars
 // proposeCutPointRepair adds, or null}, the shape of the voxel designer's result.

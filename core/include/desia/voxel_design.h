@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "desia/check.h"
+#include "desia/design_search.h"
 #include "desia/voxel_grid.h"
 
 namespace desia {
@@ -32,18 +33,6 @@ enum class DesignMode {
 DesignMode parseDesignMode(const std::string& name);  // desia|recursive
 const char* designModeName(DesignMode mode);
 
-struct DesignProgress {
-  int64_t nodesVisited = 0;  // candidates accepted into the construction tree so far
-  int depth = 0;             // parts placed in the current node (P1..Pi)
-  int bestDepth = 0;         // the deepest node reached so far
-  int targetParts = 0;       // N
-  double elapsedSeconds = 0;
-  // With VoxelDesignOptions::deepestSnapshots: the deepest node found so far (A_bestDepth: parts
-  // 1..bestDepth placed, label bestDepth + 1 the remainder), in the input's grid; null otherwise.
-  // Replaced only when bestDepth grows, so successive snapshots are deeper (a live view).
-  std::shared_ptr<const VoxelGrid> deepest;
-};
-
 struct VoxelDesignOptions {
   int parts = 0;                       // N >= 3
   uint64_t seed = 1;                   // all randomness comes from this seed
@@ -57,13 +46,9 @@ struct VoxelDesignOptions {
   bool evenParts = false;
   Int3 keyDirection{0, 1, 0};          // the key's only free direction (default +y: gravity holds it)
   std::vector<std::vector<int64_t>> groups;  // voxel index groups that must end up in one part
-  double timeLimitSeconds = 0;         // 0: none
-  int64_t nodeLimit = 0;               // 0: none
-  // Called after every visited node; return false to stop (cancellation). Not called concurrently.
-  std::function<bool(const DesignProgress&)> onProgress;
-  // Keep a copy of the deepest node for DesignProgress::deepest (a grid copy each time the best
-  // depth grows, at most N - 1 copies per design); it never changes the search.
-  bool deepestSnapshots = false;
+  // Time and node limits, progress and cancellation. deepestSnapshots copies the grid each time
+  // the best depth grows (at most N - 1 copies per design) into DesignProgress::deepestGrid.
+  DesignLimits limits;
 };
 
 // Bounds on the size of every part (the key and the last remainder included), in voxels.
@@ -85,9 +70,6 @@ struct PartSizeSpread {
 };
 PartSizeSpread partSizeSpread(const VoxelGrid& puzzle);
 
-enum class DesignStatus { Success, NotFound, LimitReached, Cancelled };
-const char* designStatusName(DesignStatus status);
-
 struct VoxelDesignResult {
   DesignStatus status = DesignStatus::NotFound;
   std::string message;        // one sentence: what was found, or how far the search got
@@ -96,15 +78,6 @@ struct VoxelDesignResult {
   DesignProgress progress;    // final counters
   uint64_t seed = 0;          // the seed of the search that produced this result
   PartSizeSpread partSizes;   // on success: the spread of the puzzle's part sizes
-};
-
-// The limits and progress callback of one search (a session's finish()); the same meaning as in
-// VoxelDesignOptions.
-struct DesignLimits {
-  double timeLimitSeconds = 0;  // 0: none
-  int64_t nodeLimit = 0;        // 0: none
-  std::function<bool(const DesignProgress&)> onProgress;
-  bool deepestSnapshots = false;
 };
 
 // Step-by-step design, as the original tool's GUI ("Generate Next Part", "Child Index", "Go Back"):

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Restarts of a seeded depth-first search (the voxel, frame and plate designers): each search tree
+// Restarts of the seeded depth-first construction search (search/construction_search.h): each search tree
 // gets a budget from the Luby sequence, in work the search counts (never time, so the same seed
 // gives the same result), and a random state derived from the user's seed.
 #pragma once
@@ -34,12 +34,16 @@ inline uint64_t splitMix64(uint64_t z) {
   return z ^ (z >> 31);
 }
 
-// The random state of restart `attempt` for the user's seed: attempt 0 is `firstState`, the
-// seed's own state (as before restarts existed); later attempts mix the attempt in, so their
-// orders differ from every other seed's.
-inline uint64_t restartState(uint64_t seed, int64_t attempt, uint64_t firstState) {
+// The random state of restart `attempt` for the user's seed, the one seeding of every designer:
+// attempt 0 is `firstState`, the kind's own state for the seed; later attempts mix the attempt
+// (and the kind's `salt`) in, so their orders differ from every other seed's. Each kind keeps the
+// first state and salt its results were made with (voxel puzzles: the seed itself and
+// kVoxelRestartSalt; plates and frames: seed * golden ratio + 1 and + 7, no salt).
+inline uint64_t restartState(uint64_t seed, int64_t attempt, uint64_t firstState, uint64_t salt = 0) {
   if (attempt == 0) return firstState;
-  return splitMix64(seed + 0x9E3779B97F4A7C15ull * static_cast<uint64_t>(attempt + 1));
+  return splitMix64(seed + 0x9E3779B97F4A7C15ull * static_cast<uint64_t>(attempt + 1) + salt);
 }
+
+constexpr uint64_t kVoxelRestartSalt = 0x5851F42D4C957F2Dull;
 
 }  // namespace desia
