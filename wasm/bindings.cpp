@@ -22,6 +22,7 @@
 #include "desia/document.h"
 #include "desia/error.h"
 #include "desia/export.h"
+#include "desia/export_formats.h"
 #include "desia/frame_design.h"
 #include "desia/frame_design_io.h"
 #include "desia/frame_format.h"
@@ -251,29 +252,44 @@ class DesignSession {
   std::unique_ptr<desia::DesignSession> session_;
 };
 
-// A voxel assembly (.puz or JSON text) as file bytes: "stl", "stl-ascii", "obj", "xmpuzzle",
-// "stl-zip" or "build-plate-stl"; part 0 = all parts; `spacing` NaN = the default (one voxel).
-// Returns a Uint8Array that owns its bytes (copied out of the heap at once: a later memory growth
-// would detach a view, toolchain.md #9).
+// An assembly (voxel .puz or JSON text, a plate structure or a frame) as the bytes of one file in
+// `format` (desia/export_formats.h: the same registry and writers as the CLI's export); part 0 =
+// all parts; `spacing` NaN = the default (one voxel). Cut sheets come from cutSheets. Returns a
+// Uint8Array that owns its bytes (copied out of the heap at once: a later memory growth would
+// detach a view, toolchain.md #9).
 val exportAssembly(const std::string& text, const std::string& format, int part, double voxelSize, double clearance,
                    double spacing, const std::string& source) {
   return guarded([&] {
-    desia::ExportOptions options;
-    options.part = part;
-    options.voxelSize = voxelSize;
-    options.clearance = clearance;
-    if (!std::isnan(spacing)) options.spacing = spacing;
-    options.source = source;
-    const desia::AssemblyDocument document = desia::parseAssemblyText(text, source);
-    if (desia::isFrameDocument(document) && clearance != 0) {
-      throw desia::Error(desia::ErrorCode::BadInput, source + ": the clearance applies to voxel assemblies, not to frames");
+    desia::ExportSettings settings;
+    settings.mesh.part = part;
+    settings.mesh.voxelSize = voxelSize;
+    settings.mesh.clearance = clearance;
+    if (!std::isnan(spacing)) settings.mesh.spacing = spacing;
+    settings.mesh.source = source;
+    const desia::ExportFormatInfo& info = desia::exportFormatNamed(format);
+    const std::string bytes = desia::exportFiles(desia::parseAssemblyText(text, source), info, settings).front();
+    return val(emscripten::typed_memory_view(bytes.size(), reinterpret_cast<const uint8_t*>(bytes.data()))).call<val>("slice");
+  });
+}
+
+// The export-format registry as plain data: [{ name, kinds, options, perSheet, what }].
+val exportFormats() {
+  return guarded([&] {
+    val formats = val::array();
+    for (const desia::ExportFormatInfo& info : desia::exportFormats()) {
+      val format = val::object();
+      format.set("name", std::string(info.name));
+      val kinds = val::array();
+      for (desia::AssemblyKind kind : info.kinds) kinds.call<void>("push", std::string(desia::assemblyKindName(kind)));
+      format.set("kinds", kinds);
+      val options = val::array();
+      for (desia::ExportOptionGroup option : info.options) options.call<void>("push", std::string(desia::exportOptionGroupName(option)));
+      format.set("options", options);
+      format.set("perSheet", info.perSheet);
+      format.set("what", std::string(info.what));
+      formats.call<void>("push", format);
     }
-    // Frames have their own exports (meshes, .fpuz, the cut list) in the core.
-    const std::vector<uint8_t> bytes =
-        desia::isFrameDocument(document)
-            ? desia::exportFrame(desia::frameFromAssemblyDocument(document, source), format, part, source)
-            : desia::exportAssembly(document, desia::parseExportFormat(format), options);
-    return val(emscripten::typed_memory_view(bytes.size(), bytes.data())).call<val>("slice");
+    return formats;
   });
 }
 
@@ -324,6 +340,7 @@ EMSCRIPTEN_BINDINGS(desia) {
   emscripten::function("designFrame", &designFrame);
   emscripten::function("parseFrame", &parseFrame);
   emscripten::function("exportAssembly", &exportAssembly);
+  emscripten::function("exportFormats", &exportFormats);
   emscripten::function("partSurfaces", &partSurfaces);
   emscripten::function("cutSheets", &cutSheets);
   emscripten::function("version", &version);

@@ -554,6 +554,7 @@ export async function createDesia(options) {
     designPlate: simple('designPlate'),
     designFrame: simple('designFrame'),
     parseFrame: simple('parseFrame'),
+    exportFormats: (callOptions) => simple('exportFormats')(undefined, callOptions),
     async designSession(shape, callOptions) {
       const { signal, coreOptions } = splitOptions('designSession', callOptions);
 

@@ -77,6 +77,7 @@ export const OPTION_NAMES = Object.freeze({
   partSurfaces: ['source'],
   cutSheets: ['format', 'sheet', 'kerf', 'spacing', 'hairline', 'source'],
   parseFrame: ['source', 'jointSize'],
+  exportFormats: [],
 });
 
 /**
@@ -217,6 +218,7 @@ function callModule(call) {
 }
 
 function makeCore(module) {
+  let formats = null;  // the export-format registry, read once
   const core = {
     /** Interlocking check of .puz or JSON text; same fields as `desia check --json`. */
     check(text, options) {
@@ -266,10 +268,13 @@ function makeCore(module) {
     exportAssembly(assembly, options) {
       const { format = 'stl', part = 0, voxelSize = 1, clearance = 0, source = '<input>', sheetIndex = 0, ...cut } =
         requireOptions('exportAssembly', options, OPTION_NAMES.exportAssembly);
-      // `spacing` is a cut-sheet option, and the gap between the parts of a build plate.
-      const spacing = format === 'build-plate-stl' ? cut.spacing : undefined;
-      if (format === 'build-plate-stl') delete cut.spacing;
-      if (format === 'svg' || format === 'dxf') {
+      // The core's registry says what each format reads: `spacing` is a cut-sheet option, and the
+      // gap between the parts of a build plate.
+      const info = core.exportFormats().find((known) => known.name === format);
+      const layoutSpacing = info !== undefined && !info.perSheet && info.options.includes('spacing');
+      const spacing = layoutSpacing ? cut.spacing : undefined;
+      if (layoutSpacing) delete cut.spacing;
+      if (info?.perSheet) {
         requireInt32(sheetIndex, 'exportAssembly: sheetIndex');
         const sheets = core.cutSheets(assembly, { format, source, ...cut });
         if (sheetIndex < 0 || sheetIndex >= sheets.length) {
@@ -441,6 +446,14 @@ function makeCore(module) {
         throw new DesiaError('parseFrame: this build of the WebAssembly module has no frame reader (rebuild dist/ with scripts/build.sh wasm)', 'unsupported');
       }
       return callModule(() => module.parseFrame(text, source, jointSize));
+    },
+    /**
+     * Every file format desia writes, from the core's registry (the CLI's `export` asks the same):
+     * [{ name, kinds: ['voxel' | 'plate' | 'frame'], options, perSheet, what }].
+     */
+    exportFormats() {
+      formats ??= callModule(() => module.exportFormats());
+      return formats.map((format) => ({ ...format, kinds: [...format.kinds], options: [...format.options] }));
     },
     version() {
       return module.version();

@@ -131,6 +131,7 @@ export function createCoreHost(loadCore, post, { isCancelled = () => false } = {
       sessions.delete(sessionId);
       return null;
     },
+    exportFormats: (core) => core.exportFormats(),
     version: (core) => core.version(),
   };
 

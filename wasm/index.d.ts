@@ -601,8 +601,24 @@ export interface DesiaCore {
    * joint and beams of an invalid frame.
    */
   parseFrame(input: string | AssemblyDocument, options?: ParseFrameOptions): AssemblyDocument;
+  /** Every file format exportAssembly writes, from the core's registry (the CLI's `export` asks the same). */
+  exportFormats(): ExportFormatInfo[];
   /** The core's version, e.g. '0.1.0'. */
   version(): string;
+}
+
+/** One export format of the core's registry. */
+export interface ExportFormatInfo {
+  /** The `format` exportAssembly takes, e.g. 'stl', 'svg', 'fpuz'. */
+  name: string;
+  /** The assemblies it exports. */
+  kinds: Array<'voxel' | 'plate' | 'frame'>;
+  /** The options it reads ('part', 'voxelSize', 'clearance', 'spacing', 'sheet'); others are refused or ignored. */
+  options: Array<'part' | 'voxelSize' | 'clearance' | 'spacing' | 'sheet'>;
+  /** One file per sheet (cut files: exportAssembly returns sheet `sheetIndex`, cutSheets all). */
+  perSheet: boolean;
+  /** One line about the format. */
+  what: string;
 }
 
 /** Options of {@link createDesia}. */
@@ -674,6 +690,8 @@ export interface Desia {
   designFrame(input: string | AssemblyDocument, options?: FrameDesignOptions & CallOptions): Promise<DesignResult>;
   /** {@link DesiaCore.parseFrame} in the worker. */
   parseFrame(input: string | AssemblyDocument, options?: ParseFrameOptions & CallOptions): Promise<AssemblyDocument>;
+  /** {@link DesiaCore.exportFormats} in the worker. */
+  exportFormats(options?: CallOptions): Promise<ExportFormatInfo[]>;
   /** The core's version, e.g. '0.1.0' (known since createDesia resolved). */
   version(): string;
   /**

@@ -2,7 +2,6 @@
 // `desia export`: a voxel assembly as part meshes (STL, OBJ), print-ready parts (a clearance, one
 // STL per part in a ZIP, a build plate) or a BurrTools .xmpuzzle; a plate structure as meshes or cut
 // files (SVG, DXF); a frame as meshes, .fpuz or a cut list.
-#include <algorithm>
 #include <cstdint>
 #include <iostream>
 #include <optional>
@@ -16,16 +15,22 @@
 #include "desia/document.h"
 #include "desia/error.h"
 #include "desia/export.h"
-#include "desia/frame_format.h"
+#include "desia/export_formats.h"
+#include "desia/frame_design_io.h"
 
 namespace {
 
 constexpr int kExitBadInput = 2;
 
-const char* kExportUsage =
-    "usage: desia export FILE --format stl|stl-ascii|obj|xmpuzzle|stl-zip|build-plate-stl|svg|dxf|fpuz|csv|puz|voxel-json|pieces-obj|joint-pieces-stl\n"
-    "             [--part N] [--voxel-size S] [--clearance MM] [--spacing MM]\n"
-    "             [--sheet WxH] [--kerf MM] [--spacing MM] [--hairline] --output OUT\n";
+// The usage line lists the registry's formats (desia/export_formats.h).
+std::string exportUsage() {
+  std::string formats;
+  for (const desia::ExportFormatInfo& format : desia::exportFormats()) formats += (formats.empty() ? "" : "|") + std::string(format.name);
+  return "usage: desia export FILE --format " + formats +
+         "\n"
+         "             [--part N] [--voxel-size S] [--clearance MM] [--spacing MM]\n"
+         "             [--sheet WxH] [--kerf MM] [--spacing MM] [--hairline] --output OUT\n";
+}
 
 using desia::cli::UsageError;
 
@@ -64,20 +69,57 @@ std::string sheetFileName(const std::string& output, size_t sheet, size_t sheets
   return (extension ? output.substr(0, dot) : output) + "-" + std::to_string(sheet + 1) + (extension ? output.substr(dot) : "");
 }
 
-int exportCutSheets(const desia::AssemblyDocument& document, const std::string& input, const std::string& format,
-                    const desia::CutSheetOptions& cut, const std::string& output) {
-  const std::vector<std::string> sheets = desia::plateCutSheets(document, desia::parseCutFileFormat(format), cut);
+void writeCutSheets(const std::vector<std::string>& sheets, const desia::AssemblyDocument& document,
+                    const std::string& input, const std::string& format, const std::string& output) {
   for (size_t s = 0; s < sheets.size(); ++s) desia::cli::writeOutputFile(sheetFileName(output, s, sheets.size()), sheets[s]);
   std::cout << input << ": " << document.plates.size() << " plates on " << sheets.size() << (sheets.size() == 1 ? " sheet" : " sheets")
             << " as " << format << "; wrote " << sheetFileName(output, 0, sheets.size())
             << (sheets.size() > 1 ? " to " + sheetFileName(output, sheets.size() - 1, sheets.size()) : std::string()) << "\n";
-  return 0;
+}
+
+void reportFile(const desia::AssemblyDocument& document, const desia::ExportOptions& options, const std::string& input,
+                const std::string& format, size_t bytes, const std::string& output) {
+  if (desia::isFrameDocument(document)) {
+    std::cout << input << ": frame of " << document.assembly.partCount() << " beams as " << format << ", " << bytes << " bytes; wrote " << output << "\n";
+    return;
+  }
+  const int parts = document.kind == desia::AssemblyKind::Voxel ? document.voxels.maxLabel() : document.assembly.partCount();
+  std::cout << input << ": "
+            << (options.part == 0 ? (parts == 1 ? std::string("1 part") : "all " + std::to_string(parts) + " parts")
+                                  : "part " + std::to_string(options.part) + " of " + std::to_string(parts))
+            << " as " << format << ", " << bytes << " bytes; wrote " << output << "\n";
+}
+
+// Flags that the format would silently ignore are refused, naming the flag.
+void refuseFlagsNotRead(const desia::cli::Arguments& arguments, bool hairline, const desia::ExportFormatInfo& format,
+                        const std::string& input) {
+  using desia::ExportOptionGroup;
+  for (const auto& [flag, value] : arguments.named) {
+    const bool meshFlag = flag == "--part" || flag == "--voxel-size" || flag == "--clearance";
+    if (format.perSheet && meshFlag) {
+      // Cut files hold every plate as designed; a voxel size, a part or a clearance change nothing there.
+      throw desia::Error(desia::ErrorCode::BadInput, input + ": " + flag + " does not apply to " + format.name +
+                                                         " cut sheets (they hold every plate as designed; the clearance is the design's --clearance)");
+    }
+    const bool sheetFlag = flag == "--sheet" || flag == "--kerf";
+    if ((sheetFlag && !desia::formatReads(format, ExportOptionGroup::Sheet)) ||
+        (flag == "--spacing" && !desia::formatReads(format, ExportOptionGroup::Spacing))) {
+      throw desia::Error(desia::ErrorCode::BadInput, input + ": " + flag + " does not apply to " + format.name +
+                                                         " (it sets cut sheets: svg, dxf" +
+                                                         (flag == "--spacing" ? "; and build-plate-stl's gaps)" : ")"));
+    }
+  }
+  if (hairline && !desia::formatReads(format, ExportOptionGroup::Sheet)) {
+    throw desia::Error(desia::ErrorCode::BadInput, input + ": --hairline does not apply to " + std::string(format.name) +
+                                                       " (it sets cut sheets: svg, dxf)");
+  }
 }
 
 int exportFile(const std::vector<std::string>& args) {
   std::string input, output, format;
-  desia::ExportOptions options;
-  desia::CutSheetOptions cut;
+  desia::ExportSettings settings;
+  desia::ExportOptions& options = settings.mesh;
+  desia::CutSheetOptions& cut = settings.sheets;
   std::optional<double> spacing;
   const desia::cli::Arguments arguments =
       desia::cli::splitArguments(withoutFlag(args, "--hairline", &cut.hairline), {"--format", "--part", "--voxel-size", "--clearance", "--output", "--sheet", "--kerf", "--spacing"});
@@ -94,59 +136,22 @@ int exportFile(const std::vector<std::string>& args) {
     if (name == "--kerf") cut.kerf = desia::cli::numberOption(name, value, 0, 5);
     if (name == "--spacing") spacing = cut.spacing = desia::cli::numberOption(name, value, 0, 1000);
   }
-  // --spacing: the gaps between plates on a cut sheet, or between parts on a build plate.
-  if (format == "build-plate-stl") options.spacing = spacing;
   if (input.empty()) throw UsageError{"export needs a FILE (.puz or JSON voxel assembly)"};
   if (format.empty()) throw UsageError{"export needs --format stl|stl-ascii|obj|xmpuzzle|stl-zip|build-plate-stl"};
   if (output.empty()) throw UsageError{"export needs --output OUT"};
-  static const std::vector<std::string> kFormats{"stl", "stl-ascii", "obj", "xmpuzzle", "stl-zip", "build-plate-stl", "svg",
-                                                 "dxf", "fpuz", "csv", "puz", "voxel-json", "pieces-obj", "joint-pieces-stl"};
-  if (std::find(kFormats.begin(), kFormats.end(), format) == kFormats.end()) {
-    std::string known;
-    for (const std::string& name : kFormats) known += (known.empty() ? "" : ", ") + name;
-    throw desia::Error(desia::ErrorCode::BadInput, "unknown export format '" + format + "' (expected one of: " + known +
-                                                       "; svg and dxf are plate cut sheets, fpuz to joint-pieces-stl frames)");
-  }
-  if (format == "svg" || format == "dxf") {
-    // Cut files of a plate structure (core/io/cut_sheets.cpp): a voxel size, a part or a
-    // clearance would silently change nothing there.
-    for (const auto& [flag, value] : arguments.named) {
-      if (flag == "--part" || flag == "--voxel-size" || flag == "--clearance") {
-        throw desia::Error(desia::ErrorCode::BadInput, input + ": " + flag + " does not apply to " + format +
-                                                           " cut sheets (they hold every plate as designed; the clearance is the design's --clearance)");
-      }
-    }
-    cut.source = input;
-    return exportCutSheets(desia::parseAssemblyText(desia::cli::readInputFile(input), input), input, format, cut, output);
-  }
-  // .fpuz and the cut list are for frames only; so are puz and voxel-json here: a frame on a voxel
-  // grid as the voxel assembly it is (core/frame/frame_voxels.cpp).
-  const bool frameOnlyFormat = format == "fpuz" || format == "csv" || format == "puz" || format == "voxel-json" ||
-                               format == "pieces-obj" || format == "joint-pieces-stl";
-  const desia::ExportFormat exportFormat = frameOnlyFormat ? desia::ExportFormat::StlBinary : desia::parseExportFormat(format);
-
-  options.source = input;
+  const desia::ExportFormatInfo& info = desia::exportFormatNamed(format);
+  refuseFlagsNotRead(arguments, cut.hairline, info, input);
+  // --spacing: the gaps between plates on a cut sheet, or between parts on a build plate.
+  if (!info.perSheet) options.spacing = spacing;
+  options.source = cut.source = input;
   const desia::AssemblyDocument document = desia::parseAssemblyText(desia::cli::readInputFile(input), input);
-  if (document.kind == desia::AssemblyKind::Frame && document.contactsFromGeometry) {
-    if (options.clearance != 0) {
-      throw desia::Error(desia::ErrorCode::BadInput, input + ": --clearance applies to voxel assemblies, not to frames");
-    }
-    // Frames (paper Section 5.3): part meshes, .fpuz, the cut list, or (axis-aligned on a voxel grid)
-    // .puz, voxel JSON, .xmpuzzle (core/io/frame_export.cpp).
-    const std::vector<uint8_t> bytes = desia::exportFrame(desia::frameFromAssemblyDocument(document, input), format, options.part, input);
-    desia::cli::writeOutputFile(output, std::string(bytes.begin(), bytes.end()));
-    std::cout << input << ": frame of " << document.assembly.partCount() << " beams as " << format << ", " << bytes.size() << " bytes; wrote " << output << "\n";
-    return 0;
+  const std::vector<std::string> files = desia::exportFiles(document, info, settings);
+  if (info.perSheet) {
+    writeCutSheets(files, document, input, format, output);
+  } else {
+    desia::cli::writeOutputFile(output, files.front());
+    reportFile(document, options, input, format, files.front().size(), output);
   }
-  if (frameOnlyFormat) throw desia::Error(desia::ErrorCode::BadInput, input + ": ." + format + " exports are for frame structures");
-  const std::vector<uint8_t> bytes = desia::exportAssembly(document, exportFormat, options);
-  desia::cli::writeOutputFile(output, std::string(bytes.begin(), bytes.end()));
-  const int parts = document.kind == desia::AssemblyKind::Voxel ? document.voxels.maxLabel() : document.assembly.partCount();
-  std::cout << input << ": "
-            << (options.part == 0 ? (parts == 1 ? std::string("1 part") : "all " + std::to_string(parts) + " parts")
-                                  : "part " + std::to_string(options.part) + " of " + std::to_string(parts))
-            << " as " << desia::exportFormatName(exportFormat) << ", " << bytes.size() << " bytes; wrote " << output
-            << "\n";
   return 0;
 }
 
@@ -156,7 +161,7 @@ int runExportCommand(const std::vector<std::string>& args) {
   try {
     return exportFile(args);
   } catch (const UsageError& e) {
-    std::cerr << "desia: export: " << e.message << "\n" << kExportUsage;
+    std::cerr << "desia: export: " << e.message << "\n" << exportUsage();
     return kExitBadInput;
   }
 }

@@ -171,4 +171,23 @@ test('export a designed plate structure as SVG and DXF cut sheets; a sheet too s
     assert.equal(ignored.status, 2, `${flag}: ${ignored.stdout}`);
     assert.match(ignored.stderr, new RegExp(`table-cut\\.json: ${flag} does not apply to svg cut sheets`));
   }
+  // And cut-sheet options on a mesh export (the registry: stl reads no sheet, kerf or spacing).
+  for (const args of [['--kerf', '0.2'], ['--sheet', '600x400'], ['--spacing', '3'], ['--hairline']]) {
+    const ignored = runCli(['export', result, '--format', 'stl', ...args, '--output', path.join(tmp, 'ignored.stl')]);
+    assert.equal(ignored.status, 2, `${args[0]}: ${ignored.stdout}`);
+    assert.match(ignored.stderr, new RegExp(`table-cut\\.json: ${args[0]} does not apply to stl`));
+  }
+});
+
+test('export lists the formats of the core registry, the same as the package', async () => {
+  const { loadDesiaModule } = await import('../../wasm/index.js');
+  const core = await loadDesiaModule();
+  const names = core.exportFormats().map((format) => format.name);
+  assert.ok(names.includes('stl') && names.includes('svg') && names.includes('fpuz'), names.join(' '));
+  const usage = runCli(['export']);
+  assert.equal(usage.status, 2);
+  assert.match(usage.stderr, new RegExp(`--format ${names.join('\\|')}\n`));
+  const unknown = runCli(['export', path.join(referenceDir, 'result_puz/Cube_4x4x4_K9.puz'), '--format', 'step', '--output', '/dev/null']);
+  assert.equal(unknown.status, 2);
+  assert.match(unknown.stderr, new RegExp(`unknown export format 'step' \\(expected one of: ${names.join(', ')};`));
 });
