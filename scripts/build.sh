@@ -2,7 +2,7 @@
 # Builds desia. `build.sh native` (CLI, tests, benchmarks in build/native), `build.sh wasm` (the
 # embind module in dist/ and the WebAssembly test suite in build/wasm), `build.sh` (both),
 # `build.sh site` (the WebAssembly module, then the playground as a self-contained static site in
-# dist/site/, relative URLs only: scripts/build-site.mjs; README "Publishing the playground").
+# dist/site/, relative URLs only: scripts/build-site.mjs; docs/playground.md).
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$root"

@@ -6,8 +6,8 @@
 // panel calls them, node tests can too.
 
 /**
- * Voxels per part below which designs get slow and may fail, from the README's measured tables
- * ("Measured (designer)", 2026-11-24, 3 seeds each, 60 s): compact shapes succeed down to
+ * Voxels per part below which designs get slow and may fail, from docs/benchmarks.md's measured tables
+ * ("Voxel designer" and "Where designs get hard", 2026-11-24, 3 seeds each, 60 s): compact shapes succeed down to
  * 6.25-6.4 voxels per part in a few seconds (4x4x4 N=10: 64/10 in 1.5 s, 5x5x5 N=20: 125/20 in
  * 4.7 s) and fail at 5.8 (4x4x4 N=11: 10 of 11 parts for every seed). So about 6.2 separates easy
  * from hard.

@@ -56,7 +56,7 @@ const EXAMPLES = [
   { file: 'cabinet.json', label: 'Cabinet under a gable roof, 7 plates (milled)', plate: true, joints: 'milled' },
   { file: 'mitred_box.json', label: 'Mitred box, 6 plates (milled mitre tenons)', plate: true, joints: 'milled' },
   { file: 'dodecahedron.json', label: 'Dodecahedron, 12 mitred plates (milled mitre tenons)', plate: true, joints: 'milled' },
-  { file: 'lizard.json', label: 'Lizard, 38 mitred plates (milled mitre tenons and slides; about 40 s)', plate: true, joints: 'milled', timeLimit: 300 },
+  { file: 'lizard.json', label: 'Lizard, 38 mitred plates (milled mitre tenons and slides; a few seconds)', plate: true, joints: 'milled', timeLimit: 300 },
   // Flush boards that no mortise-and-tenon lets out: sliding dovetails, milled on a CNC.
   { file: 'bookshelf.json', label: 'Bookshelf, 12 plates (milled dovetails)', plate: true, joints: 'milled' },
   { file: 'bookcase_123.json', label: 'Bookcase, 123 plates (milled)', plate: true, joints: 'milled' },

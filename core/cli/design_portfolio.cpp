@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The voxel designer's search is heavy tailed (README, "Restarts"): how long a seed takes varies by
+// The voxel designer's search is heavy tailed (docs/voxel.md, "Restarts"): how long a seed takes varies by
 // orders of magnitude, so independent searches from several seeds, the first verified one
 // winning, use extra cores well. Each search is the single-threaded core, unchanged and
 // re-entrant (no global mutable state), so the winner's puzzle is exactly the one a single

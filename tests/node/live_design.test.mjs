@@ -2,7 +2,7 @@
 // Live design (issue 11): designVoxel's, designPlate's and designFrame's progress carries the
 // deepest node found so far (`snapshot`) in the synchronous core and through the package's worker;
 // snapshots only get deeper, the last one is the result, and a listener does not change the bytes.
-// The playground's difficulty line (web/live-design.js) follows the README's measured table.
+// The playground's difficulty line (web/live-design.js) follows docs/benchmarks.md's measured tables.
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import path from 'node:path';

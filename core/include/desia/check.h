@@ -50,7 +50,7 @@ struct CheckReport {
 
 CheckReport checkAssembly(const AssemblyDocument& document, const CheckOptions& options = {});
 
-// The report as the JSON object printed by `desia check --json` (fields documented in README).
+// The report as the JSON object printed by `desia check --json` (fields documented in docs/json-schema.md).
 std::string checkReportToJson(const AssemblyDocument& document, const CheckReport& report,
                               int indent = 2);
 // Human-readable report for the terminal.
