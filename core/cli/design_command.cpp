@@ -11,6 +11,7 @@
 #include "cli_files.h"
 #include "commands.h"
 #include "design_portfolio.h"
+#include "desia/check.h"
 #include "desia/design_io.h"
 #include "desia/document.h"
 #include "desia/error.h"

@@ -13,7 +13,7 @@
 #include "analysis/vec3.h"
 #include "desia/cut_points.h"
 #include "desia/error.h"
-#include "desia/export.h"
+#include "desia/voxel_surface.h"
 #include "desia/frame.h"
 #include "desia/voxel_grid.h"
 

@@ -6,8 +6,15 @@
 #include <sstream>
 
 #include "desia/check.h"
+#include "desia/voxel_disassembly.h"
 
 namespace desia {
+
+CheckReport checkAssembly(const AssemblyDocument& document, const CheckOptions& options) {
+  if (document.kind != AssemblyKind::Voxel) return checkContacts(document.assembly, options);
+  return checkContacts(document.assembly, options,
+                       [&](const Assembly& assembly) { return planVoxelDisassembly(document.voxels, assembly); });
+}
 namespace {
 
 using nlohmann::json;

@@ -3,6 +3,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "desia/check.h"
 #include "desia/document.h"
 #include "desia/error.h"
 #include "desia/puz_format.h"

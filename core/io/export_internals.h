@@ -18,19 +18,6 @@ namespace desia {
 void requireExportableVoxels(const AssemblyDocument& document, const std::string& source);
 [[noreturn]] void throwExportTooLarge(const std::string& source, const std::string& what, int64_t bytes);
 
-// Voxel indices of each part, in index order; entry k lists part k (entry 0 stays empty).
-std::vector<std::vector<int64_t>> voxelsByPart(const VoxelGrid& grid);
-
-// partSurfaceMesh for voxels already collected (all labelled partId, in index order).
-TriangleMesh surfaceOfVoxels(const VoxelGrid& grid, int partId, const std::vector<int64_t>& voxels, double voxelSize);
-// insetPartSurfaceMesh for voxels already collected, the clearance already checked (0 = as is).
-TriangleMesh insetSurfaceOfVoxels(const VoxelGrid& grid, int partId, const std::vector<int64_t>& voxels,
-                                  double voxelSize, double clearance);
-
-// Throws BadInput (naming `source` and the value) unless 0 <= clearance < voxelSize / 2: at half a
-// voxel, a part one voxel thick between two others would vanish.
-void requireValidClearance(double voxelSize, double clearance, const std::string& source);
-
 // The rotation of the grid that lays a part flat for printing: one of the 24 proper rotations,
 // as a signed permutation (row r of the matrix is sign[r] * e_axis[r]), z up.
 struct PrintOrientation {

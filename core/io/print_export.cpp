@@ -106,13 +106,6 @@ std::string partFileName(int partId, int partCount) {
 
 }  // namespace
 
-void requireValidClearance(double voxelSize, double clearance, const std::string& source) {
-  if (!(clearance >= 0 && clearance < voxelSize / 2)) {
-    throwBadInput(source, "the clearance must be at least 0 and less than half the voxel size (" +
-                              formatNumber(voxelSize / 2) + "), got " + formatNumber(clearance));
-  }
-}
-
 PrintOrientation printOrientation(const VoxelGrid& grid, const std::vector<int64_t>& voxels) {
   // Only the axis that ends up vertical (and its sign) changes the footing; the first rotation in
   // the fixed order with the best vertical axis is taken.

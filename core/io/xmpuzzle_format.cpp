@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "desia/disassembly.h"
+#include "desia/voxel_disassembly.h"
 #include "desia/error.h"
 #include "desia/export.h"
 #include "desia/mesh.h"

@@ -3,7 +3,7 @@
 
 #include "analysis/part_motion.h"
 #include "desia/blocking_graph.h"
-#include "desia/disassembly.h"
+#include "desia/voxel_disassembly.h"
 #include "desia/interlocking.h"
 
 namespace desia::design {

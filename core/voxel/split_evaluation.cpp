@@ -3,7 +3,7 @@
 
 #include <algorithm>
 
-#include "desia/disassembly.h"
+#include "desia/voxel_disassembly.h"
 #include "voxel/candidate_checks.h"
 #include "voxel/voxel_removal.h"
 

@@ -8,6 +8,7 @@
 
 #include "desia/error.h"
 #include "desia/voxel_design.h"
+#include "desia/voxel_disassembly.h"
 #include "search/construction_search.h"
 #include "search/restarts.h"
 #include "voxel/design_internals.h"
@@ -127,8 +128,7 @@ int64_t countLabel(const VoxelGrid& grid, int label) {
 // The final check (Section 4.1 requirements, by the foundation's own tests): interlocking with
 // part 1 as key, and a disassembly in the order 1, 2, ..., N.
 bool verifyPuzzle(const VoxelGrid& grid, int parts, CheckReport* report) {
-  const AssemblyDocument document = documentFromVoxels(grid);
-  *report = checkAssembly(document);
+  *report = checkVoxelAssembly(grid);
   if (report->result.verdict != Verdict::Interlocking || report->result.key != 0) return false;
   if (!report->disassembly || !report->disassembly->complete) return false;
   for (int k = 0; k < parts; ++k) {
@@ -454,6 +454,6 @@ VoxelDesignResult VoxelDesignSession::finish(const DesignLimits& limits) {
   return searchPuzzle(subtree, options);
 }
 
-CheckReport VoxelDesignSession::check() const { return checkAssembly(documentFromVoxels(state_->tree.grid())); }
+CheckReport VoxelDesignSession::check() const { return checkVoxelAssembly(state_->tree.grid()); }
 
 }  // namespace desia

@@ -9,7 +9,7 @@
 #include <set>
 #include <utility>
 
-#include "desia/disassembly.h"
+#include "desia/voxel_disassembly.h"
 #include "desia/error.h"
 #include "voxel/voxel_removal.h"
 
@@ -439,6 +439,11 @@ DisassemblyPlan planVoxelDisassembly(const VoxelGrid& grid, const Assembly& asse
   }
   plan.complete = true;
   return plan;
+}
+
+CheckReport checkVoxelAssembly(const VoxelGrid& grid, const CheckOptions& options) {
+  return checkContacts(assemblyFromVoxels(grid), options,
+                       [&](const Assembly& assembly) { return planVoxelDisassembly(grid, assembly, {}); });
 }
 
 }  // namespace desia

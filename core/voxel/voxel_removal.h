@@ -6,7 +6,7 @@
 
 #include <vector>
 
-#include "desia/disassembly.h"
+#include "desia/voxel_disassembly.h"
 
 namespace desia {
 

@@ -11,6 +11,7 @@
 #include <random>
 
 #include "desia/check.h"
+#include "desia/voxel_disassembly.h"
 #include "desia/error.h"
 #include "test_support.h"
 

@@ -18,7 +18,7 @@
 #include <utility>
 #include <vector>
 
-#include "desia/disassembly.h"
+#include "desia/voxel_disassembly.h"
 #include "desia/error.h"
 #include "desia/export.h"
 #include "desia/frame.h"

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "desia/disassembly.h"
+#include "desia/voxel_disassembly.h"
 #include "desia/document.h"
 #include "test_support.h"
 

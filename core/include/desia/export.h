@@ -14,6 +14,7 @@
 #include "desia/document.h"
 #include "desia/mesh.h"
 #include "desia/voxel_grid.h"
+#include "desia/voxel_surface.h"
 
 namespace desia {
 
@@ -65,19 +66,6 @@ struct PartSurface {
 // and errors as exportAssembly (BadInput for a non-voxel document, no voxels or an empty part;
 // TooLarge past kMaxExportBytes of floats); `source` names the input in messages.
 std::vector<PartSurface> partSurfaces(const AssemblyDocument& document, const std::string& source = "<input>");
-
-// The closed surface of part `partId`: one square per voxel face that does not touch the same
-// part (faces against empty space, another part or the grid's border), as outward triangles, in
-// grid coordinates times `voxelSize` (voxel (x, y, z) spans [x, x+1] x [y, y+1] x [z, z+1]).
-// Every edge is used by exactly two triangles, in opposite directions, even where two voxels of
-// the part touch only along an edge (see the definition for how). Throws BadInput for a part
-// without voxels.
-TriangleMesh partSurfaceMesh(const VoxelGrid& grid, int partId, double voxelSize = 1.0);
-
-// partSurfaceMesh with every face against another part moved in by `clearance` (0 <= clearance <
-// voxelSize / 2, else BadInput): the part as it is printed. Still closed, every edge in exactly two
-// triangles in opposite directions; faces against empty space stay in place (see the definition).
-TriangleMesh insetPartSurfaceMesh(const VoxelGrid& grid, int partId, double voxelSize, double clearance);
 
 // The BurrTools XML (before compression) and the .xmpuzzle bytes (that XML, gzip-compressed).
 // Same checks as exportAssembly; `source` names the input in messages.

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "desia/check.h"
+#include "desia/contact_check.h"
 #include "desia/design_search.h"
 #include "desia/voxel_grid.h"
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "desia/check.h"
+#include "desia/contact_check.h"
 
 #include "desia/error.h"
 
@@ -43,33 +43,30 @@ InterlockingResult combine(const InterlockingResult& graphs, const InterlockingR
 
 }  // namespace
 
-CheckReport checkAssembly(const AssemblyDocument& document, const CheckOptions& options) {
+CheckReport checkContacts(const Assembly& assembly, const CheckOptions& options, const DisassemblyPlanner& planner) {
   CheckReport report;
   report.method = options.method;
   // The base directions are computed once and shared by both tests and the plan.
-  const std::vector<BaseDirection> directions = computeBaseDirections(document.assembly);
+  const std::vector<BaseDirection> directions = computeBaseDirections(assembly);
   report.baseDirectionCount = directions.size();
   if (options.allGraphs || directions.size() <= kReportedGraphLimit) {
-    const BlockingGraphBuilder builder(document.assembly, directions.size());
+    const BlockingGraphBuilder builder(assembly, directions.size());
     for (const BaseDirection& direction : directions) report.graphs.push_back(builder.build(direction));
   }
   if (options.method != CheckMethod::Inequalities) {
     report.graphResult = report.graphs.empty() && !directions.empty()
-                             ? testInterlockingByGraphs(document.assembly, directions)
-                             : testInterlockingByGraphs(document.assembly, report.graphs);
+                             ? testInterlockingByGraphs(assembly, directions)
+                             : testInterlockingByGraphs(assembly, report.graphs);
   }
   if (options.method != CheckMethod::Graphs) {
-    report.inequalityResult = testInterlockingByInequalities(document.assembly, directions);
+    report.inequalityResult = testInterlockingByInequalities(assembly, directions);
   }
   if (options.method == CheckMethod::Both) {
     report.result = combine(*report.graphResult, *report.inequalityResult);
   } else {
     report.result = report.graphResult ? *report.graphResult : *report.inequalityResult;
   }
-  if (options.planDisassembly) {
-    report.disassembly = document.kind == AssemblyKind::Voxel ? planVoxelDisassembly(document.voxels, document.assembly)
-                                                              : planContactDisassembly(document.assembly);
-  }
+  if (options.planDisassembly) report.disassembly = planner(assembly);
   return report;
 }
 

@@ -2,6 +2,7 @@
 // The closed surface of one part of a voxel assembly (the mesh behind the STL and OBJ exports),
 // as the part is, or inset by a clearance where it touches other parts (print-ready parts).
 #include <array>
+#include <cstdio>
 #include <cstdint>
 #include <map>
 #include <unordered_map>
@@ -9,8 +10,7 @@
 #include <vector>
 
 #include "desia/error.h"
-#include "desia/export.h"
-#include "io/export_internals.h"
+#include "desia/voxel_surface.h"
 
 namespace desia {
 namespace {
@@ -320,6 +320,19 @@ TriangleMesh partSurfaceMesh(const VoxelGrid& grid, int partId, double voxelSize
 TriangleMesh insetPartSurfaceMesh(const VoxelGrid& grid, int partId, double voxelSize, double clearance) {
   requireValidClearance(voxelSize, clearance, "");
   return insetSurfaceOfVoxels(grid, partId, voxelsOfPart(grid, partId), voxelSize, clearance);
+}
+
+void requireValidClearance(double voxelSize, double clearance, const std::string& source) {
+  if (!(clearance >= 0 && clearance < voxelSize / 2)) {
+    // Nine significant digits, as the exports print numbers (and -0 as 0).
+    const auto text = [](double value) {
+      char buffer[32];
+      std::snprintf(buffer, sizeof buffer, "%.9g", value + 0.0);
+      return std::string(buffer);
+    };
+    throwBadInput(source, "the clearance must be at least 0 and less than half the voxel size (" +
+                              text(voxelSize / 2) + "), got " + text(clearance));
+  }
 }
 
 }  // namespace desia
