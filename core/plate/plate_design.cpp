@@ -10,7 +10,7 @@
 // when A_i is interlocking with P_1 as its key (for i >= 2; for A_1, when P_1 is free along d_1
 // alone), and children are ranked by their number of empty joints, fewest first.
 //
-// The joints are those cuts can make (plate_joints.h): where P_i and a neighbour have a tenon
+// The joints are those cuts can make (core/plate/joints/): where P_i and a neighbour have a tenon
 // site whose tenons leave along d_i, a mortise-and-tenon joint, with the contacts its faces will
 // have: the shoulder, the tenons' cheeks (+-the tenon plate's thickness axis) and ends (+-along
 // the edge). Otherwise an empty joint: the plates' own contact faces. The paper's halved joints
@@ -32,12 +32,19 @@
 #include "analysis/vec3.h"
 #include "search/construction_search.h"
 #include "search/restarts.h"
+#include "plate/joints/dovetail.h"
+#include "plate/joints/face_tenon.h"
+#include "plate/joints/halved.h"
+#include "plate/joints/mitre_slide.h"
+#include "plate/joints/mitre_tenon.h"
+#include "plate/joints/plate_cuts.h"
+#include "plate/joints/tenon.h"
 #include "plate/plan_squaring.h"
 #include "plate/plate_verification.h"
+#include "plate/swept_collision.h"
 #include "desia/cut_points.h"
 #include "desia/error.h"
 #include "desia/interlocking.h"
-#include "desia/plate_joints.h"
 
 namespace desia {
 namespace {
@@ -347,10 +354,7 @@ Assembly modelAssembly(const PlateGraph& graph, const std::vector<Step>& steps, 
       const TenonSite& site = *graph.tenonSites[joint.contact];
       // Normals from the tenon plate into the mortise plate, turned when the mover has the mortises.
       const double sign = site.tenonPlate == joint.mover ? 1 : -1;
-      std::vector<Vec3> faces{site.intoMortise, site.along, negated(site.along)};
-      if (site.openSide <= 0) faces.push_back(site.across);  // a cheek on that side (none where open)
-      if (site.openSide >= 0) faces.push_back(negated(site.across));
-      for (const Vec3& n : faces) assembly.contacts.push_back({a, b, *cleanedNormal(scaled(n, sign)), 1.0});
+      for (const Vec3& n : tenonFaceNormals(site)) assembly.contacts.push_back({a, b, *cleanedNormal(scaled(n, sign)), 1.0});
     }
   }
   return assembly;
@@ -368,28 +372,25 @@ struct JointedPlan {
 std::vector<Plate> jointedPlates(const std::vector<Plate>& plates, const PlateGraph& graph,
                                  const std::vector<PlateJoint>& joints, double clearance,
                                  const JointCutOptions& options) {
-  std::vector<TenonSite> sites;
-  std::vector<SlotCut> slots;
-  std::vector<DovetailCut> dovetails;
-  std::vector<MitreTenon> mitreTenons;
-  std::vector<FaceTenon> faceTenons;
-  std::vector<MitreSlide> mitreSlides;
+  JointCutList cuts;
+  for (const PlateJoint& joint : joints)
+    if (joint.type == JointType::Dovetail) cuts.push_back(jointCut(dovetailCutFor(graph, joint)));
+  for (const PlateJoint& joint : joints)
+    if (joint.type == JointType::MitreTenon) cuts.push_back(jointCut(mitreTenonFor(graph, joint)));
+  for (const PlateJoint& joint : joints)
+    if (joint.type == JointType::MitreSlide) cuts.push_back(jointCut(mitreSlideFor(graph, joint)));
+  for (const PlateJoint& joint : joints)
+    if (joint.type == JointType::FaceTenon) cuts.push_back(jointCut(faceTenonFor(graph, joint)));
   for (const PlateJoint& joint : joints) {
-    if (joint.type == JointType::MitreSlide) mitreSlides.push_back(mitreSlideFor(graph, joint));
-    if (joint.type == JointType::FaceTenon) faceTenons.push_back(faceTenonFor(graph, joint));
-    if (joint.type == JointType::MortiseTenon) sites.push_back(*graph.tenonSites[joint.contact]);
-    if (joint.type == JointType::Dovetail) dovetails.push_back(dovetailCutFor(graph, joint));
-    if (joint.type == JointType::MitreTenon) mitreTenons.push_back(mitreTenonFor(graph, joint));
-    if (joint.type == JointType::Halved) {
-      for (const SlotCut& slot :
-           halvedSlots(plates, graph.contacts[joint.contact], joint.mover, joint.direction, clearance)) {
-        slots.push_back(slot);
-      }
-    }
+    if (joint.type != JointType::Halved) continue;
+    for (const SlotCut& slot : halvedSlots(plates, graph.contacts[joint.contact], joint.mover, joint.direction, clearance))
+      cuts.push_back(jointCut(slot));
   }
+  for (const PlateJoint& joint : joints)
+    if (joint.type == JointType::MortiseTenon) cuts.push_back(jointCut(*graph.tenonSites[joint.contact]));
   JointCutOptions cut = options;
   cut.clearance = clearance;
-  return cutTenonJoints(plates, sites, cut, slots, dovetails, mitreTenons, faceTenons, mitreSlides);
+  return cutJoints(plates, cuts, cut);
 }
 
 // The plates with the plan's joints cut, validated and snapped to their design as any plate read

@@ -14,10 +14,10 @@
 #include "desia/blocking_graph.h"
 #include "desia/interlocking.h"
 #include "desia/plate_design.h"
-#include "desia/plate_joints.h"
 #include "plate/plan_squaring.h"
 #include "plate/plane_frame.h"
 #include "plate/plate_shape.h"
+#include "plate/swept_collision.h"
 
 namespace desia {
 

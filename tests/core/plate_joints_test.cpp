@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Joints cut into plates (core/plate/plate_joints.cpp) and the designs verified on them: the cut
+// Joints cut into plates (core/plate/joints/) and the designs verified on them: the cut
 // geometry keeps the material (tenons fill their mortises), leaves the clearance asked for, gives
 // closed meshes, and the swept removal check agrees with an independent method (moving the plate
 // step by step and sampling its inside against the other plate's).
@@ -16,18 +16,32 @@
 #include "analysis/part_motion.h"
 #include "analysis/vec3.h"
 #include "plate/exact_vertices.h"
+#include "plate/joints/dovetail.h"
+#include "plate/joints/face_tenon.h"
+#include "plate/joints/halved.h"
+#include "plate/joints/mitre_slide.h"
+#include "plate/joints/mitre_tenon.h"
+#include "plate/joints/plate_cuts.h"
+#include "plate/joints/tenon.h"
+#include "plate/swept_collision.h"
 #include "desia/check.h"
 #include "desia/error.h"
 #include "desia/export.h"
 #include "desia/mesh.h"
 #include "desia/plate_design.h"
 #include "desia/plate_design_io.h"
-#include "desia/plate_joints.h"
 #include "desia/plate_repair.h"
 #include "test_support.h"
 
 namespace desia {
 namespace {
+
+// Slots as joints to cut, in their order.
+JointCutList slotJoints(const std::vector<SlotCut>& slots) {
+  JointCutList joints;
+  for (const SlotCut& slot : slots) joints.push_back(jointCut(slot));
+  return joints;
+}
 
 AssemblyDocument loadPlateExample(const std::string& name) {
   const std::string path = "examples/plate/" + name;
@@ -322,7 +336,7 @@ TEST(PlateJoints, FlushBoardsGetOpenMortisesAndTenonsTooWideForAJointGetNone) {
   JointCutOptions wide;
   wide.tenonWidth = 250;
   EXPECT_FALSE(tenonSiteOf(plates, contacts[0], wide).has_value());
-  const std::vector<Plate> cut = cutTenonJoints(flush, {*open}, {});
+  const std::vector<Plate> cut = cutJoints(flush, {jointCut(*open)}, {});
   EXPECT_EQ(cut[0].bottom.size(), 1u) << "open mortises are notches in the outline, not holes";
   EXPECT_GT(cut[0].bottom[0].size(), 4u);
   EXPECT_NEAR(totalVolume(cut), totalVolume(flush), 1e-2);
@@ -463,7 +477,7 @@ TEST(PlateCrossings, CrossingPlatesAreFoundAndHalvedJointsCutThem) {
   // Plate 1 leaves along +y: its slot opens below (from the middle down), plate 2's above.
   const std::vector<SlotCut> slots = halvedSlots(plates, crossing, 0, {0, 1, 0}, 0);
   ASSERT_EQ(slots.size(), 2u);
-  const std::vector<Plate> cut = cutTenonJoints(plates, {}, {}, slots);
+  const std::vector<Plate> cut = cutJoints(plates, slotJoints(slots), {});
   EXPECT_NEAR(totalVolume(cut), totalVolume(plates) - 18.0 * 18.0 * 100.0, 1e-3) << "the overlap is cut away once";
   const std::vector<PlateContact> after = computePlateContacts(cut, {});
   std::set<std::string> normals;
@@ -685,7 +699,7 @@ TEST(PlateDovetails, ARunOnHousingLetsTheBoardSlideOutThroughTheBaseEndOnly) {
   const DovetailSite site = *dovetailSiteOf(plates, computePlateContacts(plates, {})[0]);
   const int toward240 = site.edge.along[2] > 0 ? 1 : 0;
   ASSERT_TRUE(site.opens[toward240]);
-  const std::vector<Plate> jointed = cutTenonJoints(plates, {}, {}, {}, {DovetailCut{site, toward240}});
+  const std::vector<Plate> jointed = cutJoints(plates, {jointCut(DovetailCut{site, toward240})}, {});
   for (const Plate& plate : jointed) EXPECT_NO_THROW(checkClosedMesh(plateMesh(plate), "jointed"));
   // The tongue runs along the contact only (182 mm from the stop to z = 200); the base loses the
   // housing's section over 222 mm (to its end at z = 240).
@@ -700,7 +714,7 @@ TEST(PlateDovetails, TheTongueFillsItsHousingAndLeavesOnlyThroughTheOpenEnd) {
   const std::vector<Plate> plates = boardOnBase();
   const DovetailSite site = *dovetailSiteOf(plates, computePlateContacts(plates, {})[0]);
   const DovetailCut cut{site, site.edge.along[2] > 0 ? 1 : 0};  // open at z = 200: out along +z
-  const std::vector<Plate> jointed = cutTenonJoints(plates, {}, {}, {}, {cut});
+  const std::vector<Plate> jointed = cutJoints(plates, {jointCut(cut)}, {});
   // Section: 12 mm wide at the floor (2/3 of 18), 6 mm deep (1/3 of 18), 1 in 6 lean: 10 mm at
   // the face; the housing stops 18 mm before the closed end: 182 mm long.
   const double tongue = (12.0 + 10.0) / 2 * 6 * 182;
@@ -841,7 +855,7 @@ TEST(PlateJoints, AMitredPlateTakesTenonsWhereItIsWholeAndKeepsItsMitre) {
   const std::optional<TenonSite> site = tenonSiteOf(plates, contacts[0]);
   ASSERT_TRUE(site.has_value());
   EXPECT_EQ(site->openSide, 0);  // a through mortise: the board stands inside the base's whole part
-  const std::vector<Plate> jointed = cutTenonJoints(plates, {*site}, {});
+  const std::vector<Plate> jointed = cutJoints(plates, {jointCut(*site)}, {});
   validatePlates(jointed, {}, "jointed");
   EXPECT_NO_THROW(checkClosedMesh(plateMesh(jointed[0]), "base"));
   // The mitre is kept: the base lost exactly the tenons' volume (18 deep, as thick as the board).
@@ -880,7 +894,7 @@ TEST(PlateMitreTenons, ATenonAcrossAMitreFillsItsPocketAndLeavesStraightOut) {
   }
   ASSERT_TRUE(tenon.has_value());
   EXPECT_FALSE(mitreTenonOf(box.plates, contact, tenonPlate, contact.edgeDirection).has_value());  // along the edge
-  const std::vector<Plate> jointed = cutTenonJoints(box.plates, {}, {}, {}, {}, {*tenon});
+  const std::vector<Plate> jointed = cutJoints(box.plates, {jointCut(*tenon)}, {});
   validatePlates(jointed, {}, "jointed");
   for (const Plate& plate : jointed) EXPECT_NO_THROW(checkClosedMesh(plateMesh(plate), "jointed"));
   // What the tenon plate gained, the pocket plate lost: the pocket fits the tenon.
@@ -920,7 +934,7 @@ TEST(PlateMitreTenons, AnObliqueTenonLeavesAlongItsSlantOnly) {
   ASSERT_TRUE(tenon.has_value());
   EXPECT_FALSE(mitreTenonOf(box.plates, contact, tenonPlate, negated(normalized(plus(scaled(straight, 0.3), line)))))
       << "17 degrees off the edge: no tenon";
-  const std::vector<Plate> jointed = cutTenonJoints(box.plates, {}, {}, {}, {}, {*tenon});
+  const std::vector<Plate> jointed = cutJoints(box.plates, {jointCut(*tenon)}, {});
   validatePlates(jointed, {}, "jointed");
   for (const Plate& plate : jointed) EXPECT_NO_THROW(checkClosedMesh(plateMesh(plate), "jointed"));
   const double gained = meshVolume(plateMesh(jointed[tenonPlate])) - meshVolume(plateMesh(box.plates[tenonPlate]));
@@ -952,7 +966,7 @@ TEST(PlateFaceTenons, AStubTenonOnALapLeavesStraightOffIt) {
   const std::optional<FaceTenon> tenon = faceTenonOf(boards, contacts[0], 1, up);
   ASSERT_TRUE(tenon.has_value());
   EXPECT_NEAR(tenon->depth, 6.0, 1e-12);  // a third of the lower board
-  const std::vector<Plate> jointed = cutTenonJoints(boards, {}, {}, {}, {}, {}, {*tenon});
+  const std::vector<Plate> jointed = cutJoints(boards, {jointCut(*tenon)}, {});
   validatePlates(jointed, {}, "jointed");
   for (const Plate& plate : jointed) EXPECT_NO_THROW(checkClosedMesh(plateMesh(plate), "jointed"));
   const double gained = totalVolume({jointed[1]}) - totalVolume({boards[1]});
@@ -986,7 +1000,7 @@ TEST(PlateMitreSlides, ATongueInAGrooveAlongTheMitreLetsThePlateSlideOutOneWay) 
   }
   ASSERT_TRUE(slide.has_value());
   EXPECT_FALSE(mitreSlideOf(box.plates, contact, slidePlate, contact.normal).has_value()) << "across the edge: no slide";
-  const std::vector<Plate> jointed = cutTenonJoints(box.plates, {}, {}, {}, {}, {}, {}, {*slide});
+  const std::vector<Plate> jointed = cutJoints(box.plates, {jointCut(*slide)}, {});
   validatePlates(jointed, {}, "jointed");
   for (const Plate& plate : jointed) EXPECT_NO_THROW(checkClosedMesh(plateMesh(plate), "jointed"));
   const std::vector<Plate> pair{jointed[slidePlate], jointed[tonguePlate]};
@@ -1018,7 +1032,7 @@ TEST(PlateMitreSlides, EverySlideOfTheLizardCutsIntoValidPlates) {
         ++made;
         std::vector<Plate> jointed;
         try {
-          jointed = cutTenonJoints(lizard.plates, {}, {}, {}, {}, {}, {}, {*slide});
+          jointed = cutJoints(lizard.plates, {jointCut(*slide)}, {});
           validatePlates(jointed, {}, "jointed");
         } catch (const Error& e) {
           ADD_FAILURE() << "plate " << lizard.plates[plate].id << " sliding off " << lizard.plates[slide->tonguePlate].id
@@ -1242,7 +1256,7 @@ TEST(PlateJoints, CutsAreRefusedExactlyWhenTheDesignersFootprintsOverlap) {
       EXPECT_EQ(overlap, across > 0) << "seed " << seed;  // touching is not running into each other
       std::string refusal;
       try {
-        cutTenonJoints(plates, {}, {}, cuts);
+        cutJoints(plates, slotJoints(cuts), {});
       } catch (const Error& error) {
         refusal = error.what();
       }

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Designing the joints of an interlocking plate structure (paper Section 5.2): the key, the order
 // in which the other plates are taken out, the direction each one leaves in, the joint each pair
-// of touching plates gets, and the joints cut into the plates (plate_joints.h). A result is
+// of touching plates gets, and the joints cut into the plates (core/plate/joints/). A result is
 // verified on the jointed plates themselves: their contacts computed from the geometry, both
 // interlocking tests, and each plate swept out along its direction past the plates still in place.
 #pragma once
@@ -15,9 +15,15 @@
 #include "desia/assembly.h"
 #include "desia/design_search.h"
 #include "desia/plate.h"
-#include "desia/plate_joints.h"
 
 namespace desia {
+
+// The sizes of the joints cut into the plates.
+struct JointCutOptions {
+  double tenonWidth = 0;  // mm along the edge; 0 = from the edge's length (a third, or a fifth for two tenons)
+  int tenonCount = 0;     // tenons per joint; 0 = one, or two on edges longer than 8 plate thicknesses
+  double clearance = 0;   // mm of play between a tenon and its mortise (the mortise grows by it)
+};
 
 enum class JointType {
   MortiseTenon,  // tenons on one plate's edge, mortises through the other (planned: the edge
@@ -38,7 +44,7 @@ const char* jointTypeName(JointType type);
 
 // What a design makes of its joints.
 enum class JointRealization {
-  // Joints cut into the plates (plate_joints.h: through and open mortise-and-tenon joints), each
+  // Joints cut into the plates (through and open mortise-and-tenon joints, halved joints), each
   // pair's joint chosen among those the geometry allows, the result verified on the jointed plates.
   Cut,
   // As Cut, and where no such joint lets a plate out, sliding dovetails milled along square edges

@@ -1,0 +1,217 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "plate/joints/dovetail.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <utility>
+
+#include "analysis/vec3.h"
+#include "plate/joints/joint_geometry.h"
+#include "plate/plane_frame.h"
+#include "plate/plate_shape.h"
+
+namespace desia {
+namespace {
+
+// A sliding dovetail's section (paper Fig. 2, right), across the edge plate's thickness `across`
+// (c, from its first face) and into the face plate (n, from its face): the tongue is `wide` at
+// the housing's floor, n = depth, and narrower by the lean on each side at the face, n = 0, so it
+// cannot be pulled out. The lean is 1 in 6 (a common dovetail slope); the floor a third of the way
+// through the face plate (two housings from opposite faces leave a third between them), the
+// tongue two thirds of the edge plate's thickness, centred.
+struct DovetailSection {
+  double centre = 0, wide = 0, narrow = 0, depth = 0;
+};
+
+// The housing stops this far (at least) before the contact's closed end: material for the stop.
+constexpr double kDovetailStop = 10.0;
+
+DovetailSection dovetailSection(const std::vector<Plate>& plates, const TenonSite& edge) {
+  DovetailSection section;
+  const double thickness = plateThickness(plates[edge.tenonPlate]);
+  section.centre = thickness / 2;
+  section.depth = plateThickness(plates[edge.mortisePlate]) / 3;  // housings from both faces fit
+  section.wide = 2 * thickness / 3;
+  section.narrow = section.wide - 2 * kDovetailSlope * section.depth;
+  return section;
+}
+
+// The housing's extent along the edge: from the stop to the open end.
+std::pair<double, double> housingSpan(const std::vector<Plate>& plates, const DovetailCut& cut) {
+  const TenonSite& edge = cut.site.edge;
+  const double stop = std::max(kDovetailStop, plateThickness(plates[edge.mortisePlate]));
+  return cut.openEnd == 1 ? std::make_pair(edge.from + stop, edge.to + cut.site.reach[1])
+                          : std::make_pair(edge.from - cut.site.reach[0], edge.to - stop);
+}
+
+// A point of the joint: `s` along the edge, `c` across the edge plate, `n` into the face plate.
+Vec3 jointPoint(const std::vector<Plate>& plates, const TenonSite& edge, double s, double c, double n) {
+  const Vec3 base = plates[edge.tenonPlate].bottom[0][edge.edge];
+  return plus(base, plus(scaled(edge.along, s), plus(scaled(edge.across, c), scaled(edge.intoMortise, n))));
+}
+
+// A prism along the edge from s0 to s1 with the given section corners (c, n): a Plate whose two
+// faces are its ends.
+Plate prismAlongEdge(const std::vector<Plate>& plates, const TenonSite& edge, double s0, double s1,
+                     const std::vector<std::array<double, 2>>& section) {
+  Plate prism;
+  Loop first, second;
+  for (const auto& [c, n] : section) {
+    first.push_back(jointPoint(plates, edge, s0, c, n));
+    second.push_back(jointPoint(plates, edge, s1, c, n));
+  }
+  prism.bottom.push_back(first);
+  prism.top.push_back(second);
+  return prism;
+}
+
+// How far past the contact's start (end 0) or end (end 1) a housing strip, [low, high] across the
+// edge plate, runs inside the face plate's outline before it leaves it. Both sides of the strip
+// must leave at the same place (a square end; a slanted one would leave wood in the way or open
+// the housing's side); nothing where they do not, or where the strip never leaves.
+std::optional<double> stripExit(const std::vector<Plate>& plates, const TenonSite& edge, const Loop& outline,
+                                const PlaneFrame& frame, int end, double low, double high) {
+  constexpr double kSameExit = 0.01;  // mm
+  const double sign = end == 1 ? 1 : -1, at = end == 1 ? edge.to : edge.from;
+  auto planar = [&](const Vec3& p) { return std::array<double, 2>{dot(frame.offset(p), frame.u), dot(frame.offset(p), frame.v)}; };
+  const Vec3 way = scaled(edge.along, sign);
+  const std::array<double, 2> dir{dot(way, frame.u), dot(way, frame.v)};
+  std::array<double, 2> exits{};
+  for (int side = 0; side < 2; ++side) {
+    const std::array<double, 2> p = planar(jointPoint(plates, edge, at, side == 0 ? low : high, 0));
+    double nearest = std::numeric_limits<double>::infinity();
+    for (size_t k = 0; k < outline.size(); ++k) {
+      const std::array<double, 2> q0 = planar(outline[k]), q1 = planar(outline[(k + 1) % outline.size()]);
+      const double ex = q1[0] - q0[0], ey = q1[1] - q0[1];
+      const double denominator = dir[0] * ey - dir[1] * ex;
+      if (std::abs(denominator) < 1e-12) continue;  // the side runs along the strip
+      const double wx = q0[0] - p[0], wy = q0[1] - p[1];
+      const double t = (wx * ey - wy * ex) / denominator, u = (wx * dir[1] - wy * dir[0]) / denominator;
+      if (t > 1e-9 && u >= -1e-9 && u <= 1 + 1e-9) nearest = std::min(nearest, t);
+    }
+    exits[side] = nearest;
+  }
+  if (!std::isfinite(exits[0]) || !std::isfinite(exits[1]) || std::abs(exits[0] - exits[1]) > kSameExit)
+    return std::nullopt;
+  return std::min(exits[0], exits[1]);
+}
+
+// A sliding dovetail made real: the housing, a rectangle on the face plate's face cut through the
+// face layer it enters (as deep as the dovetail, run out past the open end), the two lips that
+// overhang the tongue there, and the tongue on the edge plate. The clearance narrows and shortens
+// the tongue (the housing keeps its size, so the verified plates and the made ones share it).
+struct DovetailPieces {
+  Loop housing;
+  bool fromFirstFace = true;  // the housing enters the face plate from its first face
+  Plate tongue;
+  std::vector<Plate> lips;
+};
+
+DovetailPieces dovetailPieces(const std::vector<Plate>& plates, const DovetailCut& cut, double clearance) {
+  const TenonSite& edge = cut.site.edge;
+  const DovetailSection d = dovetailSection(plates, edge);
+  const auto [s0, s1] = housingSpan(plates, cut);
+  const double runOut = kMortiseMargin + plateThickness(plates[edge.mortisePlate]);
+  const double cut0 = cut.openEnd == 0 ? s0 - runOut : s0, cut1 = cut.openEnd == 1 ? s1 + runOut : s1;
+  const double low = d.centre - d.wide / 2, high = d.centre + d.wide / 2;
+  const double narrowLow = d.centre - d.narrow / 2, narrowHigh = d.centre + d.narrow / 2;
+  DovetailPieces pieces;
+  pieces.housing = {jointPoint(plates, edge, cut0, low, 0), jointPoint(plates, edge, cut1, low, 0),
+                    jointPoint(plates, edge, cut1, high, 0), jointPoint(plates, edge, cut0, high, 0)};
+  pieces.fromFirstFace = dot(edge.intoMortise, plateThicknessAxis(plates[edge.mortisePlate])) > 0;
+  pieces.lips = {prismAlongEdge(plates, edge, s0, s1, {{low, 0}, {narrowLow, 0}, {low, d.depth}}),
+                 prismAlongEdge(plates, edge, s0, s1, {{narrowHigh, 0}, {high, 0}, {high, d.depth}})};
+  const double play = clearance / 2;
+  // The tongue runs along the contact only; the housing may run on past it to the open end.
+  const double t0 = cut.openEnd == 1 ? s0 + play : edge.from, t1 = cut.openEnd == 0 ? s1 - play : edge.to;
+  pieces.tongue = prismAlongEdge(plates, edge, t0, t1,
+                                 {{narrowLow + play, 0}, {narrowHigh - play, 0}, {high - play, d.depth - play},
+                                  {low + play, d.depth - play}});
+  return pieces;
+}
+
+class DovetailJointCut final : public JointCut {
+ public:
+  explicit DovetailJointCut(const DovetailCut& cut) : cut_(cut) {}
+  void addTo(const std::vector<Plate>& plates, const JointCutOptions& options, PlateCuts& cuts) const override {
+    const int housingPlate = cut_.site.edge.mortisePlate;
+    DovetailPieces pieces = dovetailPieces(plates, cut_, options.clearance);
+    const int face = pieces.fromFirstFace ? 0 : 1;
+    cuts.housings[housingPlate][face].push_back(pieces.housing);
+    cuts.housingDepth[housingPlate][face] = dovetailSection(plates, cut_.site.edge).depth;
+    for (Plate& lip : pieces.lips) cuts.attached[housingPlate].push_back(std::move(lip));
+    cuts.attached[cut_.site.edge.tenonPlate].push_back(std::move(pieces.tongue));
+  }
+
+ private:
+  DovetailCut cut_;
+};
+
+}  // namespace
+
+std::vector<Vec3> DovetailSite::exits() const {
+  std::vector<Vec3> ways;
+  if (opens[0]) ways.push_back(negated(edge.along));
+  if (opens[1]) ways.push_back(edge.along);
+  return ways;
+}
+
+std::optional<DovetailSite> dovetailSiteOf(const std::vector<Plate>& plates, const PlateContact& contact) {
+  const std::optional<TenonSite> edge = squareEdgeSite(plates, contact);
+  if (!edge || !isPrism(plates[edge->tenonPlate]) || !isPrism(plates[edge->mortisePlate])) return std::nullopt;
+  DovetailSite site;
+  site.edge = *edge;
+  const Plate& housingPlate = plates[edge->mortisePlate];
+  const DovetailSection section = dovetailSection(plates, *edge);
+  if (section.narrow < 2) return std::nullopt;  // mm: too thin a neck to mill
+  const double stop = std::max(kDovetailStop, plateThickness(housingPlate));
+  if (edge->to - edge->from < stop + kShortestJoint) return std::nullopt;
+  const PlaneFrame frame(housingPlate.bottom[0][0], plateThicknessAxis(housingPlate));
+  const double low = section.centre - section.wide / 2, high = section.centre + section.wide / 2;
+  auto rectangle = [&](double s0, double s1) {
+    return Loop{jointPoint(plates, *edge, s0, low, 0), jointPoint(plates, *edge, s1, low, 0),
+                jointPoint(plates, *edge, s1, high, 0), jointPoint(plates, *edge, s0, high, 0)};
+  };
+  constexpr double kFlush = 0.01;  // mm
+  // Open at an end, `reach` past the contact: the face plate's material ends there (nothing of it
+  // just beyond), and the housing from the stop to there lies inside it.
+  auto opensAt = [&](int end, double reach) {
+    const double sign = end == 1 ? 1 : -1, at = (end == 1 ? edge->to : edge->from) + sign * reach;
+    const Loop beyond = rectangle(std::min(at + sign * kFlush, at + sign * kMortiseMargin),
+                                  std::max(at + sign * kFlush, at + sign * kMortiseMargin));
+    const Loop housing = end == 1 ? rectangle(edge->from + stop, at - kFlush) : rectangle(at + kFlush, edge->to - stop);
+    return areaAgainst({beyond}, housingPlate.bottom, frame, false) < 1e-6 &&
+           areaAgainst({housing}, housingPlate.bottom, frame, true) < 1e-6;
+  };
+  for (int end = 0; end < 2; ++end) {
+    site.opens[end] = opensAt(end, 0);
+    if (site.opens[end]) continue;
+    const std::optional<double> reach = stripExit(plates, *edge, housingPlate.bottom[0], frame, end, low, high);
+    if (reach && *reach > kFlush && opensAt(end, *reach)) {
+      site.opens[end] = true;
+      site.reach[end] = *reach;
+    }
+  }
+  if (!site.opens[0] && !site.opens[1]) return std::nullopt;
+  return site;
+}
+
+std::vector<Vec3> dovetailFaceNormals(const std::vector<Plate>& plates, const DovetailCut& cut) {
+  const TenonSite& edge = cut.site.edge;
+  const DovetailSection section = dovetailSection(plates, edge);
+  const double lean = (section.wide - section.narrow) / 2;
+  const Vec3 exit = cut.openEnd == 1 ? edge.along : negated(edge.along);
+  return {edge.intoMortise,
+          normalized(minus(scaled(edge.across, -section.depth), scaled(edge.intoMortise, lean))),
+          normalized(minus(scaled(edge.across, section.depth), scaled(edge.intoMortise, lean))), negated(exit)};
+}
+
+CutFootprint dovetailFootprint(const std::vector<Plate>& plates, const DovetailCut& cut) {
+  const DovetailPieces pieces = dovetailPieces(plates, cut, 0);
+  return {cut.site.edge.mortisePlate, pieces.fromFirstFace ? 1 : 2, pieces.housing};
+}
+
+std::shared_ptr<const JointCut> jointCut(const DovetailCut& cut) { return std::make_shared<DovetailJointCut>(cut); }
+
+}  // namespace desia

@@ -1,0 +1,63 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Sliding dovetails on plates (milled, JointRealization::Milled; paper Fig. 2, right): where the
+// edge's contact runs out of the face plate at an end, a tongue of dovetail section on the edge
+// slides in a housing half as deep as the face plate, open at that end and stopped before the
+// other, so the edge plate can leave only along the edge, out through the open end. The tongue,
+// and the housing's floor and overhanging lips, are prisms along the edge attached to the plates
+// (Plate::attached); the housing is cut through the face plate beneath them.
+#pragma once
+
+#include <array>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "desia/plate.h"
+#include "plate/joints/plate_cuts.h"
+#include "plate/joints/tenon.h"
+
+namespace desia {
+
+// A dovetail's flanks lean back 1 in 6 (a common dovetail slope).
+constexpr double kDovetailSlope = 1.0 / 6;
+
+// Where a sliding dovetail can be milled for one contact: a square edge standing on a face (the
+// tenon site's geometry, `edge`) with a way along the edge out of the face plate at one end or
+// both: the contact runs out of the face plate there, or the housing can run on past the contact
+// through the face plate to its square edge (a stopped housing, as a shelf's in a cabinet side
+// that is open at the side's front edge; the CHAIR's rails slide up the legs this way).
+struct DovetailSite {
+  TenonSite edge;  // tenonPlate: the tongue's plate, mortisePlate: the housing's
+  // The housing may open at [0] the contact's start (`from`, towards -along), [1] its end (`to`).
+  std::array<bool, 2> opens{false, false};
+  // How far the housing runs on past the contact's start [0] / end [1] before it opens (mm; 0
+  // where the contact runs out of the face plate).
+  std::array<double, 2> reach{0, 0};
+  // The directions the tongue plate may leave in: along the edge towards an open end.
+  std::vector<Vec3> exits() const;
+};
+
+// One dovetail to cut: the site and the end its housing opens at (0: from, 1: to).
+struct DovetailCut {
+  DovetailSite site;
+  int openEnd = 1;
+};
+
+// The site of a sliding dovetail on `contact`: a square side of one prismatic plate on a face of
+// another at right angles, long enough for a stopped housing, the contact running out of the
+// face plate at an end; nothing otherwise.
+std::optional<DovetailSite> dovetailSiteOf(const std::vector<Plate>& plates, const PlateContact& contact);
+
+// The normals of a dovetail's faces, pointing from the tongue plate into the housing plate: the
+// shoulder and the housing's floor, the two flanks (leaning back towards the tongue plate, so it
+// cannot be pulled out), and the stop at the closed end (against the exit).
+std::vector<Vec3> dovetailFaceNormals(const std::vector<Plate>& plates, const DovetailCut& cut);
+
+// The housing, cut into the housing plate from the face the tongue plate stands on.
+CutFootprint dovetailFootprint(const std::vector<Plate>& plates, const DovetailCut& cut);
+
+// The joint to cut: the housing, its lips and the tongue (narrowed and shortened by the clearance;
+// the housing keeps its size, so the verified plates and the made ones share it).
+std::shared_ptr<const JointCut> jointCut(const DovetailCut& cut);
+
+}  // namespace desia

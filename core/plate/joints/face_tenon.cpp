@@ -1,0 +1,92 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "plate/joints/face_tenon.h"
+
+#include <cmath>
+
+#include "analysis/vec3.h"
+#include "plate/joints/joint_geometry.h"
+#include "plate/plane_frame.h"
+#include "plate/plate_shape.h"
+
+namespace desia {
+namespace {
+
+// The block on the tenon plate: its footprint on the lap, into the mortise plate by the depth.
+Plate faceTenonBlock(const FaceTenon& tenon) {
+  Plate block;
+  Loop onLap = tenon.footprint(0), inside;
+  for (const Vec3& p : onLap) inside.push_back(plus(p, scaled(tenon.out, -tenon.depth)));
+  block.bottom = {onLap};
+  block.top = {inside};
+  return block;
+}
+
+// The mortise plate's face the lap lies on: 0 its first, 1 its second.
+int faceTenonMortiseFace(const std::vector<Plate>& plates, const FaceTenon& tenon) {
+  return dot(tenon.out, plateThicknessAxis(plates[tenon.mortisePlate])) > 0 ? 1 : 0;
+}
+
+class FaceTenonCut final : public JointCut {
+ public:
+  explicit FaceTenonCut(const FaceTenon& tenon) : tenon_(tenon) {}
+  // A blind mortise is a housing from the lap's face, as deep as the block (a dovetail's depth).
+  void addTo(const std::vector<Plate>& plates, const JointCutOptions& options, PlateCuts& cuts) const override {
+    const int face = faceTenonMortiseFace(plates, tenon_);
+    cuts.housings[tenon_.mortisePlate][face].push_back(tenon_.footprint(options.clearance / 2));
+    cuts.housingDepth[tenon_.mortisePlate][face] = tenon_.depth;
+    cuts.attached[tenon_.tenonPlate].push_back(faceTenonBlock(tenon_));
+  }
+
+ private:
+  FaceTenon tenon_;
+};
+
+}  // namespace
+
+Loop FaceTenon::footprint(double grow) const {
+  auto at = [&](double s, double t) { return plus(origin, plus(scaled(u, s), scaled(v, t))); };
+  return {at(s0 - grow, t0 - grow), at(s1 + grow, t0 - grow), at(s1 + grow, t1 + grow), at(s0 - grow, t1 + grow)};
+}
+
+std::optional<FaceTenon> faceTenonOf(const std::vector<Plate>& plates, const PlateContact& contact, int tenonPlate,
+                                     const Vec3& d) {
+  const std::optional<int> partner = touchingPartnerOf(contact, tenonPlate);
+  // A lap: the contact lies on a face of both plates.
+  if (!partner || contact.region.size() < 3 || facesOnContact(plates, contact) != 2) return std::nullopt;
+  FaceTenon tenon;
+  tenon.tenonPlate = tenonPlate;
+  tenon.mortisePlate = *partner;
+  const Plate& mortise = plates[tenon.mortisePlate];
+  if (!isPrism(plates[tenonPlate]) || !isPrism(mortise)) return std::nullopt;
+  tenon.out = contact.a == tenonPlate ? negated(contact.normal) : contact.normal;
+  if (dot(normalized(d), tenon.out) < 1 - 1e-9) return std::nullopt;  // straight off the lap only
+  tenon.u = normalized(contact.edgeDirection);
+  if (std::abs(dot(tenon.u, tenon.out)) > kSquare) return std::nullopt;
+  tenon.v = normalized(cross(tenon.out, tenon.u));
+  tenon.origin = contact.region[0];
+  const auto [s0, s1] = extentAlong(contact.region, tenon.origin, tenon.u);
+  const auto [t0, t1] = extentAlong(contact.region, tenon.origin, tenon.v);
+  // The middle third each way: wood all round the mortise, and room for other joints.
+  tenon.s0 = s0 + (s1 - s0) / 3;
+  tenon.s1 = s1 - (s1 - s0) / 3;
+  tenon.t0 = t0 + (t1 - t0) / 3;
+  tenon.t1 = t1 - (t1 - t0) / 3;
+  if (tenon.s1 - tenon.s0 < kShortestJoint || tenon.t1 - tenon.t0 < kShortestJoint) return std::nullopt;
+  tenon.depth = plateThickness(mortise) / 3;  // as deep as a dovetail's housing: both faces may hold one
+  // The block inside the lap (a lap that is not a rectangle may not hold the middle third).
+  const PlaneFrame frame(tenon.origin, tenon.out);
+  if (areaAgainst({tenon.footprint(0)}, {contact.region}, frame, true) > 1e-6) return std::nullopt;
+  return tenon;
+}
+
+std::vector<Vec3> faceTenonFaceNormals(const FaceTenon& tenon) {
+  return {negated(tenon.out), tenon.u, negated(tenon.u), tenon.v, negated(tenon.v)};
+}
+
+CutFootprint faceTenonFootprint(const std::vector<Plate>& plates, const FaceTenon& tenon) {
+  return {tenon.mortisePlate, faceTenonMortiseFace(plates, tenon) == 0 ? 1 : 2, tenon.footprint(0)};
+}
+
+std::shared_ptr<const JointCut> jointCut(const FaceTenon& tenon) { return std::make_shared<FaceTenonCut>(tenon); }
+
+}  // namespace desia

@@ -1,0 +1,33 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Halved joints (paper Fig. 2, middle): two plates that cross, each slotted halfway where the
+// other passes through it, the slots opening on opposite sides so that one plate slides off the
+// other along the crossing line.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "desia/plate.h"
+#include "plate/joints/plate_cuts.h"
+
+namespace desia {
+
+// A slot to cut out of a plate (a halved joint's half): a rectangle in its plane, through it.
+struct SlotCut {
+  int plate = 0;
+  Loop rectangle;
+};
+
+// The two slots of a halved joint at a crossing: `mover` leaves along d (along the crossing
+// line), so its slot runs from the middle of the crossing back out of its outline behind it, and
+// the other plate's from the middle out of its outline ahead; each as wide as the other plate is
+// thick plus the clearance.
+std::vector<SlotCut> halvedSlots(const std::vector<Plate>& plates, const PlateContact& crossing, int mover,
+                                 const Vec3& d, double clearance);
+
+CutFootprint slotFootprint(const SlotCut& slot);
+
+// The slot to cut (its clearance is in its rectangle).
+std::shared_ptr<const JointCut> jointCut(const SlotCut& slot);
+
+}  // namespace desia

@@ -1,0 +1,45 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// What every plate joint family measures the plates with (paper Section 5.2, geometry
+// realization): the tolerances of the joint geometry, and the small questions every joint asks of
+// a contact or a plate's face.
+#pragma once
+
+#include <polyclipping/clipper.hpp>
+
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "desia/plate.h"
+#include "plate/plane_frame.h"
+
+namespace desia {
+
+constexpr double kSquare = 1e-6;     // |cos| below this: at a right angle
+constexpr double kTolerance = 0.05;  // mm: faces closer than this lie on one another
+constexpr double kMortiseMargin = 1.0;  // mm of material left around a mortise at least
+constexpr double kShortestJoint = 3.0;  // mm: a shorter contact gets no tenon
+
+// "plate 7 (shelf)": how messages name a plate.
+std::string plateLabel(const Plate& plate);
+
+// The area (mm^2) of Clipper paths in a PlaneFrame's integer coordinates.
+double areaOf(const ClipperLib::Paths& paths);
+
+// Area of the loops' region (non-zero) inside or outside `face` (its outline minus its holes).
+double areaAgainst(const std::vector<Loop>& loops, const std::vector<Loop>& face, const PlaneFrame& frame,
+                   bool outside);
+
+// The region's extent along a direction, as distances from a point.
+std::pair<double, double> extentAlong(const Loop& region, const Vec3& origin, const Vec3& direction);
+
+// The plate across a contact from `plate`, for contacts where two plates touch (not crossings);
+// the check every joint on a touching pair opens with.
+std::optional<int> touchingPartnerOf(const PlateContact& contact, int plate);
+
+// How many of the two plates have a face on the contact: 0 where they meet edge to edge (a
+// mitre), 2 where they lie face to face (a lap), 1 for an edge on a face (T and L joints).
+int facesOnContact(const std::vector<Plate>& plates, const PlateContact& contact);
+
+}  // namespace desia

@@ -1,0 +1,238 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "plate/joints/mitre_slide.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "analysis/vec3.h"
+#include "plate/joints/dovetail.h"
+#include "plate/joints/joint_geometry.h"
+#include "plate/joints/mitre_tenon.h"
+#include "plate/plane_frame.h"
+#include "plate/plate_shape.h"
+
+namespace desia {
+namespace {
+
+// The slide seen as a pocket in the slide plate (the tongue plate holding the "tenon"): the frame,
+// the inward direction and the wood around the groove are a mitre tenon's.
+MitreTenon grooveView(const MitreSlide& slide) {
+  MitreTenon view;
+  view.tenonPlate = slide.tonguePlate;
+  view.pocketPlate = slide.slidePlate;
+  view.line = slide.line;
+  view.into = slide.into;
+  view.middle = slide.middle;
+  view.across = slide.across;
+  view.halfHeight = slide.halfHeight;
+  view.depth = slide.depth;
+  view.notchReach = slide.notchReach;
+  return view;
+}
+
+// The tongue's section (root corners [0], [1] on the mitre, their tips [3], [2]), a dovetail:
+// `depth` along `into`, wider at its tip along the root, less `play` all round (the clearance).
+std::vector<Flat> slideSection(const MitreSlide& slide, double play) {
+  const double ix = dot(slide.into, slide.across), iy = dot(slide.into, slide.mitreNormal);
+  const double h = slide.halfHeight - play, d = slide.depth - play;
+  const double tip = slide.halfHeight + slide.lean * slide.depth - play;
+  return {{-h, 0}, {h, 0}, {d * ix + tip, d * iy}, {d * ix - tip, d * iy}};
+}
+
+// The notch through the slide plate, in its plane (MitreSlide::notch).
+Loop slideNotch(const std::vector<Plate>&, const MitreSlide& slide) { return slide.notch; }
+
+// A point of the slide plate's plane: s along the edge from the middle, u inward.
+Vec3 at0(const MitreSlide& slide, const Vec3& inward, double s, double u) {
+  return plus(slide.middle, plus(scaled(slide.line, s), scaled(inward, u)));
+}
+
+Plate prismAlongEdge(const MitreTenon& view, const std::vector<Flat>& section, double from, double to) {
+  const MitreFrame frame = mitreFrame(view);
+  Plate prism;
+  Loop first, second;
+  for (const Flat& q : section) {
+    first.push_back(frame.at(q, from));
+    second.push_back(frame.at(q, to));
+  }
+  prism.bottom = {first};
+  prism.top = {second};
+  return prism;
+}
+
+// Where the slide plate's other sides come within the notch's reach of its mitre, along the edge:
+// the nearest such point behind the middle (s < 0) and ahead (s > 0), from both its faces.
+std::pair<double, double> cornersAlongEdge(const Plate& plate, const MitreSlide& slide, const Vec3& inward,
+                                           double mitreFrom, double mitreTo) {
+  double behind = -HUGE_VAL, ahead = HUGE_VAL;
+  for (const std::vector<Loop>* face : {&plate.bottom, &plate.top}) {
+    for (const Loop& loop : *face) {
+      for (size_t k = 0; k < loop.size(); ++k) {
+        const Vec3 a = minus(loop[k], slide.middle), b = minus(loop[(k + 1) % loop.size()], slide.middle);
+        const double sa = dot(a, slide.line), sb = dot(b, slide.line), ua = dot(a, inward), ub = dot(b, inward);
+        // The mitre's own edges (along the line, between its outer and inner lines) do not count.
+        const bool alongLine = std::abs(ua - ub) < 1e-6 * (1 + std::abs(sa - sb));
+        if (alongLine && ua >= mitreFrom - 1e-3 && ua <= mitreTo + 1e-3) continue;
+        // The part of the edge with u <= notchReach.
+        double t0 = 0, t1 = 1;
+        if (ua > slide.notchReach && ub > slide.notchReach) continue;
+        if (ua > slide.notchReach) t0 = (slide.notchReach - ua) / (ub - ua);
+        if (ub > slide.notchReach) t1 = (slide.notchReach - ua) / (ub - ua);
+        for (const double t : {t0, t1}) {
+          const double sv = sa + t * (sb - sa);
+          if (sv < 0) behind = std::max(behind, sv);
+          if (sv > 0) ahead = std::min(ahead, sv);
+        }
+      }
+    }
+  }
+  return {behind, ahead};
+}
+
+class MitreSlideCut final : public JointCut {
+ public:
+  explicit MitreSlideCut(const MitreSlide& slide) : slide_(slide) {}
+  void addTo(const std::vector<Plate>& plates, const JointCutOptions& options, PlateCuts& cuts) const override {
+    const MitreTenon view = grooveView(slide_);
+    cuts.removed[slide_.slidePlate].push_back(slideNotch(plates, slide_));
+    cuts.attached[slide_.slidePlate].push_back(prismAlongEdge(
+        view, woodAroundPocket(plates, view, slideSection(slide_, 0)), slide_.woodFrom, slide_.tongueTo));
+    cuts.attached[slide_.tonguePlate].push_back(prismAlongEdge(view, slideSection(slide_, options.clearance / 2),
+                                                               slide_.tongueFrom,
+                                                               slide_.tongueTo - options.clearance / 2));
+  }
+
+ private:
+  MitreSlide slide_;
+};
+
+}  // namespace
+
+std::optional<MitreSlide> mitreSlideOf(const std::vector<Plate>& plates, const PlateContact& contact, int slidePlate,
+                                       const Vec3& d) {
+  const std::optional<int> partner = touchingPartnerOf(contact, slidePlate);
+  // Edge to edge: neither face on the contact (those are T joints and laps).
+  if (!partner || contact.region.size() < 3 || facesOnContact(plates, contact) != 0) return std::nullopt;
+  MitreSlide slide;
+  slide.slidePlate = slidePlate;
+  slide.tonguePlate = *partner;
+  const Plate& plate = plates[slidePlate];
+  const Vec3 edge = normalized(contact.edgeDirection);
+  if (std::abs(std::abs(dot(edge, normalized(d))) - 1) > 1e-12) return std::nullopt;  // along the edge only
+  // The way out itself, and the mitre's normal made square to it: every face of the groove but its
+  // stop then lies along d to rounding of doubles (the edge and d may differ by 1e-9).
+  slide.line = normalized(d);
+  const Vec3 normal = contact.a == slidePlate ? negated(contact.normal) : contact.normal;  // tongue -> slide plate
+  slide.mitreNormal = normalized(minus(normal, scaled(slide.line, dot(normal, slide.line))));
+  slide.across = normalized(cross(slide.mitreNormal, slide.line));
+  slide.into = normalized(cross(plateThicknessAxis(plate), slide.line));
+  if (dot(slide.into, slide.mitreNormal) < 0) slide.into = negated(slide.into);
+  if (dot(slide.into, slide.mitreNormal) < 0.05) return std::nullopt;  // the mitre all but lies in the plate
+  const auto [s0, s1] = extentAlong(contact.region, contact.region[0], slide.line);
+  const auto [x0, x1] = extentAlong(contact.region, contact.region[0], slide.across);
+  slide.middle = plus(contact.region[0], plus(scaled(slide.line, (s0 + s1) / 2), scaled(slide.across, (x0 + x1) / 2)));
+  const double halfLength = (s1 - s0) / 2;
+  slide.halfHeight = (x1 - x0) / 8;  // a quarter of the mitre's height, as a mitre tenon's root
+  slide.lean = kDovetailSlope;
+  if (2 * slide.halfHeight < 1) return std::nullopt;
+  // As deep as the slide plate holds the groove with a millimetre of wood on both faces.
+  const Vec3 axis = plateThicknessAxis(plate);
+  const double thickness = plateThickness(plate);
+  auto fits = [&](double depth) {
+    slide.depth = depth;
+    for (const Flat& q : slideSection(slide, 0)) {
+      const Vec3 point = plus(slide.middle, plus(scaled(slide.across, q[0]), scaled(slide.mitreNormal, q[1])));
+      const double height = dot(minus(point, plate.bottom[0][0]), axis);
+      if (height < kMortiseMargin || height > thickness - kMortiseMargin) return false;
+    }
+    return true;
+  };
+  constexpr double kShallowestGroove = 2.0;  // mm
+  double depth = thickness;
+  while (depth >= kShallowestGroove && !fits(depth)) depth *= 0.8;
+  if (depth < kShallowestGroove) return std::nullopt;
+  // The notch runs past the groove and past the mitre.
+  const MitreTenon view = grooveView(slide);
+  const Vec3 inward = pocketInward(plates, view);
+  const MitreFrame frame = mitreFrame(view);
+  double mitreFrom = HUGE_VAL, mitreTo = -HUGE_VAL;  // the mitre's outer and inner lines
+  for (const Vec3& p : contact.region) {
+    mitreFrom = std::min(mitreFrom, dot(minus(p, slide.middle), inward));
+    mitreTo = std::max(mitreTo, dot(minus(p, slide.middle), inward));
+  }
+  for (const Flat& q : slideSection(slide, 0))
+    slide.notchReach = std::max(slide.notchReach, dot(minus(frame.at(q, 0), slide.middle), inward));
+  slide.notchReach = std::max(slide.notchReach, mitreTo) + kMortiseMargin;
+  // Along the edge: the wood around the groove only where the plate's other sides are clear of the
+  // notch; the groove stopped a plate thickness (10 mm at least) short of the end ahead.
+  const auto [behind, ahead] = cornersAlongEdge(plate, slide, inward, mitreFrom, mitreTo);
+  slide.woodFrom = std::max(behind, -halfLength) + kMortiseMargin;
+  slide.tongueFrom = slide.woodFrom;
+  slide.tongueTo = std::min(halfLength - std::max(10.0, thickness), ahead - kMortiseMargin);
+  constexpr double kShortestGroove = 10.0;  // mm
+  if (slide.tongueTo - slide.woodFrom < kShortestGroove) return std::nullopt;
+  const PlaneFrame planeFrame(plate.bottom[0][0], axis);
+  // The notch: the band at the mitre from the groove's stop back past all of the plate, out
+  // through its side behind the corner (the tongue leaves through it; where the band's inner edge
+  // crosses that mitred side, the cut's wall meets it along the edge: secondFacePartner).
+  double rearmost = 0;
+  for (const std::vector<Loop>* face : {&plate.bottom, &plate.top})
+    for (const Loop& loop : *face)
+      for (const Vec3& p : loop) rearmost = std::min(rearmost, dot(minus(p, slide.middle), slide.line));
+  slide.notchFrom = rearmost - 10;
+  const double out = -2 * (thickness + slide.depth);
+  slide.notch = {at0(slide, inward, slide.notchFrom, out), at0(slide, inward, slide.tongueTo, out),
+                 at0(slide, inward, slide.tongueTo, slide.notchReach), at0(slide, inward, slide.notchFrom, slide.notchReach)};
+  // The band's inner edge leaves the plate behind through one side on both faces (its wall meets
+  // that side: secondFacePartner); where a face's outline turns between them, it would not.
+  auto sideCrossedBehind = [&](const Loop& loop) {
+    int side = -1;
+    double nearest = -HUGE_VAL;
+    for (size_t k = 0; k < loop.size(); ++k) {
+      const Vec3 a = minus(loop[k], slide.middle), b = minus(loop[(k + 1) % loop.size()], slide.middle);
+      const double ua = dot(a, inward), ub = dot(b, inward);
+      if ((ua - slide.notchReach) * (ub - slide.notchReach) > 0 || ua == ub) continue;
+      const double t = (slide.notchReach - ua) / (ub - ua);
+      const double sv = dot(a, slide.line) + t * (dot(b, slide.line) - dot(a, slide.line));
+      if (sv < slide.woodFrom && sv > nearest) {
+        nearest = sv;
+        side = static_cast<int>(k);
+      }
+    }
+    return side;
+  };
+  if (sideCrossedBehind(plate.bottom[0]) != sideCrossedBehind(plate.top[0]) || sideCrossedBehind(plate.bottom[0]) < 0)
+    return std::nullopt;
+  // A plate whose outline comes back to the band behind (not convex there) would fall apart.
+  {
+    ClipperLib::Clipper clipper;
+    clipper.AddPaths(clipperPaths(plate.bottom, planeFrame), ClipperLib::ptSubject, true);
+    clipper.AddPaths(clipperPaths({slide.notch}, planeFrame), ClipperLib::ptClip, true);
+    ClipperLib::PolyTree left;
+    clipper.Execute(ClipperLib::ctDifference, left, ClipperLib::pftEvenOdd, ClipperLib::pftNonZero);
+    if (left.ChildCount() != 1) return std::nullopt;
+  }
+  // The notch's end past the mitre lies where the plate is whole, so that its cut ends in wood.
+  auto at = [&](double s, double u) { return plus(slide.middle, plus(scaled(slide.line, s), scaled(inward, u))); };
+  const Loop end{at(slide.woodFrom, mitreTo), at(slide.tongueTo, mitreTo), at(slide.tongueTo, slide.notchReach),
+                 at(slide.woodFrom, slide.notchReach)};
+  if (areaAgainst({end}, faceRegion(plate, ClipperLib::ctIntersection), planeFrame, true) > 1e-6) return std::nullopt;
+  return slide;
+}
+
+std::vector<Vec3> mitreSlideFaceNormals(const MitreSlide& slide) {
+  // In the section (x along `across`, y along the mitre's normal) the flanks run from the root
+  // corners along (ix -+ lean, iy); their normals, from the slide plate into the tongue.
+  const double ix = dot(slide.into, slide.across), iy = dot(slide.into, slide.mitreNormal);
+  const Vec3 low = normalized(minus(scaled(slide.across, iy), scaled(slide.mitreNormal, ix - slide.lean)));
+  const Vec3 high = normalized(plus(scaled(slide.across, -iy), scaled(slide.mitreNormal, ix + slide.lean)));
+  return {negated(slide.mitreNormal), low, high, negated(slide.line)};
+}
+
+CutFootprint mitreSlideFootprint(const std::vector<Plate>& plates, const MitreSlide& slide) {
+  return {slide.slidePlate, 3, slideNotch(plates, slide)};
+}
+
+std::shared_ptr<const JointCut> jointCut(const MitreSlide& slide) { return std::make_shared<MitreSlideCut>(slide); }
+
+}  // namespace desia

@@ -1,0 +1,62 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Joints made real in the plates (paper Section 5.2, geometry realization): what each joint does
+// to the plates it joins, gathered per plate and then cut, and where a joint's cut lies, so that
+// the designer can drop a step whose cuts would run into those of an earlier one.
+//
+// The plates are prisms (every side square to the faces), so a cut is a 2D boolean on the face,
+// done by Clipper, and the second face is the first moved by the thickness: a jointed plate is
+// again a Plate that the contact computation, the meshes and the exports take as it is.
+#pragma once
+
+#include <array>
+#include <memory>
+#include <vector>
+
+#include "desia/plate.h"
+#include "desia/plate_design.h"
+
+namespace desia {
+
+// Where a joint's cut lies in a plate: a region of its face (a loop on or parallel to it), through
+// the plate (faces = 3) or into it from its first (1) or second (2) face only. Cuts of different
+// joints in one plate must not overlap where they share a face: the designer drops a step whose
+// joints would (rather than find it when the whole plan is cut).
+struct CutFootprint {
+  int plate = 0;
+  int faces = 3;
+  Loop region;
+};
+
+// Both in one plate, sharing a face, their regions overlapping inside the plate (more than a
+// thousandth of a square millimetre).
+bool footprintsOverlap(const std::vector<Plate>& plates, const CutFootprint& a, const CutFootprint& b);
+
+// What the joints do to each plate (indexed as the plates): outlines added to its faces (tenons),
+// regions cut through it (mortises, slots, notches), housings cut into it from its first [0] or
+// second [1] face as deep as housingDepth says (dovetail housings, blind mortises), and solids
+// attached to it (milled pieces: Plate::attached).
+struct PlateCuts {
+  explicit PlateCuts(size_t plateCount);
+  std::vector<std::vector<Loop>> added, removed;
+  std::vector<std::array<std::vector<Loop>, 2>> housings;
+  std::vector<std::array<double, 2>> housingDepth;
+  std::vector<std::vector<Plate>> attached;
+};
+
+// One joint, ready to cut: its family adds what it does to the plates, with `options.clearance`
+// mm of play, to `cuts`.
+class JointCut {
+ public:
+  virtual ~JointCut() = default;
+  virtual void addTo(const std::vector<Plate>& plates, const JointCutOptions& options, PlateCuts& cuts) const = 0;
+};
+using JointCutList = std::vector<std::shared_ptr<const JointCut>>;
+
+// The plates with the joints cut into them, in the list's order (the order of each plate's cut
+// loops and attached solids in the result), with options.clearance of play (the mortises, slots
+// and housings keep their size less... see each family). Throws BadInput naming the plate when the
+// cuts split a plate or run into each other.
+std::vector<Plate> cutJoints(const std::vector<Plate>& plates, const JointCutList& joints,
+                             const JointCutOptions& options);
+
+}  // namespace desia

@@ -1,0 +1,144 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "plate/swept_collision.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <vector>
+
+#include "analysis/vec3.h"
+#include "plate/plane_frame.h"
+
+namespace desia {
+namespace {
+
+struct Shadow {  // a triangle seen along d: 2D corners (u, v) and their depths along d
+  std::array<std::array<double, 2>, 3> corner;
+  std::array<double, 3> depth;
+  double minU, maxU, minV, maxV;
+};
+
+// The shadows of the triangles whose outward normal points along `facing` times the frame's
+// normal (the direction of motion).
+std::vector<Shadow> shadowsOf(const TriangleMesh& mesh, const PlaneFrame& frame, int facing) {
+  std::vector<Shadow> shadows;
+  for (const auto& triangle : mesh.triangles) {
+    Shadow s;
+    for (int i = 0; i < 3; ++i) {
+      const Vec3& p = mesh.vertices[triangle[i]];
+      const Vec3 offset = minus(p, frame.origin);
+      s.corner[i] = {dot(offset, frame.u), dot(offset, frame.v)};
+      s.depth[i] = dot(offset, frame.normal);
+    }
+    const double twiceArea = (s.corner[1][0] - s.corner[0][0]) * (s.corner[2][1] - s.corner[0][1]) -
+                             (s.corner[2][0] - s.corner[0][0]) * (s.corner[1][1] - s.corner[0][1]);
+    if (std::abs(twiceArea) < 1e-9) continue;  // edge-on: its solid is seen through its neighbours
+    // Keep the triangles facing `facing` times d (outward triangles wind counter-clockwise seen
+    // from outside, and (u, v, d) is right-handed: those facing +d have a positive area).
+    if ((twiceArea > 0) != (facing > 0)) continue;
+    if (twiceArea < 0) {
+      std::swap(s.corner[1], s.corner[2]);
+      std::swap(s.depth[1], s.depth[2]);
+    }
+    s.minU = std::min({s.corner[0][0], s.corner[1][0], s.corner[2][0]});
+    s.maxU = std::max({s.corner[0][0], s.corner[1][0], s.corner[2][0]});
+    s.minV = std::min({s.corner[0][1], s.corner[1][1], s.corner[2][1]});
+    s.maxV = std::max({s.corner[0][1], s.corner[1][1], s.corner[2][1]});
+    shadows.push_back(s);
+  }
+  return shadows;
+}
+
+using Point2 = std::array<double, 2>;
+
+// The part of a convex polygon left of the directed line a -> b (Sutherland-Hodgman, one edge).
+std::vector<Point2> clipLeftOf(const std::vector<Point2>& polygon, const Point2& a, const Point2& b) {
+  auto side = [&](const Point2& p) { return (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0]); };
+  std::vector<Point2> out;
+  for (size_t i = 0; i < polygon.size(); ++i) {
+    const Point2& p = polygon[i];
+    const Point2& q = polygon[(i + 1) % polygon.size()];
+    const double sp = side(p), sq = side(q);
+    if (sp >= 0) out.push_back(p);
+    if ((sp >= 0) != (sq >= 0)) {
+      const double t = sp / (sp - sq);
+      out.push_back({p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])});
+    }
+  }
+  return out;
+}
+
+// Depth of a shadow's triangle plane at a 2D point (barycentric interpolation).
+double depthAt(const Shadow& s, const Point2& p) {
+  const auto& a = s.corner[0];
+  const auto& b = s.corner[1];
+  const auto& c = s.corner[2];
+  const double det = (b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]);
+  const double l1 = ((p[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (p[1] - a[1])) / det;
+  const double l2 = ((b[0] - a[0]) * (p[1] - a[1]) - (p[0] - a[0]) * (b[1] - a[1])) / det;
+  return s.depth[0] + l1 * (s.depth[1] - s.depth[0]) + l2 * (s.depth[2] - s.depth[0]);
+}
+
+double polygonPerimeter(const std::vector<Point2>& polygon) {
+  double length = 0;
+  for (size_t i = 0; i < polygon.size(); ++i) {
+    const Point2& p = polygon[i];
+    const Point2& q = polygon[(i + 1) % polygon.size()];
+    length += std::hypot(q[0] - p[0], q[1] - p[1]);
+  }
+  return length;
+}
+
+double polygonArea(const std::vector<Point2>& polygon) {
+  double twice = 0;
+  for (size_t i = 0; i < polygon.size(); ++i) {
+    const Point2& p = polygon[i];
+    const Point2& q = polygon[(i + 1) % polygon.size()];
+    twice += p[0] * q[1] - q[0] * p[1];
+  }
+  return std::abs(twice) / 2;
+}
+
+}  // namespace
+
+bool plateCollidesAlong(const Plate& mover, const Plate& obstacle, const Vec3& d, double tolerance) {
+  return meshCollidesAlong(plateMesh(mover), plateMesh(obstacle), d, tolerance);
+}
+
+bool meshCollidesAlong(const TriangleMesh& mover, const TriangleMesh& obstacle, const Vec3& d, double tolerance) {
+  if (mover.vertices.empty() || obstacle.vertices.empty()) return false;
+  // Boxes first: the obstacle must reach into the box the mover sweeps.
+  for (int k = 0; k < 3; ++k) {
+    double moverLo = HUGE_VAL, moverHi = -HUGE_VAL, lo = HUGE_VAL, hi = -HUGE_VAL;
+    for (const auto& p : mover.vertices) moverLo = std::min(moverLo, p[k]), moverHi = std::max(moverHi, p[k]);
+    for (const auto& p : obstacle.vertices) lo = std::min(lo, p[k]), hi = std::max(hi, p[k]);
+    if (d[k] > 1e-12) moverHi = HUGE_VAL;
+    if (d[k] < -1e-12) moverLo = -HUGE_VAL;
+    if (hi <= moverLo + tolerance || moverHi <= lo + tolerance) return false;
+  }
+  const PlaneFrame frame(mover.vertices[0], d);
+  // On a line along d, a piece [p0, p1] of the mover moved by t > 0 meets a piece [q0, q1] of the
+  // obstacle for some t exactly when q1 > p0: the obstacle's far end (a triangle facing +d) lies
+  // beyond the mover's rear end (a triangle facing -d). Those triangles alone decide.
+  const std::vector<Shadow> moving = shadowsOf(mover, frame, -1);
+  const std::vector<Shadow> standing = shadowsOf(obstacle, frame, +1);
+  for (const Shadow& m : moving) {
+    for (const Shadow& s : standing) {
+      if (m.maxU <= s.minU || s.maxU <= m.minU || m.maxV <= s.minV || s.maxV <= m.minV) continue;
+      std::vector<Point2> overlap(m.corner.begin(), m.corner.end());
+      for (int i = 0; i < 3 && !overlap.empty(); ++i) overlap = clipLeftOf(overlap, s.corner[i], s.corner[(i + 1) % 3]);
+      // Shadows that only touch (at an edge, or at a corner: an "overlap" of rounding noise), or
+      // overlap in a sliver narrower than the tolerance (2 area / perimeter is about a sliver's
+      // width), do not meet.
+      const double area = polygonArea(overlap);
+      if (overlap.size() < 3 || area <= tolerance * tolerance || 2 * area <= tolerance * polygonPerimeter(overlap)) continue;
+      // The depth gap is affine over the overlap: its largest value is at a corner.
+      for (const Point2& p : overlap) {
+        if (depthAt(s, p) - depthAt(m, p) > tolerance) return true;
+      }
+    }
+  }
+  return false;
+}
+
+}  // namespace desia
