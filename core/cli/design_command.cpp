@@ -1,16 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // desia design voxel: a thin shell over designVoxelPuzzle (core/include/desia/voxel_design.h).
-#include <unistd.h>
-
-#include <atomic>
-#include <csignal>
-#include <cstdio>
 #include <iostream>
 
 #include "cli_arguments.h"
 #include "cli_files.h"
 #include "commands.h"
 #include "design_portfolio.h"
+#include "design_run.h"
 #include "desia/check.h"
 #include "desia/design_io.h"
 #include "desia/document.h"
@@ -20,12 +16,6 @@
 
 namespace {
 
-// Set by Ctrl-C; every search polls it after each node (from its own thread with --jobs) and
-// stops with what it has. A lock-free atomic: safe in a signal handler and across threads.
-std::atomic<bool> interrupted{false};
-static_assert(std::atomic<bool>::is_always_lock_free, "the Ctrl-C flag must be usable in a signal handler");
-extern "C" void onInterrupt(int) { interrupted = true; }
-
 struct DesignArguments {
   std::string input, output, groupsFile;
   desia::VoxelDesignOptions options;
@@ -34,18 +24,6 @@ struct DesignArguments {
 };
 
 [[noreturn]] void usage(const std::string& message) { throw desia::Error(desia::ErrorCode::BadInput, message); }
-
-double secondsArgument(const std::string& flag, const std::string& text) {
-  size_t used = 0;
-  double value = -1;
-  try {
-    value = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used != text.size() || !(value >= 0) || value > 1e7) usage(flag + " expects a number of seconds >= 0, got '" + text + "'");
-  return value;
-}
 
 DesignArguments parseArguments(const std::vector<std::string>& args) {
   if (args.empty() || args[0] != "voxel") usage("design expects a kind: 'desia design voxel ...', 'desia design plate ...' or 'desia design frame ...'");
@@ -67,15 +45,12 @@ DesignArguments parseArguments(const std::vector<std::string>& args) {
     else if (flag == "--output") parsed.output = value;
     else if (flag == "--groups") parsed.groupsFile = value;
     else if (flag == "--parts") { parsed.options.parts = static_cast<int>(desia::cli::integerOption(flag, value, 1, 1000000)); partsGiven = true; }
-    else if (flag == "--seed") parsed.options.seed = static_cast<uint64_t>(desia::cli::integerOption(flag, value, 0, (1LL << 62)));
-    else if (flag == "--candidates") parsed.options.candidates = static_cast<int>(desia::cli::integerOption(flag, value, 1, 10000));
+    else if (desia::cli::parseSearchFlag(flag, value, {&parsed.options.seed, &parsed.options.candidates, &parsed.options.limits})) continue;
     else if (flag == "--rank") parsed.options.ranking = desia::parseCandidateRanking(value);
     else if (flag == "--mode") parsed.options.mode = desia::parseDesignMode(value);
     else if (flag == "--min-part-size") parsed.options.minPartSize = static_cast<int>(desia::cli::integerOption(flag, value, 1, 1000000));
     else if (flag == "--max-part-size") parsed.options.maxPartSize = static_cast<int>(desia::cli::integerOption(flag, value, 1, 1000000));
     else if (flag == "--jobs") parsed.jobs = static_cast<int>(desia::cli::integerOption(flag, value, 1, 256));
-    else if (flag == "--time-limit") parsed.options.limits.timeLimitSeconds = secondsArgument(flag, value);
-    else if (flag == "--node-limit") parsed.options.limits.nodeLimit = desia::cli::integerOption(flag, value, 1, 1LL << 50);
     else if (flag == "--key-direction") parsed.options.keyDirection = desia::parseAxisDirection(value, "--key-direction");
     else usage("unknown option " + flag);
   }
@@ -106,21 +81,12 @@ int runDesignCommand(const std::vector<std::string>& args) {
                                                        desia::assemblyKindName(document.kind) + " document");
   }
   if (!parsed.groupsFile.empty()) parsed.options.groups = desia::parseVoxelGroupsJson(desia::cli::readInputFile(parsed.groupsFile), document.voxels, parsed.groupsFile);
-  const bool live = !parsed.quiet && isatty(STDERR_FILENO);
-  double lastShown = -1;
-  parsed.options.limits.onProgress = [&](const desia::DesignProgress& p) {
-    if (live && p.seconds - lastShown > 0.2) {
-      lastShown = p.seconds;
-      std::fprintf(stderr, "\r%lld nodes, depth %d/%d, best %d/%d, %.1f s%s   ", static_cast<long long>(p.nodes),
-                   p.depth, p.targetParts, p.bestDepth, p.targetParts, p.seconds,
-                   parsed.jobs > 1 ? (", " + std::to_string(parsed.jobs) + " seeds").c_str() : "");
-    }
-    return !interrupted;
-  };
-  std::signal(SIGINT, onInterrupt);
-  const desia::VoxelDesignResult result = desia::cli::designVoxelPortfolio(document.voxels, parsed.options, parsed.jobs);
-  std::signal(SIGINT, SIG_DFL);
-  if (live) std::fprintf(stderr, "\r%70s\r", "");
+  desia::VoxelDesignResult result;
+  {
+    desia::cli::LiveProgress progress(parsed.quiet, parsed.jobs > 1 ? ", " + std::to_string(parsed.jobs) + " seeds" : "");
+    parsed.options.limits.onProgress = progress.callback();
+    result = desia::cli::designVoxelPortfolio(document.voxels, parsed.options, parsed.jobs);
+  }
   if (result.status != desia::DesignStatus::Success) {
     std::cerr << "desia: " << result.message << (parsed.jobs > 1 ? " (" + seedsText(parsed) + ", the deepest shown)" : "") << "\n";
     return 1;

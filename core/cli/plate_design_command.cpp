@@ -1,17 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // desia design plate: a thin shell over designPlateJoints (core/include/desia/plate_design.h).
-#include <unistd.h>
-
-#include <csignal>
-#include <cstdio>
 #include <iostream>
 #include <optional>
 
 #include "cli_arguments.h"
 #include "cli_files.h"
 #include "commands.h"
-#include "desia/check.h"
-#include "desia/document_check.h"
+#include "design_run.h"
 #include "desia/document.h"
 #include "desia/error.h"
 #include "desia/mesh.h"
@@ -20,9 +15,6 @@
 #include "desia/plate_repair.h"
 
 namespace {
-
-volatile std::sig_atomic_t interrupted = 0;
-extern "C" void onPlateDesignInterrupt(int) { interrupted = 1; }
 
 [[noreturn]] void usage(const std::string& message) { throw desia::Error(desia::ErrorCode::BadInput, message); }
 
@@ -65,14 +57,8 @@ int runPlateDesignCommand(const std::vector<std::string>& args) {
       input = value;
     else if (flag == "--output")
       output = value;
-    else if (flag == "--seed")
-      options.seed = static_cast<uint64_t>(desia::cli::integerOption(flag, value, 0, 1LL << 62));
-    else if (flag == "--candidates")
-      options.candidates = static_cast<int>(desia::cli::integerOption(flag, value, 1, 10000));
-    else if (flag == "--node-limit")
-      options.limits.nodeLimit = desia::cli::integerOption(flag, value, 1, 1LL << 50);
-    else if (flag == "--time-limit")
-      options.limits.timeLimitSeconds = static_cast<double>(desia::cli::integerOption(flag, value, 1, 10000000));
+    else if (desia::cli::parseSearchFlag(flag, value, {&options.seed, &options.candidates, &options.limits}))
+      continue;
     else if (flag == "--repair")
       repairOutput = value;
     else if (flag == "--joints")
@@ -99,17 +85,12 @@ int runPlateDesignCommand(const std::vector<std::string>& args) {
     usage(input + ": design plate needs a plate design (kind \"plate\" with \"plates\" and no \"contacts\")");
   }
   options.geometry = document.plateOptions;
-  const bool live = !quiet && isatty(STDERR_FILENO);
-  options.limits.onProgress = [&](const desia::DesignProgress& p) {
-    if (live)
-      std::fprintf(stderr, "\r%lld nodes, depth %d/%d, %.1f s   ", static_cast<long long>(p.nodes), p.depth + 1,
-                   p.targetParts, p.seconds);
-    return interrupted == 0;
-  };
-  std::signal(SIGINT, onPlateDesignInterrupt);
-  const desia::PlateDesignResult result = desia::designPlateJoints(document.plates, document.plateContacts, options);
-  std::signal(SIGINT, SIG_DFL);
-  if (live) std::fprintf(stderr, "\r%70s\r", "");
+  desia::PlateDesignResult result;
+  {
+    desia::cli::LiveProgress progress(quiet);
+    options.limits.onProgress = progress.callback();
+    result = desia::designPlateJoints(document.plates, document.plateContacts, options);
+  }
   if (result.status == desia::DesignStatus::CutPoint)
     return reportCutPoint(document, input, result.message, repairOutput);
   if (result.status != desia::DesignStatus::Success) {
@@ -118,18 +99,8 @@ int runPlateDesignCommand(const std::vector<std::string>& args) {
   }
   // What the user gets is checked as it will be written, by the check `desia check` runs (both
   // tests and, on the plates, the removal replayed), before anything is written.
-  const std::string text = desia::plateDesignToJson(document, result) + "\n";
-  const desia::AssemblyDocument written = desia::parseAssemblyText(text, output);
   desia::CheckOptions check;
   check.method = desia::CheckMethod::Both;
-  const desia::CheckReport report = desia::checkDocument(written, check);
-  if (!desia::checkPassed(report)) {
-    std::cerr << "desia: " << input << ": the plan found did not verify, nothing written to " << output << ":\n"
-              << desia::checkReportToText(written, report);
-    return 1;
-  }
-  desia::cli::writeOutputFile(output, text);
-  std::cout << result.message << " in " << result.progress.seconds << " s\n"
-            << "verified: " << desia::checkReportToText(written, report) << "written: " << output << "\n";
-  return 0;
+  return desia::cli::writeVerifiedResult(input, output, desia::plateDesignToJson(document, result) + "\n", check,
+                                         result.message, result.progress.seconds, "plan");
 }

@@ -191,3 +191,22 @@ test('export lists the formats of the core registry, the same as the package', a
   assert.equal(unknown.status, 2);
   assert.match(unknown.stderr, new RegExp(`unknown export format 'step' \\(expected one of: ${names.join(', ')};`));
 });
+
+test('the three design commands take the same search flags, with the same rules and messages', () => {
+  const inputs = {
+    voxel: ['--input', path.join(referenceDir, 'input_puz/Cube_4x4x4_origin.puz'), '--parts', '3', '--output', '/tmp/x.puz'],
+    plate: ['--input', 'examples/plate/table.json', '--output', '/tmp/x.json'],
+    frame: ['--input', 'examples/frame/frame_cube.json', '--output', '/tmp/x.json'],
+  };
+  for (const [kind, args] of Object.entries(inputs)) {
+    const negative = runCli(['design', kind, ...args, '--time-limit', '-1']);
+    assert.equal(negative.status, 2, `${kind}: ${negative.stderr}`);
+    assert.match(negative.stderr, /--time-limit expects a number of seconds >= 0, got '-1'/, kind);
+    const noNodes = runCli(['design', kind, ...args, '--node-limit', '0']);
+    assert.equal(noNodes.status, 2, kind);
+    assert.match(noNodes.stderr, /--node-limit/, kind);
+    const seed = runCli(['design', kind, ...args, '--seed', 'x']);
+    assert.equal(seed.status, 2, kind);
+    assert.match(seed.stderr, /--seed/, kind);
+  }
+});
