@@ -32,13 +32,9 @@
 #include "analysis/vec3.h"
 #include "search/construction_search.h"
 #include "search/restarts.h"
-#include "plate/joints/dovetail.h"
-#include "plate/joints/face_tenon.h"
-#include "plate/joints/halved.h"
-#include "plate/joints/mitre_slide.h"
-#include "plate/joints/mitre_tenon.h"
+#include "plate/joints/joint_families.h"
 #include "plate/joints/plate_cuts.h"
-#include "plate/joints/tenon.h"
+#include "plate/plate_graph.h"
 #include "plate/plan_squaring.h"
 #include "plate/plate_verification.h"
 #include "plate/swept_collision.h"
@@ -48,77 +44,6 @@
 
 namespace desia {
 namespace {
-
-// Two unit vectors within about half a degree count as parallel (edge vectors of one design).
-bool parallel(const Vec3& a, const Vec3& b) { return norm(cross(a, b)) < 1e-2; }
-
-
-// What the geometry says about the plates: who touches whom, along which edge, with which faces.
-struct PlateGraph {
-  int plateCount = 0;
-  std::vector<std::vector<int>> neighbours;  // sorted plate indices
-  std::vector<std::vector<Vec3>> edgeTo;     // edgeTo[p][k]: edge direction shared with neighbours[p][k]
-  std::vector<std::vector<int>> contactsOf;  // contact indices per plate
-  std::vector<PlateContact> contacts;
-  std::vector<Vec3> thicknessAxis;
-  std::vector<std::optional<TenonSite>> tenonSites;  // per contact
-  std::vector<std::optional<DovetailSite>> dovetailSites;  // per contact (milled joints only)
-  std::vector<Plate> plates;  // the plates as given (mitre tenons are fitted per direction)
-};
-
-// Joints made in the plates (cut or milled), not the planned model alone.
-bool makesJoints(JointRealization realization) { return realization != JointRealization::Planned; }
-
-PlateGraph buildPlateGraph(const std::vector<Plate>& plates, const std::vector<PlateContact>& contacts,
-                           const JointCutOptions& jointOptions, JointRealization realization) {
-  PlateGraph graph;
-  graph.plateCount = static_cast<int>(plates.size());
-  graph.contacts = contacts;
-  // A contact's face holds its shared edge (the plates' planes' crossing line, exact to rounding of
-  // doubles): its normal, computed from the face's vertices, is made exactly square to it. In a
-  // design given to a micrometre they disagree by 1e-9, and a plate sliding along the edge (a
-  // milled slide) would push into the face by more than the blocking tests' 1e-9. Only for milled
-  // joints: it splits normals that were one into many 1e-9 apart, and the LIZARD's planned design
-  // took 1.7 s instead of 1.1 s for its extra base directions.
-  for (PlateContact& contact : graph.contacts) {
-    if (realization != JointRealization::Milled) break;
-    if (contact.crossing || norm(contact.edgeDirection) == 0) continue;
-    const Vec3 squared = minus(contact.normal, scaled(contact.edgeDirection, dot(contact.normal, contact.edgeDirection)));
-    if (norm(squared) > 0.5) contact.normal = normalized(squared);
-  }
-  graph.neighbours.resize(plates.size());
-  graph.contactsOf.resize(plates.size());
-  for (size_t c = 0; c < contacts.size(); ++c) {
-    graph.contactsOf[contacts[c].a].push_back(static_cast<int>(c));
-    graph.contactsOf[contacts[c].b].push_back(static_cast<int>(c));
-    graph.neighbours[contacts[c].a].push_back(contacts[c].b);
-    graph.neighbours[contacts[c].b].push_back(contacts[c].a);
-  }
-  graph.edgeTo.resize(plates.size());
-  for (int p = 0; p < graph.plateCount; ++p) {
-    auto& list = graph.neighbours[p];
-    std::sort(list.begin(), list.end());
-    list.erase(std::unique(list.begin(), list.end()), list.end());
-    for (int q : list) {
-      // The edge of the pair's largest contact.
-      const PlateContact* best = nullptr;
-      for (int c : graph.contactsOf[p]) {
-        const PlateContact& contact = contacts[c];
-        if ((contact.a == q || contact.b == q) && (!best || contact.area > best->area)) best = &contact;
-      }
-      graph.edgeTo[p].push_back(best->edgeDirection);
-    }
-  }
-  for (const Plate& plate : plates) graph.thicknessAxis.push_back(plateThicknessAxis(plate));
-  graph.plates = plates;
-  for (const PlateContact& contact : contacts) {
-    graph.tenonSites.push_back(tenonSiteOf(plates, contact, jointOptions));
-    graph.dovetailSites.push_back(realization == JointRealization::Milled ? dovetailSiteOf(plates, contact)
-                                                                           : std::nullopt);
-  }
-  staggerOpposingSites(plates, &graph.tenonSites);
-  return graph;
-}
 
 // Can `plate` leave each plate in `others` along d without pushing into it (its contact faces)?
 bool leavesWithoutPushing(const PlateGraph& graph, int plate, const std::vector<bool>& inOthers, const Vec3& d) {
@@ -132,155 +57,6 @@ bool leavesWithoutPushing(const PlateGraph& graph, int plate, const std::vector<
   return true;
 }
 
-const TenonSite& edgeOf(const TenonSite& site) { return site; }
-const TenonSite& edgeOf(const DovetailSite& site) { return site.edge; }
-
-// Does the site's joint let `mover` leave along d (the tenon plate along an exit, the mortise
-// plate against one)?
-template <typename Site>
-bool jointLets(const Site& site, int mover, const Vec3& d) {
-  const int tenonPlate = edgeOf(site).tenonPlate;
-  for (const Vec3& exit : site.exits()) {
-    if (dot(tenonPlate == mover ? exit : negated(exit), d) > 1 - 1e-9) return true;
-  }
-  return false;
-}
-
-// The joint `mover` gets with `other` when it leaves along d: tenons on the largest contact whose
-// tenons leave along d, else empty.
-// The paper's rule for planned joints: halved where the shared edge runs along d, mortise-and-tenon
-// where it is within 45..135 degrees of d, empty otherwise.
-JointType plannedJointType(const Vec3& edge, const Vec3& d) {
-  if (parallel(edge, d)) return JointType::Halved;
-  const double cosine = std::abs(dot(normalized(edge), normalized(d)));
-  return cosine <= std::cos(M_PI / 4) + 1e-12 ? JointType::MortiseTenon : JointType::Empty;
-}
-
-// The crossing between two plates (an index into the contacts), or -1.
-int crossingBetween(const PlateGraph& graph, int p, int q) {
-  for (int c : graph.contactsOf[p]) {
-    const PlateContact& contact = graph.contacts[c];
-    if (contact.crossing && (contact.a == q || contact.b == q)) return c;
-  }
-  return -1;
-}
-
-// Crossing plates are joined by slots (a halved joint): the mover leaves along the crossing line,
-// its slot opening behind it and the other plate's ahead of it (where their outlines end at the
-// crossing). Any other direction would pull one plate through the other: no joint, no step.
-std::optional<PlateJoint> halvedJointFor(const PlateGraph& graph, int crossing, int mover, int other, const Vec3& d,
-                                         JointRealization realization) {
-  const PlateContact& contact = graph.contacts[crossing];
-  if (!parallel(contact.edgeDirection, d)) return std::nullopt;
-  if (makesJoints(realization)) {
-    const bool ahead = dot(d, contact.edgeDirection) > 0;  // which end of the line d points to
-    const std::array<bool, 2>& moverOpens = contact.a == mover ? contact.aOpens : contact.bOpens;
-    const std::array<bool, 2>& otherOpens = contact.a == mover ? contact.bOpens : contact.aOpens;
-    if (!moverOpens[ahead ? 0 : 1] || !otherOpens[ahead ? 1 : 0]) return std::nullopt;
-  }
-  return PlateJoint{mover, other, d, JointType::Halved, makesJoints(realization) ? crossing : -1};
-}
-
-// The joint `mover` gets with `other` when it leaves along d, or nothing when they cross and
-// cannot part that way.
-std::optional<PlateJoint> jointFor(const PlateGraph& graph, int mover, int other, const Vec3& d,
-                                   JointRealization realization) {
-  const int crossing = crossingBetween(graph, mover, other);
-  if (crossing >= 0) return halvedJointFor(graph, crossing, mover, other, d, realization);
-  PlateJoint joint{mover, other, d, JointType::Empty, -1};
-  if (realization == JointRealization::Planned) {
-    joint.type =
-        plannedJointType(graph.edgeTo[mover][static_cast<size_t>(
-                             std::lower_bound(graph.neighbours[mover].begin(), graph.neighbours[mover].end(), other) -
-                             graph.neighbours[mover].begin())],
-                         d);
-    return joint;
-  }
-  for (int c : graph.contactsOf[mover]) {
-    const PlateContact& contact = graph.contacts[c];
-    if (contact.a != other && contact.b != other) continue;
-    const std::optional<TenonSite>& site = graph.tenonSites[c];
-    if (!site || !jointLets(*site, mover, d)) continue;
-    if (joint.contact < 0 || contact.area > graph.contacts[joint.contact].area) {
-      joint.type = JointType::MortiseTenon;
-      joint.contact = c;
-    }
-  }
-  if (joint.type != JointType::Empty) return joint;
-  if (realization == JointRealization::Milled) {
-    // Plates meeting edge to edge at an angle: a tenon across the mitre, straight out along d.
-    for (int c : graph.contactsOf[mover]) {
-      const PlateContact& contact = graph.contacts[c];
-      if (contact.a != other && contact.b != other) continue;
-      if (mitreTenonOf(graph.plates, contact, mover, negated(d))) {
-        if (joint.contact < 0 || contact.area > graph.contacts[joint.contact].area) {
-          joint.type = JointType::MitreTenon;
-          joint.contact = c;
-        }
-      }
-    }
-    if (joint.type != JointType::Empty) return joint;
-    // Plates meeting edge to edge at an angle, leaving along their edge: a tongue in a groove.
-    for (int c : graph.contactsOf[mover]) {
-      const PlateContact& contact = graph.contacts[c];
-      if (contact.a != other && contact.b != other) continue;
-      if (mitreSlideOf(graph.plates, contact, mover, d) &&
-          (joint.contact < 0 || contact.area > graph.contacts[joint.contact].area)) {
-        joint.type = JointType::MitreSlide;
-        joint.contact = c;
-      }
-    }
-    if (joint.type != JointType::Empty) return joint;
-    // Plates lying face to face: a stub tenon in a blind mortise, straight off the lap.
-    for (int c : graph.contactsOf[mover]) {
-      const PlateContact& contact = graph.contacts[c];
-      if (contact.a != other && contact.b != other) continue;
-      if (faceTenonOf(graph.plates, contact, mover, d) &&
-          (joint.contact < 0 || contact.area > graph.contacts[joint.contact].area)) {
-        joint.type = JointType::FaceTenon;
-        joint.contact = c;
-      }
-    }
-    if (joint.type != JointType::Empty) return joint;
-  }
-  // Milled: a sliding dovetail where no tenons let the plate out (the largest such contact).
-  for (int c : graph.contactsOf[mover]) {
-    const PlateContact& contact = graph.contacts[c];
-    if (contact.a != other && contact.b != other) continue;
-    const std::optional<DovetailSite>& site = graph.dovetailSites[c];
-    if (!site || !jointLets(*site, mover, d)) continue;
-    if (joint.contact < 0 || contact.area > graph.contacts[joint.contact].area) {
-      joint.type = JointType::Dovetail;
-      joint.contact = c;
-    }
-  }
-  return joint;
-}
-
-// The tenon to mill for a planned mitre-tenon joint: on the mover, into the other plate, against d.
-MitreTenon mitreTenonFor(const PlateGraph& graph, const PlateJoint& joint) {
-  return *mitreTenonOf(graph.plates, graph.contacts[joint.contact], joint.mover, negated(joint.direction));
-}
-
-// The slide to mill for a planned mitre-slide joint: the groove in the mover, along d.
-MitreSlide mitreSlideFor(const PlateGraph& graph, const PlateJoint& joint) {
-  return *mitreSlideOf(graph.plates, graph.contacts[joint.contact], joint.mover, joint.direction);
-}
-
-// The stub tenon to mill for a planned face-tenon joint: on the mover, off the lap along d.
-FaceTenon faceTenonFor(const PlateGraph& graph, const PlateJoint& joint) {
-  return *faceTenonOf(graph.plates, graph.contacts[joint.contact], joint.mover, joint.direction);
-}
-
-// The dovetail to mill for a planned dovetail joint: its housing opens where the tongue plate leaves.
-DovetailCut dovetailCutFor(const PlateGraph& graph, const PlateJoint& joint) {
-  DovetailCut cut;
-  cut.site = *graph.dovetailSites[joint.contact];
-  const Vec3 exit = cut.site.edge.tenonPlate == joint.mover ? joint.direction : negated(joint.direction);
-  cut.openEnd = dot(exit, cut.site.edge.along) > 0 ? 1 : 0;
-  return cut;
-}
-
 // One planned step: plate P_i leaves along d_i; its joints with the plates of R'_i.
 struct Step {
   int plate = -1;
@@ -292,9 +68,11 @@ struct Step {
 };
 
 // The assembly of A_i: parts 0..i-1 are the steps' plates, part i (when any plate is left) is R_i.
-// Every contact of a joint's two plates keeps its faces, except the one the tenons are cut in,
-// which gets the faces of the tenons: the shoulder, their cheeks and their ends.
-Assembly modelAssembly(const PlateGraph& graph, const std::vector<Step>& steps, const std::vector<Plate>& plates) {
+// Every contact of a joint's two plates keeps its faces, except the one the joint is made in,
+// which gets the faces of the joint (JointFamily::faceNormals: for tenons the shoulder, their
+// cheeks and their ends).
+Assembly modelAssembly(const PlateGraph& graph, const JointFamilies& families, const std::vector<Step>& steps) {
+  const std::vector<Plate>& plates = graph.plates;
   std::vector<int> node(graph.plateCount, static_cast<int>(steps.size()));  // R_i by default
   Assembly assembly;
   for (size_t k = 0; k < steps.size(); ++k) {
@@ -305,56 +83,17 @@ Assembly modelAssembly(const PlateGraph& graph, const std::vector<Step>& steps, 
   for (const Step& step : steps) {
     for (const PlateJoint& joint : step.joints) {
       const int a = node[joint.mover], b = node[joint.other];
-      if (joint.type == JointType::Halved || (joint.type != JointType::Empty && joint.contact < 0)) {
-        // A planned joint: a shoulder across d and the cheeks and ends every slot or tenon has.
-        const Vec3& d = joint.direction;
-        Vec3 u = minus(graph.thicknessAxis[joint.mover], scaled(d, dot(graph.thicknessAxis[joint.mover], d)));
-        if (norm(u) < 1e-6) u = cross(d, std::abs(d[0]) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0});
-        u = normalized(u);
-        const Vec3 v = cross(d, u);
-        for (const Vec3& n : {negated(d), u, negated(u), v, negated(v)})
-          assembly.contacts.push_back({a, b, *cleanedNormal(n), 1.0});
-        continue;
+      if (families.keepsOtherContacts(joint)) {
+        for (int c : graph.contactsOf[joint.mover]) {
+          const PlateContact& contact = graph.contacts[c];
+          if (c == joint.contact || contact.crossing) continue;
+          if (contact.a == joint.mover && contact.b == joint.other)
+            assembly.contacts.push_back({a, b, contact.normal, contact.area});
+          if (contact.b == joint.mover && contact.a == joint.other)
+            assembly.contacts.push_back({a, b, negated(contact.normal), contact.area});
+        }
       }
-      for (int c : graph.contactsOf[joint.mover]) {
-        const PlateContact& contact = graph.contacts[c];
-        if (c == joint.contact || contact.crossing) continue;
-        if (contact.a == joint.mover && contact.b == joint.other)
-          assembly.contacts.push_back({a, b, contact.normal, contact.area});
-        if (contact.b == joint.mover && contact.a == joint.other)
-          assembly.contacts.push_back({a, b, negated(contact.normal), contact.area});
-      }
-      if (joint.type == JointType::MitreSlide) {
-        // The groove's floor (and the mitre), its flanks over the tongue, its stop.
-        for (const Vec3& n : mitreSlideFaceNormals(mitreSlideFor(graph, joint)))
-          assembly.contacts.push_back({a, b, *cleanedNormal(n), 1.0});
-        continue;
-      }
-      if (joint.type == JointType::FaceTenon) {
-        // The block's end on the mortise's floor (and the lap), its four sides in the mortise.
-        for (const Vec3& n : faceTenonFaceNormals(faceTenonFor(graph, joint)))
-          assembly.contacts.push_back({a, b, *cleanedNormal(n), 1.0});
-        continue;
-      }
-      if (joint.type == JointType::MitreTenon) {
-        // The tenon's faces in its pocket: its tip and the mitre, its sides and its ends.
-        for (const Vec3& n : mitreTenonFaceNormals(mitreTenonFor(graph, joint)))
-          assembly.contacts.push_back({a, b, *cleanedNormal(n), 1.0});
-        continue;
-      }
-      if (joint.type == JointType::Dovetail) {
-        // The tongue's faces: shoulder and floor, the leaning flanks, the stop (plate_joints.h).
-        const DovetailCut cut = dovetailCutFor(graph, joint);
-        const double sign = cut.site.edge.tenonPlate == joint.mover ? 1 : -1;
-        for (const Vec3& n : dovetailFaceNormals(plates, cut))
-          assembly.contacts.push_back({a, b, *cleanedNormal(scaled(n, sign)), 1.0});
-        continue;
-      }
-      if (joint.type != JointType::MortiseTenon) continue;
-      const TenonSite& site = *graph.tenonSites[joint.contact];
-      // Normals from the tenon plate into the mortise plate, turned when the mover has the mortises.
-      const double sign = site.tenonPlate == joint.mover ? 1 : -1;
-      for (const Vec3& n : tenonFaceNormals(site)) assembly.contacts.push_back({a, b, *cleanedNormal(scaled(n, sign)), 1.0});
+      for (const Vec3& n : families.faceNormals(joint)) assembly.contacts.push_back({a, b, *cleanedNormal(n), 1.0});
     }
   }
   return assembly;
@@ -369,45 +108,29 @@ struct JointedPlan {
 };
 
 // The plates with the joints cut into them (and their milled solids attached).
-std::vector<Plate> jointedPlates(const std::vector<Plate>& plates, const PlateGraph& graph,
+std::vector<Plate> jointedPlates(const std::vector<Plate>& plates, const JointFamilies& families,
                                  const std::vector<PlateJoint>& joints, double clearance,
                                  const JointCutOptions& options) {
-  JointCutList cuts;
-  for (const PlateJoint& joint : joints)
-    if (joint.type == JointType::Dovetail) cuts.push_back(jointCut(dovetailCutFor(graph, joint)));
-  for (const PlateJoint& joint : joints)
-    if (joint.type == JointType::MitreTenon) cuts.push_back(jointCut(mitreTenonFor(graph, joint)));
-  for (const PlateJoint& joint : joints)
-    if (joint.type == JointType::MitreSlide) cuts.push_back(jointCut(mitreSlideFor(graph, joint)));
-  for (const PlateJoint& joint : joints)
-    if (joint.type == JointType::FaceTenon) cuts.push_back(jointCut(faceTenonFor(graph, joint)));
-  for (const PlateJoint& joint : joints) {
-    if (joint.type != JointType::Halved) continue;
-    for (const SlotCut& slot : halvedSlots(plates, graph.contacts[joint.contact], joint.mover, joint.direction, clearance))
-      cuts.push_back(jointCut(slot));
-  }
-  for (const PlateJoint& joint : joints)
-    if (joint.type == JointType::MortiseTenon) cuts.push_back(jointCut(*graph.tenonSites[joint.contact]));
   JointCutOptions cut = options;
   cut.clearance = clearance;
-  return cutJoints(plates, cuts, cut);
+  return cutJoints(plates, families.cuts(joints, clearance), cut);
 }
 
 // The plates with the plan's joints cut, validated and snapped to their design as any plate read
 // from a file is (so that the plates verified are the plates `desia check` reads back).
-std::vector<Plate> cutPlates(const std::vector<Plate>& plates, const PlateGraph& graph,
+std::vector<Plate> cutPlates(const std::vector<Plate>& plates, const JointFamilies& families,
                              const std::vector<PlateJoint>& joints, const PlateOptions& geometry, double clearance,
                              const JointCutOptions& options) {
-  std::vector<Plate> cut = jointedPlates(plates, graph, joints, clearance, options);
+  std::vector<Plate> cut = jointedPlates(plates, families, joints, clearance, options);
   validatePlates(cut, geometry, "the jointed plates");
   return regularizedPlates(cut, geometry, PlateOrigin::Computed);
 }
 
-JointedPlan cutPlan(const std::vector<Plate>& plates, const PlateGraph& graph, const std::vector<PlateJoint>& joints,
+JointedPlan cutPlan(const std::vector<Plate>& plates, const JointFamilies& families, const std::vector<PlateJoint>& joints,
                     const std::vector<int>& order, const std::vector<Vec3>& directions, const PlateOptions& geometry,
                     const JointCutOptions& options) {
   JointedPlan plan;
-  plan.plates = cutPlates(plates, graph, joints, geometry, 0, options);
+  plan.plates = cutPlates(plates, families, joints, geometry, 0, options);
   std::vector<Plate> inRemovalOrder;
   for (int plate : order) inRemovalOrder.push_back(plan.plates[plate]);
   plan.verification = verifyJointedPlates(inRemovalOrder, directions, geometry);
@@ -419,8 +142,9 @@ class PlateJointPlanner {
   PlateJointPlanner(const std::vector<Plate>& plates, const std::vector<PlateContact>& contacts,
                     const PlateDesignOptions& options)
       : plates_(plates),
-        graph_(buildPlateGraph(plates, contacts, options.joints, options.realization)),
+        graph_(buildPlateGraph(plates, contacts, options.realization)),
         options_(options),
+        families_(graph_, options_.joints, options_.realization),
         random_(options.seed * 0x9E3779B97F4A7C15ull + 1) {
     for (const Plate& plate : plates) meshes_.push_back(plateMesh(plate));
     for (int plate = 0; plate < graph_.plateCount; ++plate) {
@@ -470,6 +194,7 @@ class PlateJointPlanner {
   const std::vector<Plate>& plates_;
   PlateGraph graph_;
   PlateDesignOptions options_;
+  JointFamilies families_;  // what joints the pairs can take (on graph_, with options_.joints)
   uint64_t random_;
   std::string lastRejection_;  // why the last complete plan failed
   // When the last complete plan failed because a jointed plate, swept out, ran into the plate
@@ -507,21 +232,7 @@ std::vector<Vec3> PlateJointPlanner::rawCandidateDirections(int plate) const {
   std::vector<Vec3> directions;
   std::vector<Vec3> lines = graph_.edgeTo[plate];
   lines.push_back(graph_.thicknessAxis[plate]);
-  for (int c : graph_.contactsOf[plate]) {
-    if (graph_.tenonSites[c]) {
-      for (const Vec3& exit : graph_.tenonSites[c]->exits()) lines.push_back(exit);
-    }
-    // Milled: straight away from a plate it meets at a mitre (a mitre tenon's way out), made
-    // square to the plates around it that it all but lies along: a mitre's normal computed from
-    // its face is off by 5e-9, and the LIZARD's plate 33, leaving so along plate 1's face, had its
-    // tenon's faces in plate 1's pocket tilted by as much against every other way out in that plane.
-    const PlateContact& contact = graph_.contacts[c];
-    if (options_.realization == JointRealization::Milled && !contact.crossing) {
-      std::vector<Vec3> axes{graph_.thicknessAxis[plate]};
-      for (int other : graph_.neighbours[plate]) axes.push_back(graph_.thicknessAxis[other]);
-      lines.push_back(squaredToNearlySquare(contact.normal, axes));
-    }
-  }
+  for (int c : graph_.contactsOf[plate]) families_.addWaysOut(c, plate, lines);
   for (const Vec3& edge : lines) {
     for (const Vec3& d : {edge, negated(edge)}) {
       bool known = false;
@@ -540,7 +251,7 @@ Step PlateJointPlanner::makeStep(const std::vector<Step>& steps, int plate, cons
   step.direction = d;
   for (int other : graph_.neighbours[plate]) {
     if (taken[other]) continue;
-    const std::optional<PlateJoint> joint = jointFor(graph_, plate, other, d, options_.realization);
+    const std::optional<PlateJoint> joint = families_.jointFor(plate, other, d);
     if (!joint) {
       step.blocked = true;
       continue;
@@ -555,27 +266,9 @@ Step PlateJointPlanner::makeStep(const std::vector<Step>& steps, int plate, cons
   return step;
 }
 
-// Where the joints cut into the plates (without the clearance, as cutPlan verifies them).
+// Where the joints cut into the plates (as cutPlan verifies them).
 std::vector<CutFootprint> PlateJointPlanner::cutsOf(const std::vector<PlateJoint>& joints) const {
-  std::vector<CutFootprint> cuts;
-  for (const PlateJoint& joint : joints) {
-    if (joint.type == JointType::MortiseTenon) {
-      for (CutFootprint& cut : tenonFootprints(plates_, *graph_.tenonSites[joint.contact], options_.joints))
-        cuts.push_back(std::move(cut));
-    } else if (joint.type == JointType::Dovetail) {
-      cuts.push_back(dovetailFootprint(plates_, dovetailCutFor(graph_, joint)));
-    } else if (joint.type == JointType::MitreTenon) {
-      cuts.push_back(mitreTenonFootprint(plates_, mitreTenonFor(graph_, joint)));
-    } else if (joint.type == JointType::FaceTenon) {
-      cuts.push_back(faceTenonFootprint(plates_, faceTenonFor(graph_, joint)));
-    } else if (joint.type == JointType::MitreSlide) {
-      cuts.push_back(mitreSlideFootprint(plates_, mitreSlideFor(graph_, joint)));
-    } else if (joint.type == JointType::Halved) {
-      for (const SlotCut& slot : halvedSlots(plates_, graph_.contacts[joint.contact], joint.mover, joint.direction, 0))
-        cuts.push_back(slotFootprint(slot));
-    }
-  }
-  return cuts;
+  return families_.footprints(joints);
 }
 
 // Would the new cuts run into each other or into the cuts of the steps before? Then no plan
@@ -599,7 +292,7 @@ bool PlateJointPlanner::cutsCollide(const std::vector<Step>& steps, const std::v
 // A_1: the key is free along d_1 and along no other base direction of its joints. A_i (i >= 2):
 // interlocking with P_1 as the only movable part (the DBG test on the joint contacts; heldByInequalities adds the LP test).
 bool PlateJointPlanner::acceptable(const std::vector<Step>& steps) const {
-  const Assembly model = modelAssembly(graph_, steps, plates_);
+  const Assembly model = modelAssembly(graph_, families_, steps);
   if (steps.size() == 1) {
     for (const BaseDirection& base : computeBaseDirections(model)) {
       for (const Vec3& d : {base.vector, negated(base.vector)}) {
@@ -648,7 +341,7 @@ bool hasSquareNormalsOnly(const Assembly& model) {
 // 197 nodes, 18 s); the BOOKCASE, which it never prunes, pays 3.2 s -> 7.1 s.
 bool PlateJointPlanner::heldByInequalities(const std::vector<Step>& path) const {
   if (path.size() < 2) return true;
-  const Assembly model = modelAssembly(graph_, path, plates_);
+  const Assembly model = modelAssembly(graph_, families_, path);
   if (hasSquareNormalsOnly(model)) return true;
   const InterlockingResult result = testInterlockingByInequalities(model, computeBaseDirections(model));
   return result.verdict == Verdict::Interlocking && result.key == 0;
@@ -719,7 +412,7 @@ const Plate& PlateJointPlanner::jointedPlate(int plate, const std::vector<PlateJ
   const auto known = jointedCache_.find(key);
   if (known != jointedCache_.end()) return known->second;
   if (jointedCache_.size() > 20000) jointedCache_.clear();
-  Plate jointed = jointedPlates(plates_, graph_, mine, 0, options_.joints)[static_cast<size_t>(plate)];
+  Plate jointed = jointedPlates(plates_, families_, mine, 0, options_.joints)[static_cast<size_t>(plate)];
   return jointedCache_.emplace(key, std::move(jointed)).first->second;
 }
 
@@ -1002,7 +695,7 @@ PlateDesignResult PlateJointPlanner::run(const std::vector<Step>& prefix) {
 bool PlateJointPlanner::cutAndVerify(const std::vector<PlateJoint>& joints, const std::vector<int>& order,
                                      const std::vector<Vec3>& directions, PlateDesignResult* result) {
   try {
-    JointedPlan jointed = cutPlan(plates_, graph_, joints, order, directions, options_.geometry, options_.joints);
+    JointedPlan jointed = cutPlan(plates_, families_, joints, order, directions, options_.geometry, options_.joints);
     lastRejection_ = jointed.verification.failure;
     lastDoomedDepth_ = jointed.verification.hitPosition;
     if (!lastRejection_.empty()) return false;
@@ -1011,7 +704,7 @@ bool PlateJointPlanner::cutAndVerify(const std::vector<PlateJoint>& joints, cons
     result->clearance = options_.joints.clearance;
     result->fabricationPlates =
         options_.joints.clearance > 0
-            ? cutPlates(plates_, graph_, joints, options_.geometry, options_.joints.clearance, options_.joints)
+            ? cutPlates(plates_, families_, joints, options_.geometry, options_.joints.clearance, options_.joints)
             : result->jointedPlates;
     return true;
   } catch (const Error& error) {  // cuts that split a plate or run into each other: not this plan
@@ -1036,7 +729,7 @@ bool PlateJointPlanner::acceptComplete(const std::vector<Step>& path, PlateDesig
   order.push_back(static_cast<int>(std::find(taken.begin(), taken.end(), false) - taken.begin()));
   if (options_.realization == JointRealization::Planned) {
     // Nothing is cut: the joint model is the result, verified as `desia check` verifies it.
-    Assembly model = modelAssembly(graph_, path, plates_);
+    Assembly model = modelAssembly(graph_, families_, path);
     model.parts.back() = {plates_[order.back()].id, plates_[order.back()].name};
     std::vector<Plate> inRemovalOrder;
     for (int plate : order) inRemovalOrder.push_back(plates_[plate]);
@@ -1191,26 +884,6 @@ PlateDesignResult PlateDesignSession::finish(const DesignLimits& limits) {
   PlateDesignResult result = planner.run(state.path);
   requireVerified(state.plates, result, options.geometry);
   return result;
-}
-
-const char* jointTypeName(JointType type) {
-  switch (type) {
-    case JointType::MortiseTenon:
-      return "mortise-tenon";
-    case JointType::Halved:
-      return "halved";
-    case JointType::Dovetail:
-      return "dovetail";
-    case JointType::MitreTenon:
-      return "mitre-tenon";
-    case JointType::FaceTenon:
-      return "face-tenon";
-    case JointType::MitreSlide:
-      return "mitre-slide";
-    case JointType::Empty:
-      return "empty";
-  }
-  return "empty";
 }
 
 JointRealization parseJointRealization(const std::string& name) {

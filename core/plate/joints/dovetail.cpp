@@ -214,4 +214,52 @@ CutFootprint dovetailFootprint(const std::vector<Plate>& plates, const DovetailC
 
 std::shared_ptr<const JointCut> jointCut(const DovetailCut& cut) { return std::make_shared<DovetailJointCut>(cut); }
 
+namespace {
+
+class DovetailFamily final : public JointFamily {
+ public:
+  explicit DovetailFamily(const JointSetting& setting) : JointFamily(setting) {
+    for (const PlateContact& contact : graph().computedContacts) sites_.push_back(dovetailSiteOf(plates(), contact));
+  }
+
+  bool lets(int contact, int mover, const Vec3& d) const override {
+    const std::optional<DovetailSite>& site = sites_[static_cast<size_t>(contact)];
+    return site && exitsLet(site->exits(), site->edge.tenonPlate, mover, d);
+  }
+
+  std::vector<Vec3> faceNormals(const PlateJoint& joint) const override {
+    const DovetailCut cut = cutOf(joint);
+    std::vector<Vec3> normals = dovetailFaceNormals(plates(), cut);
+    if (cut.site.edge.tenonPlate != joint.mover) {  // the mover has the housing
+      for (Vec3& n : normals) n = negated(n);
+    }
+    return normals;
+  }
+
+  void addFootprints(const PlateJoint& joint, std::vector<CutFootprint>& footprints) const override {
+    footprints.push_back(dovetailFootprint(plates(), cutOf(joint)));
+  }
+
+  void addCuts(const PlateJoint& joint, double, JointCutList& cuts) const override {
+    cuts.push_back(jointCut(cutOf(joint)));
+  }
+
+ private:
+  // The dovetail of a planned joint: its housing opens where the tongue plate leaves.
+  DovetailCut cutOf(const PlateJoint& joint) const {
+    DovetailCut cut;
+    cut.site = *sites_[static_cast<size_t>(joint.contact)];
+    const Vec3 exit = cut.site.edge.tenonPlate == joint.mover ? joint.direction : negated(joint.direction);
+    cut.openEnd = dot(exit, cut.site.edge.along) > 0 ? 1 : 0;
+    return cut;
+  }
+  std::vector<std::optional<DovetailSite>> sites_;  // per contact
+};
+
+}  // namespace
+
+std::unique_ptr<JointFamily> makeDovetailFamily(const JointSetting& setting) {
+  return std::make_unique<DovetailFamily>(setting);
+}
+
 }  // namespace desia

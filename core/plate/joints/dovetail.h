@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "desia/plate.h"
+#include "plate/joints/joint_family.h"
 #include "plate/joints/plate_cuts.h"
 #include "plate/joints/tenon.h"
 
@@ -59,5 +60,9 @@ CutFootprint dovetailFootprint(const std::vector<Plate>& plates, const DovetailC
 // The joint to cut: the housing, its lips and the tongue (narrowed and shortened by the clearance;
 // the housing keeps its size, so the verified plates and the made ones share it).
 std::shared_ptr<const JointCut> jointCut(const DovetailCut& cut);
+
+// The family for the joint planner (milled joints): a site per contact, a joint where the housing
+// can open towards the mover's way out.
+std::unique_ptr<JointFamily> makeDovetailFamily(const JointSetting& setting);
 
 }  // namespace desia

@@ -89,4 +89,38 @@ CutFootprint faceTenonFootprint(const std::vector<Plate>& plates, const FaceTeno
 
 std::shared_ptr<const JointCut> jointCut(const FaceTenon& tenon) { return std::make_shared<FaceTenonCut>(tenon); }
 
+namespace {
+
+class FaceTenonFamily final : public JointFamily {
+ public:
+  using JointFamily::JointFamily;
+
+  bool lets(int contact, int mover, const Vec3& d) const override {
+    return faceTenonOf(plates(), this->contact(contact), mover, d).has_value();
+  }
+
+  std::vector<Vec3> faceNormals(const PlateJoint& joint) const override {
+    return faceTenonFaceNormals(tenonOf(joint));
+  }
+
+  void addFootprints(const PlateJoint& joint, std::vector<CutFootprint>& footprints) const override {
+    footprints.push_back(faceTenonFootprint(plates(), tenonOf(joint)));
+  }
+
+  void addCuts(const PlateJoint& joint, double, JointCutList& cuts) const override {
+    cuts.push_back(jointCut(tenonOf(joint)));
+  }
+
+ private:
+  FaceTenon tenonOf(const PlateJoint& joint) const {
+    return *faceTenonOf(plates(), contact(joint.contact), joint.mover, joint.direction);
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<JointFamily> makeFaceTenonFamily(const JointSetting& setting) {
+  return std::make_unique<FaceTenonFamily>(setting);
+}
+
 }  // namespace desia

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "desia/plate.h"
+#include "plate/joints/joint_family.h"
 #include "plate/joints/plate_cuts.h"
 
 namespace desia {
@@ -38,5 +39,9 @@ CutFootprint faceTenonFootprint(const std::vector<Plate>& plates, const FaceTeno
 
 // The joint to cut: the blind mortise (grown by half the clearance on every side) and the block.
 std::shared_ptr<const JointCut> jointCut(const FaceTenon& tenon);
+
+// The family for the joint planner (milled joints): the block on the mover, which leaves straight
+// off the lap.
+std::unique_ptr<JointFamily> makeFaceTenonFamily(const JointSetting& setting);
 
 }  // namespace desia

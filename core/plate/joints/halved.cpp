@@ -48,4 +48,48 @@ CutFootprint slotFootprint(const SlotCut& slot) { return {slot.plate, 3, slot.re
 
 std::shared_ptr<const JointCut> jointCut(const SlotCut& slot) { return std::make_shared<SlotJointCut>(slot); }
 
+namespace {
+
+class HalvedFamily final : public JointFamily {
+ public:
+  using JointFamily::JointFamily;
+
+  bool joinsCrossings() const override { return true; }
+
+  // Along the crossing line, and where slots are cut, towards the side where the mover's outline
+  // ends at the crossing ahead of it and the other's behind it (its slot opening behind it and
+  // the other plate's ahead of it). Any other direction would pull one plate through the other.
+  bool lets(int crossing, int mover, const Vec3& d) const override {
+    const PlateContact& contact = this->contact(crossing);
+    if (!parallel(contact.edgeDirection, d)) return false;
+    if (!makesJoints(realization())) return true;
+    const bool ahead = dot(d, contact.edgeDirection) > 0;  // which end of the line d points to
+    const std::array<bool, 2>& moverOpens = contact.a == mover ? contact.aOpens : contact.bOpens;
+    const std::array<bool, 2>& otherOpens = contact.a == mover ? contact.bOpens : contact.aOpens;
+    return moverOpens[ahead ? 0 : 1] && otherOpens[ahead ? 1 : 0];
+  }
+
+  // The planned model: the plates cross, so they have no faces on one another but the slots'.
+  std::vector<Vec3> faceNormals(const PlateJoint& joint) const override {
+    return plannedJointNormals(graph().thicknessAxis[static_cast<size_t>(joint.mover)], joint.direction);
+  }
+  bool keepsOtherContacts() const override { return false; }
+
+  void addFootprints(const PlateJoint& joint, std::vector<CutFootprint>& footprints) const override {
+    for (const SlotCut& slot : halvedSlots(plates(), contact(joint.contact), joint.mover, joint.direction, 0))
+      footprints.push_back(slotFootprint(slot));
+  }
+
+  void addCuts(const PlateJoint& joint, double clearance, JointCutList& cuts) const override {
+    for (const SlotCut& slot : halvedSlots(plates(), contact(joint.contact), joint.mover, joint.direction, clearance))
+      cuts.push_back(jointCut(slot));
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<JointFamily> makeHalvedFamily(const JointSetting& setting) {
+  return std::make_unique<HalvedFamily>(setting);
+}
+
 }  // namespace desia

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "desia/plate.h"
+#include "plate/joints/joint_family.h"
 #include "plate/joints/plate_cuts.h"
 
 namespace desia {
@@ -29,5 +30,9 @@ CutFootprint slotFootprint(const SlotCut& slot);
 
 // The slot to cut (its clearance is in its rectangle).
 std::shared_ptr<const JointCut> jointCut(const SlotCut& slot);
+
+// The family for the joint planner: plates that cross part only along their crossing line, and
+// only towards the sides their slots can open to.
+std::unique_ptr<JointFamily> makeHalvedFamily(const JointSetting& setting);
 
 }  // namespace desia

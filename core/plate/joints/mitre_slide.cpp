@@ -235,4 +235,38 @@ CutFootprint mitreSlideFootprint(const std::vector<Plate>& plates, const MitreSl
 
 std::shared_ptr<const JointCut> jointCut(const MitreSlide& slide) { return std::make_shared<MitreSlideCut>(slide); }
 
+namespace {
+
+class MitreSlideFamily final : public JointFamily {
+ public:
+  using JointFamily::JointFamily;
+
+  bool lets(int contact, int mover, const Vec3& d) const override {
+    return mitreSlideOf(plates(), this->contact(contact), mover, d).has_value();
+  }
+
+  std::vector<Vec3> faceNormals(const PlateJoint& joint) const override {
+    return mitreSlideFaceNormals(slideOf(joint));
+  }
+
+  void addFootprints(const PlateJoint& joint, std::vector<CutFootprint>& footprints) const override {
+    footprints.push_back(mitreSlideFootprint(plates(), slideOf(joint)));
+  }
+
+  void addCuts(const PlateJoint& joint, double, JointCutList& cuts) const override {
+    cuts.push_back(jointCut(slideOf(joint)));
+  }
+
+ private:
+  MitreSlide slideOf(const PlateJoint& joint) const {
+    return *mitreSlideOf(plates(), contact(joint.contact), joint.mover, joint.direction);
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<JointFamily> makeMitreSlideFamily(const JointSetting& setting) {
+  return std::make_unique<MitreSlideFamily>(setting);
+}
+
 }  // namespace desia

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "desia/plate.h"
+#include "plate/joints/joint_family.h"
 #include "plate/joints/plate_cuts.h"
 
 namespace desia {
@@ -53,5 +54,9 @@ CutFootprint mitreSlideFootprint(const std::vector<Plate>& plates, const MitreSl
 // The joint to cut: the notch, the slide plate's wood around the groove, and the tongue (less
 // half the clearance all round and at its end).
 std::shared_ptr<const JointCut> jointCut(const MitreSlide& slide);
+
+// The family for the joint planner (milled joints): the groove in the mover, which leaves along
+// the shared edge.
+std::unique_ptr<JointFamily> makeMitreSlideFamily(const JointSetting& setting);
 
 }  // namespace desia

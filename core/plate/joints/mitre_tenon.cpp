@@ -8,6 +8,7 @@
 #include "analysis/vec3.h"
 #include "desia/error.h"
 #include "plate/joints/joint_geometry.h"
+#include "plate/plan_squaring.h"
 #include "plate/plane_frame.h"
 #include "plate/plate_shape.h"
 
@@ -285,5 +286,52 @@ CutFootprint mitreTenonFootprint(const std::vector<Plate>& plates, const MitreTe
 }
 
 std::shared_ptr<const JointCut> jointCut(const MitreTenon& tenon) { return std::make_shared<MitreTenonCut>(tenon); }
+
+namespace {
+
+class MitreTenonFamily final : public JointFamily {
+ public:
+  using JointFamily::JointFamily;
+
+  bool lets(int contact, int mover, const Vec3& d) const override {
+    return mitreTenonOf(plates(), this->contact(contact), mover, negated(d)).has_value();
+  }
+
+  // Straight away from a plate it meets at a mitre (a mitre tenon's way out; every touching
+  // contact gives one), made square to the plates around it that it all but lies along: a
+  // mitre's normal computed from its face is off by 5e-9, and the LIZARD's plate 33, leaving so
+  // along plate 1's face, had its tenon's faces in plate 1's pocket tilted by as much against
+  // every other way out in that plane.
+  void addWaysOut(int contact, int plate, std::vector<Vec3>& ways) const override {
+    const PlateContact& touching = this->contact(contact);
+    if (touching.crossing) return;
+    std::vector<Vec3> axes{graph().thicknessAxis[plate]};
+    for (int other : graph().neighbours[plate]) axes.push_back(graph().thicknessAxis[other]);
+    ways.push_back(squaredToNearlySquare(touching.normal, axes));
+  }
+
+  std::vector<Vec3> faceNormals(const PlateJoint& joint) const override {
+    return mitreTenonFaceNormals(tenonOf(joint));
+  }
+
+  void addFootprints(const PlateJoint& joint, std::vector<CutFootprint>& footprints) const override {
+    footprints.push_back(mitreTenonFootprint(plates(), tenonOf(joint)));
+  }
+
+  void addCuts(const PlateJoint& joint, double, JointCutList& cuts) const override {
+    cuts.push_back(jointCut(tenonOf(joint)));
+  }
+
+ private:
+  MitreTenon tenonOf(const PlateJoint& joint) const {
+    return *mitreTenonOf(plates(), contact(joint.contact), joint.mover, negated(joint.direction));
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<JointFamily> makeMitreTenonFamily(const JointSetting& setting) {
+  return std::make_unique<MitreTenonFamily>(setting);
+}
 
 }  // namespace desia

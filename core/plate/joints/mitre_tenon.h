@@ -15,6 +15,7 @@
 
 #include "analysis/vec3.h"
 #include "desia/plate.h"
+#include "plate/joints/joint_family.h"
 #include "plate/joints/plate_cuts.h"
 
 namespace desia {
@@ -74,5 +75,9 @@ Vec3 pocketInward(const std::vector<Plate>& plates, const MitreTenon& tenon);
 // contacts computed from them would block it by a rounding error).
 std::vector<Flat> woodAroundPocket(const std::vector<Plate>& plates, const MitreTenon& tenon,
                                    const std::vector<Flat>& pocketSection);
+
+// The family for the joint planner (milled joints): a tenon on the mover, into the other plate,
+// against the mover's way out.
+std::unique_ptr<JointFamily> makeMitreTenonFamily(const JointSetting& setting);
 
 }  // namespace desia

@@ -238,4 +238,56 @@ std::vector<CutFootprint> tenonFootprints(const std::vector<Plate>& plates, cons
 
 std::shared_ptr<const JointCut> jointCut(const TenonSite& site) { return std::make_shared<TenonCut>(site); }
 
+namespace {
+
+class TenonFamily final : public JointFamily {
+ public:
+  explicit TenonFamily(const JointSetting& setting) : JointFamily(setting) {
+    for (const PlateContact& contact : graph().computedContacts)
+      sites_.push_back(tenonSiteOf(plates(), contact, options()));
+    staggerOpposingSites(plates(), &sites_);
+  }
+
+  bool lets(int contact, int mover, const Vec3& d) const override {
+    const std::optional<TenonSite>& site = sites_[static_cast<size_t>(contact)];
+    return site && exitsLet(site->exits(), site->tenonPlate, mover, d);
+  }
+
+  // The only ways a tenon joint lets its plates part.
+  void addWaysOut(int contact, int, std::vector<Vec3>& ways) const override {
+    const std::optional<TenonSite>& site = sites_[static_cast<size_t>(contact)];
+    if (site) {
+      for (const Vec3& exit : site->exits()) ways.push_back(exit);
+    }
+  }
+
+  std::vector<Vec3> faceNormals(const PlateJoint& joint) const override {
+    const TenonSite& site = siteOf(joint);
+    std::vector<Vec3> normals = tenonFaceNormals(site);
+    if (site.tenonPlate != joint.mover) {  // the mover has the mortises
+      for (Vec3& n : normals) n = negated(n);
+    }
+    return normals;
+  }
+
+  void addFootprints(const PlateJoint& joint, std::vector<CutFootprint>& footprints) const override {
+    for (CutFootprint& mortise : tenonFootprints(plates(), siteOf(joint), options()))
+      footprints.push_back(std::move(mortise));
+  }
+
+  void addCuts(const PlateJoint& joint, double, JointCutList& cuts) const override {
+    cuts.push_back(jointCut(siteOf(joint)));
+  }
+
+ private:
+  const TenonSite& siteOf(const PlateJoint& joint) const { return *sites_[static_cast<size_t>(joint.contact)]; }
+  std::vector<std::optional<TenonSite>> sites_;  // per contact
+};
+
+}  // namespace
+
+std::unique_ptr<JointFamily> makeTenonFamily(const JointSetting& setting) {
+  return std::make_unique<TenonFamily>(setting);
+}
+
 }  // namespace desia

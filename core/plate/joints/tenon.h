@@ -16,6 +16,7 @@
 
 #include "desia/plate.h"
 #include "desia/plate_design.h"
+#include "plate/joints/joint_family.h"
 #include "plate/joints/plate_cuts.h"
 
 namespace desia {
@@ -73,5 +74,9 @@ std::vector<CutFootprint> tenonFootprints(const std::vector<Plate>& plates, cons
 // The joint to cut: the tenons added to the tenon plate's edge, the mortises (grown by half the
 // clearance on every side) cut through the mortise plate.
 std::shared_ptr<const JointCut> jointCut(const TenonSite& site);
+
+// The family for the joint planner: a site per contact (staggered where two plates stand on
+// opposite faces at one place), a joint where the tenons leave along the mover's way out.
+std::unique_ptr<JointFamily> makeTenonFamily(const JointSetting& setting);
 
 }  // namespace desia

@@ -1,0 +1,72 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// What a plate joint family is to the joint planner (paper Section 5.2): for one design, which
+// pairs its joints can join and which ways they let a plate leave in, the faces a joint gives the
+// joint model, where it cuts the plates and how. The registry (joint_families.h) holds every
+// family and is what the planner asks.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "desia/plate_design.h"
+#include "plate/joints/plate_cuts.h"
+#include "plate/plate_graph.h"
+
+namespace desia {
+
+// What a family sees of the design: the structure, the realization and the joints' sizes.
+struct JointSetting {
+  const PlateGraph& graph;
+  const JointCutOptions& options;
+  JointRealization realization;
+};
+
+class JointFamily {
+ public:
+  explicit JointFamily(const JointSetting& setting) : setting_(setting) {}
+  virtual ~JointFamily() = default;
+  JointFamily(const JointFamily&) = delete;
+  JointFamily& operator=(const JointFamily&) = delete;
+
+  // Its joints join plates that cross (through each other), not plates that touch.
+  virtual bool joinsCrossings() const { return false; }
+  // Can one of its joints on `contact` (an index into graph.contacts) let `mover` leave the plate
+  // across it along d?
+  virtual bool lets(int contact, int mover, const Vec3& d) const = 0;
+  // The ways its joints on `contact` let `plate` leave in, added to the candidate directions
+  // (beyond the shared edges and the plate's own axis).
+  virtual void addWaysOut(int /*contact*/, int /*plate*/, std::vector<Vec3>& /*ways*/) const {}
+  // The normals of the faces a joint of the family gives its pair in the joint model, from
+  // joint.mover into joint.other. The pair's other contacts keep their faces unless
+  // keepsOtherContacts() says no (the contact the joint is made in is always replaced).
+  virtual std::vector<Vec3> faceNormals(const PlateJoint& joint) const = 0;
+  virtual bool keepsOtherContacts() const { return true; }
+  // Where the joint cuts into the plates, without play (what the designer keeps apart).
+  virtual void addFootprints(const PlateJoint& joint, std::vector<CutFootprint>& footprints) const = 0;
+  // The joint to cut, with `clearance` mm of play, added to `cuts`.
+  virtual void addCuts(const PlateJoint& joint, double clearance, JointCutList& cuts) const = 0;
+
+ protected:
+  const PlateGraph& graph() const { return setting_.graph; }
+  const std::vector<Plate>& plates() const { return setting_.graph.plates; }
+  const PlateContact& contact(int index) const { return setting_.graph.contacts[static_cast<size_t>(index)]; }
+  const JointCutOptions& options() const { return setting_.options; }
+  JointRealization realization() const { return setting_.realization; }
+
+ private:
+  JointSetting setting_;
+};
+
+// Joints made in the plates (cut or milled), not the planned model alone.
+bool makesJoints(JointRealization realization);
+
+// Does a joint whose tenon plate may leave along `exits` let `mover` leave along d (the tenon
+// plate along an exit, the other plate against one)?
+bool exitsLet(const std::vector<Vec3>& exits, int tenonPlate, int mover, const Vec3& d);
+
+// The paper's model of a joint not cut (planned joints, and halved joints whose plates cross): a
+// shoulder across d and the cheeks and ends every slot or tenon has, from the mover's thickness
+// axis.
+std::vector<Vec3> plannedJointNormals(const Vec3& thicknessAxis, const Vec3& d);
+
+}  // namespace desia
