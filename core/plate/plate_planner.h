@@ -1,0 +1,85 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The plate joint planner (paper Section 5.2) on the construction tree of Algorithm 1: the ranked
+// children of a node, the node tests, and a complete plan cut and verified (plate_planner.cpp);
+// the restarted search over the tree (planner_search.cpp). designPlateJoints and the step-by-step
+// session (plate_design.cpp) both drive it.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "desia/mesh.h"
+#include "desia/plate.h"
+#include "desia/plate_design.h"
+#include "plate/joint_model.h"
+#include "plate/joints/joint_families.h"
+#include "plate/plate_graph.h"
+
+namespace desia {
+
+// One design's planner: its plates' graph, the joint families it may use, its seeded tie-breaking
+// and what it learnt from the complete plans that failed. It refers to `plates` (kept by the
+// caller) and to its own members: not copied.
+class PlateJointPlanner {
+ public:
+  PlateJointPlanner(const std::vector<Plate>& plates, const std::vector<PlateContact>& contacts,
+                    const PlateDesignOptions& options);
+  PlateJointPlanner(const PlateJointPlanner&) = delete;
+  PlateJointPlanner& operator=(const PlateJointPlanner&) = delete;
+
+  // The restarted search below the node `prefix` (the root: a whole design); the prefix's steps
+  // stay, restarts re-seed below that node.
+  PlateDesignResult run(const std::vector<PlanStep>& prefix = {});
+  class SearchTree;
+  void backjump(size_t prefixSize, std::vector<PlanStep>* path, std::vector<std::vector<PlanStep>>* pending) const;
+
+  // What the search and a step-by-step session share.
+  // A structure no joints can make interlocking (a cut point, fewer than 3 plates): its result.
+  std::optional<PlateDesignResult> refusal() const;
+  std::vector<PlanStep> childrenOf(const std::vector<PlanStep>& steps);
+  std::vector<PlanStep> candidatesOf(const std::vector<PlanStep>& steps);
+  std::optional<PlanStep> nextChild(const std::vector<PlanStep>& steps, std::vector<PlanStep>* candidates, int* accepted);
+  bool acceptComplete(const std::vector<PlanStep>& path, PlateDesignResult* result);
+  int plateCount() const { return graph_.plateCount; }
+  const std::string& lastRejection() const { return lastRejection_; }
+
+ private:
+  bool acceptable(const std::vector<PlanStep>& steps) const;
+  bool runsIntoARemainingPlate(int plate, const Vec3& d, const std::vector<int>& rest) const;
+  bool runsIntoJointsSoFar(const std::vector<PlanStep>& path) const;
+  bool heldByInequalities(const std::vector<PlanStep>& path) const;
+  const Plate& jointedPlate(int plate, const std::vector<PlateJoint>& joints) const;
+  bool cutAndVerify(const std::vector<PlateJoint>& joints, const std::vector<int>& order,
+                    const std::vector<Vec3>& directions, PlateDesignResult* result);
+  PlanStep makeStep(const std::vector<PlanStep>& steps, int plate, const Vec3& d) const;
+  std::vector<CutFootprint> cutsOf(const std::vector<PlateJoint>& joints) const;
+  bool cutsCollide(const std::vector<PlanStep>& steps, const std::vector<CutFootprint>& cuts) const;
+  std::vector<Vec3> candidateDirections(int plate) const;
+  std::vector<Vec3> rawCandidateDirections(int plate) const;
+  Vec3 canonical(const Vec3& d);
+  std::vector<Vec3> canonical_;                        // see canonical()
+  std::vector<std::vector<Vec3>> canonicalDirections_;  // each plate's candidate ways out, canonical
+  uint64_t nextRandom() {
+    random_ = random_ * 6364136223846793005ull + 1442695040888963407ull;
+    return random_ >> 11;
+  }
+
+  const std::vector<Plate>& plates_;
+  PlateGraph graph_;
+  PlateDesignOptions options_;
+  JointFamilies families_;  // what joints the pairs can take (on graph_, with options_.joints)
+  uint64_t random_;
+  std::string lastRejection_;  // why the last complete plan failed
+  // When the last complete plan failed because a jointed plate, swept out, ran into the plate
+  // taken at this depth of the path: every plan through the path's first depth + 1 steps fails so.
+  int lastDoomedDepth_ = -1;
+  // Plates with their joints cut (runsIntoJointsSoFar), by plate and the joints they have: a node
+  // changes only its plate and the plates it leaves; cleared when it grows large.
+  mutable std::map<std::string, Plate> jointedCache_;
+  std::vector<TriangleMesh> meshes_;  // the plates as given (for the sweep of each step)
+};
+
+}  // namespace desia
