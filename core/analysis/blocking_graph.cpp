@@ -9,6 +9,7 @@
 #include <map>
 
 #include "analysis/vec3.h"
+#include "desia/tolerances.h"
 
 namespace desia {
 namespace {
@@ -17,14 +18,15 @@ namespace {
 // and the same labels natively and in WebAssembly.
 Vec3 cleaned(Vec3 v) {
   for (double& c : v) {
-    if (std::abs(c) < 1e-12) c = 0.0;
-    if (std::abs(std::abs(c) - 1.0) < 1e-12) c = c > 0 ? 1.0 : -1.0;
+    if (std::abs(c) < tolerance::kComponentNoise) c = 0.0;
+    if (std::abs(std::abs(c) - 1.0) < tolerance::kComponentNoise) c = c > 0 ? 1.0 : -1.0;
   }
   return v;
 }
 
-// Unit vectors closer than about 1e-9 per component stand for one direction: far below any
-// angle a geometry means, far above the rounding of the cross products that produce them.
+// Unit vectors on one point of a 2^-30 grid (about tolerance::kDirection) stand for one
+// direction: far below any angle a geometry means, far above the rounding of the cross products
+// that produce them.
 using DirectionKey = std::array<int64_t, 3>;
 DirectionKey keyOf(const Vec3& unit) {
   constexpr double kGrid = 1073741824.0;  // 2^30
@@ -105,9 +107,9 @@ std::string directionLabel(const Vec3& direction) {
   for (int axis = 0; axis < 3; ++axis) {
     bool others = true;
     for (int k = 0; k < 3; ++k) {
-      if (k != axis && std::abs(direction[k]) > 1e-9) others = false;
+      if (k != axis && std::abs(direction[k]) > tolerance::kDirection) others = false;
     }
-    if (others && std::abs(std::abs(direction[axis]) - 1.0) < 1e-9) {
+    if (others && std::abs(std::abs(direction[axis]) - 1.0) < tolerance::kDirection) {
       return std::string(direction[axis] > 0 ? "+" : "-") + kAxisNames[axis];
     }
   }
@@ -125,7 +127,7 @@ std::vector<BaseDirection> computeBaseDirections(const Assembly& assembly) {
   for (size_t i = 0; i < lines.size(); ++i) {
     for (size_t j = i + 1; j < lines.size(); ++j) {
       Vec3 d = cross(lines[i], lines[j]);
-      if (norm(d) < 1e-9) continue;
+      if (norm(d) < tolerance::kDirection) continue;
       directions.push_back(cleaned(canonicalSign(normalized(d))));
     }
   }
@@ -187,8 +189,8 @@ void BlockingGraphBuilder::buildInto(const BaseDirection& direction, Directional
     // d·n_ba = -d·n_ab > 0.
     for (const Contact& contact : assembly_.contacts) {
       const double along = dot(direction.vector, contact.normal);
-      if (along > kDirectionTolerance) dbg.graph.addEdge(contact.a, contact.b);
-      if (along < -kDirectionTolerance) dbg.graph.addEdge(contact.b, contact.a);
+      if (along > tolerance::kDirection) dbg.graph.addEdge(contact.a, contact.b);
+      if (along < -tolerance::kDirection) dbg.graph.addEdge(contact.b, contact.a);
     }
     return;
   }
@@ -196,8 +198,8 @@ void BlockingGraphBuilder::buildInto(const BaseDirection& direction, Directional
     bool forward = false, backward = false;  // a blocked by b along d; b blocked by a along d
     for (const Vec3& n : pair.normals) {
       const double along = dot(direction.vector, n);
-      forward = forward || along > kDirectionTolerance;
-      backward = backward || along < -kDirectionTolerance;
+      forward = forward || along > tolerance::kDirection;
+      backward = backward || along < -tolerance::kDirection;
       if (forward && backward) break;
     }
     if (forward) dbg.graph.addEdge(pair.a, pair.b);

@@ -38,16 +38,15 @@
 #include "desia/directed_graph.h"
 #include "desia/error.h"
 #include "desia/interlocking.h"
+#include "desia/tolerances.h"
 
 namespace desia {
 namespace {
 
-// How far a motion of unit speed may push into a contact and still count as sliding along it.
-// Far above the residue of computed normals (1e-16) and far below anything a geometry means.
-constexpr double kPenetration = 1e-12;
-// The objective a motion must reach (velocities are bounded by 1). Relaxation alone reaches
-// about kPenetration times the contact count: far less.
-constexpr double kMotion = 1e-6;
+// How far a motion of unit speed may push into a contact and still count as sliding along it, and
+// the objective a motion must reach (velocities are bounded by 1): desia/tolerances.h.
+using tolerance::kMotion;
+using tolerance::kPenetration;
 
 // Contacts that involve at least one free part; with both sides fixed a contact says nothing.
 std::vector<int> relevantContacts(const Assembly& assembly, const std::vector<bool>& isFree) {
@@ -222,7 +221,7 @@ MotionSearch motionFrom(const Assembly& assembly, const MotionProgram& program, 
     if (program.velocityColumn[i] < 0) continue;
     for (int k = 0; k < 3; ++k) {
       const double v = x[program.velocityColumn[i] + k];
-      search.velocities[i][k] = std::abs(v) < 1e-9 ? 0.0 : v;
+      search.velocities[i][k] = std::abs(v) < tolerance::kVelocityNoise ? 0.0 : v;
     }
   }
   return search;
@@ -548,13 +547,13 @@ MotionSearch findWatchedMotion(const Assembly& assembly, const MotionQuery& quer
 }
 
 // The parts that really take part in a motion: speeds within three orders of magnitude of the
-// fastest (the tolerated penetration lets the others creep by 1e-12).
+// fastest (the tolerated penetration lets the others creep by kPenetration).
 std::vector<int> movingParts(const MotionSearch& search) {
   double fastest = 0;
   for (const Vec3& v : search.velocities) fastest = std::max(fastest, norm(v));
   std::vector<int> parts;
   for (int i = 0; i < static_cast<int>(search.velocities.size()); ++i) {
-    if (norm(search.velocities[i]) > 1e-3 * fastest) parts.push_back(i);
+    if (norm(search.velocities[i]) > tolerance::kMovingSpeedFraction * fastest) parts.push_back(i);
   }
   return parts;
 }
@@ -567,7 +566,7 @@ Witness witnessFromMotion(const MotionSearch& search) {
   for (int part : witness.parts) {
     Vec3 v = normalized(search.velocities[part]);
     witness.velocities.push_back(v);
-    if (norm({v[0] - first[0], v[1] - first[1], v[2] - first[2]}) > 1e-6) common = false;
+    if (norm({v[0] - first[0], v[1] - first[1], v[2] - first[2]}) > tolerance::kSameVelocityDirection) common = false;
   }
   if (common) witness.direction = directionLabel(first);
   return witness;
@@ -598,7 +597,8 @@ std::vector<Vec3> freeDirectionsOfPart(const Assembly& assembly, const std::vect
       for (int c : touching) {
         const Contact& contact = assembly.contacts[c];
         const double along = dot(d, contact.normal);
-        if ((contact.a == part && along > kDirectionTolerance) || (contact.b == part && along < -kDirectionTolerance)) {
+        if ((contact.a == part && along > tolerance::kDirection) ||
+            (contact.b == part && along < -tolerance::kDirection)) {
           blocked = true;
           break;
         }

@@ -10,6 +10,7 @@
 #include "desia/assembly.h"
 #include "desia/blocking_graph.h"
 #include "desia/interlocking.h"
+#include "desia/tolerances.h"
 
 namespace desia {
 
@@ -18,8 +19,8 @@ namespace desia {
 inline bool isPartFreeAlong(const Assembly& assembly, const std::vector<bool>* present, int part, const Vec3& d) {
   for (const Contact& contact : assembly.contacts) {
     if (present && (!(*present)[contact.a] || !(*present)[contact.b])) continue;
-    if (contact.a == part && dot(d, contact.normal) > kDirectionTolerance) return false;
-    if (contact.b == part && dot(d, contact.normal) < -kDirectionTolerance) return false;
+    if (contact.a == part && dot(d, contact.normal) > tolerance::kDirection) return false;
+    if (contact.b == part && dot(d, contact.normal) < -tolerance::kDirection) return false;
   }
   return true;
 }

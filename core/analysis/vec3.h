@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "desia/assembly.h"
+#include "desia/tolerances.h"
 
 namespace desia {
 
@@ -22,14 +23,11 @@ inline Vec3 normalized(const Vec3& a) {
   return n > 0 ? scaled(a, 1.0 / n) : a;
 }
 
-// Tolerance for "d·n > 0" and for comparing unit vectors.
-constexpr double kDirectionTolerance = 1e-9;
-
 // Flips a vector so that its first non-negligible component is positive (one of each pair ±d).
 inline Vec3 canonicalSign(const Vec3& a) {
   for (double c : a) {
-    if (c > kDirectionTolerance) return a;
-    if (c < -kDirectionTolerance) return negated(a);
+    if (c > tolerance::kDirection) return a;
+    if (c < -tolerance::kDirection) return negated(a);
   }
   return a;
 }

@@ -59,6 +59,7 @@
 #include "desia/cut_points.h"
 #include "desia/error.h"
 #include "desia/interlocking.h"
+#include "desia/tolerances.h"
 
 namespace desia {
 namespace {
@@ -74,7 +75,7 @@ std::string offTheAxesNote(const Frame& frame) {
                                            : (end == 0 ? beam.path.front() : beam.path.back());
       const Vec3 d = normalized(minus(next, at));
       for (const double c : d) {
-        if (std::abs(c) > 1 - 1e-9) return "";  // a beam end along an axis: the frame is on the grid
+        if (std::abs(c) > 1 - tolerance::kDirection) return "";  // a beam end along an axis: the frame is on the grid
       }
     }
   }
@@ -983,7 +984,9 @@ std::string frameDesignFailure(const FrameLayout& layout, const std::vector<Join
   const InterlockingResult byGraphs = testInterlockingByGraphs(assembly, computeBaseDirections(assembly));
   if (byGraphs.verdict != Verdict::Interlocking || byGraphs.key != 0) return "dbg: " + byGraphs.reason;
   bool keyDirection = false;
-  for (const Vec3& d : byGraphs.keyDirections) keyDirection = keyDirection || dot(d, directions[0]) > 1 - 1e-9;
+  for (const Vec3& d : byGraphs.keyDirections) {
+    keyDirection = keyDirection || dot(d, directions[0]) > 1 - tolerance::kDirection;
+  }
   if (!keyDirection) return "the key is not free along its planned direction " + directionLabel(directions[0]);
   std::vector<bool> present(frame.beams.size(), true);
   for (size_t k = 0; k < directions.size(); ++k) {

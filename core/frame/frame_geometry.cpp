@@ -15,6 +15,7 @@
 #include "desia/error.h"
 #include "desia/voxel_surface.h"
 #include "desia/frame.h"
+#include "desia/tolerances.h"
 #include "desia/voxel_grid.h"
 
 namespace desia {
@@ -135,7 +136,7 @@ std::vector<Vec3> beamCentreline(const FrameLayout& layout, int beam) {
   auto straightOut = [&](int end, const Vec3& target) {
     const Vec3 n = cubeFaceNormal(layout.endFace[beam][end]);
     const Vec3 to = minus(target, face[end]);
-    return norm(cross(normalized(to), n)) < 1e-9 && dot(to, n) > 0;
+    return norm(cross(normalized(to), n)) < tolerance::kDirection && dot(to, n) > 0;
   };
   if (!straightOut(0, firstTarget)) points.push_back(stub[0]);
   points.insert(points.end(), middle.begin(), middle.end());
@@ -161,7 +162,7 @@ int faceOfTangent(const FrameLayout& layout, int beam, int end, const std::strin
                    [&](int x, int y) { return std::abs(tangent[x]) > std::abs(tangent[y]); });
   const double best = std::abs(tangent[order[0]]), second = std::abs(tangent[order[1]]);
   const int face = 2 * order[0] + (tangent[order[0]] < 0 ? 1 : 0);
-  if (best - second <= 1e-6 * best) {
+  if (best - second <= tolerance::kTieFraction * best) {
     const int other = 2 * order[1] + (tangent[order[1]] < 0 ? 1 : 0);
     throwBadInput(source, jointName(frame, joint) + ": " + beamName(frame, beam) + " leaves along " +
                               pointText(scaled(tangent, 1 / length)) + ", as close to the cube's " +
@@ -313,7 +314,7 @@ FrameLayout layoutFrame(Frame frame, const std::string& source) {
   }
   layout.voxelSize = frame.jointSize / kJointVoxelsPerSide;
   if (frame.beamSection == 0) frame.beamSection = layout.voxelSize;
-  if (!(frame.beamSection > 0) || frame.beamSection > layout.voxelSize * (1 + 1e-9)) {
+  if (!(frame.beamSection > 0) || frame.beamSection > layout.voxelSize * (1 + tolerance::kRelativeRounding)) {
     throwBadInput(source, "the beam section " + number(frame.beamSection) +
                               " must be positive and at most the voxel size " + number(layout.voxelSize) +
                               " (a third of the joint size " + number(frame.jointSize) +
@@ -329,8 +330,8 @@ FrameLayout layoutFrame(Frame frame, const std::string& source) {
       for (size_t k = i + 1; k < byX.size(); ++k) {
         const Vec3& a = frame.joints[byX[i]].position;
         const Vec3& b = frame.joints[byX[k]].position;
-        if (b[0] - a[0] > frame.jointSize * (1 + 1e-9)) break;
-        if (chebyshevDistance(a, b) <= frame.jointSize * (1 + 1e-9)) {
+        if (b[0] - a[0] > frame.jointSize * (1 + tolerance::kRelativeRounding)) break;
+        if (chebyshevDistance(a, b) <= frame.jointSize * (1 + tolerance::kRelativeRounding)) {
           const int first = std::min(byX[i], byX[k]), second = std::max(byX[i], byX[k]);
           throwBadInput(source, "the joint cubes of " + jointName(frame, first) + " and " + jointName(frame, second) +
                                     " overlap or touch: the joints are " + number(chebyshevDistance(a, b)) +
@@ -559,7 +560,7 @@ bool sweptBoxesCollide(const OrientedBox& moving, const Vec3& direction, const O
   for (const Vec3& a : moving.axes) {
     for (const Vec3& b : fixed.axes) {
       const Vec3 c = cross(a, b);
-      if (norm(c) > 1e-9) axes.push_back(normalized(c));
+      if (norm(c) > tolerance::kDirection) axes.push_back(normalized(c));
     }
   }
   const Vec3 between = minus(fixed.centre, moving.centre);
@@ -570,10 +571,10 @@ bool sweptBoxesCollide(const OrientedBox& moving, const Vec3& direction, const O
       reach += moving.halfExtents[i] * std::abs(dot(moving.axes[i], axis)) +
                fixed.halfExtents[i] * std::abs(dot(fixed.axes[i], axis));
     }
-    reach -= 1e-9 * reach + 1e-12;  // touching is not overlapping
+    reach -= tolerance::kRelativeRounding * reach + tolerance::kRoundingMm;  // touching is not overlapping
     const double gap = dot(between, axis);
     const double speed = dot(direction, axis);
-    if (std::abs(speed) < 1e-12) {
+    if (std::abs(speed) < tolerance::kZeroDivisor) {
       if (std::abs(gap) >= reach) return false;
       continue;
     }

@@ -14,13 +14,10 @@
 #include "desia/error.h"
 #include "desia/frame_format.h"
 #include "desia/puz_format.h"
+#include "desia/tolerances.h"
 
 namespace desia {
 namespace {
-
-// Distance in voxels that counts as on the grid (the joints' coordinates are read from decimal
-// text, so whole numbers of voxels come out within rounding).
-constexpr double kGridTolerance = 1e-6;
 
 std::string pointText(const Vec3& p) {
   std::ostringstream out;
@@ -54,7 +51,9 @@ VoxelGrid frameVoxelGrid(const FrameDocument& document, const std::string& sourc
     for (int k = 0; k < 3; ++k) {
       const double steps = (frame.joints[j].position[k] - origin[k]) / v;
       const double whole = std::round(steps);
-      if (std::abs(steps - whole) > kGridTolerance || std::abs(whole) > VoxelLimits::kMaxSide) onGrid[j] = false;
+      // Positions are read from decimal text: whole numbers of voxels come out within rounding.
+      const bool offGrid = std::abs(steps - whole) > tolerance::kOnGridVoxels;
+      if (offGrid || std::abs(whole) > VoxelLimits::kMaxSide) onGrid[j] = false;
       c[k] = onGrid[j] ? static_cast<int>(whole) - 1 : 0;  // the cube spans centre -1 .. +1
     }
     corner[j] = {c[0], c[1], c[2]};
@@ -73,7 +72,7 @@ VoxelGrid frameVoxelGrid(const FrameDocument& document, const std::string& sourc
       throwBadInput(source, name + " is off the voxel grid: it is curved, and a voxel export needs straight beams "
                                    "along the axes; export stl, obj or csv");
     int differing = 0;
-    for (int k = 0; k < 3; ++k) differing += std::abs(a[k] - b[k]) > kGridTolerance * v ? 1 : 0;
+    for (int k = 0; k < 3; ++k) differing += std::abs(a[k] - b[k]) > tolerance::kOnGridVoxels * v ? 1 : 0;
     if (differing != 1)
       throwBadInput(source, name + " is off the voxel grid: it runs from " + pointText(a) + " to " + pointText(b) +
                                 ", not along an axis");

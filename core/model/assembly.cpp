@@ -24,7 +24,7 @@ std::optional<Vec3> cleanedNormal(const Vec3& normal) {
   double length2 = 0;
   for (int k = 0; k < 3; ++k) {
     double c = normal[k] / largest;  // in [-1, 1]: no overflow below, no underflow of the largest
-    if (std::abs(c) < kNormalNoise) c = 0.0;
+    if (std::abs(c) < tolerance::kComponentNoise) c = 0.0;
     unit[k] = c;
     length2 += c * c;
   }
@@ -58,7 +58,7 @@ Assembly withCleanedNormals(const Assembly& assembly) {
 bool hasOnlyAxisAlignedContacts(const Assembly& assembly) {
   for (const Contact& contact : assembly.contacts) {
     int nonZero = 0;
-    for (double c : contact.normal) nonZero += std::abs(c) > 1e-12 ? 1 : 0;
+    for (double c : contact.normal) nonZero += std::abs(c) > tolerance::kComponentNoise ? 1 : 0;
     if (nonZero != 1) return false;
   }
   return true;

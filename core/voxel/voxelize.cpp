@@ -38,6 +38,7 @@
 #include <vector>
 
 #include "desia/error.h"
+#include "desia/tolerances.h"
 #include "desia/voxelize.h"
 
 namespace desia {
@@ -155,15 +156,17 @@ VoxelGrid voxelizeSolid(const TriangleMesh& mesh, const VoxelizeOptions& options
   const double maxExtent = extent[longest];
 
   // Grid size: `resolution` voxels along the longest side, ceil(extent / voxel size) along the
-  // others. The tolerance absorbs rounding in extent / maxExtent (0.1 * 3 / 0.1 is not exactly 3);
-  // a voxel dropped by it would cover less than 1e-9 of a voxel beyond the centres anyway.
+  // others. The tolerance (tolerance::kVoxelCountRounding) absorbs rounding in extent / maxExtent
+  // (0.1 * 3 / 0.1 is not exactly 3); a voxel dropped by it would cover less than that fraction of
+  // a voxel beyond the centres anyway.
   int size[3];
   for (int axis = 0; axis < 3; ++axis) {
     if (axis == longest) {
       size[axis] = resolution;
     } else {
       const double voxels = extent[axis] / maxExtent * resolution;
-      size[axis] = static_cast<int>(std::clamp(std::ceil(voxels - 1e-9), 1.0, static_cast<double>(resolution)));
+      const double whole = std::ceil(voxels - tolerance::kVoxelCountRounding);
+      size[axis] = static_cast<int>(std::clamp(whole, 1.0, static_cast<double>(resolution)));
     }
   }
   const int64_t voxelCount = static_cast<int64_t>(size[0]) * size[1] * size[2];

@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "desia/tolerances.h"
+
 namespace desia {
 
 using Vec3 = std::array<double, 3>;
@@ -38,13 +40,9 @@ struct Assembly {
   int indexOfId(int id) const;
 };
 
-// Components smaller than this fraction of a normal's largest component are rounding residue:
-// computed geometry (a rotation by cos/sin, a cross product of edge vectors) leaves 1e-16-sized
-// values where a component should vanish, and they must not change a verdict.
-constexpr double kNormalNoise = 1e-12;
-
 // The unit vector along `normal`, computed without overflow or underflow at any scale (it is
-// divided by its largest component first), with residue components (kNormalNoise) set to zero.
+// divided by its largest component first), with residue components (below tolerance::kComponentNoise
+// of the largest: computed geometry leaves them where a component should vanish) set to zero.
 // Empty for the zero vector or a non-finite component. Every contact normal passes through this
 // once, when it is read or computed from geometry.
 std::optional<Vec3> cleanedNormal(const Vec3& normal);

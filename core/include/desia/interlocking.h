@@ -42,9 +42,9 @@ InterlockingResult testInterlockingByGraphs(const Assembly& assembly, const std:
 // round 2 fixes only a reference part, so groups moving with the key are caught too.
 // Verdicts are checked: every motion against every contact, every "no motion" by a dual bound,
 // and programs that GLPK cannot settle are decided by its exact rational simplex. A motion may
-// push into a contact by 1e-12 of its speed (computed normals carry rounding residue). Throws
-// Error(TooLarge) when even the exact simplex stops at its limits. `directions` (the base
-// directions, see computeBaseDirections) only name the key's free directions.
+// push into a contact by tolerance::kPenetration of its speed (computed normals carry rounding
+// residue). Throws Error(TooLarge) when even the exact simplex stops at its limits. `directions`
+// (the base directions, see computeBaseDirections) only name the key's free directions.
 struct InequalityOptions {
   // Decide every program by the exact rational simplex alone (slow; tests use it to show that the
   // certified floating-point route answers the same question).
