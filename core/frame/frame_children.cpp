@@ -14,6 +14,9 @@
 namespace desia::frame_design {
 namespace {
 
+using frame_geometry::boundsOverlap;
+using frame_geometry::boxBounds;
+
 constexpr int kOptionsPerJoint = 20;
 constexpr int kPairsPerDirection = 80;
 
@@ -63,21 +66,8 @@ Mask neighbours(Mask set) {
   return result & ~set;
 }
 
-bool overlap(const Aabb& a, const Aabb& b) {
-  for (int k = 0; k < 3; ++k) {
-    if (a.hi[k] <= b.lo[k] || b.hi[k] <= a.lo[k]) return false;
-  }
-  return true;
-}
-
-Aabb swept(Aabb bounds, int direction) {
-  const int axis = direction / 2;
-  if (direction % 2 == 0)
-    bounds.hi[axis] = std::numeric_limits<double>::infinity();
-  else
-    bounds.lo[axis] = -std::numeric_limits<double>::infinity();
-  return bounds;
-}
+// `bounds` swept along the axis direction `direction` (face numbering) to infinity.
+Aabb swept(const Aabb& bounds, int direction) { return frame_geometry::sweptBounds(bounds, cubeFaceNormal(direction)); }
 
 }  // namespace
 
@@ -170,21 +160,21 @@ std::vector<Obstacle> FrameDesigner::corridorObstacles(int beam, int direction) 
   for (int joint : frame_.beams[beam].joints) {
     const Vec3& p = frame_.joints[joint].position;
     const double half = frame_.jointSize / 2;
-    include(reach, {{p[0] - half, p[1] - half, p[2] - half}, {p[0] + half, p[1] + half, p[2] + half}});
+    frame_geometry::include(reach, {{p[0] - half, p[1] - half, p[2] - half}, {p[0] + half, p[1] + half, p[2] + half}});
   }
   reach = swept(reach, direction);
   std::vector<Obstacle> obstacles;
   for (size_t j = 0; j < frame_.joints.size(); ++j) {
     const Vec3& p = frame_.joints[j].position;
     const double half = frame_.jointSize / 2;
-    if (!overlap(reach, {{p[0] - half, p[1] - half, p[2] - half}, {p[0] + half, p[1] + half, p[2] + half}})) continue;
+    if (!boundsOverlap(reach, {{p[0] - half, p[1] - half, p[2] - half}, {p[0] + half, p[1] + half, p[2] + half}})) continue;
     for (int v = 0; v < kJointVoxelCount; ++v) {
       const int label = labels_[j][v];
       if (label == beam || (label != kFree && !inRest(label))) continue;
       Obstacle obstacle;
       obstacle.box = jointVoxelBox(layout_, static_cast<int>(j), v);
-      obstacle.bounds = boundsOf(obstacle.box);
-      if (!overlap(reach, obstacle.bounds)) continue;
+      obstacle.bounds = boxBounds(obstacle.box);
+      if (!boundsOverlap(reach, obstacle.bounds)) continue;
       if (label == kFree) {
         obstacle.joint = static_cast<int>(j);
         obstacle.voxel = v;
@@ -193,11 +183,11 @@ std::vector<Obstacle> FrameDesigner::corridorObstacles(int beam, int direction) 
     }
   }
   for (size_t other = 0; other < frame_.beams.size(); ++other) {
-    if (static_cast<int>(other) == beam || !inRest(static_cast<int>(other)) || !overlap(reach, bodyBounds_[other]))
+    if (static_cast<int>(other) == beam || !inRest(static_cast<int>(other)) || !boundsOverlap(reach, bodyBounds_[other]))
       continue;
     for (const OrientedBox& box : bodies_[other]) {
-      const Aabb bounds = boundsOf(box);
-      if (overlap(reach, bounds)) obstacles.push_back({box, bounds, -1, -1});
+      const Aabb bounds = boxBounds(box);
+      if (boundsOverlap(reach, bounds)) obstacles.push_back({box, bounds, -1, -1});
     }
   }
   return obstacles;
@@ -217,14 +207,14 @@ bool FrameDesigner::sweepClear(int beam, int direction, const std::array<Mask, 2
     for (Mask m = mine; m; m &= m - 1) moving.push_back(jointVoxelBox(layout_, joints[end], __builtin_ctz(m)));
   }
   std::vector<Aabb> movingBounds;
-  for (const OrientedBox& box : moving) movingBounds.push_back(swept(boundsOf(box), direction));
+  for (const OrientedBox& box : moving) movingBounds.push_back(swept(boxBounds(box), direction));
   for (const Obstacle& obstacle : obstacles) {
     if (obstacle.joint >= 0) {
       const int end = obstacle.joint == joints[0] ? 0 : obstacle.joint == joints[1] ? 1 : -1;
       if (end >= 0 && (taken[end] >> obstacle.voxel & 1)) continue;  // it moves with the beam
     }
     for (size_t m = 0; m < moving.size(); ++m) {
-      if (overlap(movingBounds[m], obstacle.bounds) && sweptBoxesCollide(moving[m], d, obstacle.box)) return false;
+      if (boundsOverlap(movingBounds[m], obstacle.bounds) && sweptBoxesCollide(moving[m], d, obstacle.box)) return false;
     }
   }
   return true;

@@ -46,24 +46,6 @@ uint64_t attemptSeed(uint64_t seed, int64_t attempt) {
 // their first tree as before.
 int64_t restartUnit(int beams) { return std::max<int64_t>(int64_t(1) << 16, 3 * int64_t(beams) * beams); }
 
-Aabb boundsOf(const OrientedBox& box) {
-  Aabb bounds;
-  for (int k = 0; k < 3; ++k) {
-    double r = 0;
-    for (int i = 0; i < 3; ++i) r += box.halfExtents[i] * std::abs(box.axes[i][k]);
-    bounds.lo[k] = box.centre[k] - r;
-    bounds.hi[k] = box.centre[k] + r;
-  }
-  return bounds;
-}
-
-void include(Aabb& bounds, const Aabb& more) {
-  for (int k = 0; k < 3; ++k) {
-    bounds.lo[k] = std::min(bounds.lo[k], more.lo[k]);
-    bounds.hi[k] = std::max(bounds.hi[k], more.hi[k]);
-  }
-}
-
 void FrameDesigner::apply(const Step& step) {
   stepOf_[step.beam] = static_cast<int>(path_.size());
   path_.push_back(step);

@@ -56,6 +56,7 @@
 
 #include "analysis/vec3.h"
 #include "desia/frame_design.h"
+#include "frame/geometry_internals.h"
 
 namespace desia::frame_design {
 
@@ -63,12 +64,7 @@ using Mask = uint32_t;  // a set of the 27 voxels of a joint cube
 
 constexpr int kFree = -1;  // a joint voxel no beam owns yet
 
-struct Aabb {
-  Vec3 lo{0, 0, 0}, hi{0, 0, 0};
-};
-
-Aabb boundsOf(const OrientedBox& box);
-void include(Aabb& bounds, const Aabb& more);
+using frame_geometry::Aabb;
 
 // The random state of restart `attempt` for the user's seed (search/restarts.h).
 uint64_t attemptSeed(uint64_t seed, int64_t attempt);
@@ -99,8 +95,8 @@ class FrameDesigner {
     const int beams = static_cast<int>(frame_.beams.size());
     for (int b = 0; b < beams; ++b) {
       bodies_.push_back(beamBodyBoxes(layout_, b));
-      Aabb bounds = boundsOf(bodies_.back()[0]);
-      for (const OrientedBox& box : bodies_.back()) include(bounds, boundsOf(box));
+      Aabb bounds = frame_geometry::boxBounds(bodies_.back()[0]);
+      for (const OrientedBox& box : bodies_.back()) frame_geometry::include(bounds, frame_geometry::boxBounds(box));
       bodyBounds_.push_back(bounds);
     }
     labels_.assign(frame_.joints.size(), JointLabels{});
