@@ -33,6 +33,7 @@
 #include <sstream>
 
 #include "analysis/linear_program.h"
+#include "analysis/motion_certificates.h"
 #include "analysis/part_motion.h"
 #include "analysis/vec3.h"
 #include "desia/directed_graph.h"
@@ -42,6 +43,14 @@
 
 namespace desia {
 namespace {
+
+using inequality::certifiesMotion;
+using inequality::certifiesNoMotion;
+using inequality::DifferenceGraph;
+using inequality::differenceGraph;
+using inequality::graphCertifiesNoMotion;
+using inequality::graphMotion;
+using inequality::objectiveAt;
 
 // How far a motion of unit speed may push into a contact and still count as sliding along it, and
 // the objective a motion must reach (velocities are bounded by 1): desia/tolerances.h.
@@ -165,54 +174,6 @@ void setObjective(MotionProgram* program, Objective objective, double functional
   }
 }
 
-double objectiveAt(const LinearProgramSpec& spec, const std::vector<double>& x) {
-  double value = 0;
-  for (int j = 0; j < spec.columnCount(); ++j) value += spec.objective[j] * x[j];
-  return value;
-}
-
-// The motion certificate: x within the bounds, no row below -kPenetration, objective >= kMotion.
-bool certifiesMotion(const LinearProgramSpec& spec, std::vector<double>* x) {
-  for (int j = 0; j < spec.columnCount(); ++j) (*x)[j] = std::clamp((*x)[j], spec.columnLower[j], spec.columnUpper[j]);
-  std::vector<double> rowValue(spec.rowCount(), 0.0);
-  for (size_t k = 0; k < spec.entryValue.size(); ++k) rowValue[spec.entryRow[k]] += spec.entryValue[k] * (*x)[spec.entryColumn[k]];
-  for (int r = 0; r < spec.rowCount(); ++r) {
-    if (rowValue[r] < -kPenetration) return false;
-  }
-  return objectiveAt(spec, *x) >= kMotion;
-}
-
-// Weak duality for maximize c·x, Ax >= -kPenetration, |x_j| <= 1: for any y >= 0 and any such x,
-// c·x = (c + Aᵀy)·x - y·Ax <= Σ_j |c + Aᵀy|_j + kPenetration Σ y. GLPK's row duals supply y
-// (their sign convention does not matter: both signs are tried, each bound is valid). The bound
-// is padded by the rounding error of computing it.
-double dualBound(const LinearProgramSpec& spec, const std::vector<double>& rowDuals, double sign) {
-  std::vector<double> y(spec.rowCount());
-  double ySum = 0;
-  for (int r = 0; r < spec.rowCount(); ++r) {
-    y[r] = std::max(0.0, sign * rowDuals[r]);
-    if (!std::isfinite(y[r])) return HUGE_VAL;
-    ySum += y[r];
-  }
-  std::vector<double> reduced = spec.objective;
-  double magnitude = 0;
-  for (double c : spec.objective) magnitude += std::abs(c);
-  for (size_t k = 0; k < spec.entryValue.size(); ++k) {
-    const double term = spec.entryValue[k] * y[spec.entryRow[k]];
-    reduced[spec.entryColumn[k]] += term;
-    magnitude += std::abs(term);
-  }
-  double bound = kPenetration * ySum;
-  for (int j = 0; j < spec.columnCount(); ++j) {
-    bound += std::abs(reduced[j]) * std::max(std::abs(spec.columnLower[j]), std::abs(spec.columnUpper[j]));
-  }
-  return bound + 64 * DBL_EPSILON * magnitude;
-}
-
-bool certifiesNoMotion(const LinearProgramSpec& spec, const std::vector<double>& rowDuals) {
-  return std::min(dualBound(spec, rowDuals, -1.0), dualBound(spec, rowDuals, 1.0)) < kMotion;
-}
-
 MotionSearch motionFrom(const Assembly& assembly, const MotionProgram& program, const std::vector<double>& x) {
   MotionSearch search;
   search.movable = true;
@@ -225,263 +186,6 @@ MotionSearch motionFrom(const Assembly& assembly, const MotionProgram& program, 
     }
   }
   return search;
-}
-
-// --- Certificates from graphs: programs of difference constraints ------------------------------
-//
-// When every row of a motion program is a difference constraint, v_w - v_u >= 0 (coefficients +1
-// and -1) or ±v_w >= 0 (the other side fixed), as with axis-aligned contact normals (every voxel
-// assembly), the program is a network program and both of its answers have certificates that
-// graph algorithms build in linear time. Read each row as an edge u -> w ("if u moves up, w must
-// move at least as much"), with all fixed parts one ground node g (v = 0): u -> g for -v_u >= 0,
-// g -> w for v_w >= 0. A column is one part's velocity along one axis, so the graph holds the
-// blocking graphs along +x, +y and +z of the free parts, joined at the fixed ones.
-// - A motion: a strongly connected component S without g and without outgoing edges (a sink) can
-//   move up as a block, v = +1 on S; one without incoming edges (a source) down, v = -1 on S. These
-//   are the DBG test's free groups with the fixed parts held still; the smallest one that reaches
-//   the program's objective is proposed.
-// - No motion: a flow y >= 0 along the edges leaving c_j net at every column j, i.e. Aᵀy = -c,
-//   so that weak duality bounds the objective by kPenetration Σy (certifiesNoMotion). Inside each
-//   component the flow runs to and from a root along breadth-first trees; what is left at a
-//   component's root runs to or from the ground along breadth-first trees of the whole graph.
-//   This finds a flow whenever every column that the objective weighs is held by the fixed parts
-//   (in the ground's component), and for Eq. 2's objective whenever no contact it counts can
-//   separate (its rows then lie inside components, and each component's sum is 0).
-// Neither answer is trusted: the motion is checked against every row and the flow by the dual
-// bound, exactly like GLPK's answers, so a program's answer (and the verdict) is the one that
-// GLPK's certified route gives; when neither certificate holds, GLPK decides as before. Only the
-// witness may differ from GLPK's: another valid motion, a smallest free group along one axis.
-
-// A breadth-first tree: per node the row joining it to its parent (-1 for a root or a node not in
-// the tree), and the nodes in breadth-first order.
-struct FlowTree {
-  std::vector<int> row;
-  std::vector<int> order;
-};
-
-struct FreeGroupCandidate {
-  int component = -1;
-  double sign = 1.0;  // +1: a sink moving up; -1: a source moving down
-};
-
-// Edges as rows, for the breadth-first searches: the rows leaving (entering) each node.
-struct RowAdjacency {
-  std::vector<int> start, rows;
-};
-
-struct DifferenceGraph {
-  int ground = -1;                  // the node of the fixed parts (= the column count)
-  std::vector<int> rowFrom, rowTo;  // per row its edge, -1 for a row without entries
-  RowAdjacency leaving, entering;
-  StronglyConnectedComponents scc;
-  std::vector<FreeGroupCandidate> candidates;  // sinks and sources, smallest first
-  std::vector<int> componentsBySize;           // every component but the ground's, smallest first
-  FlowTree towardRoot, fromRoot;               // inside each component, to and from its root
-  FlowTree towardGround, fromGround;           // in the whole graph, to and from the ground
-};
-
-RowAdjacency adjacencyBy(const std::vector<int>& endpoint, int nodeCount) {
-  RowAdjacency adjacency;
-  adjacency.start.assign(nodeCount + 1, 0);
-  for (int node : endpoint) {
-    if (node >= 0) ++adjacency.start[node + 1];
-  }
-  for (int node = 0; node < nodeCount; ++node) adjacency.start[node + 1] += adjacency.start[node];
-  adjacency.rows.resize(adjacency.start[nodeCount]);
-  std::vector<int> next(adjacency.start.begin(), adjacency.start.end() - 1);
-  for (int r = 0; r < static_cast<int>(endpoint.size()); ++r) {
-    if (endpoint[r] >= 0) adjacency.rows[next[endpoint[r]]++] = r;
-  }
-  return adjacency;
-}
-
-// Breadth-first from `roots` along rows of `adjacency` (the rows at a node), stepping to the
-// row's `other` end when `admit(node, next)` allows it.
-template <typename Admit>
-FlowTree breadthFirstTree(int nodeCount, const std::vector<int>& roots, const RowAdjacency& adjacency,
-                          const std::vector<int>& other, Admit&& admit) {
-  FlowTree tree;
-  tree.row.assign(nodeCount, -1);
-  std::vector<bool> seen(nodeCount, false);
-  for (int root : roots) {
-    seen[root] = true;
-    tree.order.push_back(root);
-  }
-  for (size_t head = 0; head < tree.order.size(); ++head) {
-    const int node = tree.order[head];
-    for (int k = adjacency.start[node]; k < adjacency.start[node + 1]; ++k) {
-      const int r = adjacency.rows[k];
-      const int next = other[r];
-      if (seen[next] || !admit(node, next)) continue;
-      seen[next] = true;
-      tree.row[next] = r;
-      tree.order.push_back(next);
-    }
-  }
-  return tree;
-}
-
-// The graph of a program whose rows are all difference constraints within [-1, 1] bounds, or
-// nothing when some row or bound is of another kind (then GLPK alone decides).
-std::optional<DifferenceGraph> differenceGraph(const LinearProgramSpec& spec) {
-  const int columns = spec.columnCount();
-  const int rows = spec.rowCount();
-  for (int j = 0; j < columns; ++j) {
-    if (spec.columnLower[j] != -1.0 || spec.columnUpper[j] != 1.0) return std::nullopt;
-  }
-  std::vector<int> entries(rows, 0), plusColumn(rows, -1), minusColumn(rows, -1);
-  for (size_t k = 0; k < spec.entryValue.size(); ++k) {
-    const int r = spec.entryRow[k];
-    const double value = spec.entryValue[k];
-    if (value != 1.0 && value != -1.0) return std::nullopt;
-    int& column = value == 1.0 ? plusColumn[r] : minusColumn[r];
-    if (column >= 0) return std::nullopt;  // two entries of one sign
-    column = spec.entryColumn[k];
-    ++entries[r];
-  }
-  DifferenceGraph graph;
-  graph.ground = columns;
-  const int nodes = columns + 1;
-  graph.rowFrom.assign(rows, -1);
-  graph.rowTo.assign(rows, -1);
-  DirectedGraph directed(nodes);
-  for (int r = 0; r < rows; ++r) {
-    if (entries[r] == 0) continue;  // 0 >= 0: no constraint
-    graph.rowFrom[r] = minusColumn[r] >= 0 ? minusColumn[r] : graph.ground;
-    graph.rowTo[r] = plusColumn[r] >= 0 ? plusColumn[r] : graph.ground;
-    directed.addEdge(graph.rowFrom[r], graph.rowTo[r]);
-  }
-  graph.scc = findStronglyConnectedComponents(directed);
-  const CondensationDegrees degrees = condensationDegrees(directed, graph.scc);
-  const int groundComponent = graph.scc.componentOf[graph.ground];
-  for (int c = 0; c < graph.scc.count(); ++c) {
-    if (c == groundComponent) continue;
-    if (!degrees.hasOutEdge[c]) graph.candidates.push_back({c, 1.0});
-    if (!degrees.hasInEdge[c]) graph.candidates.push_back({c, -1.0});
-  }
-  auto smaller = [&](int a, int b) { return graph.scc.components[a].size() < graph.scc.components[b].size(); };
-  std::stable_sort(graph.candidates.begin(), graph.candidates.end(),
-                   [&](const auto& a, const auto& b) { return smaller(a.component, b.component); });
-  for (int c = 0; c < graph.scc.count(); ++c) {
-    if (c != groundComponent) graph.componentsBySize.push_back(c);
-  }
-  std::stable_sort(graph.componentsBySize.begin(), graph.componentsBySize.end(), smaller);
-
-  graph.leaving = adjacencyBy(graph.rowFrom, nodes);
-  graph.entering = adjacencyBy(graph.rowTo, nodes);
-  const RowAdjacency& leaving = graph.leaving;
-  const RowAdjacency& entering = graph.entering;
-  std::vector<int> roots;
-  for (int c = 0; c < graph.scc.count(); ++c) roots.push_back(c == groundComponent ? graph.ground : graph.scc.components[c][0]);
-  auto sameComponent = [&](int a, int b) { return graph.scc.componentOf[a] == graph.scc.componentOf[b]; };
-  auto anyNode = [](int, int) { return true; };
-  // Toward a root: walk backwards along the rows entering a node, to their tails.
-  graph.towardRoot = breadthFirstTree(nodes, roots, entering, graph.rowFrom, sameComponent);
-  graph.fromRoot = breadthFirstTree(nodes, roots, leaving, graph.rowTo, sameComponent);
-  graph.towardGround = breadthFirstTree(nodes, {graph.ground}, entering, graph.rowFrom, anyNode);
-  graph.fromGround = breadthFirstTree(nodes, {graph.ground}, leaving, graph.rowTo, anyNode);
-  return graph;
-}
-
-// The nodes that `start`'s component reaches along the rows of `adjacency` (`other`: their far
-// ends), itself included; nothing when the ground is among them or the search has spent `budget`
-// (edges looked at, shared by the searches of one program).
-std::optional<std::vector<int>> closureOf(const DifferenceGraph& graph, int component, const RowAdjacency& adjacency,
-                                          const std::vector<int>& other, int64_t* budget) {
-  *budget -= graph.ground + 1;
-  if (*budget < 0) return std::nullopt;
-  std::vector<int> nodes = graph.scc.components[component];
-  std::vector<bool> seen(graph.ground + 1, false);
-  for (int node : nodes) seen[node] = true;
-  for (size_t head = 0; head < nodes.size(); ++head) {
-    const int node = nodes[head];
-    for (int k = adjacency.start[node]; k < adjacency.start[node + 1]; ++k) {
-      if (--*budget < 0) return std::nullopt;
-      const int next = other[adjacency.rows[k]];
-      if (next == graph.ground) return std::nullopt;
-      if (seen[next]) continue;
-      seen[next] = true;
-      nodes.push_back(next);
-    }
-  }
-  return nodes;
-}
-
-// Moves `members` by `sign` when that reaches the objective and checks as a motion.
-std::optional<std::vector<double>> motionOfGroup(const LinearProgramSpec& spec, const std::vector<int>& members, double sign) {
-  double value = 0;
-  for (int j : members) value += spec.objective[j];
-  if (sign * value < kMotion) return std::nullopt;
-  std::vector<double> x(spec.columnCount(), 0.0);
-  for (int j : members) x[j] = sign;
-  if (!certifiesMotion(spec, &x)) return std::nullopt;
-  return x;
-}
-
-// The smallest free group of the graph whose motion reaches the objective, checked as a motion.
-// Failing that, a component with all it carries along: all it reaches moving up, or all that
-// reaches it moving down, when the ground is not among them (the watched parts may be free only
-// together with an unwatched one: the key, in round 2). Those searches stop after a few passes
-// over the edges; GLPK decides what they leave open.
-std::optional<std::vector<double>> graphMotion(const DifferenceGraph& graph, const LinearProgramSpec& spec) {
-  for (const FreeGroupCandidate& candidate : graph.candidates) {
-    if (auto x = motionOfGroup(spec, graph.scc.components[candidate.component], candidate.sign)) return x;
-  }
-  int64_t budget = 4 * (static_cast<int64_t>(graph.rowFrom.size()) + graph.ground + 1);
-  for (int component : graph.componentsBySize) {
-    if (auto up = closureOf(graph, component, graph.leaving, graph.rowTo, &budget)) {
-      if (auto x = motionOfGroup(spec, *up, 1.0)) return x;
-    }
-    if (auto down = closureOf(graph, component, graph.entering, graph.rowFrom, &budget)) {
-      if (auto x = motionOfGroup(spec, *down, -1.0)) return x;
-    }
-    if (budget < 0) break;
-  }
-  return std::nullopt;
-}
-
-// Moves what `amount` holds at the tree's nodes to its roots (rows toward the roots, `parentEnd`
-// their heads: each node's amount leaves it) or brings it from them (rows from the roots,
-// `parentEnd` their tails: each node's amount arrives), adding it to the flow y of the rows.
-// Amounts at the roots and at nodes outside the tree stay where they are.
-void routeAlongTree(const FlowTree& tree, const std::vector<int>& parentEnd, std::vector<double>* amount,
-                    std::vector<double>* y) {
-  std::vector<double>& at = *amount;
-  for (auto it = tree.order.rbegin(); it != tree.order.rend(); ++it) {
-    const int node = *it;
-    const int r = tree.row[node];
-    if (r < 0 || at[node] == 0.0) continue;
-    (*y)[r] += at[node];
-    at[parentEnd[r]] += at[node];
-    at[node] = 0.0;
-  }
-}
-
-// A flow certifying that the objective stays below kMotion, checked by the dual bound.
-bool graphCertifiesNoMotion(const DifferenceGraph& graph, const LinearProgramSpec& spec) {
-  const int nodes = graph.ground + 1;
-  std::vector<double> y(spec.rowCount(), 0.0);
-  // Inside each component: supplies (c_j > 0) to its root, demands (c_j < 0) from it.
-  std::vector<double> supply(nodes, 0.0), demand(nodes, 0.0);
-  for (int j = 0; j < graph.ground; ++j) {
-    supply[j] = std::max(0.0, spec.objective[j]);
-    demand[j] = std::max(0.0, -spec.objective[j]);
-  }
-  routeAlongTree(graph.towardRoot, graph.rowTo, &supply, &y);
-  routeAlongTree(graph.fromRoot, graph.rowFrom, &demand, &y);
-  // What each root (other than the ground) has left: to or from the ground.
-  std::vector<double> up(nodes, 0.0), down(nodes, 0.0);
-  for (int node = 0; node < graph.ground; ++node) {
-    const double net = supply[node] - demand[node];
-    if (net > 0) up[node] = net;
-    if (net < 0) down[node] = -net;
-  }
-  routeAlongTree(graph.towardGround, graph.rowTo, &up, &y);
-  routeAlongTree(graph.fromGround, graph.rowFrom, &down, &y);
-  for (int node = 0; node < graph.ground; ++node) {
-    if (up[node] != 0.0 || down[node] != 0.0) return false;  // no path to or from the ground
-  }
-  return dualBound(spec, y, 1.0) < kMotion;
 }
 
 // Decides one motion program (see the file comment): graph certificates when the rows allow them,
