@@ -475,7 +475,7 @@ TEST(PlateCrossings, CrossingPlatesAreFoundAndHalvedJointsCutThem) {
   EXPECT_EQ(crossing.aOpens, (std::array<bool, 2>{true, true}));
   EXPECT_TRUE(assemblyFromPlates(plates, contacts).contacts.empty()) << "a crossing blocks nothing until it is cut";
   // Plate 1 leaves along +y: its slot opens below (from the middle down), plate 2's above.
-  const std::vector<SlotCut> slots = halvedSlots(plates, crossing, 0, {0, 1, 0}, 0);
+  const std::vector<SlotCut> slots = halvedSlots(plates, crossing, 0, {0, 1, 0}, {});
   ASSERT_EQ(slots.size(), 2u);
   const std::vector<Plate> cut = cutJoints(plates, slotJoints(slots), {});
   EXPECT_NEAR(totalVolume(cut), totalVolume(plates) - 18.0 * 18.0 * 100.0, 1e-3) << "the overlap is cut away once";
@@ -1294,6 +1294,104 @@ TEST(PlateMitreTenons, TheLizardDesignsWithMilledJointsVerifiedOnItsPlates) {
   const std::vector<Plate> inOrder = jointedInRemovalOrder(result);
   EXPECT_EQ(verifyJointedPlates(inOrder, result.directions).failure, "");
   for (const Plate& plate : inOrder) EXPECT_NO_THROW(checkClosedMesh(plateMesh(plate), plate.name));
+}
+
+}  // namespace
+}  // namespace desia
+
+// ---- the joints' sizes are settings (JointCutOptions), today's sizes their defaults ------------
+
+namespace desia {
+namespace {
+
+TEST(PlateJointSizes, TheNamesOfTheJointFamiliesAreTheOnesUsersSee) {
+  EXPECT_STREQ(jointTypeName(JointType::MortiseTenon), "mortise-tenon");
+  EXPECT_STREQ(jointTypeName(JointType::Halved), "halved");
+  EXPECT_STREQ(jointTypeName(JointType::Dovetail), "dovetail");
+  EXPECT_STREQ(jointTypeName(JointType::MitreTenon), "mitre-tenon");
+  EXPECT_STREQ(jointTypeName(JointType::MitreSlide), "mitre-slide");
+  EXPECT_STREQ(jointTypeName(JointType::FaceTenon), "face-tenon");
+  EXPECT_STREQ(jointTypeName(JointType::Empty), "empty");
+}
+
+TEST(PlateJointSizes, EdgesFromTwoTenonsFromPlateThicknessesGetTwoTenons) {
+  const std::vector<Plate> plates = boardOnBase();  // a 200 mm edge of an 18 mm board
+  const std::optional<TenonSite> site = squareEdgeSite(plates, computePlateContacts(plates, {})[0], {});
+  ASSERT_TRUE(site.has_value());
+  EXPECT_EQ(tenonSpans(plates, *site, {}).size(), 2u);  // 200 >= 8 x 18
+  JointCutOptions longer;
+  longer.twoTenonsFrom = 12;  // 200 < 12 x 18
+  const std::vector<std::pair<double, double>> one = tenonSpans(plates, *site, longer);
+  ASSERT_EQ(one.size(), 1u);
+  EXPECT_NEAR(one[0].second - one[0].first, 200.0 / 3, 1e-9);  // as wide as the gaps beside it
+}
+
+TEST(PlateJointSizes, TheDovetailsSlopeDepthWidthAndStopAreSettings) {
+  const std::vector<Plate> plates = boardOnBase();
+  JointCutOptions options;
+  options.dovetail.slope = 1.0 / 4;
+  options.dovetail.depth = {1, 2};
+  options.dovetail.width = {1, 2};
+  options.dovetail.stop = 30;
+  const DovetailSite site = *dovetailSiteOf(plates, computePlateContacts(plates, {})[0], options);
+  const DovetailCut cut{site, site.edge.along[2] > 0 ? 1 : 0};  // open at z = 200
+  const std::vector<Plate> jointed = cutJoints(plates, {jointCut(cut)}, options);
+  // Section: 9 mm wide at the floor (1/2 of 18), 9 mm deep (1/2 of 18), 1 in 4 lean: 4.5 mm at the
+  // face; the housing stops 30 mm before the closed end: 170 mm long.
+  const double tongue = (9.0 + 4.5) / 2 * 9 * 170;
+  for (const Plate& plate : jointed) EXPECT_NO_THROW(checkClosedMesh(plateMesh(plate), "jointed"));
+  EXPECT_NEAR(meshVolume(plateMesh(jointed[1])), 18.0 * 200 * 200 + tongue, 1e-6 * tongue);
+  EXPECT_NEAR(meshVolume(plateMesh(jointed[0])), 300.0 * 18 * 200 - tongue, 1e-6 * tongue);
+  ExpectTheBoardLeavesAlongPlusZOnly(jointed);
+  options.dovetail.narrowestNeck = 5;  // the 4.5 mm neck is too thin now
+  EXPECT_FALSE(dovetailSiteOf(plates, computePlateContacts(plates, {})[0], options).has_value());
+}
+
+TEST(PlateJointSizes, TheStubTenonsMarginAndDepthAreSettings) {
+  const std::vector<Plate> boards{board(1, {0, 0, 0}, {120, 60, 18}), board(2, {20, 10, 18}, {140, 70, 36})};
+  const std::vector<PlateContact> contacts = computePlateContacts(boards, {});
+  JointCutOptions options;
+  options.faceTenon.margin = {1, 4};
+  options.faceTenon.depth = {1, 2};
+  const std::optional<FaceTenon> tenon = faceTenonOf(boards, contacts[0], 1, {0, 0, 1}, options);
+  ASSERT_TRUE(tenon.has_value());
+  EXPECT_NEAR(tenon->depth, 9.0, 1e-12);  // half of the lower board
+  const std::vector<Plate> jointed = cutJoints(boards, {jointCut(*tenon)}, options);
+  const double gained = totalVolume({jointed[1]}) - totalVolume({boards[1]});
+  EXPECT_NEAR(gained, 50.0 * 25.0 * 9.0, 1e-6);  // the middle half of the 100 x 50 lap, 9 deep
+  EXPECT_NEAR(totalVolume({boards[0]}) - totalVolume({jointed[0]}), gained, 1e-6);
+}
+
+TEST(PlateJointSizes, ASizeOutOfRangeIsRefusedByName) {
+  const std::vector<Plate> plates = boardOnBase();
+  PlateDesignOptions options;
+  options.realization = JointRealization::Milled;
+  options.joints.dovetail.depth = {3, 2};  // deeper than the plate
+  try {
+    designPlateJoints(plates, computePlateContacts(plates, {}), options);
+    FAIL() << "a housing deeper than its plate was accepted";
+  } catch (const Error& error) {
+    EXPECT_EQ(error.code(), ErrorCode::BadInput);
+    EXPECT_NE(std::string(error.what()).find("dovetail.depth"), std::string::npos) << error.what();
+  }
+}
+
+TEST(PlateJointSizes, TheMitreTenonsWidthAndHeightAreSharesOfTheMitre) {
+  const AssemblyDocument box = loadPlateExample("mitred_box.json");
+  const PlateContact contact = computePlateContacts(box.plates, {}).at(0);
+  const Vec3 axis = plateThicknessAxis(box.plates[contact.a]);
+  Vec3 into = axis;
+  if (!mitreTenonOf(box.plates, contact, contact.a, into)) into = negated(axis);
+  const MitreTenon usual = *mitreTenonOf(box.plates, contact, contact.a, into);
+  JointCutOptions options;
+  options.mitreTenon.width = {1, 6};
+  options.mitreTenon.height = {1, 8};
+  const std::optional<MitreTenon> smaller = mitreTenonOf(box.plates, contact, contact.a, into, options);
+  ASSERT_TRUE(smaller.has_value());
+  EXPECT_NEAR(smaller->halfWidth, usual.halfWidth / 2, 1e-9);
+  EXPECT_NEAR(smaller->halfHeight, usual.halfHeight / 2, 1e-9);
+  options.mitreTenon.shallowestPocket = usual.depth + 1;  // deeper than the pocket plate holds it
+  EXPECT_FALSE(mitreTenonOf(box.plates, contact, contact.a, into, options).has_value());
 }
 
 }  // namespace

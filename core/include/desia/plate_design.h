@@ -18,11 +18,68 @@
 
 namespace desia {
 
-// The sizes of the joints cut into the plates.
+// A share of a length: numerator / denominator of it. Kept as two numbers so that a third is the
+// length divided by 3, to the last bit.
+struct LengthShare {
+  double numerator = 1, denominator = 1;
+  double of(double length) const { return numerator * length / denominator; }
+};
+
+// A sliding dovetail (JointType::Dovetail, paper Fig. 2, right).
+struct DovetailSizes {
+  double slope = 1.0 / 6;        // how far each flank leans in, mm per mm of depth (1 in 6)
+  LengthShare depth{1, 3};       // the housing's depth, of the housing plate's thickness (housings
+                                 // from both faces leave the rest between them)
+  LengthShare width{2, 3};       // the tongue's width at the housing's floor, of the tongue plate's thickness
+  double narrowestNeck = 2;      // mm: the tongue's least width at the face; narrower, no dovetail
+  double stop = 10;              // mm: the housing stops at least this far (and at least the housing
+                                 // plate's thickness) before the contact's closed end
+};
+
+// A tenon across a mitre (JointType::MitreTenon, paper Fig. 16a).
+struct MitreTenonSizes {
+  LengthShare width{1, 3};       // along the shared edge, of the mitre's length
+  LengthShare height{1, 4};      // its root across the edge, of the mitre's height
+  double lowestRoot = 1;         // mm: a lower root gets no tenon
+  double shallowestPocket = 2;   // mm: a pocket the plate cannot hold this deep gets no tenon
+};
+
+// A tongue sliding in a groove along a mitre (JointType::MitreSlide, paper Fig. 16b).
+struct MitreSlideSizes {
+  double slope = 1.0 / 6;        // how far the groove's flanks lean out, mm per mm of depth (1 in 6)
+  LengthShare height{1, 4};      // the tongue's root across the edge, of the mitre's height
+  double lowestRoot = 1;         // mm: a lower root gets no slide
+  double shallowestGroove = 2;   // mm: a groove the plate cannot hold this deep gets no slide
+  double stop = 10;              // mm: the groove stops at least this far (and at least the slide
+                                 // plate's thickness) before the mitre's end ahead
+  double shortestGroove = 10;    // mm: a shorter groove (with wood all round it) gets no slide
+};
+
+// A stub tenon on a lap (JointType::FaceTenon).
+struct FaceTenonSizes {
+  LengthShare margin{1, 3};      // the lap left on each side of the block, of the lap's length and width
+  LengthShare depth{1, 3};       // the blind mortise's depth, of the mortise plate's thickness
+};
+
+// The sizes of the joints cut or milled into the plates. The defaults are the sizes every design
+// has had; each family reads its own and the shared ones.
 struct JointCutOptions {
-  double tenonWidth = 0;  // mm along the edge; 0 = from the edge's length (a third, or a fifth for two tenons)
-  int tenonCount = 0;     // tenons per joint; 0 = one, or two on edges longer than 8 plate thicknesses
-  double clearance = 0;   // mm of play between a tenon and its mortise (the mortise grows by it)
+  // Through and open mortise-and-tenon joints (JointType::MortiseTenon, paper Fig. 2, left).
+  double tenonWidth = 0;     // mm along the edge; 0 = as wide as the gaps between them and at the ends
+                             // (the edge's length / (2 count + 1): a third, or a fifth for two tenons)
+  int tenonCount = 0;        // tenons per joint; 0 = one, or two from `twoTenonsFrom`
+  double twoTenonsFrom = 8;  // with tenonCount 0: edges at least this many tenon-plate thicknesses
+                             // long get two tenons
+  // Every family.
+  double clearance = 0;      // mm of play between a joint's pieces (the mortises, slots and housings
+                             // grow by it, or the tongues and milled tenons shrink)
+  double woodMargin = 1;     // mm of wood left at least round a mortise, pocket, groove or housing,
+                             // and how far a cut runs on past an edge it opens through
+  double shortestJoint = 3;  // mm: a shorter contact, tenon or block gets no joint
+  DovetailSizes dovetail;
+  MitreTenonSizes mitreTenon;
+  MitreSlideSizes mitreSlide;
+  FaceTenonSizes faceTenon;
 };
 
 enum class JointType {

@@ -17,30 +17,34 @@ namespace {
 // A sliding dovetail's section (paper Fig. 2, right), across the edge plate's thickness `across`
 // (c, from its first face) and into the face plate (n, from its face): the tongue is `wide` at
 // the housing's floor, n = depth, and narrower by the lean on each side at the face, n = 0, so it
-// cannot be pulled out. The lean is 1 in 6 (a common dovetail slope); the floor a third of the way
-// through the face plate (two housings from opposite faces leave a third between them), the
-// tongue two thirds of the edge plate's thickness, centred.
+// cannot be pulled out; centred on the edge plate. The lean, the depth and the width are
+// DovetailSizes (by default 1 in 6, a common dovetail slope; a third of the way through the face
+// plate, so that housings from opposite faces leave a third between them; two thirds of the edge
+// plate's thickness).
 struct DovetailSection {
   double centre = 0, wide = 0, narrow = 0, depth = 0;
 };
 
-// The housing stops this far (at least) before the contact's closed end: material for the stop.
-constexpr double kDovetailStop = 10.0;
-
-DovetailSection dovetailSection(const std::vector<Plate>& plates, const TenonSite& edge) {
+DovetailSection dovetailSection(const std::vector<Plate>& plates, const TenonSite& edge, const DovetailSizes& sizes) {
   DovetailSection section;
   const double thickness = plateThickness(plates[edge.tenonPlate]);
   section.centre = thickness / 2;
-  section.depth = plateThickness(plates[edge.mortisePlate]) / 3;  // housings from both faces fit
-  section.wide = 2 * thickness / 3;
-  section.narrow = section.wide - 2 * kDovetailSlope * section.depth;
+  section.depth = sizes.depth.of(plateThickness(plates[edge.mortisePlate]));
+  section.wide = sizes.width.of(thickness);
+  section.narrow = section.wide - 2 * sizes.slope * section.depth;
   return section;
 }
 
+// How far before the contact's closed end the housing stops (wood for the stop).
+double housingStop(const std::vector<Plate>& plates, const TenonSite& edge, const DovetailSizes& sizes) {
+  return std::max(sizes.stop, plateThickness(plates[edge.mortisePlate]));
+}
+
 // The housing's extent along the edge: from the stop to the open end.
-std::pair<double, double> housingSpan(const std::vector<Plate>& plates, const DovetailCut& cut) {
+std::pair<double, double> housingSpan(const std::vector<Plate>& plates, const DovetailCut& cut,
+                                      const DovetailSizes& sizes) {
   const TenonSite& edge = cut.site.edge;
-  const double stop = std::max(kDovetailStop, plateThickness(plates[edge.mortisePlate]));
+  const double stop = housingStop(plates, edge, sizes);
   return cut.openEnd == 1 ? std::make_pair(edge.from + stop, edge.to + cut.site.reach[1])
                           : std::make_pair(edge.from - cut.site.reach[0], edge.to - stop);
 }
@@ -108,11 +112,12 @@ struct DovetailPieces {
   std::vector<Plate> lips;
 };
 
-DovetailPieces dovetailPieces(const std::vector<Plate>& plates, const DovetailCut& cut, double clearance) {
+DovetailPieces dovetailPieces(const std::vector<Plate>& plates, const DovetailCut& cut, const JointCutOptions& options,
+                              double clearance) {
   const TenonSite& edge = cut.site.edge;
-  const DovetailSection d = dovetailSection(plates, edge);
-  const auto [s0, s1] = housingSpan(plates, cut);
-  const double runOut = kMortiseMargin + plateThickness(plates[edge.mortisePlate]);
+  const DovetailSection d = dovetailSection(plates, edge, options.dovetail);
+  const auto [s0, s1] = housingSpan(plates, cut, options.dovetail);
+  const double runOut = options.woodMargin + plateThickness(plates[edge.mortisePlate]);
   const double cut0 = cut.openEnd == 0 ? s0 - runOut : s0, cut1 = cut.openEnd == 1 ? s1 + runOut : s1;
   const double low = d.centre - d.wide / 2, high = d.centre + d.wide / 2;
   const double narrowLow = d.centre - d.narrow / 2, narrowHigh = d.centre + d.narrow / 2;
@@ -136,10 +141,10 @@ class DovetailJointCut final : public JointCut {
   explicit DovetailJointCut(const DovetailCut& cut) : cut_(cut) {}
   void addTo(const std::vector<Plate>& plates, const JointCutOptions& options, PlateCuts& cuts) const override {
     const int housingPlate = cut_.site.edge.mortisePlate;
-    DovetailPieces pieces = dovetailPieces(plates, cut_, options.clearance);
+    DovetailPieces pieces = dovetailPieces(plates, cut_, options, options.clearance);
     const int face = pieces.fromFirstFace ? 0 : 1;
     cuts.housings[housingPlate][face].push_back(pieces.housing);
-    cuts.housingDepth[housingPlate][face] = dovetailSection(plates, cut_.site.edge).depth;
+    cuts.housingDepth[housingPlate][face] = dovetailSection(plates, cut_.site.edge, options.dovetail).depth;
     for (Plate& lip : pieces.lips) cuts.attached[housingPlate].push_back(std::move(lip));
     cuts.attached[cut_.site.edge.tenonPlate].push_back(std::move(pieces.tongue));
   }
@@ -157,16 +162,17 @@ std::vector<Vec3> DovetailSite::exits() const {
   return ways;
 }
 
-std::optional<DovetailSite> dovetailSiteOf(const std::vector<Plate>& plates, const PlateContact& contact) {
-  const std::optional<TenonSite> edge = squareEdgeSite(plates, contact);
+std::optional<DovetailSite> dovetailSiteOf(const std::vector<Plate>& plates, const PlateContact& contact,
+                                           const JointCutOptions& options) {
+  const std::optional<TenonSite> edge = squareEdgeSite(plates, contact, options);
   if (!edge || !isPrism(plates[edge->tenonPlate]) || !isPrism(plates[edge->mortisePlate])) return std::nullopt;
   DovetailSite site;
   site.edge = *edge;
   const Plate& housingPlate = plates[edge->mortisePlate];
-  const DovetailSection section = dovetailSection(plates, *edge);
-  if (section.narrow < 2) return std::nullopt;  // mm: too thin a neck to mill
-  const double stop = std::max(kDovetailStop, plateThickness(housingPlate));
-  if (edge->to - edge->from < stop + kShortestJoint) return std::nullopt;
+  const DovetailSection section = dovetailSection(plates, *edge, options.dovetail);
+  if (section.narrow < options.dovetail.narrowestNeck) return std::nullopt;  // too thin a neck to mill
+  const double stop = housingStop(plates, *edge, options.dovetail);
+  if (edge->to - edge->from < stop + options.shortestJoint) return std::nullopt;
   const PlaneFrame frame(housingPlate.bottom[0][0], plateThicknessAxis(housingPlate));
   const double low = section.centre - section.wide / 2, high = section.centre + section.wide / 2;
   auto rectangle = [&](double s0, double s1) {
@@ -178,8 +184,8 @@ std::optional<DovetailSite> dovetailSiteOf(const std::vector<Plate>& plates, con
   // just beyond), and the housing from the stop to there lies inside it.
   auto opensAt = [&](int end, double reach) {
     const double sign = end == 1 ? 1 : -1, at = (end == 1 ? edge->to : edge->from) + sign * reach;
-    const Loop beyond = rectangle(std::min(at + sign * kFlush, at + sign * kMortiseMargin),
-                                  std::max(at + sign * kFlush, at + sign * kMortiseMargin));
+    const Loop beyond = rectangle(std::min(at + sign * kFlush, at + sign * options.woodMargin),
+                                  std::max(at + sign * kFlush, at + sign * options.woodMargin));
     const Loop housing = end == 1 ? rectangle(edge->from + stop, at - kFlush) : rectangle(at + kFlush, edge->to - stop);
     return areaAgainst({beyond}, housingPlate.bottom, frame, false) < 1e-6 &&
            areaAgainst({housing}, housingPlate.bottom, frame, true) < 1e-6;
@@ -197,9 +203,10 @@ std::optional<DovetailSite> dovetailSiteOf(const std::vector<Plate>& plates, con
   return site;
 }
 
-std::vector<Vec3> dovetailFaceNormals(const std::vector<Plate>& plates, const DovetailCut& cut) {
+std::vector<Vec3> dovetailFaceNormals(const std::vector<Plate>& plates, const DovetailCut& cut,
+                                      const JointCutOptions& options) {
   const TenonSite& edge = cut.site.edge;
-  const DovetailSection section = dovetailSection(plates, edge);
+  const DovetailSection section = dovetailSection(plates, edge, options.dovetail);
   const double lean = (section.wide - section.narrow) / 2;
   const Vec3 exit = cut.openEnd == 1 ? edge.along : negated(edge.along);
   return {edge.intoMortise,
@@ -207,8 +214,9 @@ std::vector<Vec3> dovetailFaceNormals(const std::vector<Plate>& plates, const Do
           normalized(minus(scaled(edge.across, section.depth), scaled(edge.intoMortise, lean))), negated(exit)};
 }
 
-CutFootprint dovetailFootprint(const std::vector<Plate>& plates, const DovetailCut& cut) {
-  const DovetailPieces pieces = dovetailPieces(plates, cut, 0);
+CutFootprint dovetailFootprint(const std::vector<Plate>& plates, const DovetailCut& cut,
+                               const JointCutOptions& options) {
+  const DovetailPieces pieces = dovetailPieces(plates, cut, options, 0);
   return {cut.site.edge.mortisePlate, pieces.fromFirstFace ? 1 : 2, pieces.housing};
 }
 
@@ -219,7 +227,14 @@ namespace {
 class DovetailFamily final : public JointFamily {
  public:
   explicit DovetailFamily(const JointSetting& setting) : JointFamily(setting) {
-    for (const PlateContact& contact : graph().computedContacts) sites_.push_back(dovetailSiteOf(plates(), contact));
+    const DovetailSizes& sizes = options().dovetail;
+    requireAtLeast(sizes.slope, 0, "dovetail.slope");
+    requireShare(sizes.depth, "dovetail.depth");
+    requireShare(sizes.width, "dovetail.width", true);
+    requireAtLeast(sizes.narrowestNeck, 0, "dovetail.narrowestNeck");
+    requireAtLeast(sizes.stop, 0, "dovetail.stop");
+    for (const PlateContact& contact : graph().computedContacts)
+      sites_.push_back(dovetailSiteOf(plates(), contact, options()));
   }
 
   bool lets(int contact, int mover, const Vec3& d) const override {
@@ -229,7 +244,7 @@ class DovetailFamily final : public JointFamily {
 
   std::vector<Vec3> faceNormals(const PlateJoint& joint) const override {
     const DovetailCut cut = cutOf(joint);
-    std::vector<Vec3> normals = dovetailFaceNormals(plates(), cut);
+    std::vector<Vec3> normals = dovetailFaceNormals(plates(), cut, options());
     if (cut.site.edge.tenonPlate != joint.mover) {  // the mover has the housing
       for (Vec3& n : normals) n = negated(n);
     }
@@ -237,7 +252,7 @@ class DovetailFamily final : public JointFamily {
   }
 
   void addFootprints(const PlateJoint& joint, std::vector<CutFootprint>& footprints) const override {
-    footprints.push_back(dovetailFootprint(plates(), cutOf(joint)));
+    footprints.push_back(dovetailFootprint(plates(), cutOf(joint), options()));
   }
 
   void addCuts(const PlateJoint& joint, double, JointCutList& cuts) const override {

@@ -19,9 +19,6 @@
 
 namespace desia {
 
-// A dovetail's flanks lean back 1 in 6 (a common dovetail slope).
-constexpr double kDovetailSlope = 1.0 / 6;
-
 // Where a sliding dovetail can be milled for one contact: a square edge standing on a face (the
 // tenon site's geometry, `edge`) with a way along the edge out of the face plate at one end or
 // both: the contact runs out of the face plate there, or the housing can run on past the contact
@@ -47,15 +44,18 @@ struct DovetailCut {
 // The site of a sliding dovetail on `contact`: a square side of one prismatic plate on a face of
 // another at right angles, long enough for a stopped housing, the contact running out of the
 // face plate at an end; nothing otherwise.
-std::optional<DovetailSite> dovetailSiteOf(const std::vector<Plate>& plates, const PlateContact& contact);
+std::optional<DovetailSite> dovetailSiteOf(const std::vector<Plate>& plates, const PlateContact& contact,
+                                           const JointCutOptions& options = {});
 
 // The normals of a dovetail's faces, pointing from the tongue plate into the housing plate: the
 // shoulder and the housing's floor, the two flanks (leaning back towards the tongue plate, so it
 // cannot be pulled out), and the stop at the closed end (against the exit).
-std::vector<Vec3> dovetailFaceNormals(const std::vector<Plate>& plates, const DovetailCut& cut);
+std::vector<Vec3> dovetailFaceNormals(const std::vector<Plate>& plates, const DovetailCut& cut,
+                                      const JointCutOptions& options);
 
 // The housing, cut into the housing plate from the face the tongue plate stands on.
-CutFootprint dovetailFootprint(const std::vector<Plate>& plates, const DovetailCut& cut);
+CutFootprint dovetailFootprint(const std::vector<Plate>& plates, const DovetailCut& cut,
+                               const JointCutOptions& options);
 
 // The joint to cut: the housing, its lips and the tongue (narrowed and shortened by the clearance;
 // the housing keeps its size, so the verified plates and the made ones share it).

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "analysis/vec3.h"
+#include "desia/error.h"
 #include "plate/joints/joint_geometry.h"
 #include "plate/plane_frame.h"
 #include "plate/plate_shape.h"
@@ -49,7 +50,7 @@ Loop FaceTenon::footprint(double grow) const {
 }
 
 std::optional<FaceTenon> faceTenonOf(const std::vector<Plate>& plates, const PlateContact& contact, int tenonPlate,
-                                     const Vec3& d) {
+                                     const Vec3& d, const JointCutOptions& options) {
   const std::optional<int> partner = touchingPartnerOf(contact, tenonPlate);
   // A lap: the contact lies on a face of both plates.
   if (!partner || contact.region.size() < 3 || facesOnContact(plates, contact) != 2) return std::nullopt;
@@ -66,14 +67,17 @@ std::optional<FaceTenon> faceTenonOf(const std::vector<Plate>& plates, const Pla
   tenon.origin = contact.region[0];
   const auto [s0, s1] = extentAlong(contact.region, tenon.origin, tenon.u);
   const auto [t0, t1] = extentAlong(contact.region, tenon.origin, tenon.v);
-  // The middle third each way: wood all round the mortise, and room for other joints.
-  tenon.s0 = s0 + (s1 - s0) / 3;
-  tenon.s1 = s1 - (s1 - s0) / 3;
-  tenon.t0 = t0 + (t1 - t0) / 3;
-  tenon.t1 = t1 - (t1 - t0) / 3;
-  if (tenon.s1 - tenon.s0 < kShortestJoint || tenon.t1 - tenon.t0 < kShortestJoint) return std::nullopt;
-  tenon.depth = plateThickness(mortise) / 3;  // as deep as a dovetail's housing: both faces may hold one
-  // The block inside the lap (a lap that is not a rectangle may not hold the middle third).
+  // The middle each way (by default the middle third): wood all round the mortise, and room for
+  // other joints.
+  const FaceTenonSizes& sizes = options.faceTenon;
+  tenon.s0 = s0 + sizes.margin.of(s1 - s0);
+  tenon.s1 = s1 - sizes.margin.of(s1 - s0);
+  tenon.t0 = t0 + sizes.margin.of(t1 - t0);
+  tenon.t1 = t1 - sizes.margin.of(t1 - t0);
+  if (tenon.s1 - tenon.s0 < options.shortestJoint || tenon.t1 - tenon.t0 < options.shortestJoint) return std::nullopt;
+  // By default as deep as a dovetail's housing: both faces may hold one.
+  tenon.depth = sizes.depth.of(plateThickness(mortise));
+  // The block inside the lap (a lap that is not a rectangle may not hold the middle).
   const PlaneFrame frame(tenon.origin, tenon.out);
   if (areaAgainst({tenon.footprint(0)}, {contact.region}, frame, true) > 1e-6) return std::nullopt;
   return tenon;
@@ -93,10 +97,15 @@ namespace {
 
 class FaceTenonFamily final : public JointFamily {
  public:
-  using JointFamily::JointFamily;
+  explicit FaceTenonFamily(const JointSetting& setting) : JointFamily(setting) {
+    const FaceTenonSizes& sizes = options().faceTenon;
+    requireShare(sizes.depth, "faceTenon.depth");
+    if (!(sizes.margin.of(1) >= 0 && sizes.margin.of(1) < 0.5 && sizes.margin.denominator > 0))
+      throwBadInput("", "the joint size faceTenon.margin must be a share of the lap from 0 to below a half");
+  }
 
   bool lets(int contact, int mover, const Vec3& d) const override {
-    return faceTenonOf(plates(), this->contact(contact), mover, d).has_value();
+    return faceTenonOf(plates(), this->contact(contact), mover, d, options()).has_value();
   }
 
   std::vector<Vec3> faceNormals(const PlateJoint& joint) const override {
@@ -113,7 +122,7 @@ class FaceTenonFamily final : public JointFamily {
 
  private:
   FaceTenon tenonOf(const PlateJoint& joint) const {
-    return *faceTenonOf(plates(), contact(joint.contact), joint.mover, joint.direction);
+    return *faceTenonOf(plates(), contact(joint.contact), joint.mover, joint.direction, options());
   }
 };
 

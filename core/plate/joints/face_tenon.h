@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Stub tenons on a lap (milled; two plates lying face to face, as the CHAIR's repair bars on its
-// legs): a block on the tenon plate's face, a third of the lap's length and width in its middle,
-// standing into a blind mortise as deep as a third of the other plate's thickness (a housing cut
-// from that plate's face). The tenon plate can then leave only straight off the lap.
+// legs): a block on the tenon plate's face in the middle of the lap (by default its middle third
+// each way), standing into a blind mortise (by default a third of the other plate's thickness
+// deep: a housing cut from that plate's face). The tenon plate can then leave only straight off
+// the lap.
 #pragma once
 
 #include <memory>
@@ -10,6 +11,7 @@
 #include <vector>
 
 #include "desia/plate.h"
+#include "desia/plate_design.h"
 #include "plate/joints/joint_family.h"
 #include "plate/joints/plate_cuts.h"
 
@@ -26,9 +28,10 @@ struct FaceTenon {
 };
 
 // The stub tenon on the lap `contact` for `tenonPlate` leaving along `d` (straight off the lap,
-// both plates prisms, the block inside the lap with a margin); nothing otherwise.
+// both plates prisms, the block inside the lap with a margin), sized by options.faceTenon;
+// nothing otherwise.
 std::optional<FaceTenon> faceTenonOf(const std::vector<Plate>& plates, const PlateContact& contact, int tenonPlate,
-                                     const Vec3& d);
+                                     const Vec3& d, const JointCutOptions& options = {});
 
 // The normals of a stub tenon's faces, from the tenon plate into the mortise plate: its end and
 // its four sides.

@@ -22,13 +22,14 @@ class SlotJointCut final : public JointCut {
 }  // namespace
 
 std::vector<SlotCut> halvedSlots(const std::vector<Plate>& plates, const PlateContact& crossing, int mover,
-                                 const Vec3& d, double clearance) {
+                                 const Vec3& d, const JointCutOptions& options) {
+  const double clearance = options.clearance;
   const int other = crossing.a == mover ? crossing.b : crossing.a;
   const Vec3& line = crossing.edgeDirection;
   const double sign = dot(d, line) > 0 ? 1 : -1;
   const double middle = (crossing.crossingFrom + crossing.crossingTo) / 2;
   // Far enough past the crossing's ends to run out of the outline there (it ends with the crossing).
-  const double out = crossing.crossingTo - crossing.crossingFrom + kMortiseMargin;
+  const double out = crossing.crossingTo - crossing.crossingFrom + options.woodMargin;
   auto slot = [&](int plate, int across, double towards) {
     const Vec3 axis = plateThicknessAxis(plates[across]);
     const double width = plateThickness(plates[across]);
@@ -76,12 +77,16 @@ class HalvedFamily final : public JointFamily {
   bool keepsOtherContacts() const override { return false; }
 
   void addFootprints(const PlateJoint& joint, std::vector<CutFootprint>& footprints) const override {
-    for (const SlotCut& slot : halvedSlots(plates(), contact(joint.contact), joint.mover, joint.direction, 0))
+    JointCutOptions unplayed = options();
+    unplayed.clearance = 0;
+    for (const SlotCut& slot : halvedSlots(plates(), contact(joint.contact), joint.mover, joint.direction, unplayed))
       footprints.push_back(slotFootprint(slot));
   }
 
   void addCuts(const PlateJoint& joint, double clearance, JointCutList& cuts) const override {
-    for (const SlotCut& slot : halvedSlots(plates(), contact(joint.contact), joint.mover, joint.direction, clearance))
+    JointCutOptions played = options();
+    played.clearance = clearance;
+    for (const SlotCut& slot : halvedSlots(plates(), contact(joint.contact), joint.mover, joint.direction, played))
       cuts.push_back(jointCut(slot));
   }
 };

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "desia/plate.h"
+#include "desia/plate_design.h"
 #include "plate/joints/joint_family.h"
 #include "plate/joints/plate_cuts.h"
 
@@ -22,9 +23,9 @@ struct SlotCut {
 // The two slots of a halved joint at a crossing: `mover` leaves along d (along the crossing
 // line), so its slot runs from the middle of the crossing back out of its outline behind it, and
 // the other plate's from the middle out of its outline ahead; each as wide as the other plate is
-// thick plus the clearance.
+// thick plus options.clearance, and run on options.woodMargin past the crossing's end.
 std::vector<SlotCut> halvedSlots(const std::vector<Plate>& plates, const PlateContact& crossing, int mover,
-                                 const Vec3& d, double clearance);
+                                 const Vec3& d, const JointCutOptions& options);
 
 CutFootprint slotFootprint(const SlotCut& slot);
 

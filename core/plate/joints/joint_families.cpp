@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
+#include <string>
 
 #include "analysis/vec3.h"
 #include "desia/error.h"
@@ -15,6 +17,12 @@
 
 namespace desia {
 namespace {
+
+std::string formatNumber(double value) {
+  std::ostringstream text;
+  text << value;
+  return text.str();
+}
 
 // Every family: its type, its name as users see it (results, reports, the package's types),
 // whether only a CNC router makes it (JointRealization::Milled), and how to make it for a design.
@@ -53,6 +61,22 @@ bool exitsLet(const std::vector<Vec3>& exits, int tenonPlate, int mover, const V
   return false;
 }
 
+void requireAtLeast(double value, double least, const char* setting) {
+  if (!(value >= least)) {
+    throwBadInput("", std::string("the joint size ") + setting + " must be at least " + formatNumber(least) + ", got " +
+                          formatNumber(value));
+  }
+}
+
+void requireShare(const LengthShare& share, const char* setting, bool whole) {
+  const double value = share.of(1);
+  if (!(share.denominator > 0 && value > 0 && (whole ? value <= 1 : value < 1))) {
+    throwBadInput("", std::string("the joint size ") + setting + " must be a share of a length above 0 and " +
+                          (whole ? "at most 1" : "below 1") + ", got " + formatNumber(share.numerator) + "/" +
+                          formatNumber(share.denominator));
+  }
+}
+
 std::vector<Vec3> plannedJointNormals(const Vec3& thicknessAxis, const Vec3& d) {
   Vec3 u = minus(thicknessAxis, scaled(d, dot(thicknessAxis, d)));
   if (norm(u) < 1e-6) u = cross(d, std::abs(d[0]) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0});
@@ -76,6 +100,9 @@ const char* jointTypeName(JointType type) {
 
 JointFamilies::JointFamilies(const PlateGraph& graph, const JointCutOptions& options, JointRealization realization)
     : graph_(graph), setting_{graph, options, realization} {
+  requireAtLeast(options.clearance, 0, "clearance");
+  requireAtLeast(options.woodMargin, 0, "woodMargin");
+  requireAtLeast(options.shortestJoint, 0, "shortestJoint");
   for (const FamilyEntry& entry : kFamilies) {
     if (entry.milledOnly && realization != JointRealization::Milled) continue;
     families_.push_back({entry.type, entry.make(setting_)});

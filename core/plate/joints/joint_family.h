@@ -64,6 +64,11 @@ bool makesJoints(JointRealization realization);
 // plate along an exit, the other plate against one)?
 bool exitsLet(const std::vector<Vec3>& exits, int tenonPlate, int mover, const Vec3& d);
 
+// Throw BadInput naming the setting (e.g. "dovetail.slope") unless it is a number of at least
+// `least`, or a share above 0 and below 1 (at most 1 where `whole` may be taken).
+void requireAtLeast(double value, double least, const char* setting);
+void requireShare(const LengthShare& share, const char* setting, bool whole = false);
+
 // The paper's model of a joint not cut (planned joints, and halved joints whose plates cross): a
 // shoulder across d and the cheeks and ends every slot or tenon has, from the mover's thickness
 // axis.

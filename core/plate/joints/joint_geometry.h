@@ -18,8 +18,6 @@ namespace desia {
 
 constexpr double kSquare = 1e-6;     // |cos| below this: at a right angle
 constexpr double kTolerance = 0.05;  // mm: faces closer than this lie on one another
-constexpr double kMortiseMargin = 1.0;  // mm of material left around a mortise at least
-constexpr double kShortestJoint = 3.0;  // mm: a shorter contact gets no tenon
 
 // "plate 7 (shelf)": how messages name a plate.
 std::string plateLabel(const Plate& plate);

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "analysis/vec3.h"
-#include "plate/joints/dovetail.h"
+#include "desia/error.h"
 #include "plate/joints/joint_geometry.h"
 #include "plate/joints/mitre_tenon.h"
 #include "plate/plane_frame.h"
@@ -109,7 +109,7 @@ class MitreSlideCut final : public JointCut {
 }  // namespace
 
 std::optional<MitreSlide> mitreSlideOf(const std::vector<Plate>& plates, const PlateContact& contact, int slidePlate,
-                                       const Vec3& d) {
+                                       const Vec3& d, const JointCutOptions& options) {
   const std::optional<int> partner = touchingPartnerOf(contact, slidePlate);
   // Edge to edge: neither face on the contact (those are T joints and laps).
   if (!partner || contact.region.size() < 3 || facesOnContact(plates, contact) != 0) return std::nullopt;
@@ -132,10 +132,11 @@ std::optional<MitreSlide> mitreSlideOf(const std::vector<Plate>& plates, const P
   const auto [x0, x1] = extentAlong(contact.region, contact.region[0], slide.across);
   slide.middle = plus(contact.region[0], plus(scaled(slide.line, (s0 + s1) / 2), scaled(slide.across, (x0 + x1) / 2)));
   const double halfLength = (s1 - s0) / 2;
-  slide.halfHeight = (x1 - x0) / 8;  // a quarter of the mitre's height, as a mitre tenon's root
-  slide.lean = kDovetailSlope;
-  if (2 * slide.halfHeight < 1) return std::nullopt;
-  // As deep as the slide plate holds the groove with a millimetre of wood on both faces.
+  const MitreSlideSizes& sizes = options.mitreSlide;
+  slide.halfHeight = sizes.height.of(x1 - x0) / 2;
+  slide.lean = sizes.slope;
+  if (2 * slide.halfHeight < sizes.lowestRoot) return std::nullopt;
+  // As deep as the slide plate holds the groove with the margin of wood on both faces.
   const Vec3 axis = plateThicknessAxis(plate);
   const double thickness = plateThickness(plate);
   auto fits = [&](double depth) {
@@ -143,14 +144,13 @@ std::optional<MitreSlide> mitreSlideOf(const std::vector<Plate>& plates, const P
     for (const Flat& q : slideSection(slide, 0)) {
       const Vec3 point = plus(slide.middle, plus(scaled(slide.across, q[0]), scaled(slide.mitreNormal, q[1])));
       const double height = dot(minus(point, plate.bottom[0][0]), axis);
-      if (height < kMortiseMargin || height > thickness - kMortiseMargin) return false;
+      if (height < options.woodMargin || height > thickness - options.woodMargin) return false;
     }
     return true;
   };
-  constexpr double kShallowestGroove = 2.0;  // mm
   double depth = thickness;
-  while (depth >= kShallowestGroove && !fits(depth)) depth *= 0.8;
-  if (depth < kShallowestGroove) return std::nullopt;
+  while (depth >= sizes.shallowestGroove && !fits(depth)) depth *= 0.8;
+  if (depth < sizes.shallowestGroove) return std::nullopt;
   // The notch runs past the groove and past the mitre.
   const MitreTenon view = grooveView(slide);
   const Vec3 inward = pocketInward(plates, view);
@@ -162,15 +162,14 @@ std::optional<MitreSlide> mitreSlideOf(const std::vector<Plate>& plates, const P
   }
   for (const Flat& q : slideSection(slide, 0))
     slide.notchReach = std::max(slide.notchReach, dot(minus(frame.at(q, 0), slide.middle), inward));
-  slide.notchReach = std::max(slide.notchReach, mitreTo) + kMortiseMargin;
+  slide.notchReach = std::max(slide.notchReach, mitreTo) + options.woodMargin;
   // Along the edge: the wood around the groove only where the plate's other sides are clear of the
-  // notch; the groove stopped a plate thickness (10 mm at least) short of the end ahead.
+  // notch; the groove stopped a plate thickness (sizes.stop at least) short of the end ahead.
   const auto [behind, ahead] = cornersAlongEdge(plate, slide, inward, mitreFrom, mitreTo);
-  slide.woodFrom = std::max(behind, -halfLength) + kMortiseMargin;
+  slide.woodFrom = std::max(behind, -halfLength) + options.woodMargin;
   slide.tongueFrom = slide.woodFrom;
-  slide.tongueTo = std::min(halfLength - std::max(10.0, thickness), ahead - kMortiseMargin);
-  constexpr double kShortestGroove = 10.0;  // mm
-  if (slide.tongueTo - slide.woodFrom < kShortestGroove) return std::nullopt;
+  slide.tongueTo = std::min(halfLength - std::max(sizes.stop, thickness), ahead - options.woodMargin);
+  if (slide.tongueTo - slide.woodFrom < sizes.shortestGroove) return std::nullopt;
   const PlaneFrame planeFrame(plate.bottom[0][0], axis);
   // The notch: the band at the mitre from the groove's stop back past all of the plate, out
   // through its side behind the corner (the tongue leaves through it; where the band's inner edge
@@ -179,7 +178,8 @@ std::optional<MitreSlide> mitreSlideOf(const std::vector<Plate>& plates, const P
   for (const std::vector<Loop>* face : {&plate.bottom, &plate.top})
     for (const Loop& loop : *face)
       for (const Vec3& p : loop) rearmost = std::min(rearmost, dot(minus(p, slide.middle), slide.line));
-  slide.notchFrom = rearmost - 10;
+  constexpr double kPastTheRear = 10;  // mm: the notch runs out of the plate behind by this much
+  slide.notchFrom = rearmost - kPastTheRear;
   const double out = -2 * (thickness + slide.depth);
   slide.notch = {at0(slide, inward, slide.notchFrom, out), at0(slide, inward, slide.tongueTo, out),
                  at0(slide, inward, slide.tongueTo, slide.notchReach), at0(slide, inward, slide.notchFrom, slide.notchReach)};
@@ -239,10 +239,18 @@ namespace {
 
 class MitreSlideFamily final : public JointFamily {
  public:
-  using JointFamily::JointFamily;
+  explicit MitreSlideFamily(const JointSetting& setting) : JointFamily(setting) {
+    const MitreSlideSizes& sizes = options().mitreSlide;
+    requireAtLeast(sizes.slope, 0, "mitreSlide.slope");
+    requireShare(sizes.height, "mitreSlide.height");
+    requireAtLeast(sizes.lowestRoot, 0, "mitreSlide.lowestRoot");
+    requireAtLeast(sizes.shallowestGroove, 0, "mitreSlide.shallowestGroove");
+    requireAtLeast(sizes.stop, 0, "mitreSlide.stop");
+    requireAtLeast(sizes.shortestGroove, 0, "mitreSlide.shortestGroove");
+  }
 
   bool lets(int contact, int mover, const Vec3& d) const override {
-    return mitreSlideOf(plates(), this->contact(contact), mover, d).has_value();
+    return mitreSlideOf(plates(), this->contact(contact), mover, d, options()).has_value();
   }
 
   std::vector<Vec3> faceNormals(const PlateJoint& joint) const override {
@@ -259,7 +267,7 @@ class MitreSlideFamily final : public JointFamily {
 
  private:
   MitreSlide slideOf(const PlateJoint& joint) const {
-    return *mitreSlideOf(plates(), contact(joint.contact), joint.mover, joint.direction);
+    return *mitreSlideOf(plates(), contact(joint.contact), joint.mover, joint.direction, options());
   }
 };
 

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "desia/plate.h"
+#include "desia/plate_design.h"
 #include "plate/joints/joint_family.h"
 #include "plate/joints/plate_cuts.h"
 
@@ -39,10 +40,11 @@ struct MitreSlide {
 };
 
 // The slide along the mitre `contact` for `slidePlate` leaving along d (parallel to the shared
-// edge), when the plates leave room for the groove and the tongue (a millimetre of wood round the
-// groove, a groove at least 10 mm long with wood all round it); nothing otherwise.
+// edge), sized by options.mitreSlide, when the plates leave room for the groove and the tongue
+// (options.woodMargin of wood round the groove, a groove at least mitreSlide.shortestGroove long
+// with wood all round it); nothing otherwise.
 std::optional<MitreSlide> mitreSlideOf(const std::vector<Plate>& plates, const PlateContact& contact,
-                                       int slidePlate, const Vec3& d);
+                                       int slidePlate, const Vec3& d, const JointCutOptions& options = {});
 
 // The normals of a slide's faces, from the slide plate into the tongue plate: the groove's floor
 // (and the mitre), its two flanks, and its stop.

@@ -53,7 +53,7 @@ double shiftAlongEdge(const MitreTenon& tenon, const MitreFrame& frame, const Fl
 // margin of wood for the pocket's end walls when it is oblique.
 double notchHalfWidth(const MitreTenon& tenon) {
   const double slope = std::abs(dot(tenon.into, tenon.line));
-  return slope == 0 ? tenon.halfWidth : tenon.halfWidth + slope * tenon.depth + kMortiseMargin;
+  return slope == 0 ? tenon.halfWidth : tenon.halfWidth + slope * tenon.depth + tenon.endWood;
 }
 
 // The notch through the pocket plate, in its plane: from beyond the mitre to past the pocket.
@@ -216,7 +216,7 @@ std::vector<Flat> woodAroundPocket(const std::vector<Plate>& plates, const Mitre
 }
 
 std::optional<MitreTenon> mitreTenonOf(const std::vector<Plate>& plates, const PlateContact& contact, int tenonPlate,
-                                       const Vec3& into) {
+                                       const Vec3& into, const JointCutOptions& options) {
   const std::optional<int> partner = touchingPartnerOf(contact, tenonPlate);
   // Edge to edge: neither plate's face lies on the contact (those are T joints, tenonSiteOf).
   if (!partner || facesOnContact(plates, contact) != 0) return std::nullopt;
@@ -232,9 +232,10 @@ std::optional<MitreTenon> mitreTenonOf(const std::vector<Plate>& plates, const P
   tenon.across = normalized(cross(normal, tenon.line));
   const auto [s0, s1] = extentAlong(contact.region, contact.region[0], tenon.line);
   const auto [x0, x1] = extentAlong(contact.region, contact.region[0], tenon.across);
-  tenon.halfWidth = (s1 - s0) / 6;   // a third of the mitre's length
-  tenon.halfHeight = (x1 - x0) / 8;  // a quarter of its height: room for the pocket in thin plates
-  if (2 * tenon.halfWidth < kShortestJoint || 2 * tenon.halfHeight < 1) return std::nullopt;
+  const MitreTenonSizes& sizes = options.mitreTenon;
+  tenon.halfWidth = sizes.width.of(s1 - s0) / 2;
+  tenon.halfHeight = sizes.height.of(x1 - x0) / 2;  // by default a quarter: room for the pocket in thin plates
+  if (2 * tenon.halfWidth < options.shortestJoint || 2 * tenon.halfHeight < sizes.lowestRoot) return std::nullopt;
   tenon.middle = plus(contact.region[0], plus(scaled(tenon.line, (s0 + s1) / 2), scaled(tenon.across, (x0 + x1) / 2)));
   // As deep as the pocket plate holds it with a margin of wood on both faces, at most its thickness.
   const Vec3 axis = plateThicknessAxis(pocket);
@@ -242,16 +243,16 @@ std::optional<MitreTenon> mitreTenonOf(const std::vector<Plate>& plates, const P
   tenon.depth = thickness;
   for (const double side : {-1.0, 1.0}) {
     const double height = dot(minus(plus(tenon.middle, scaled(tenon.across, side * tenon.halfHeight)), pocket.bottom[0][0]), axis);
-    if (height < kMortiseMargin || height > thickness - kMortiseMargin) return std::nullopt;
-    if (rate > 1e-9) tenon.depth = std::min(tenon.depth, (thickness - kMortiseMargin - height) / rate);
-    if (rate < -1e-9) tenon.depth = std::min(tenon.depth, (height - kMortiseMargin) / -rate);
+    if (height < options.woodMargin || height > thickness - options.woodMargin) return std::nullopt;
+    if (rate > 1e-9) tenon.depth = std::min(tenon.depth, (thickness - options.woodMargin - height) / rate);
+    if (rate < -1e-9) tenon.depth = std::min(tenon.depth, (height - options.woodMargin) / -rate);
   }
-  constexpr double kShallowestPocket = 2.0;  // mm
-  if (tenon.depth < kShallowestPocket) return std::nullopt;
+  if (tenon.depth < sizes.shallowestPocket) return std::nullopt;
   // An oblique tenon's notch runs further along the edge: it must stay on the mitre.
-  if (notchHalfWidth(tenon) > (s1 - s0) / 2 - kMortiseMargin) {
-    tenon.halfWidth -= notchHalfWidth(tenon) - ((s1 - s0) / 2 - kMortiseMargin);
-    if (2 * tenon.halfWidth < kShortestJoint) return std::nullopt;
+  tenon.endWood = options.woodMargin;
+  if (notchHalfWidth(tenon) > (s1 - s0) / 2 - options.woodMargin) {
+    tenon.halfWidth -= notchHalfWidth(tenon) - ((s1 - s0) / 2 - options.woodMargin);
+    if (2 * tenon.halfWidth < options.shortestJoint) return std::nullopt;
   }
   // The notch runs past the pocket and past the mitre (its cut ends where the plate is whole).
   const Vec3 inwardDirection = pocketInward(plates, tenon);
@@ -260,7 +261,7 @@ std::optional<MitreTenon> mitreTenonOf(const std::vector<Plate>& plates, const P
     tenon.notchReach = std::max(tenon.notchReach, dot(minus(sectionFrame.at(q, 0), tenon.middle), inwardDirection));
   double mitreReach = 0;  // where the mitre ends and the plate is whole again
   for (const Vec3& p : contact.region) mitreReach = std::max(mitreReach, dot(minus(p, tenon.middle), inwardDirection));
-  tenon.notchReach = std::max(tenon.notchReach, mitreReach) + kMortiseMargin;
+  tenon.notchReach = std::max(tenon.notchReach, mitreReach) + options.woodMargin;
   // Past the mitre, the notch's end must lie in the pocket plate where it is whole (away from its
   // other sides), so that its cut ends in wood.
   auto at = [&](double s, double u) {
@@ -291,10 +292,16 @@ namespace {
 
 class MitreTenonFamily final : public JointFamily {
  public:
-  using JointFamily::JointFamily;
+  explicit MitreTenonFamily(const JointSetting& setting) : JointFamily(setting) {
+    const MitreTenonSizes& sizes = options().mitreTenon;
+    requireShare(sizes.width, "mitreTenon.width");
+    requireShare(sizes.height, "mitreTenon.height");
+    requireAtLeast(sizes.lowestRoot, 0, "mitreTenon.lowestRoot");
+    requireAtLeast(sizes.shallowestPocket, 0, "mitreTenon.shallowestPocket");
+  }
 
   bool lets(int contact, int mover, const Vec3& d) const override {
-    return mitreTenonOf(plates(), this->contact(contact), mover, negated(d)).has_value();
+    return mitreTenonOf(plates(), this->contact(contact), mover, negated(d), options()).has_value();
   }
 
   // Straight away from a plate it meets at a mitre (a mitre tenon's way out; every touching
@@ -324,7 +331,7 @@ class MitreTenonFamily final : public JointFamily {
 
  private:
   MitreTenon tenonOf(const PlateJoint& joint) const {
-    return *mitreTenonOf(plates(), contact(joint.contact), joint.mover, negated(joint.direction));
+    return *mitreTenonOf(plates(), contact(joint.contact), joint.mover, negated(joint.direction), options());
   }
 };
 

@@ -15,6 +15,7 @@
 
 #include "analysis/vec3.h"
 #include "desia/plate.h"
+#include "desia/plate_design.h"
 #include "plate/joints/joint_family.h"
 #include "plate/joints/plate_cuts.h"
 
@@ -31,13 +32,15 @@ struct MitreTenon {
   double depth = 0;       // how far it reaches along `into`
   double notchReach = 0;  // how far the notch runs into the pocket plate from `middle`, past the
                           // pocket and past the mitre (where the plate is whole again)
+  double endWood = 0;     // mm of wood the notch leaves beyond an oblique tenon's tip along the
+                          // edge (JointCutOptions::woodMargin)
 };
 
-// The tenon across the mitre `contact` for `tenonPlate` leaving the other plate along -into, when
-// the other plate is thick enough there to hold its pocket (a millimetre of wood on every side);
-// nothing for other contacts or directions.
+// The tenon across the mitre `contact` for `tenonPlate` leaving the other plate along -into, sized
+// by options.mitreTenon, when the other plate is thick enough there to hold its pocket (with
+// options.woodMargin of wood on every side); nothing for other contacts or directions.
 std::optional<MitreTenon> mitreTenonOf(const std::vector<Plate>& plates, const PlateContact& contact,
-                                       int tenonPlate, const Vec3& into);
+                                       int tenonPlate, const Vec3& into, const JointCutOptions& options = {});
 
 // The normals of a mitre tenon's faces, from the tenon plate into the pocket plate: its tip, its
 // two ends and its two sides (the mitre contact itself stays).

@@ -37,11 +37,12 @@ Loop footprint(const Plate& tenonPlate, const TenonSite& site, double start, dou
 }
 
 // The mortise of one tenon: its footprint grown by half the clearance, run out past the open edge.
-Loop mortiseOf(const std::vector<Plate>& plates, const TenonSite& site, double start, double end, double clearance) {
+Loop mortiseOf(const std::vector<Plate>& plates, const TenonSite& site, double start, double end,
+               const JointCutOptions& options) {
   const Plate& tenonPlate = plates[site.tenonPlate];
-  const double width = plateThickness(tenonPlate), grow = clearance / 2;
-  const double low = site.openSide < 0 ? -kMortiseMargin - grow : -grow;
-  const double high = site.openSide > 0 ? width + kMortiseMargin + grow : width + grow;
+  const double width = plateThickness(tenonPlate), grow = options.clearance / 2;
+  const double low = site.openSide < 0 ? -options.woodMargin - grow : -grow;
+  const double high = site.openSide > 0 ? width + options.woodMargin + grow : width + grow;
   return footprint(tenonPlate, site, start - grow, end + grow, low, high);
 }
 
@@ -58,11 +59,11 @@ Loop tenonOf(const std::vector<Plate>& plates, const TenonSite& site, double sta
 // Which kind of mortise fits: through (inside the face plate with a margin all round), open at
 // one side (that side of the tenon plate flush with the face plate's edge), or none.
 std::optional<int> mortiseKind(const std::vector<Plate>& plates, TenonSite site,
-                               const std::vector<std::pair<double, double>>& spans, double clearance) {
+                               const std::vector<std::pair<double, double>>& spans, const JointCutOptions& options) {
   const Plate& tenonPlate = plates[site.tenonPlate];
   const Plate& mortisePlate = plates[site.mortisePlate];
   const PlaneFrame frame(mortisePlate.bottom[0][0], plateThicknessAxis(mortisePlate));
-  const double width = plateThickness(tenonPlate), margin = kMortiseMargin + clearance / 2;
+  const double width = plateThickness(tenonPlate), margin = options.woodMargin + options.clearance / 2;
   constexpr double kFlush = 0.01;  // mm
   const std::vector<Loop> whole = faceRegion(mortisePlate, ClipperLib::ctIntersection);
   const std::vector<Loop> any = faceRegion(mortisePlate, ClipperLib::ctUnion);
@@ -78,8 +79,8 @@ std::optional<int> mortiseKind(const std::vector<Plate>& plates, TenonSite site,
     return areaAgainst(rects, any, frame, false) < 1e-6;
   };
   if (inside(-margin, width + margin)) return 0;
-  if (inside(-margin, width - kFlush) && clearBeyond(width + kFlush, width + kMortiseMargin)) return 1;
-  if (inside(kFlush, width + margin) && clearBeyond(-kMortiseMargin, -kFlush)) return -1;
+  if (inside(-margin, width - kFlush) && clearBeyond(width + kFlush, width + options.woodMargin)) return 1;
+  if (inside(kFlush, width + margin) && clearBeyond(-options.woodMargin, -kFlush)) return -1;
   return std::nullopt;
 }
 
@@ -89,7 +90,7 @@ class TenonCut final : public JointCut {
   void addTo(const std::vector<Plate>& plates, const JointCutOptions& options, PlateCuts& cuts) const override {
     for (const auto& [start, end] : tenonSpans(plates, site_, options)) {
       cuts.added[site_.tenonPlate].push_back(tenonOf(plates, site_, start, end));
-      cuts.removed[site_.mortisePlate].push_back(mortiseOf(plates, site_, start, end, options.clearance));
+      cuts.removed[site_.mortisePlate].push_back(mortiseOf(plates, site_, start, end, options));
     }
   }
 
@@ -109,12 +110,12 @@ std::vector<std::pair<double, double>> tenonSpans(const std::vector<Plate>& plat
                                                   const JointCutOptions& options) {
   const double length = site.to - site.from;
   const double thickness = plateThickness(plates[site.tenonPlate]);
-  const int count = options.tenonCount > 0 ? options.tenonCount : (length >= 8 * thickness ? 2 : 1);
+  const int count = options.tenonCount > 0 ? options.tenonCount : (length >= options.twoTenonsFrom * thickness ? 2 : 1);
   if (site.stagger != 0) {
     // 4 count + 1 equal pieces; this side's tenons in pieces 1, 5, 9, ... or 3, 7, 11, ...
     const double piece = length / (4 * count + 1);
     const double width = std::min(options.tenonWidth > 0 ? options.tenonWidth : piece, piece);
-    if (width < 2 * kMortiseMargin) return {};
+    if (width < 2 * options.woodMargin) return {};
     // Pieces are counted the same way on both sides: along the edge's canonical direction.
     const bool reversed = dot(site.along, canonicalSign(site.along)) < 0;
     std::vector<std::pair<double, double>> spans;
@@ -129,7 +130,7 @@ std::vector<std::pair<double, double>> tenonSpans(const std::vector<Plate>& plat
   const double width = options.tenonWidth > 0 ? options.tenonWidth : length / (2 * count + 1);
   const double pitch = length / count;
   // Tenons need room between them and at the ends: a tenon never wider than its share less a gap.
-  if (width >= pitch - std::min(pitch / 3, 2 * kMortiseMargin)) return {};
+  if (width >= pitch - std::min(pitch / 3, 2 * options.woodMargin)) return {};
   std::vector<std::pair<double, double>> spans;
   for (int j = 0; j < count; ++j) {
     const double centre = site.from + pitch * (j + 0.5);
@@ -169,7 +170,8 @@ void staggerOpposingSites(const std::vector<Plate>& plates, std::vector<std::opt
 
 // A square side of one prismatic plate standing on a face of another at a right angle, its whole
 // thickness on the face: the geometry every edge joint needs (no tenons or housing chosen yet).
-std::optional<TenonSite> squareEdgeSite(const std::vector<Plate>& plates, const PlateContact& contact) {
+std::optional<TenonSite> squareEdgeSite(const std::vector<Plate>& plates, const PlateContact& contact,
+                                        const JointCutOptions& options) {
   const Vec3 axisA = plateThicknessAxis(plates[contact.a]), axisB = plateThicknessAxis(plates[contact.b]);
   const bool aOnFace = std::abs(dot(contact.normal, axisA)) > 1 - kSquare;
   const bool bOnFace = std::abs(dot(contact.normal, axisB)) > 1 - kSquare;
@@ -202,7 +204,7 @@ std::optional<TenonSite> squareEdgeSite(const std::vector<Plate>& plates, const 
     // The whole thickness of S must stand on F, or the tenon would hang beside the mortise.
     const auto [acrossStart, acrossEnd] = extentAlong(contact.region, bottom[k], site.across);
     if (acrossStart > kTolerance || acrossEnd < plateThickness(tenonPlate) - kTolerance) return std::nullopt;
-    if (site.to - site.from < kShortestJoint) return std::nullopt;
+    if (site.to - site.from < options.shortestJoint) return std::nullopt;
     return site;
   }
   return std::nullopt;
@@ -210,11 +212,11 @@ std::optional<TenonSite> squareEdgeSite(const std::vector<Plate>& plates, const 
 
 std::optional<TenonSite> tenonSiteOf(const std::vector<Plate>& plates, const PlateContact& contact,
                                      const JointCutOptions& options) {
-  std::optional<TenonSite> site = squareEdgeSite(plates, contact);
+  std::optional<TenonSite> site = squareEdgeSite(plates, contact, options);
   if (!site) return std::nullopt;
   const std::vector<std::pair<double, double>> spans = tenonSpans(plates, *site, options);
   if (spans.empty()) return std::nullopt;
-  const std::optional<int> kind = mortiseKind(plates, *site, spans, options.clearance);
+  const std::optional<int> kind = mortiseKind(plates, *site, spans, options);
   if (!kind) return std::nullopt;
   site->openSide = *kind;
   return site;
@@ -231,7 +233,7 @@ std::vector<CutFootprint> tenonFootprints(const std::vector<Plate>& plates, cons
                                           const JointCutOptions& options) {
   std::vector<CutFootprint> footprints;
   for (const auto& [start, end] : tenonSpans(plates, site, options)) {
-    footprints.push_back({site.mortisePlate, 3, mortiseOf(plates, site, start, end, options.clearance)});
+    footprints.push_back({site.mortisePlate, 3, mortiseOf(plates, site, start, end, options)});
   }
   return footprints;
 }
@@ -243,6 +245,9 @@ namespace {
 class TenonFamily final : public JointFamily {
  public:
   explicit TenonFamily(const JointSetting& setting) : JointFamily(setting) {
+    requireAtLeast(options().tenonWidth, 0, "tenonWidth");
+    requireAtLeast(options().tenonCount, 0, "tenonCount");
+    requireAtLeast(options().twoTenonsFrom, 0, "twoTenonsFrom");
     for (const PlateContact& contact : graph().computedContacts)
       sites_.push_back(tenonSiteOf(plates(), contact, options()));
     staggerOpposingSites(plates(), &sites_);

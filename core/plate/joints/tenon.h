@@ -45,7 +45,8 @@ struct TenonSite {
 // A square side of one prismatic plate standing on a face of another at a right angle, its whole
 // thickness on the face: the geometry every edge joint needs (no tenons or housing chosen yet;
 // a sliding dovetail's site starts from it too).
-std::optional<TenonSite> squareEdgeSite(const std::vector<Plate>& plates, const PlateContact& contact);
+std::optional<TenonSite> squareEdgeSite(const std::vector<Plate>& plates, const PlateContact& contact,
+                                        const JointCutOptions& options);
 
 // The site of a mortise-and-tenon joint on `contact`, when the geometry allows one: a square side
 // of one prismatic plate on a face of another, at right angles, its whole thickness on the face,
