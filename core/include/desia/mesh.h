@@ -7,17 +7,9 @@
 #include <string>
 #include <vector>
 
-namespace desia {
+#include "desia/triangle_mesh.h"
 
-// Vertices, and triangles as 0-based indices into them (messages print them 1-based, as OBJ does).
-struct TriangleMesh {
-  std::vector<std::array<double, 3>> vertices;
-  std::vector<std::array<int, 3>> triangles;
-  // OBJ only: the object or group (`o` / `g` record) each triangle belongs to, an index into
-  // groupNames; empty when the file has no such records (and for STL).
-  std::vector<int> triangleGroup;
-  std::vector<std::string> groupNames;
-};
+namespace desia {
 
 // Limits checked while reading, before the big allocations (the CLI also caps the file size).
 struct MeshLimits {
@@ -39,12 +31,6 @@ TriangleMesh parseStl(const std::string& bytes, const std::string& source = "<in
 // OBJ or STL, decided from the content (binary STL size rule, a leading "solid") and the
 // extension of `source` (".obj", ".stl", any case).
 TriangleMesh parseMesh(const std::string& bytes, const std::string& source = "<input>");
-
-// Throws BadInput unless the mesh has vertices and triangles, finite coordinates, indices in
-// range, no triangle repeating a vertex, and every undirected edge in an even number of triangles
-// (two, or four where solids touch along an edge; the first offending edge in vertex order is
-// named, 1-based).
-void checkClosedMesh(const TriangleMesh& mesh, const std::string& source = "<input>");
 
 // The file name of `source` without folders and extension ("models/bunny.obj" -> "bunny"); empty
 // for placeholders such as "<input>".

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "desia/mesh.h"
+#include "desia/triangle_mesh.h"
 #include "desia/voxel_grid.h"
 
 namespace desia {

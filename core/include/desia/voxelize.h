@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "desia/mesh.h"
+#include "desia/triangle_mesh.h"
 #include "desia/voxel_grid.h"
 
 namespace desia {

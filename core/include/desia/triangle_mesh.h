@@ -1,0 +1,28 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Closed triangle meshes: the solids every kind reads (shapes to voxelize, polyhedra to cut into
+// plates) and writes (part meshes). Reading them from OBJ and STL is io's (desia/mesh.h).
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace desia {
+
+// Vertices, and triangles as 0-based indices into them (messages print them 1-based, as OBJ does).
+struct TriangleMesh {
+  std::vector<std::array<double, 3>> vertices;
+  std::vector<std::array<int, 3>> triangles;
+  // OBJ only: the object or group (`o` / `g` record) each triangle belongs to, an index into
+  // groupNames; empty when the file has no such records (and for STL).
+  std::vector<int> triangleGroup;
+  std::vector<std::string> groupNames;
+};
+
+// Throws BadInput unless the mesh has vertices and triangles, finite coordinates, indices in
+// range, no triangle repeating a vertex, and every undirected edge in an even number of triangles
+// (two, or four where solids touch along an edge; the first offending edge in vertex order is
+// named, 1-based).
+void checkClosedMesh(const TriangleMesh& mesh, const std::string& source = "<input>");
+
+}  // namespace desia

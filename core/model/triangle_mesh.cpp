@@ -1,0 +1,62 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "desia/triangle_mesh.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+#include "desia/error.h"
+
+namespace desia {
+
+void checkClosedMesh(const TriangleMesh& mesh, const std::string& source) {
+  if (mesh.vertices.empty()) throwBadInput(source, "the mesh has no vertices");
+  if (mesh.triangles.empty()) throwBadInput(source, "the mesh has no triangles (no faces)");
+  const int64_t vertexCount = static_cast<int64_t>(mesh.vertices.size());
+  for (size_t v = 0; v < mesh.vertices.size(); ++v) {
+    for (double value : mesh.vertices[v]) {
+      if (!std::isfinite(value)) {
+        throwBadInput(source, "vertex " + std::to_string(v + 1) + " has a coordinate that is not finite (" +
+                                  (std::isnan(value) ? "nan" : "inf") + ")");
+      }
+    }
+  }
+  // One key per undirected edge (smaller index in the high half): sorting groups equal edges, in
+  // vertex order, so the first bad edge named is the same on every platform.
+  std::vector<uint64_t> edges;
+  edges.reserve(mesh.triangles.size() * 3);
+  for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const auto& tri = mesh.triangles[t];
+    for (int k = 0; k < 3; ++k) {
+      if (tri[k] < 0 || tri[k] >= vertexCount) {
+        throwBadInput(source, "triangle " + std::to_string(t + 1) + " refers to vertex " + std::to_string(tri[k] + 1) +
+                                  ", but the mesh has " + std::to_string(vertexCount) + " vertices");
+      }
+    }
+    for (int k = 0; k < 3; ++k) {
+      const uint32_t a = static_cast<uint32_t>(tri[k]), b = static_cast<uint32_t>(tri[(k + 1) % 3]);
+      if (a == b) {
+        throwBadInput(source, "triangle " + std::to_string(t + 1) + " uses vertex " + std::to_string(a + 1) + " twice");
+      }
+      edges.push_back(static_cast<uint64_t>(std::min(a, b)) << 32 | std::max(a, b));
+    }
+  }
+  std::sort(edges.begin(), edges.end());
+  for (size_t k = 0; k < edges.size();) {
+    size_t end = k + 1;
+    while (end < edges.size() && edges[end] == edges[k]) ++end;
+    const size_t uses = end - k;
+    // The ray-parity test needs the surface to be a cycle mod 2: every edge in an even number of
+    // triangles. Two is the usual case; four happens where two solid blocks touch only along an
+    // edge, e.g. a voxel part's STL export, whose readers weld the two copies of a pinch edge.
+    if (uses % 2 != 0) {
+      throwBadInput(source, "the mesh is not closed: edge between vertices " + std::to_string((edges[k] >> 32) + 1) +
+                                " and " + std::to_string((edges[k] & 0xffffffffu) + 1) + " belongs to " +
+                                std::to_string(uses) + (uses == 1 ? " triangle" : " triangles") +
+                                " (a closed solid needs 2)");
+    }
+    k = end;
+  }
+}
+
+}  // namespace desia
