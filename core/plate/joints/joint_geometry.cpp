@@ -8,10 +8,6 @@
 
 namespace desia {
 
-std::string plateLabel(const Plate& plate) {
-  return "plate " + std::to_string(plate.id) + (plate.name.empty() ? "" : " (" + plate.name + ")");
-}
-
 double areaOf(const ClipperLib::Paths& paths) {
   double area = 0;
   for (const ClipperLib::Path& path : paths) area += ClipperLib::Area(path);

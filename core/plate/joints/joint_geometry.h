@@ -19,9 +19,6 @@ namespace desia {
 constexpr double kSquare = 1e-6;     // |cos| below this: at a right angle
 constexpr double kTolerance = 0.05;  // mm: faces closer than this lie on one another
 
-// "plate 7 (shelf)": how messages name a plate.
-std::string plateLabel(const Plate& plate);
-
 // The area (mm^2) of Clipper paths in a PlaneFrame's integer coordinates.
 double areaOf(const ClipperLib::Paths& paths);
 

@@ -11,6 +11,7 @@
 #include "plate/plan_squaring.h"
 #include "plate/plane_frame.h"
 #include "plate/plate_shape.h"
+#include "plate/plate_solid.h"
 
 namespace desia {
 namespace {
@@ -210,7 +211,7 @@ std::vector<Flat> woodAroundPocket(const std::vector<Plate>& plates, const Mitre
     }
   }
   if (bitten.size() != wood.size() + 4) {
-    throwBadInput("", "the pocket of a mitre joint does not lie on the mitre of " + plateLabel(pocket));
+    throwBadInput("", "the pocket of a mitre joint does not lie on the mitre of " + geometry::plateName(pocket));
   }
   return bitten;
 }

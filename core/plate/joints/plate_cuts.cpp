@@ -10,6 +10,7 @@
 #include "plate/exact_vertices.h"
 #include "plate/joints/joint_geometry.h"
 #include "plate/plate_shape.h"
+#include "plate/plate_solid.h"
 
 namespace desia {
 namespace {
@@ -30,14 +31,14 @@ std::vector<Loop> cutFace(const Plate& plate, const std::vector<Loop>& added, co
   ClipperLib::PolyTree tree;
   cut.Execute(ClipperLib::ctDifference, tree, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
   if (tree.ChildCount() != 1) {
-    throwBadInput("", "the joints cut " + plateLabel(plate) + " into " + std::to_string(tree.ChildCount()) + " pieces");
+    throwBadInput("", "the joints cut " + geometry::plateName(plate) + " into " + std::to_string(tree.ChildCount()) + " pieces");
   }
   const ClipperLib::PolyNode* outer = tree.Childs[0];
   const ExactVertices exact(frame, {&plate.bottom, &added, &removed});
   std::vector<Loop> loops;
   loops.push_back(exact.loop(outer->Contour));
   for (const ClipperLib::PolyNode* hole : outer->Childs) {
-    if (hole->ChildCount() > 0) throwBadInput("", "the joints cut a loose piece inside " + plateLabel(plate));
+    if (hole->ChildCount() > 0) throwBadInput("", "the joints cut a loose piece inside " + geometry::plateName(plate));
     loops.push_back(exact.loop(hole->Contour));
   }
   return loops;
@@ -75,7 +76,7 @@ void requireApart(const Plate& plate, const std::vector<Loop>& cuts, const Plane
   for (size_t i = 0; i < cuts.size(); ++i) {
     for (size_t j = 0; j < i; ++j) {
       if (cutsShareWood(plate, cuts[i], cuts[j], frame)) {
-        throwBadInput("", "the mortises and slots cut into " + plateLabel(plate) + " run into each other");
+        throwBadInput("", "the mortises and slots cut into " + geometry::plateName(plate) + " run into each other");
       }
     }
   }
