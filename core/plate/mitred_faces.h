@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "desia/mesh.h"
+#include "desia/triangle_mesh.h"
 #include "desia/mitred_plates.h"
 #include "plate/mitred_mesh.h"
 

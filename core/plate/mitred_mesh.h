@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "desia/assembly.h"
-#include "desia/mesh.h"
+#include "desia/triangle_mesh.h"
 
 namespace desia {
 namespace mitred {

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "desia/mesh.h"
+#include "desia/triangle_mesh.h"
 #include "desia/plate.h"
 #include "desia/plate_design.h"
 #include "plate/joint_model.h"

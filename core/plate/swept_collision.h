@@ -4,7 +4,7 @@
 // distance passes through another.
 #pragma once
 
-#include "desia/mesh.h"
+#include "desia/triangle_mesh.h"
 #include "desia/plate.h"
 
 namespace desia {

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "desia/mesh.h"
+#include "desia/triangle_mesh.h"
 #include "desia/plate.h"
 
 namespace desia {

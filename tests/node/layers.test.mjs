@@ -1,0 +1,84 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The core's layers (docs/architecture.md), checked on every #include: a file may include headers
+// of its own layer and of the layers below it, never above. model (core/model, core/graph) <
+// analysis, search < the kinds (core/voxel, core/plate, core/frame; frames are built on voxels) <
+// io < cli. A layer's private headers ("voxel/x.h") are for its own folder, except the few listed
+// below that a layer offers the ones above it. A new public header gets its layer here.
+import assert from 'node:assert/strict';
+import fs from 'node:fs';
+import path from 'node:path';
+import { test } from 'node:test';
+
+import { root } from './support.mjs';
+
+const RANK = { model: 0, analysis: 1, search: 1, voxel: 2, plate: 2, frame: 2, io: 3, cli: 4 };
+const FOLDER_LAYER = { model: 'model', graph: 'model', analysis: 'analysis', search: 'search', voxel: 'voxel',
+  plate: 'plate', frame: 'frame', io: 'io', cli: 'cli' };
+
+// Public headers (core/include/desia) by the layer that implements them.
+const HEADER_LAYER = {
+  'assembly.h': 'model', 'error.h': 'model', 'version.h': 'model', 'tolerances.h': 'model',
+  'triangle_mesh.h': 'model', 'directed_graph.h': 'model', 'cut_points.h': 'model',
+  'blocking_graph.h': 'analysis', 'interlocking.h': 'analysis', 'disassembly.h': 'analysis', 'contact_check.h': 'analysis',
+  'design_search.h': 'search',
+  'voxel_grid.h': 'voxel', 'voxel_design.h': 'voxel', 'voxel_disassembly.h': 'voxel', 'voxel_surface.h': 'voxel',
+  'voxelize.h': 'voxel',
+  'plate.h': 'plate', 'plate_design.h': 'plate', 'plate_repair.h': 'plate', 'mitred_plates.h': 'plate',
+  'frame.h': 'frame', 'frame_design.h': 'frame',
+  'document.h': 'io', 'check.h': 'io', 'document_check.h': 'io', 'mesh.h': 'io', 'puz_format.h': 'io',
+  'design_io.h': 'io', 'plate_design_io.h': 'io', 'frame_design_io.h': 'io', 'frame_format.h': 'io',
+  'export.h': 'io', 'export_formats.h': 'io', 'cut_sheets.h': 'io', 'design_session.h': 'io',
+};
+
+// Private headers a layer offers the layers above it: vectors for every layer, the part-motion
+// helpers and the construction search for the designers, a plate's plane for cut sheets.
+const SHARED_PRIVATE = new Set(['analysis/vec3.h', 'analysis/part_motion.h', 'search/construction_search.h',
+  'search/restarts.h', 'plate/plane_frame.h']);
+
+function layerOfInclude(spelled, includingFolder) {
+  if (spelled.startsWith('desia/')) return HEADER_LAYER[spelled.slice('desia/'.length)];
+  const folder = spelled.split('/')[0];
+  if (folder in FOLDER_LAYER && spelled.includes('/')) return FOLDER_LAYER[folder];
+  return FOLDER_LAYER[includingFolder];  // a header beside the file
+}
+
+function* coreFiles(folder) {
+  for (const entry of fs.readdirSync(folder, { withFileTypes: true })) {
+    const full = path.join(folder, entry.name);
+    if (entry.isDirectory()) yield* coreFiles(full);
+    else if (/\.(cpp|h)$/.test(entry.name)) yield full;
+  }
+}
+
+test('every public header has a layer', () => {
+  const headers = fs.readdirSync(path.join(root, 'core/include/desia'));
+  assert.deepEqual(headers.filter((h) => !(h in HEADER_LAYER)), []);
+});
+
+test('no file includes a header of a layer above its own, or another folder\'s private header', () => {
+  const problems = [];
+  for (const file of coreFiles(path.join(root, 'core'))) {
+    const relative = path.relative(path.join(root, 'core'), file);
+    const top = relative.split(path.sep)[0];
+    const layer = top === 'include' ? HEADER_LAYER[path.basename(file)] : FOLDER_LAYER[top];
+    if (!layer) continue;
+    const lines = fs.readFileSync(file, 'utf8').split('\n');
+    lines.forEach((line, index) => {
+      const match = /^#include "([^"]+)"/.exec(line);
+      if (!match) return;
+      const spelled = match[1];
+      const target = layerOfInclude(spelled, top);
+      const where = `core/${relative}:${index + 1}: ${spelled}`;
+      if (!target) return problems.push(`${where} has no layer`);
+      const frameOnVoxels = layer === 'frame' && target === 'voxel';
+      if (RANK[target] > RANK[layer] || (RANK[target] === RANK[layer] && target !== layer && !frameOnVoxels)) {
+        problems.push(`${where}: ${layer} must not include ${target}`);
+      }
+      const folder = spelled.split('/')[0];
+      const foreignPrivate = !spelled.startsWith('desia/') && spelled.includes('/') && folder in FOLDER_LAYER &&
+        FOLDER_LAYER[folder] !== layer && !SHARED_PRIVATE.has(spelled);
+      if (foreignPrivate) problems.push(`${where}: a private header of ${folder}`);
+    });
+  }
+  assert.deepEqual(problems, []);
+});
