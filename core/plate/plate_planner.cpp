@@ -132,7 +132,7 @@ std::vector<CutFootprint> PlateJointPlanner::cutsOf(const std::vector<PlateJoint
 }
 
 // Would the new cuts run into each other or into the cuts of the steps before? Then no plan
-// through this step can be cut (cutTenonJoints refuses it): drop the step now, not after every
+// through this step can be cut (cutJoints refuses it): drop the step now, not after every
 // ordering of the plates after it has been tried (BOOKSHELF: a mortise from below and a dovetail
 // housing from above at the same place in a shelf).
 bool PlateJointPlanner::cutsCollide(const std::vector<PlanStep>& steps, const std::vector<CutFootprint>& cuts) const {

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The registry of plate joint families (paper Section 5.2): every family a design may make, in
 // the order the planner prefers them, and what the planner asks of them. Adding a family is a
-// file of its own (its geometry, its cut and a JointFamily) and one line in the table of
-// joint_families.cpp (plus its JointType and user-visible name).
+// file of its own (its sites, its cut and its JointFamily) and its line in the two tables of
+// joint_families.cpp (kFamilies, with its user-visible name, and kCutOrder), plus its JointType
+// in desia/plate_design.h (and the name in the package's types, wasm/index.d.ts).
 #pragma once
 
 #include <memory>

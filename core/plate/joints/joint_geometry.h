@@ -7,7 +7,6 @@
 #include <polyclipping/clipper.hpp>
 
 #include <optional>
-#include <string>
 #include <utility>
 #include <vector>
 

@@ -108,35 +108,25 @@ class MitreSlideCut final : public JointCut {
 
 }  // namespace
 
-std::optional<MitreSlide> mitreSlideOf(const std::vector<Plate>& plates, const PlateContact& contact, int slidePlate,
-                                       const Vec3& d, const JointCutOptions& options) {
-  const std::optional<int> partner = touchingPartnerOf(contact, slidePlate);
-  // Edge to edge: neither face on the contact (those are T joints and laps).
-  if (!partner || contact.region.size() < 3 || facesOnContact(plates, contact) != 0) return std::nullopt;
-  MitreSlide slide;
-  slide.slidePlate = slidePlate;
-  slide.tonguePlate = *partner;
-  const Plate& plate = plates[slidePlate];
-  const Vec3 edge = normalized(contact.edgeDirection);
-  if (std::abs(std::abs(dot(edge, normalized(d))) - 1) > 1e-12) return std::nullopt;  // along the edge only
-  // The way out itself, and the mitre's normal made square to it: every face of the groove but its
-  // stop then lies along d to rounding of doubles (the edge and d may differ by 1e-9).
+namespace {
+
+// The slide's frame: its way out `d` itself, and the mitre's normal made square to it (every face
+// of the groove but its stop then lies along d to rounding of doubles: the edge and d may differ
+// by 1e-9); the groove's depth across the edge in the slide plate. False where the mitre all but
+// lies in the plate.
+bool setSlideFrame(MitreSlide& slide, const PlateContact& contact, const Plate& plate, const Vec3& d) {
   slide.line = normalized(d);
-  const Vec3 normal = contact.a == slidePlate ? negated(contact.normal) : contact.normal;  // tongue -> slide plate
+  const Vec3 normal = contact.a == slide.slidePlate ? negated(contact.normal) : contact.normal;  // tongue -> slide plate
   slide.mitreNormal = normalized(minus(normal, scaled(slide.line, dot(normal, slide.line))));
   slide.across = normalized(cross(slide.mitreNormal, slide.line));
   slide.into = normalized(cross(plateThicknessAxis(plate), slide.line));
   if (dot(slide.into, slide.mitreNormal) < 0) slide.into = negated(slide.into);
-  if (dot(slide.into, slide.mitreNormal) < 0.05) return std::nullopt;  // the mitre all but lies in the plate
-  const auto [s0, s1] = extentAlong(contact.region, contact.region[0], slide.line);
-  const auto [x0, x1] = extentAlong(contact.region, contact.region[0], slide.across);
-  slide.middle = plus(contact.region[0], plus(scaled(slide.line, (s0 + s1) / 2), scaled(slide.across, (x0 + x1) / 2)));
-  const double halfLength = (s1 - s0) / 2;
-  const MitreSlideSizes& sizes = options.mitreSlide;
-  slide.halfHeight = sizes.height.of(x1 - x0) / 2;
-  slide.lean = sizes.slope;
-  if (2 * slide.halfHeight < sizes.lowestRoot) return std::nullopt;
-  // As deep as the slide plate holds the groove with the margin of wood on both faces.
+  return !(dot(slide.into, slide.mitreNormal) < 0.05);
+}
+
+// The groove as deep as the slide plate holds it with the margin of wood on both faces: from the
+// plate's thickness down by a fifth at a time; false below the shallowest groove.
+bool setDeepestGroove(MitreSlide& slide, const Plate& plate, const JointCutOptions& options) {
   const Vec3 axis = plateThicknessAxis(plate);
   const double thickness = plateThickness(plate);
   auto fits = [&](double depth) {
@@ -149,8 +139,74 @@ std::optional<MitreSlide> mitreSlideOf(const std::vector<Plate>& plates, const P
     return true;
   };
   double depth = thickness;
-  while (depth >= sizes.shallowestGroove && !fits(depth)) depth *= 0.8;
-  if (depth < sizes.shallowestGroove) return std::nullopt;
+  while (depth >= options.mitreSlide.shallowestGroove && !fits(depth)) depth *= 0.8;
+  return !(depth < options.mitreSlide.shallowestGroove);
+}
+
+// The side of the loop through which the notch band's inner edge (at notchReach) leaves the plate
+// behind the wood round the groove, or -1.
+int sideCrossedBehind(const MitreSlide& slide, const Vec3& inward, const Loop& loop) {
+  int side = -1;
+  double nearest = -HUGE_VAL;
+  for (size_t k = 0; k < loop.size(); ++k) {
+    const Vec3 a = minus(loop[k], slide.middle), b = minus(loop[(k + 1) % loop.size()], slide.middle);
+    const double ua = dot(a, inward), ub = dot(b, inward);
+    if ((ua - slide.notchReach) * (ub - slide.notchReach) > 0 || ua == ub) continue;
+    const double t = (slide.notchReach - ua) / (ub - ua);
+    const double sv = dot(a, slide.line) + t * (dot(b, slide.line) - dot(a, slide.line));
+    if (sv < slide.woodFrom && sv > nearest) {
+      nearest = sv;
+      side = static_cast<int>(k);
+    }
+  }
+  return side;
+}
+
+// Does the notch cut the slide plate cleanly? Its band's inner edge leaves the plate behind through
+// one side on both faces (its wall meets that side: secondFacePartner; where a face's outline turns
+// between them, it would not), the plate stays one piece (an outline that comes back to the band
+// behind, not convex there, would fall apart), and the notch's end past the mitre lies where the
+// plate is whole, so that its cut ends in wood.
+bool notchCutsCleanly(const MitreSlide& slide, const Plate& plate, const Vec3& inward, double mitreTo) {
+  const int behind = sideCrossedBehind(slide, inward, plate.bottom[0]);
+  if (behind != sideCrossedBehind(slide, inward, plate.top[0]) || behind < 0) return false;
+  const PlaneFrame planeFrame(plate.bottom[0][0], plateThicknessAxis(plate));
+  ClipperLib::Clipper clipper;
+  clipper.AddPaths(clipperPaths(plate.bottom, planeFrame), ClipperLib::ptSubject, true);
+  clipper.AddPaths(clipperPaths({slide.notch}, planeFrame), ClipperLib::ptClip, true);
+  ClipperLib::PolyTree left;
+  clipper.Execute(ClipperLib::ctDifference, left, ClipperLib::pftEvenOdd, ClipperLib::pftNonZero);
+  if (left.ChildCount() != 1) return false;
+  auto at = [&](double s, double u) { return plus(slide.middle, plus(scaled(slide.line, s), scaled(inward, u))); };
+  const Loop end{at(slide.woodFrom, mitreTo), at(slide.tongueTo, mitreTo), at(slide.tongueTo, slide.notchReach),
+                 at(slide.woodFrom, slide.notchReach)};
+  return !(areaAgainst({end}, faceRegion(plate, ClipperLib::ctIntersection), planeFrame, true) > 1e-6);
+}
+
+}  // namespace
+
+std::optional<MitreSlide> mitreSlideOf(const std::vector<Plate>& plates, const PlateContact& contact, int slidePlate,
+                                       const Vec3& d, const JointCutOptions& options) {
+  const std::optional<int> partner = touchingPartnerOf(contact, slidePlate);
+  // Edge to edge: neither face on the contact (those are T joints and laps).
+  if (!partner || contact.region.size() < 3 || facesOnContact(plates, contact) != 0) return std::nullopt;
+  MitreSlide slide;
+  slide.slidePlate = slidePlate;
+  slide.tonguePlate = *partner;
+  const Plate& plate = plates[slidePlate];
+  const Vec3 edge = normalized(contact.edgeDirection);
+  if (std::abs(std::abs(dot(edge, normalized(d))) - 1) > 1e-12) return std::nullopt;  // along the edge only
+  if (!setSlideFrame(slide, contact, plate, d)) return std::nullopt;
+  const auto [s0, s1] = extentAlong(contact.region, contact.region[0], slide.line);
+  const auto [x0, x1] = extentAlong(contact.region, contact.region[0], slide.across);
+  slide.middle = plus(contact.region[0], plus(scaled(slide.line, (s0 + s1) / 2), scaled(slide.across, (x0 + x1) / 2)));
+  const double halfLength = (s1 - s0) / 2;
+  const MitreSlideSizes& sizes = options.mitreSlide;
+  slide.halfHeight = sizes.height.of(x1 - x0) / 2;
+  slide.lean = sizes.slope;
+  if (2 * slide.halfHeight < sizes.lowestRoot) return std::nullopt;
+  if (!setDeepestGroove(slide, plate, options)) return std::nullopt;
+  const double thickness = plateThickness(plate);
   // The notch runs past the groove and past the mitre.
   const MitreTenon view = grooveView(slide);
   const Vec3 inward = pocketInward(plates, view);
@@ -170,7 +226,6 @@ std::optional<MitreSlide> mitreSlideOf(const std::vector<Plate>& plates, const P
   slide.tongueFrom = slide.woodFrom;
   slide.tongueTo = std::min(halfLength - std::max(sizes.stop, thickness), ahead - options.woodMargin);
   if (slide.tongueTo - slide.woodFrom < sizes.shortestGroove) return std::nullopt;
-  const PlaneFrame planeFrame(plate.bottom[0][0], axis);
   // The notch: the band at the mitre from the groove's stop back past all of the plate, out
   // through its side behind the corner (the tongue leaves through it; where the band's inner edge
   // crosses that mitred side, the cut's wall meets it along the edge: secondFacePartner).
@@ -183,40 +238,7 @@ std::optional<MitreSlide> mitreSlideOf(const std::vector<Plate>& plates, const P
   const double out = -2 * (thickness + slide.depth);
   slide.notch = {at0(slide, inward, slide.notchFrom, out), at0(slide, inward, slide.tongueTo, out),
                  at0(slide, inward, slide.tongueTo, slide.notchReach), at0(slide, inward, slide.notchFrom, slide.notchReach)};
-  // The band's inner edge leaves the plate behind through one side on both faces (its wall meets
-  // that side: secondFacePartner); where a face's outline turns between them, it would not.
-  auto sideCrossedBehind = [&](const Loop& loop) {
-    int side = -1;
-    double nearest = -HUGE_VAL;
-    for (size_t k = 0; k < loop.size(); ++k) {
-      const Vec3 a = minus(loop[k], slide.middle), b = minus(loop[(k + 1) % loop.size()], slide.middle);
-      const double ua = dot(a, inward), ub = dot(b, inward);
-      if ((ua - slide.notchReach) * (ub - slide.notchReach) > 0 || ua == ub) continue;
-      const double t = (slide.notchReach - ua) / (ub - ua);
-      const double sv = dot(a, slide.line) + t * (dot(b, slide.line) - dot(a, slide.line));
-      if (sv < slide.woodFrom && sv > nearest) {
-        nearest = sv;
-        side = static_cast<int>(k);
-      }
-    }
-    return side;
-  };
-  if (sideCrossedBehind(plate.bottom[0]) != sideCrossedBehind(plate.top[0]) || sideCrossedBehind(plate.bottom[0]) < 0)
-    return std::nullopt;
-  // A plate whose outline comes back to the band behind (not convex there) would fall apart.
-  {
-    ClipperLib::Clipper clipper;
-    clipper.AddPaths(clipperPaths(plate.bottom, planeFrame), ClipperLib::ptSubject, true);
-    clipper.AddPaths(clipperPaths({slide.notch}, planeFrame), ClipperLib::ptClip, true);
-    ClipperLib::PolyTree left;
-    clipper.Execute(ClipperLib::ctDifference, left, ClipperLib::pftEvenOdd, ClipperLib::pftNonZero);
-    if (left.ChildCount() != 1) return std::nullopt;
-  }
-  // The notch's end past the mitre lies where the plate is whole, so that its cut ends in wood.
-  auto at = [&](double s, double u) { return plus(slide.middle, plus(scaled(slide.line, s), scaled(inward, u))); };
-  const Loop end{at(slide.woodFrom, mitreTo), at(slide.tongueTo, mitreTo), at(slide.tongueTo, slide.notchReach),
-                 at(slide.woodFrom, slide.notchReach)};
-  if (areaAgainst({end}, faceRegion(plate, ClipperLib::ctIntersection), planeFrame, true) > 1e-6) return std::nullopt;
+  if (!notchCutsCleanly(slide, plate, inward, mitreTo)) return std::nullopt;
   return slide;
 }
 

@@ -216,6 +216,47 @@ std::vector<Flat> woodAroundPocket(const std::vector<Plate>& plates, const Mitre
   return bitten;
 }
 
+namespace {
+
+// The tenon as deep as the pocket plate holds it with a margin of wood on both faces, at most the
+// plate's thickness; false where its root itself comes within the margin of a face.
+bool setPocketDepth(MitreTenon& tenon, const Plate& pocket, const JointCutOptions& options) {
+  const Vec3 axis = plateThicknessAxis(pocket);
+  const double thickness = plateThickness(pocket), rate = dot(tenon.into, axis);
+  tenon.depth = thickness;
+  for (const double side : {-1.0, 1.0}) {
+    const double height = dot(minus(plus(tenon.middle, scaled(tenon.across, side * tenon.halfHeight)), pocket.bottom[0][0]), axis);
+    if (height < options.woodMargin || height > thickness - options.woodMargin) return false;
+    if (rate > 1e-9) tenon.depth = std::min(tenon.depth, (thickness - options.woodMargin - height) / rate);
+    if (rate < -1e-9) tenon.depth = std::min(tenon.depth, (height - options.woodMargin) / -rate);
+  }
+  return true;
+}
+
+// The notch runs past the pocket and past the mitre (its cut ends where the plate is whole). Past
+// the mitre, its end must lie in the pocket plate where it is whole (away from its other sides),
+// so that its cut ends in wood: false where it does not.
+bool setNotchReach(MitreTenon& tenon, const std::vector<Plate>& plates, const PlateContact& contact,
+                   const JointCutOptions& options) {
+  const Plate& pocket = plates[tenon.pocketPlate];
+  const Vec3 inwardDirection = pocketInward(plates, tenon);
+  const MitreFrame sectionFrame = mitreFrame(tenon);
+  for (const Flat& q : tenonSection(tenon, sectionFrame, 0))
+    tenon.notchReach = std::max(tenon.notchReach, dot(minus(sectionFrame.at(q, 0), tenon.middle), inwardDirection));
+  double mitreReach = 0;  // where the mitre ends and the plate is whole again
+  for (const Vec3& p : contact.region) mitreReach = std::max(mitreReach, dot(minus(p, tenon.middle), inwardDirection));
+  tenon.notchReach = std::max(tenon.notchReach, mitreReach) + options.woodMargin;
+  auto at = [&](double s, double u) {
+    return plus(tenon.middle, plus(scaled(tenon.line, s), scaled(inwardDirection, u)));
+  };
+  const double half = notchHalfWidth(tenon);
+  const Loop end{at(-half, mitreReach), at(half, mitreReach), at(half, tenon.notchReach), at(-half, tenon.notchReach)};
+  const PlaneFrame frame(pocket.bottom[0][0], plateThicknessAxis(pocket));
+  return !(areaAgainst({end}, faceRegion(pocket, ClipperLib::ctIntersection), frame, true) > 1e-6);
+}
+
+}  // namespace
+
 std::optional<MitreTenon> mitreTenonOf(const std::vector<Plate>& plates, const PlateContact& contact, int tenonPlate,
                                        const Vec3& into, const JointCutOptions& options) {
   const std::optional<int> partner = touchingPartnerOf(contact, tenonPlate);
@@ -238,40 +279,14 @@ std::optional<MitreTenon> mitreTenonOf(const std::vector<Plate>& plates, const P
   tenon.halfHeight = sizes.height.of(x1 - x0) / 2;  // by default a quarter: room for the pocket in thin plates
   if (2 * tenon.halfWidth < options.shortestJoint || 2 * tenon.halfHeight < sizes.lowestRoot) return std::nullopt;
   tenon.middle = plus(contact.region[0], plus(scaled(tenon.line, (s0 + s1) / 2), scaled(tenon.across, (x0 + x1) / 2)));
-  // As deep as the pocket plate holds it with a margin of wood on both faces, at most its thickness.
-  const Vec3 axis = plateThicknessAxis(pocket);
-  const double thickness = plateThickness(pocket), rate = dot(tenon.into, axis);
-  tenon.depth = thickness;
-  for (const double side : {-1.0, 1.0}) {
-    const double height = dot(minus(plus(tenon.middle, scaled(tenon.across, side * tenon.halfHeight)), pocket.bottom[0][0]), axis);
-    if (height < options.woodMargin || height > thickness - options.woodMargin) return std::nullopt;
-    if (rate > 1e-9) tenon.depth = std::min(tenon.depth, (thickness - options.woodMargin - height) / rate);
-    if (rate < -1e-9) tenon.depth = std::min(tenon.depth, (height - options.woodMargin) / -rate);
-  }
-  if (tenon.depth < sizes.shallowestPocket) return std::nullopt;
+  if (!setPocketDepth(tenon, pocket, options) || tenon.depth < sizes.shallowestPocket) return std::nullopt;
   // An oblique tenon's notch runs further along the edge: it must stay on the mitre.
   tenon.endWood = options.woodMargin;
   if (notchHalfWidth(tenon) > (s1 - s0) / 2 - options.woodMargin) {
     tenon.halfWidth -= notchHalfWidth(tenon) - ((s1 - s0) / 2 - options.woodMargin);
     if (2 * tenon.halfWidth < options.shortestJoint) return std::nullopt;
   }
-  // The notch runs past the pocket and past the mitre (its cut ends where the plate is whole).
-  const Vec3 inwardDirection = pocketInward(plates, tenon);
-  const MitreFrame sectionFrame = mitreFrame(tenon);
-  for (const Flat& q : tenonSection(tenon, sectionFrame, 0))
-    tenon.notchReach = std::max(tenon.notchReach, dot(minus(sectionFrame.at(q, 0), tenon.middle), inwardDirection));
-  double mitreReach = 0;  // where the mitre ends and the plate is whole again
-  for (const Vec3& p : contact.region) mitreReach = std::max(mitreReach, dot(minus(p, tenon.middle), inwardDirection));
-  tenon.notchReach = std::max(tenon.notchReach, mitreReach) + options.woodMargin;
-  // Past the mitre, the notch's end must lie in the pocket plate where it is whole (away from its
-  // other sides), so that its cut ends in wood.
-  auto at = [&](double s, double u) {
-    return plus(tenon.middle, plus(scaled(tenon.line, s), scaled(inwardDirection, u)));
-  };
-  const double half = notchHalfWidth(tenon);
-  const Loop end{at(-half, mitreReach), at(half, mitreReach), at(half, tenon.notchReach), at(-half, tenon.notchReach)};
-  const PlaneFrame frame(pocket.bottom[0][0], axis);
-  if (areaAgainst({end}, faceRegion(pocket, ClipperLib::ctIntersection), frame, true) > 1e-6) return std::nullopt;
+  if (!setNotchReach(tenon, plates, contact, options)) return std::nullopt;
   return tenon;
 }
 

@@ -53,9 +53,9 @@ class JointCut {
 using JointCutList = std::vector<std::shared_ptr<const JointCut>>;
 
 // The plates with the joints cut into them, in the list's order (the order of each plate's cut
-// loops and attached solids in the result), with options.clearance of play (the mortises, slots
-// and housings keep their size less... see each family). Throws BadInput naming the plate when the
-// cuts split a plate or run into each other.
+// loops and attached solids in the result: JointFamilies::cuts keeps one order), with
+// options.clearance mm of play (each family says where it goes). Throws BadInput naming the plate
+// when the cuts split a plate or run into each other.
 std::vector<Plate> cutJoints(const std::vector<Plate>& plates, const JointCutList& joints,
                              const JointCutOptions& options);
 
