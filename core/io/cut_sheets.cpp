@@ -17,6 +17,7 @@
 #include "analysis/vec3.h"
 #include "desia/error.h"
 #include "desia/plate.h"
+#include "desia/tolerances.h"
 #include "io/json_input.h"
 #include "plate/plane_frame.h"
 
@@ -87,7 +88,7 @@ void requireOpeningsWiderThanKerf(const Plate& plate, const ClipperLib::Paths& b
   double widest = 0, narrowest = HUGE_VAL;
   for (const ClipperLib::Path& piece : filled) {
     const double area = std::abs(ClipperLib::Area(piece)) / (kScale * kScale);
-    if (area <= 0.01) continue;  // mm^2: Clipper's rounding at a corner, not an opening
+    if (area <= tolerance::kSheetSliverMm2) continue;  // Clipper's rounding at a corner, not an opening
     double perimeter = 0;
     for (size_t k = 0; k < piece.size(); ++k) {
       const ClipperLib::IntPoint& a = piece[k];
@@ -148,11 +149,11 @@ void layFlat(FlatPlate* plate) {
     for (size_t i = 0; i < ring.size(); ++i) {
       const Point2& p = ring[i];
       const Point2& q = ring[(i + 1) % ring.size()];
-      if (std::hypot(q[0] - p[0], q[1] - p[1]) < 1e-3) continue;
+      if (std::hypot(q[0] - p[0], q[1] - p[1]) < tolerance::kSamePointMm) continue;
       const double angle = -std::atan2(q[1] - p[1], q[0] - p[0]);
       const std::array<double, 4> box = boundsOf(*plate, angle);
       const double area = (box[2] - box[0]) * (box[3] - box[1]);
-      if (area < bestArea - 1e-6) {
+      if (area < bestArea - tolerance::kSameAreaMm2) {
         bestArea = area;
         bestAngle = angle;
       }
@@ -209,8 +210,9 @@ std::vector<Mark> matingMarks(const std::vector<Plate>& plates, size_t index, co
   }
   const Vec3 axis = plateThicknessAxis(plates[index]);
   for (auto it = largest.begin(); it != largest.end();) {
-    const bool onThisFace = std::abs(dot(it->second->normal, axis)) > 1 - 1e-6;
-    const bool onTheirEdge = std::abs(dot(it->second->normal, plateThicknessAxis(plates[it->first]))) < 1 - 1e-6;
+    const bool onThisFace = std::abs(dot(it->second->normal, axis)) > 1 - tolerance::kFacingCosine;
+    const bool onTheirEdge =
+        std::abs(dot(it->second->normal, plateThicknessAxis(plates[it->first]))) < 1 - tolerance::kFacingCosine;
     it = onThisFace && onTheirEdge ? std::next(it) : largest.erase(it);
   }
   std::vector<Mark> marks;
@@ -302,7 +304,7 @@ std::vector<Placement> pack(std::vector<FlatPlate>& flats, const CutSheetOptions
     if (flats[k].width > usableWidth && flats[k].height <= usableWidth && flats[k].width <= usableHeight)
       turned[k] = true;
     const double w = turned[k] ? flats[k].height : flats[k].width, h = turned[k] ? flats[k].width : flats[k].height;
-    if (w > usableWidth + 1e-9 || h > usableHeight + 1e-9) {
+    if (w > usableWidth + tolerance::kZeroLengthMm || h > usableHeight + tolerance::kZeroLengthMm) {
       std::ostringstream size;
       size.precision(6);
       size << flats[k].width << " x " << flats[k].height << " mm";
@@ -320,12 +322,12 @@ std::vector<Placement> pack(std::vector<FlatPlate>& flats, const CutSheetOptions
   double x = 0, rowY = 0, rowHeight = 0, usedWidth = 0;
   std::vector<double> sheetHeights{0};
   for (size_t k : order) {
-    if (x > 0 && x + widthOf(k) > usableWidth + 1e-9) {  // next row
+    if (x > 0 && x + widthOf(k) > usableWidth + tolerance::kZeroLengthMm) {  // next row
       rowY += rowHeight + gap;
       x = 0;
       rowHeight = 0;
     }
-    if (rowY + heightOf(k) > usableHeight + 1e-9) {  // next sheet
+    if (rowY + heightOf(k) > usableHeight + tolerance::kZeroLengthMm) {  // next sheet
       ++sheet;
       sheetHeights.push_back(0);
       x = rowY = rowHeight = 0;

@@ -3,6 +3,8 @@
 
 #include <cmath>
 
+#include "desia/tolerances.h"
+
 namespace desia {
 namespace {
 
@@ -65,7 +67,7 @@ Vec3 ExactVertices::at(const ClipperLib::IntPoint& point) const {
       }
     }
   }
-  if (first == nullptr || best < 1e-3) return frame_.fromClipper(point);
+  if (first == nullptr || best < tolerance::kEdgeCrossingSine) return frame_.fromClipper(point);
   const double px = first->x1 - first->x0, py = first->y1 - first->y0;
   const double qx = second->x1 - second->x0, qy = second->y1 - second->y0;
   const double t = ((second->x0 - first->x0) * qy - (second->y0 - first->y0) * qx) / (px * qy - py * qx);

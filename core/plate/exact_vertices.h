@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Clipper's results back in exact coordinates. Clipper rounds every vertex to its 1e-4 mm grid,
-// which turns a short cut face on a sloped edge by up to 1e-5 rad (a tenon's cheek on the CABINET's
-// roof line: 1.1e-6 rad). The blocking tests count a contact as blocking a direction when
-// d·n > 1e-9 (README "Verdicts on computed normals"), so such a turned face blocks a plate that
-// slides along it in the design. Every vertex of a boolean's result is an input vertex or the
-// crossing of two input edges: it is recomputed from those in doubles.
+// which turns a short cut face on a sloped edge by up to 1e-5 rad. The blocking tests count a
+// contact as blocking a direction when d·n > tolerance::kDirection (README "Verdicts on computed
+// normals"), so such a turned face blocks a plate that slides along it in the design. Every vertex
+// of a boolean's result is an input vertex or the crossing of two input edges: it is recomputed
+// from those in doubles.
 #pragma once
 
 #include <map>

@@ -7,6 +7,7 @@
 
 #include "analysis/vec3.h"
 #include "desia/error.h"
+#include "desia/tolerances.h"
 
 namespace desia {
 namespace mitred {
@@ -171,7 +172,8 @@ std::vector<Face> meshFaces(const OrientedMesh& oriented, const MitredPlateOptio
   std::vector<int> faceOf;
   const TriangleMesh& mesh = oriented.mesh;
   const double size = oriented.size;
-  std::vector<Face> faces = mergeFaces(mesh, oriented.twins, options.mergeAngleDegrees, 1e-12 * size * size, faceOf, source);
+  std::vector<Face> faces = mergeFaces(mesh, oriented.twins, options.mergeAngleDegrees,
+                                       tolerance::kProductRounding * size * size, faceOf, source);
   for (size_t f = 0; f < faces.size(); ++f) fitPlane(mesh, faces, static_cast<int>(f), options, source);
   for (size_t f = 0; f < faces.size(); ++f) traceOutline(mesh, oriented.twins, faceOf, faces, static_cast<int>(f), source);
   // Two faces folded flat onto each other have no mitre (their bisector is their own plane). The
@@ -180,7 +182,7 @@ std::vector<Face> meshFaces(const OrientedMesh& oriented, const MitredPlateOptio
   for (size_t f = 0; f < faces.size(); ++f) {
     for (size_t k = 0; k < faces[f].corners.size(); ++k) {
       const int g = faces[f].sideFace[k];
-      if (norm(minus(faces[f].plane.normal, faces[g].plane.normal)) < 1e-9) {
+      if (norm(minus(faces[f].plane.normal, faces[g].plane.normal)) < tolerance::kDirection) {
         // Possible only when the merge grew two faces of a gently curved surface to equal normals.
         throwBadInput(source, faceLabel(faces, static_cast<int>(f)) + " and " + faceLabel(faces, g) +
                                   " are neighbours in one plane: they have no mitre; give a larger merge angle");

@@ -11,6 +11,7 @@
 
 #include "analysis/vec3.h"
 #include "desia/error.h"
+#include "desia/tolerances.h"
 
 namespace desia {
 namespace mitred {
@@ -193,7 +194,8 @@ OrientedMesh orientedMesh(const TriangleMesh& input, const std::string& source) 
   for (const auto& tri : mesh.triangles) {
     volume += dot(minus(mesh.vertices[tri[0]], middle), cross(minus(mesh.vertices[tri[1]], middle), minus(mesh.vertices[tri[2]], middle))) / 6;
   }
-  if (!(std::abs(volume) > 1e-9 * size * size * size)) throwBadInput(source, "the mesh encloses no volume");
+  if (!(std::abs(volume) > tolerance::kRelativeRounding * size * size * size))
+    throwBadInput(source, "the mesh encloses no volume");
   if (volume < 0) {
     for (auto& tri : mesh.triangles) std::swap(tri[1], tri[2]);
     twins = triangleTwins(mesh, source);

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Mitred plates from a low-poly mesh (issue 8): one plate per planar face, inset inside the mesh.
+// Mitred plates from a low-poly mesh: one plate per planar face, inset inside the mesh.
 //
 // Every plane here is written n·x = c with a unit n. For a face F (outward normal n_F, plane
 // n_F·x = d_F) the inner face lies on n_F·x = d_F - T. The mitre between F and its neighbour G is
@@ -20,6 +20,7 @@
 
 #include "analysis/vec3.h"
 #include "desia/error.h"
+#include "desia/tolerances.h"
 #include "plate/mitred_faces.h"
 #include "plate/mitred_mesh.h"
 
@@ -54,7 +55,7 @@ std::string givenNumber(double value) {
 bool intersectPlanes(const Plane& p, const Plane& q, const Plane& r, Vec3& point) {
   const Vec3 qr = cross(q.normal, r.normal), rp = cross(r.normal, p.normal), pq = cross(p.normal, q.normal);
   const double det = dot(p.normal, qr);
-  if (std::abs(det) < 1e-9) return false;
+  if (std::abs(det) < tolerance::kDirection) return false;
   point = scaled(plus(plus(scaled(qr, p.offset), scaled(rp, q.offset)), scaled(pq, r.offset)), 1 / det);
   return true;
 }
@@ -85,8 +86,8 @@ bool innerCorners(const std::vector<Face>& faces, int f, double t, std::vector<V
 // inner corners at depth 0), not the mesh's vertices. A mesh written to a micrometre (an OBJ's 6
 // decimals, as Blender writes them) has faces that are planar to 1e-7 mm only: plates with those
 // vertices have faces whose normals, and mitres whose planes, disagree by 1e-9 rad, past the
-// blocking tests' 1e-9 (README "Verdicts on computed normals"); a slide along the LIZARD's mitres
-// pushed into the faces it runs along. From the planes, every face of a plate and every mitre is
+// blocking tests' tolerance::kDirection (README "Verdicts on computed normals"): a slide along
+// such mitres pushes into the faces it runs along. From the planes, every face of a plate and every mitre is
 // planar to the rounding of doubles, and two plates' outer edges along a mitre lie on one line.
 // A corner the planes put further than the tolerance from its vertex (planes that meet at a
 // glancing angle there) keeps the vertex.
@@ -106,9 +107,9 @@ Loop outerCorners(const TriangleMesh& mesh, const std::vector<Face>& faces, int 
 // Corners computed from planes carry the rounding of doubles (1e-14 mm): a symmetric shape's
 // equal coordinates come out unequal and its zeros as 1e-14, so that its normals, equal by
 // symmetry, differ in their last digits and the blocking graphs get thousands of base directions
-// instead of a few (the DODECAHEDRON's milled design took 269 nodes instead of 11). A nanometre
-// grid makes them equal again and turns a face by at most 1e-11 rad on a 100 mm plate, far below
-// the blocking tests' 1e-9.
+// instead of a few (and the search many times the nodes). A nanometre grid makes them equal again
+// and turns a face by at most 1e-11 rad on a 100 mm plate, far below the blocking tests'
+// tolerance::kDirection.
 Loop onNanometreGrid(Loop loop) {
   for (Vec3& point : loop) {
     for (double& c : point) c = std::round(c * 1e9) / 1e9 + 0.0;  // + 0.0: no "-0"

@@ -7,6 +7,7 @@
 #include <numeric>
 
 #include "analysis/vec3.h"
+#include "desia/tolerances.h"
 
 namespace desia {
 
@@ -77,7 +78,7 @@ std::vector<Vec3> groupDirections(const std::vector<Vec3>& normals, const std::v
 
 // Pairs of directions within the angle of square made square: each pair turned towards square in
 // their common plane, all pairs at once, then renormalised, until every such pair is square to
-// 1e-14 (a gradient step on the sum of the squared cosines). Each direction's turn is the mean of
+// tolerance::kSquaredCosine (a gradient step on the sum of the squared cosines). Each direction's turn is the mean of
 // its pairs' half-turns: summed instead, a direction square to several nearly parallel others
 // overshoots, and the rounds grow instead of settling (seen on milled joints: 13 groups, 16 pairs).
 void squareNearlySquarePairs(std::vector<Vec3>* directions, double angle) {
@@ -100,7 +101,7 @@ void squareNearlySquarePairs(std::vector<Vec3>* directions, double angle) {
       correction[i] = minus(correction[i], scaled((*directions)[j], c / (2 * pairCount[i])));
       correction[j] = minus(correction[j], scaled((*directions)[i], c / (2 * pairCount[j])));
     }
-    if (worst < 1e-14) break;
+    if (worst < tolerance::kSquaredCosine) break;
     for (size_t k = 0; k < directions->size(); ++k) (*directions)[k] = normalized(plus((*directions)[k], correction[k]));
   }
 }
@@ -134,7 +135,7 @@ void snapContactNormals(std::vector<PlateContact>* contacts) {
   for (const PlateContact& contact : *contacts) {
     if (!contact.crossing) normals.push_back(contact.normal);
   }
-  const std::vector<Vec3> snapped = snappedDirections(normals, kComputedDirectionAngle);
+  const std::vector<Vec3> snapped = snappedDirections(normals, tolerance::kComputedDirectionRad);
   size_t next = 0;
   for (PlateContact& contact : *contacts) {
     if (!contact.crossing) contact.normal = snapped[next++];

@@ -14,25 +14,21 @@
 
 namespace desia {
 
-// Normals (unit vectors) this close in angle (rad), up to sign, are one direction of the design;
-// pairs this close to square are square. Real design angles are degrees apart (the dovetail's
-// 1-in-6 slope is 0.17 rad, the LIZARD's closest plates 0.09 rad).
-// - Geometry desia computed (the designer's jointed plates, results it wrote at full precision,
-//   contacts): 1e-6. Clipper's grid turns a short cut face by up to 1e-5 rad, recomputed exactly
-//   (exact_vertices.h), and the LIZARD's jointed plates stop verifying with 1e-4.
-// - Designs drawn elsewhere: 1e-4. A CAD file in metres written to 6 decimals (a micrometre) turns
-//   the side of an 18 mm plate by up to 5.6e-5 rad.
-constexpr double kComputedDirectionAngle = 1e-6;
-constexpr double kDrawnDirectionAngle = 1e-4;
+// The angle (rad) within which normals, up to sign, are one direction of the design and pairs
+// are square: tolerance::kComputedDirectionRad for geometry desia computed (the designer's jointed
+// plates, results it wrote at full precision, contacts), tolerance::kDrawnDirectionRad for designs
+// drawn elsewhere. Real design angles are degrees apart (the dovetail's 1-in-6 slope is 0.17 rad,
+// the closest plates of the LIZARD example 0.09 rad); a larger angle for computed geometry would
+// merge the faces of jointed plates that differ for real, and they would no longer verify.
 
 // The unit vectors with every group of parallel ones (single linkage within `angle`, up to sign)
 // replaced by one vector (their mean, signs kept), then every pair of those within `angle` of
-// square made square to rounding (1e-14). The result does not depend on the
+// square made square to rounding (tolerance::kSquaredCosine). The result does not depend on the
 // order of `normals`: groups are found on all pairs, means summed in sorted order and the squaring
 // is symmetric (all pairs turned at once, repeated until square).
 std::vector<Vec3> snappedDirections(const std::vector<Vec3>& normals, double angle);
 
-// The contacts' normals snapped with snappedDirections within kComputedDirectionAngle (crossings
+// The contacts' normals snapped with snappedDirections within tolerance::kComputedDirectionRad (crossings
 // have no normal and keep theirs).
 void snapContactNormals(std::vector<PlateContact>* contacts);
 

@@ -8,22 +8,21 @@
 #include <utility>
 
 #include "analysis/vec3.h"
+#include "desia/tolerances.h"
 
 namespace desia {
 
 namespace {
 
-constexpr double kNearlySquare = 1e-6;
-
 // An orthonormal basis of the span of `vectors`, to rounding: the vector that stands furthest out
-// of the span so far is taken next (pivoting), until every one lies within 1e-6 of it. Taken in
-// the order given, two vectors 0.09 rad apart whose rounding differs by 5e-9 span a plane tilted
-// by 5e-8: the LIZARD's horizontal faces, squared to such a plane, blocked the plates sliding
-// along them. Pivoting takes the two furthest apart first.
+// of the span so far is taken next (pivoting), until every one lies within tolerance::kSquareCosine
+// of it. Pivoting takes the two furthest apart first: taken in the order given, two vectors a few
+// degrees apart whose rounding differs by 5e-9 span a plane tilted by ten times as much, and faces
+// squared to that plane block the plates sliding along them.
 std::vector<Vec3> spanningBasis(std::vector<Vec3> vectors) {
   std::vector<Vec3> basis;
   while (basis.size() < 3) {
-    double largest = kNearlySquare;
+    double largest = tolerance::kSquareCosine;
     int pick = -1;
     for (size_t k = 0; k < vectors.size(); ++k) {
       Vec3 e = vectors[k];
@@ -49,14 +48,15 @@ Vec3 squaredTo(const Vec3& v, const std::vector<Vec3>& basis) {
 }  // namespace
 
 // Jointed plates are cut from a design given to a micrometre (plates-from-mesh writes 6 decimals):
-// a face meant to slide along a plan direction can be off square to it by 1e-7 rad, past the blocking
-// tests' 1e-9 (README "Verdicts on computed normals"). A contact normal within 1e-6 of square to
-// plan directions is made exactly square to them; one that blocks a way out by more is kept, and
-// the swept check of every plate judges the shapes themselves.
+// a face meant to slide along a plan direction can be off square to it by 1e-7 rad, past the
+// blocking tests' tolerance::kDirection (README "Verdicts on computed normals"). A contact normal
+// within tolerance::kSquareCosine of square to plan directions is made exactly square to them; one
+// that blocks a way out by more is kept, and the swept check of every plate judges the shapes
+// themselves.
 Vec3 squaredToNearlySquare(const Vec3& v, const std::vector<Vec3>& others) {
   std::vector<Vec3> nearlySquare;
   for (const Vec3& other : others) {
-    if (std::abs(dot(v, other)) < kNearlySquare) nearlySquare.push_back(other);
+    if (std::abs(dot(v, other)) < tolerance::kSquareCosine) nearlySquare.push_back(other);
   }
   return normalized(squaredTo(v, spanningBasis(nearlySquare)));
 }
@@ -66,15 +66,15 @@ Vec3 squaredToPlan(Vec3 normal, const std::vector<Vec3>& directions) { return sq
 namespace {
 
 // The other half of the same rounding: a way out is itself one of the design's vectors (a shared
-// edge, a mitre's normal, a tenon's axis), off by as much. The LIZARD's plate 33 leaves across a
-// mitre along a vector 6.3e-9 out of the plane of plate 1, whose face its tenon slides along: no
-// normal can be squared to that and to the other ways out in that plane at once. So each way out
-// within 1e-6 of square to faces of its plate against plates still in place (the contacts in
-// `assembly`, part k leaving k-th) is first made exactly square to them; a way out that would turn
-// by more stays as it is (a real block is kept, and the swept check judges the shapes).
+// edge, a mitre's normal, a tenon's axis), off by as much: for a plate leaving across a mitre along a
+// vector 6e-9 out of the plane of the face its tenon slides along, no normal can be squared to that
+// and to the other ways out in that plane at once. So each way out within tolerance::kSquareCosine
+// of square to faces of its plate against plates still in place (the contacts in `assembly`, part k
+// leaving k-th) is first made exactly square to them; a way out that would turn by more stays as it
+// is (a real block is kept, and the swept check judges the shapes).
 // A way out several plates share (the planner makes them one vector) is squared once, to the faces
-// of all of them, and stays one vector: squared plate by plate, the LIZARD's plates 35 and 36 left
-// along two vectors 4e-9 apart, and a face of plate 1 squared to one of them blocked the other.
+// of all of them, and stays one vector: squared plate by plate, plates leaving together would leave
+// along vectors 4e-9 apart, and a face squared to one of them would block the other.
 std::vector<Vec3> directionsSquaredToFaces(const Assembly& assembly, std::vector<Vec3> directions) {
   const std::vector<Vec3> planned = directions;
   std::vector<bool> done(directions.size(), false);
@@ -90,11 +90,12 @@ std::vector<Vec3> directionsSquaredToFaces(const Assembly& assembly, std::vector
       const int part = static_cast<int>(k);
       for (const Contact& contact : assembly.contacts) {
         const bool mine = (contact.a == part && contact.b > part) || (contact.b == part && contact.a > part);
-        if (mine && std::abs(dot(contact.normal, shared)) < kNearlySquare) nearlySquare.push_back(contact.normal);
+        if (mine && std::abs(dot(contact.normal, shared)) < tolerance::kSquareCosine)
+          nearlySquare.push_back(contact.normal);
       }
     }
     const Vec3 squared = squaredTo(shared, spanningBasis(nearlySquare));
-    const bool nearby = norm(minus(squared, shared)) < kNearlySquare;
+    const bool nearby = norm(minus(squared, shared)) < tolerance::kSquareCosine;
     for (size_t k : sharing) {
       done[k] = true;
       if (nearby) directions[k] = normalized(squared);

@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // A plan's ways out and its jointed plates' contact normals, squared to each other where the
-// rounding of a design's coordinates left them off square by 1e-6 rad or less.
+// rounding of a design's coordinates left them off square by tolerance::kSquareCosine or less.
 //
 // Designs given to a micrometre (plates-from-mesh writes 6 decimals) have faces meant to slide along
 // a way out that are off square to it by 1e-9 to 1e-7 rad, and ways out (shared edges, mitre
 // normals, tenon axes) off by as much. The blocking tests count a contact as blocking a direction
 // when d·n > 1e-9 (README "Verdicts on computed normals"), so such a face holds a plate that slides
-// along it in the design. A real block (more than 1e-6 rad) is kept as it is, and the swept check
+// along it in the design. A real block (more than that) is kept as it is, and the swept check
 // of every plate judges the shapes themselves.
 #pragma once
 
@@ -19,17 +19,18 @@ namespace desia {
 
 // The plan's ways out (directions[k]: part k, the k-th to leave) and the assembly's contact
 // normals squared to each other: each way out to the faces of its part against parts still in
-// place that it is within 1e-6 of square to (a way out several parts share, once, to the faces of
-// all of them), then each normal to every way out it is within 1e-6 of square to. The result
-// depends on the order of the parts, so the designer and `desia check` both give it the plates in
-// removal order (verifyJointedPlates).
+// place that it is within tolerance::kSquareCosine of square to (a way out several parts share,
+// once, to the faces of all of them), then each normal to every way out it is as close to square
+// to. The result depends on the order of the parts, so the designer and `desia check` both give it
+// the plates in removal order (verifyJointedPlates).
 Assembly squaredPlanAssembly(Assembly assembly, std::vector<Vec3>* directions);
 
-// The unit vector `v` made exactly square to every one of `others` it is within 1e-6 of square to
-// (those furthest apart first; `v` itself when they span all of space).
+// The unit vector `v` made exactly square to every one of `others` it is within
+// tolerance::kSquareCosine of square to (those furthest apart first; `v` itself when they span all
+// of space).
 Vec3 squaredToNearlySquare(const Vec3& v, const std::vector<Vec3>& others);
 
-// `normal` made exactly square to every way out it is within 1e-6 of square to.
+// `normal` made exactly square to every way out it is within tolerance::kSquareCosine of square to.
 Vec3 squaredToPlan(Vec3 normal, const std::vector<Vec3>& directions);
 
 // The contacts of jointed plates (part k = the k-th to leave: position[plate]) as an assembly for

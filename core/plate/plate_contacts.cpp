@@ -11,6 +11,7 @@
 #include "analysis/vec3.h"
 #include "desia/error.h"
 #include "desia/plate.h"
+#include "desia/tolerances.h"
 #include "plate/normal_classes.h"
 #include "plate/plane_frame.h"
 #include "plate/plate_overlaps.h"
@@ -118,7 +119,7 @@ std::vector<PlateContact> contactsOfSolids(const std::vector<Plate>& plates, con
           contact.area = area;
           for (const ClipperLib::IntPoint& point : *largest) contact.region.push_back(frame.fromClipper(point));
           Vec3 edge = cross(axes[p], axes[q]);
-          if (norm(edge) < 1e-6) {
+          if (norm(edge) < tolerance::kParallelSine) {
             // Parallel plates meet edge to edge: the shared edge runs along the contact's longest side.
             for (size_t i = 0; i < contact.region.size(); ++i) {
               const Vec3 side = minus(contact.region[(i + 1) % contact.region.size()], contact.region[i]);

@@ -4,10 +4,11 @@
 #include <algorithm>
 
 #include "analysis/vec3.h"
+#include "desia/tolerances.h"
 
 namespace desia {
 
-bool parallel(const Vec3& a, const Vec3& b) { return norm(cross(a, b)) < 1e-2; }
+bool parallel(const Vec3& a, const Vec3& b) { return norm(cross(a, b)) < tolerance::kPlannedParallelSine; }
 
 PlateGraph buildPlateGraph(const std::vector<Plate>& plates, const std::vector<PlateContact>& contacts,
                            JointRealization realization) {
@@ -17,9 +18,9 @@ PlateGraph buildPlateGraph(const std::vector<Plate>& plates, const std::vector<P
   // A contact's face holds its shared edge (the plates' planes' crossing line, exact to rounding of
   // doubles): its normal, computed from the face's vertices, is made exactly square to it. In a
   // design given to a micrometre they disagree by 1e-9, and a plate sliding along the edge (a
-  // milled slide) would push into the face by more than the blocking tests' 1e-9. Only for milled
-  // joints: it splits normals that were one into many 1e-9 apart, and the LIZARD's planned design
-  // took 1.7 s instead of 1.1 s for its extra base directions.
+  // milled slide) would push into the face by more than the blocking tests' tolerance::kDirection.
+  // Only for milled joints: it splits normals that were one into many 1e-9 apart, whose extra base
+  // directions a planned design would pay for in time.
   for (PlateContact& contact : graph.contacts) {
     if (realization != JointRealization::Milled) break;
     if (contact.crossing || norm(contact.edgeDirection) == 0) continue;

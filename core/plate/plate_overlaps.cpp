@@ -9,6 +9,7 @@
 
 #include "analysis/vec3.h"
 #include "desia/error.h"
+#include "desia/tolerances.h"
 #include "plate/plane_frame.h"
 #include "plate/plate_shape.h"
 #include "plate/plate_solid.h"
@@ -89,7 +90,9 @@ namespace geometry {
 // prisms (where they have their whole thickness, corePrism), which lie inside them. A refusal is
 // always a real overlap; one within the mitres alone can pass (the design's swept check finds it).
 void requireMitredPerpendicularApart(const Plate& a, const Plate& b, double tolerance) {
-  if (std::abs(dot(plateThicknessAxis(a), plateThicknessAxis(b))) > 1e-6 || (isPrism(a) && isPrism(b))) return;
+  if (std::abs(dot(plateThicknessAxis(a), plateThicknessAxis(b))) > tolerance::kSquareCosine ||
+      (isPrism(a) && isPrism(b)))
+    return;
   const std::vector<Plate> cores{corePrism(a), corePrism(b)};
   if (cores[0].bottom.empty() || cores[1].bottom.empty()) return;
   bool overlap = false;
@@ -111,7 +114,7 @@ std::optional<PlateContact> plateCrossing(const std::vector<Plate>& plates, int 
   const Plate& a = plates[p];
   const Plate& b = plates[q];
   const Vec3 ta = plateThicknessAxis(a), tb = plateThicknessAxis(b);
-  if (std::abs(dot(ta, tb)) > 1e-6) return std::nullopt;
+  if (std::abs(dot(ta, tb)) > tolerance::kSquareCosine) return std::nullopt;
   const double ha = plateThickness(a), hb = plateThickness(b);
   if (!isPrism(a) || !isPrism(b)) return std::nullopt;  // requireMitredPerpendicularApart judges them
   const Vec3 line = canonicalSign(normalized(cross(ta, tb)));
@@ -186,14 +189,14 @@ std::optional<PlateContact> plateCrossing(const std::vector<Plate>& plates, int 
 void requireNoSlantedOverlap(const Plate& plateA, const Plate& plateB, double tolerance) {
   const Vec3 ta = plateThicknessAxis(plateA), tb = plateThicknessAxis(plateB);
   const double cosine = dot(ta, tb);
-  if (std::abs(cosine) < 1e-6) return;  // perpendicular: computePlateContacts' crossings
+  if (std::abs(cosine) < tolerance::kSquareCosine) return;  // perpendicular: computePlateContacts' crossings
   const Plate a = corePrism(plateA), b = corePrism(plateB);
   if (a.bottom.empty() || b.bottom.empty()) return;
   const double ha = plateThickness(plateA), hb = plateThickness(plateB);
   const Box boxA = boxOf(a), boxB = boxOf(b);
   double reach = 0;
   for (int k = 0; k < 3; ++k) reach += std::max(boxA.hi[k], boxB.hi[k]) - std::min(boxA.lo[k], boxB.lo[k]);
-  const bool parallel = std::abs(cosine) > 1 - 1e-9;
+  const bool parallel = std::abs(cosine) > 1 - tolerance::kDirection;
   const Vec3 along = parallel ? Vec3{0, 0, 0} : normalized(cross(ta, tb));       // in the slice, across tb
   const Vec3 towards = parallel ? Vec3{0, 0, 0} : normalized(cross(along, ta));  // in the slice, along tb's shadow
   for (double fraction : {0.25, 0.5, 0.75}) {

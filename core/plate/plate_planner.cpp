@@ -31,6 +31,7 @@
 #include "desia/cut_points.h"
 #include "desia/error.h"
 #include "desia/interlocking.h"
+#include "desia/tolerances.h"
 #include "plate/plate_verification.h"
 #include "plate/swept_collision.h"
 
@@ -44,7 +45,7 @@ bool leavesWithoutPushing(const PlateGraph& graph, int plate, const std::vector<
     const int other = contact.a == plate ? contact.b : contact.a;
     if (!inOthers[other]) continue;
     const double push = dot(d, contact.a == plate ? contact.normal : negated(contact.normal));
-    if (push > 1e-9) return false;
+    if (push > tolerance::kDirection) return false;
   }
   return true;
 }
@@ -71,10 +72,10 @@ PlateJointPlanner::PlateJointPlanner(const std::vector<Plate>& plates, const std
 // faces) and the axes of its tenon sites (the only ways a tenon joint lets it leave).
 // One vector for each way out that several plates share: edges meant to be parallel, computed from
 // a design given to a micrometre, differ by 1e-7 rad, and a contact square to one of them would
-// block the other by more than the tests' 1e-9 (squaredToPlan makes contacts square to the plan's
+// block the other by more than the tests' tolerance::kDirection (squaredToPlan makes contacts square to the plan's
 // directions, which it can only do if they are one vector). The first plate's vector stands for all.
 Vec3 PlateJointPlanner::canonical(const Vec3& d) {
-  constexpr double kSameWay = 1 - 1e-12;  // within 1.4e-6 rad
+  constexpr double kSameWay = 1 - tolerance::kExactCosine;
   for (const Vec3& known : canonical_) {
     if (dot(known, d) > kSameWay) return known;
     if (dot(known, d) < -kSameWay) return negated(known);
@@ -169,12 +170,11 @@ bool PlateJointPlanner::acceptable(const std::vector<PlanStep>& steps) const {
 
 // The node's A_i interlocking by the LP test too, with P_1 as the only movable part. The DBG test
 // (acceptable, on every child ranked) sees only parts that move along one direction together; the
-// LP test (paper Section 4.2) also parts that move at once in different directions: the LIZARD's
-// plate 35 left together with the key in such a motion, found only on every complete plan 30
-// steps later (with exact normals; rounding noise of 1e-9 had hidden it). Made when a node is
-// entered, as its cost (ms on 100 plates) is too much for every child ranked. Made from the first
-// node on: the LIZARD designs in 44 nodes, 7.8 s (made only once a complete plan has failed it:
-// 197 nodes, 18 s); the BOOKCASE, which it never prunes, pays 3.2 s -> 7.1 s.
+// LP test (paper Section 4.2) also parts that move at once in different directions (a plate
+// leaving together with the key), which the verification of every complete plan would otherwise
+// find only many steps later. Made when a node is entered, as its cost (ms on 100 plates) is too
+// much for every child ranked; made from the first node on, as a node it prunes early saves the
+// subtree below it, while designs it never prunes pay its cost at every node.
 bool PlateJointPlanner::heldByInequalities(const std::vector<PlanStep>& path) const {
   if (path.size() < 2) return true;
   const Assembly model = jointModel(graph_, families_, path);
@@ -329,8 +329,7 @@ std::vector<PlanStep> PlateJointPlanner::childrenOf(const std::vector<PlanStep>&
 // The next of `candidates` (ranked, taken from the front) that passes the node test, while fewer
 // than m have passed (`accepted`); none when none is left. The search asks for children one at a
 // time: the node test (a model of all contacts and its DBGs, milliseconds on 400 plates) is then
-// made only for the children it enters, not for every candidate of every node it passes (the
-// LONG TABLE of 402 plates: 39 s -> see the commit).
+// made only for the children it enters, not for every candidate of every node it passes.
 std::optional<PlanStep> PlateJointPlanner::nextChild(const std::vector<PlanStep>& steps, std::vector<PlanStep>* candidates,
                                                  int* accepted) {
   std::vector<PlanStep> next = steps;

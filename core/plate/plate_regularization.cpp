@@ -8,6 +8,7 @@
 
 #include "analysis/vec3.h"
 #include "desia/error.h"
+#include "desia/tolerances.h"
 #include "plate/normal_classes.h"
 
 namespace desia {
@@ -47,7 +48,7 @@ SolidPlanes collectNormals(const Plate& solid, std::vector<Vec3>* normals, bool*
     }
   }
   for (size_t k = planes.first; k < normals->size(); ++k) {
-    if (!(norm((*normals)[k]) > 1e-12)) *degenerate = true;
+    if (!(norm((*normals)[k]) > tolerance::kNoTwiceAreaMm2)) *degenerate = true;
   }
   return planes;
 }
@@ -62,7 +63,7 @@ double meanOffset(const Vec3& normal, const std::vector<Vec3>& points) {
 std::optional<Vec3> crossingOf(const Plane& p, const Plane& q, const Plane& r) {
   const Vec3 qr = cross(q.normal, r.normal);
   const double det = dot(p.normal, qr);
-  if (std::abs(det) < 1e-9) return std::nullopt;
+  if (std::abs(det) < tolerance::kDirection) return std::nullopt;
   const Vec3 sum = plus(plus(scaled(qr, p.offset), scaled(cross(r.normal, p.normal), q.offset)),
                         scaled(cross(p.normal, q.normal), r.offset));
   return scaled(sum, 1 / det);
@@ -71,23 +72,24 @@ std::optional<Vec3> crossingOf(const Plane& p, const Plane& q, const Plane& r) {
 // The point of planes p and q nearest `near` (their line is p ∩ q; p and q not parallel).
 std::optional<Vec3> nearestOnLine(const Plane& p, const Plane& q, const Vec3& near) {
   const Vec3 along = cross(p.normal, q.normal);
-  if (norm(along) < 1e-9) return std::nullopt;
+  if (norm(along) < tolerance::kDirection) return std::nullopt;
   const Plane through{normalized(along), dot(normalized(along), near)};
   return crossingOf(p, q, through);
 }
 
 // Vertex i of a face's loop: on the face's plane and the planes of sides i-1 and i, or, where
-// those sides are within 0.01 rad of parallel (a straight edge drawn in two pieces, a fine curve),
+// those sides are within kStraightSideSine of parallel (a straight edge drawn in two pieces, a fine curve),
 // the point of the face and side i nearest the vertex given: their crossing would move the vertex
 // by the planes' rounding over the angle between them.
 std::optional<Vec3> snappedVertex(const Plane& face, const Plane& before, const Plane& after, const Vec3& given) {
-  if (norm(cross(before.normal, after.normal)) < 0.01) return nearestOnLine(face, after, given);
+  if (norm(cross(before.normal, after.normal)) < tolerance::kStraightSideSine) return nearestOnLine(face, after, given);
   return crossingOf(face, before, after);
 }
 
-// How far a vertex may move: the rounding of a file written to a micrometre turns a plane by 1e-7
-// rad, which moves a vertex 1e-4 mm across a 1 m plate; more is a shape no plane fits.
-double largestSnap(const PlateOptions& options) { return std::min(options.contactTolerance, 0.01); }
+// How far a vertex may move (tolerance::kLargestVertexSnapMm); more is a shape no plane fits.
+double largestSnap(const PlateOptions& options) {
+  return std::min(options.contactTolerance, tolerance::kLargestVertexSnapMm);
+}
 
 // The solid with its vertices on the snapped planes, or none when one would move further than
 // `tolerance` or not be found.
@@ -152,8 +154,8 @@ std::vector<Plate> regularizedPlates(const std::vector<Plate>& plates, const Pla
     degenerate[s] = bad;
   }
   for (Vec3& n : normals) n = norm(n) > 0 ? normalized(n) : n;
-  const std::vector<Vec3> snapped =
-      snappedDirections(normals, origin == PlateOrigin::Drawn ? kDrawnDirectionAngle : kComputedDirectionAngle);
+  const std::vector<Vec3> snapped = snappedDirections(
+      normals, origin == PlateOrigin::Drawn ? tolerance::kDrawnDirectionRad : tolerance::kComputedDirectionRad);
   std::vector<Plate> result;
   size_t s = 0;
   for (const Plate& plate : plates) {

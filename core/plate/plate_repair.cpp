@@ -12,12 +12,11 @@
 
 #include "analysis/vec3.h"
 #include "desia/error.h"
+#include "desia/tolerances.h"
 
 namespace desia {
 namespace {
 
-constexpr double kCoplanar = 0.05;  // mm
-constexpr double kSameNormal = 1e-6;
 constexpr double kMinimumWidth = 10.0;  // mm a bar needs to be worth making
 constexpr double kWidthPerThickness = 3.0;
 
@@ -51,8 +50,8 @@ double thicknessOf(const Plate& plate) {
 
 // A frame of the design's own: the plane of a face, u along the face's longest edge, v across it.
 // Bars are laid out and kept clear of the other plates in it, so that a turned design is repaired
-// as the design itself (in world axes, the CHAIR turned 0.3 rad about y found no bar, and turned
-// 0.01 rad about z a bar skewed to the chair, which then did not design).
+// as the design itself (in world axes, a turned design may find no bar, or a bar skewed to the
+// design that then does not design).
 struct DesignFrame {
   Vec3 origin, normal, u, v;
 };
@@ -176,8 +175,8 @@ std::optional<Bar> smallestBar(const std::vector<Plate>& plates, const std::vect
       const double thickness = std::min(thicknessOf(plates[p]), thicknessOf(plates[q]));
       for (const Face& f : faces[p]) {
         for (const Face& g : faces[q]) {
-          if (dot(f.normal, g.normal) < 1 - kSameNormal) continue;
-          if (std::abs(dot(minus(g.loop[0], f.loop[0]), f.normal)) > kCoplanar) continue;
+          if (dot(f.normal, g.normal) < 1 - tolerance::kFacingCosine) continue;
+          if (std::abs(dot(minus(g.loop[0], f.loop[0]), f.normal)) > tolerance::kContactMm) continue;
           std::optional<Bar> bar = barBetween(f, g, thickness);
           if (!bar || (best && bar->area >= best->area)) continue;
           // Clear of every plate: boxes in the bar's own frame (exact for the bar).

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "analysis/vec3.h"
+#include "desia/tolerances.h"
 #include "plate/exact_vertices.h"
 #include "plate/plane_frame.h"
 
@@ -17,7 +18,7 @@ bool isPrism(const Plate& plate) {
   const Vec3 lift = scaled(plateThicknessAxis(plate), plateThickness(plate));
   for (size_t l = 0; l < plate.bottom.size(); ++l) {
     for (size_t k = 0; k < plate.bottom[l].size(); ++k) {
-      if (norm(minus(plate.top[l][k], plus(plate.bottom[l][k], lift))) > 1e-6) return false;
+      if (norm(minus(plate.top[l][k], plus(plate.bottom[l][k], lift))) > tolerance::kPrismMm) return false;
     }
   }
   return true;

@@ -8,6 +8,7 @@
 #include "analysis/vec3.h"
 #include "desia/error.h"
 #include "desia/plate.h"
+#include "desia/tolerances.h"
 #include "plate/plane_frame.h"
 #include "plate/plate_shape.h"
 #include "plate/plate_solid.h"
@@ -24,7 +25,8 @@ using geometry::preciseMillimetres;
 void requirePlanar(const Plate& plate, const std::vector<Loop>& loops, const char* which, double tolerance,
                    const std::string& source) {
   const Vec3 n = loopNormal(loops[0]);
-  if (norm(n) < 1e-12) throwBadInput(source, plateName(plate) + ": its " + which + " face has no area");
+  if (norm(n) < tolerance::kNoTwiceAreaMm2)
+    throwBadInput(source, plateName(plate) + ": its " + which + " face has no area");
   const PlaneFrame frame(centroidOf(loops[0]), n);
   for (size_t l = 0; l < loops.size(); ++l) {
     for (size_t i = 0; i < loops[l].size(); ++i) {
@@ -49,7 +51,7 @@ void requireSimpleLoop(const Plate& plate, const Loop& loop, size_t loopIndex, c
   auto orient = [&](size_t a, size_t b, size_t c) {
     const double bx = p[b][0] - p[a][0], by = p[b][1] - p[a][1], cx = p[c][0] - p[a][0], cy = p[c][1] - p[a][1];
     const double value = bx * cy - by * cx;
-    const double rounding = 1e-12 * std::hypot(bx, by) * std::hypot(cx, cy);
+    const double rounding = tolerance::kProductRounding * std::hypot(bx, by) * std::hypot(cx, cy);
     return value > rounding ? 1 : (value < -rounding ? -1 : 0);
   };
   const size_t n = p.size();
@@ -60,8 +62,9 @@ void requireSimpleLoop(const Plate& plate, const Loop& loop, size_t loopIndex, c
     return o1 * o2 <= 0 && o3 * o4 <= 0 && !(o1 == 0 && o2 == 0);
   };
   // Only edges whose spans along u overlap can meet: the edges sorted by where they start along u,
-  // each compared with those still open there (a sweep; a 30,000-vertex outline took 19.7 s by
-  // comparing every pair). The first crossing pair in edge order is named, as before.
+  // each compared with those still open there (a sweep: comparing every pair is quadratic, seconds
+  // on an outline of tens of thousands of vertices). The first crossing pair in edge order is
+  // named.
   std::vector<size_t> byStart(n);
   std::vector<double> low(n), high(n);
   for (size_t k = 0; k < n; ++k) {
@@ -120,7 +123,7 @@ void requireHolesInside(const Plate& plate, double tolerance, const std::string&
   if (plate.bottom.size() < 2) return;
   const PlaneFrame frame(centroidOf(plate.bottom[0]), loopNormal(plate.bottom[0]));
   const ClipperLib::Paths outline{clipperPath(plate.bottom[0], frame)};
-  const double sliver = 1e-6;  // mm^2
+  const double sliver = tolerance::kEmptyAreaMm2;
   std::vector<ClipperLib::Paths> holes;
   double separateArea = 0;
   for (size_t h = 1; h < plate.bottom.size(); ++h) {

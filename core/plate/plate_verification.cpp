@@ -14,6 +14,7 @@
 #include "desia/blocking_graph.h"
 #include "desia/interlocking.h"
 #include "desia/plate_design.h"
+#include "desia/tolerances.h"
 #include "plate/plan_squaring.h"
 #include "plate/plane_frame.h"
 #include "plate/plate_shape.h"
@@ -152,8 +153,9 @@ std::string prismFailure(const Plate& verified, const Plate& made, double cleara
   const double madeAxis = norm(cross(plateThicknessAxis(made), axis));
   const double firstPlane = std::abs(dot(frame.offset(made.bottom[0][0]), axis));
   const double secondPlane = std::abs(plateThickness(made) - plateThickness(verified));
-  if (!(madeAxis < 1e-6) || !(firstPlane <= tolerance) || !(secondPlane <= tolerance)) return "its faces are not the verified plate's";
-  const double sliver = 1e-2;  // mm^2: Clipper's rounding along a long outline, far below any joint
+  if (!(madeAxis < tolerance::kParallelSine) || !(firstPlane <= tolerance) || !(secondPlane <= tolerance))
+    return "its faces are not the verified plate's";
+  const double sliver = tolerance::kOutlineSliverMm2;
   for (const std::vector<Loop>* face : {&verified.bottom, &verified.top}) {
     const std::vector<Loop>& madeFace = face == &verified.bottom ? made.bottom : made.top;
     const ClipperLib::Paths verifiedArea = faceArea(*face, frame), madeArea = faceArea(madeFace, frame);

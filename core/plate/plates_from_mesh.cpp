@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Plates from a modelling tool's mesh (issue 8): every OBJ object or group (`o` / `g`), or every
+// Plates from a modelling tool's mesh: every OBJ object or group (`o` / `g`), or every
 // connected piece of a mesh without groups, is one plate, a closed slab whose two largest parallel
 // faces are the plate's faces. Blender or SketchUp designs open as they are.
 #include <algorithm>
@@ -10,6 +10,7 @@
 #include "analysis/vec3.h"
 #include "desia/error.h"
 #include "desia/plate.h"
+#include "desia/tolerances.h"
 
 namespace desia {
 namespace {
@@ -69,7 +70,7 @@ std::vector<PlanarFace> planarFaces(const TriangleMesh& mesh, const std::vector<
     const Vec3 n = normalized(n2);
     PlanarFace* face = nullptr;
     for (PlanarFace& f : faces) {
-      if (dot(f.normal, n) > 1 - 1e-9 && std::abs(dot(f.normal, a) - f.offset) <= tolerance) face = &f;
+      if (dot(f.normal, n) > 1 - tolerance::kDirection && std::abs(dot(f.normal, a) - f.offset) <= tolerance) face = &f;
     }
     if (!face) {
       faces.push_back({n, dot(n, a), 0, {}});
@@ -108,7 +109,8 @@ std::vector<Loop> boundaryLoops(const TriangleMesh& mesh, const PlanarFace& face
     for (size_t i = 0; i < loop.size(); ++i) {
       const Vec3& p = loop[(i + loop.size() - 1) % loop.size()];
       const Vec3& q = loop[(i + 1) % loop.size()];
-      if (norm(cross(minus(loop[i], p), minus(q, loop[i]))) > 1e-9 * norm(minus(q, p)) * norm(minus(q, p))) corners.push_back(loop[i]);
+      const double turn = norm(cross(minus(loop[i], p), minus(q, loop[i])));
+      if (turn > tolerance::kDirection * norm(minus(q, p)) * norm(minus(q, p))) corners.push_back(loop[i]);
     }
     if (corners.size() >= 3) loops.push_back(corners);
   }
@@ -148,7 +150,7 @@ Plate plateFromPiece(const TriangleMesh& mesh, const std::vector<int>& triangles
   const PlanarFace* bottom = faces.empty() ? nullptr : &faces[0];
   const PlanarFace* top = nullptr;
   for (size_t f = 1; f < faces.size() && bottom; ++f) {
-    if (dot(faces[f].normal, bottom->normal) < -1 + 1e-6) {
+    if (dot(faces[f].normal, bottom->normal) < -1 + tolerance::kFacingCosine) {
       top = &faces[f];
       break;
     }

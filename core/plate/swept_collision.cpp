@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "analysis/vec3.h"
+#include "desia/tolerances.h"
 #include "plate/plane_frame.h"
 
 namespace desia {
@@ -32,7 +33,8 @@ std::vector<Shadow> shadowsOf(const TriangleMesh& mesh, const PlaneFrame& frame,
     }
     const double twiceArea = (s.corner[1][0] - s.corner[0][0]) * (s.corner[2][1] - s.corner[0][1]) -
                              (s.corner[2][0] - s.corner[0][0]) * (s.corner[1][1] - s.corner[0][1]);
-    if (std::abs(twiceArea) < 1e-9) continue;  // edge-on: its solid is seen through its neighbours
+    if (std::abs(twiceArea) < tolerance::kEdgeOnTwiceAreaMm2)
+      continue;  // edge-on: its solid is seen through its neighbours
     // Keep the triangles facing `facing` times d (outward triangles wind counter-clockwise seen
     // from outside, and (u, v, d) is right-handed: those facing +d have a positive area).
     if ((twiceArea > 0) != (facing > 0)) continue;
@@ -112,8 +114,8 @@ bool meshCollidesAlong(const TriangleMesh& mover, const TriangleMesh& obstacle, 
     double moverLo = HUGE_VAL, moverHi = -HUGE_VAL, lo = HUGE_VAL, hi = -HUGE_VAL;
     for (const auto& p : mover.vertices) moverLo = std::min(moverLo, p[k]), moverHi = std::max(moverHi, p[k]);
     for (const auto& p : obstacle.vertices) lo = std::min(lo, p[k]), hi = std::max(hi, p[k]);
-    if (d[k] > 1e-12) moverHi = HUGE_VAL;
-    if (d[k] < -1e-12) moverLo = -HUGE_VAL;
+    if (d[k] > tolerance::kComponentNoise) moverHi = HUGE_VAL;
+    if (d[k] < -tolerance::kComponentNoise) moverLo = -HUGE_VAL;
     if (hi <= moverLo + tolerance || moverHi <= lo + tolerance) return false;
   }
   const PlaneFrame frame(mover.vertices[0], d);

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "desia/assembly.h"
+#include "desia/tolerances.h"
 #include "desia/triangle_mesh.h"
 
 namespace desia {
@@ -47,7 +48,7 @@ TriangleMesh plateMesh(const Plate& plate);
 
 struct PlateOptions {
   // Two faces closer than this (mm) lie on one another; also the planarity tolerance of a face.
-  double contactTolerance = 0.05;
+  double contactTolerance = tolerance::kContactMm;
 };
 
 // A planar contact between two plates (internal indices into the plate list).
@@ -72,24 +73,27 @@ struct PlateContact {
 // cross themselves) and throws BadInput naming the plate and the problem.
 void validatePlates(const std::vector<Plate>& plates, const PlateOptions& options, const std::string& source);
 
-// Plates snapped to their design, once, on reading (readers call it after validatePlates): a design turned by any rotation or
-// written to 6 decimals (as CAD tools write) has faces meant to be parallel 1e-9 to 1e-7 rad apart
-// and faces meant to be square as far off square. Every normal the designer and `desia check`
-// derive (contact normals, ways out, joint faces) inherits that noise, and the blocking tests
-// decide d·n > 1e-9 (README "Verdicts on computed normals"): turned and rounded, the MITRED BOX
-// had 72 base directions instead of 7 and the TABLE found no plan. Snapped, every plane of the
-// design is exact to rounding (1e-14) and the same design gives the same verdict in any turn.
+// Plates snapped to their design, once, on reading (readers call it after validatePlates): a design
+// turned by any rotation or written to 6 decimals (as CAD tools write) has faces meant to be
+// parallel 1e-9 to 1e-7 rad apart and faces meant to be square as far off square. Every normal the
+// designer and `desia check` derive (contact normals, ways out, joint faces) inherits that noise,
+// and the blocking tests decide d·n > tolerance::kDirection (README "Verdicts on computed
+// normals"): the noise multiplies the base directions (the MITRED BOX, turned and rounded: 72
+// instead of 7) and lets faces block what slides along them. Snapped, every plane of the design is
+// exact to rounding (tolerance::kSquaredCosine) and the same design gives the same verdict in any
+// turn.
 //
 // The plates with every face plane (both faces and every side, of the plates and of their attached
-// solids) snapped: normals within 1e-4 or 1e-6 rad (below) of parallel made one normal, pairs as
-// close to square made square (snappedDirections), each plane through the mean of its vertices, and every vertex
-// recomputed as the crossing of its face's plane and its two sides' planes (on their shared line
-// where the sides are within 0.01 rad of parallel). A plate whose vertices would move further than
-// 0.01 mm (or the contact tolerance, if smaller) is kept as given: a shape no plane fits, which
-// validatePlates judges.
-// Drawn: a design from a file or a modelling tool (directions within 1e-4 rad snapped: a CAD file
-// in metres to 6 decimals). Computed: plates desia made or wrote at full precision (the designer's
-// jointed plates, a result's plates; within 1e-6, as finer cuts are real). normal_classes.h.
+// solids) snapped: normals within an angle (below) of parallel made one normal, pairs as close to
+// square made square (snappedDirections), each plane through the mean of its vertices, and every
+// vertex recomputed as the crossing of its face's plane and its two sides' planes (on their shared
+// line where the sides are within tolerance::kStraightSideSine of parallel). A plate whose
+// vertices would move further than tolerance::kLargestVertexSnapMm (or the contact tolerance, if
+// smaller) is kept as given: a shape no plane fits, which validatePlates judges.
+// Drawn: a design from a file or a modelling tool (directions within
+// tolerance::kDrawnDirectionRad snapped: a CAD file in metres to 6 decimals). Computed: plates
+// desia made or wrote at full precision (the designer's jointed plates, a result's plates; within
+// tolerance::kComputedDirectionRad, as finer cuts are real). normal_classes.h.
 enum class PlateOrigin { Drawn, Computed };
 std::vector<Plate> regularizedPlates(const std::vector<Plate>& plates, const PlateOptions& options, PlateOrigin origin);
 

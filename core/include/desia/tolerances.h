@@ -17,7 +17,8 @@ namespace tolerance {
 // --- Lengths, mm -------------------------------------------------------------------------------
 
 // Default of PlateOptions::contactTolerance: two faces closer than this lie on one another (a
-// contact), and a face is planar when its vertices lie this close to one plane.
+// contact), and a face is planar when its vertices lie this close to one plane. The joint
+// geometry and the plate repair measure with this default, not the option.
 constexpr double kContactMm = 0.05;
 // How far snapping a plate to its design's planes may move a vertex (at most the contact tolerance):
 // a file written to a micrometre turns a plane by 1e-7 rad, 1e-4 mm across a 1 m plate.
@@ -38,7 +39,8 @@ constexpr double kLeastSharedWidthMm = 1e-3;
 // A top vertex this close to its bottom vertex moved straight across the plate's thickness: the
 // side between them stands square on the faces (a plate of such sides is a prism).
 constexpr double kPrismMm = 1e-6;
-// A length below this is none: an edge of no length, a crossing at the point it starts from.
+// A length below this is none: an edge of no length, a crossing at the point it starts from, a
+// part past the usable width of a cut sheet by less.
 constexpr double kZeroLengthMm = 1e-9;
 // Lengths computed from the same inputs that differ by less than this are equal (rounding of
 // doubles on lengths of millimetres to metres): coinciding corners, boxes that only touch.
@@ -53,6 +55,12 @@ constexpr double kOutlineSliverMm2 = 1e-2;
 constexpr double kLeastSharedAreaMm2 = 1e-3;
 // A region of Clipper's results smaller than this is empty (rounding at a corner or an edge).
 constexpr double kEmptyAreaMm2 = 1e-6;
+// A piece of a cut sheet's flattened outlines (Clipper on a 1e-3 mm grid) this small or smaller
+// is rounding at a corner, not an opening between parts.
+constexpr double kSheetSliverMm2 = 1e-2;
+// Two areas computed for one outline that differ by less than this are equal: of the bounding
+// boxes a plate is laid flat in, the first smallest is kept.
+constexpr double kSameAreaMm2 = 1e-6;
 // A triangle whose shadow has less than this twice-area is seen edge-on.
 constexpr double kEdgeOnTwiceAreaMm2 = 1e-9;
 // A face whose twice-area (the length of its unnormalised normal) is below this has no area.
@@ -64,19 +72,22 @@ constexpr double kNoTwiceAreaMm2 = 1e-12;
 // component, cosine, sine or triple product below it is zero (square, parallel, coplanar), and a
 // component or cosine within it of ±1 is one (along an axis, the same direction). Far below any
 // angle a geometry means, far above the rounding of the cross products that produce normals.
+// The same slack when a cosine is compared with a bound (45 degrees).
 constexpr double kDirection = 1e-9;
 // A unit vector's component (or a vector's, as a fraction of its largest component) below this
 // is rounding residue (1e-16-sized after a rotation or a cross product) and counts as zero.
 constexpr double kComponentNoise = 1e-12;
 // Directions exact to rounding (snapped, planned, computed from one another): parallel when their
-// cosine is within this of ±1 (1.4e-6 rad), square when it is below this.
+// cosine is within this of ±1 (1.4e-6 rad), square when it is below this; a cosine within this
+// of a bound (45 degrees) meets it.
 constexpr double kExactCosine = 1e-12;
 // Pairs of snapped directions are squared until their cosine is below this (square to rounding).
 constexpr double kSquaredCosine = 1e-14;
 // Square: |cosine| below this (1e-6 rad off a right angle) is a right angle, as the rounding of a
 // design given to a micrometre leaves faces meant to be square.
 constexpr double kSquareCosine = 1e-6;
-// Parallel: the sine between unit vectors (|a × b|) below this (1e-6 rad) is parallel.
+// Parallel: the sine between unit vectors (|a × b|) below this (1e-6 rad) is parallel; so is an
+// edge whose slope across a line (rise over run) is below this.
 constexpr double kParallelSine = 1e-6;
 // Faces whose normals' cosine is within this of 1 (of -1) face the same (the opposite) way:
 // about 1.4e-3 rad, for faces of meshes as drawn.

@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "analysis/vec3.h"
+#include "desia/tolerances.h"
 #include "plate/joints/joint_geometry.h"
 #include "plate/plane_frame.h"
 #include "plate/plate_shape.h"
@@ -76,7 +77,6 @@ Plate prismAlongEdge(const std::vector<Plate>& plates, const TenonSite& edge, do
 // the housing's side); nothing where they do not, or where the strip never leaves.
 std::optional<double> stripExit(const std::vector<Plate>& plates, const TenonSite& edge, const Loop& outline,
                                 const PlaneFrame& frame, int end, double low, double high) {
-  constexpr double kSameExit = 0.01;  // mm
   const double sign = end == 1 ? 1 : -1, at = end == 1 ? edge.to : edge.from;
   auto planar = [&](const Vec3& p) { return std::array<double, 2>{dot(frame.offset(p), frame.u), dot(frame.offset(p), frame.v)}; };
   const Vec3 way = scaled(edge.along, sign);
@@ -89,14 +89,15 @@ std::optional<double> stripExit(const std::vector<Plate>& plates, const TenonSit
       const std::array<double, 2> q0 = planar(outline[k]), q1 = planar(outline[(k + 1) % outline.size()]);
       const double ex = q1[0] - q0[0], ey = q1[1] - q0[1];
       const double denominator = dir[0] * ey - dir[1] * ex;
-      if (std::abs(denominator) < 1e-12) continue;  // the side runs along the strip
+      if (std::abs(denominator) < tolerance::kZeroDivisor) continue;  // the side runs along the strip
       const double wx = q0[0] - p[0], wy = q0[1] - p[1];
       const double t = (wx * ey - wy * ex) / denominator, u = (wx * dir[1] - wy * dir[0]) / denominator;
-      if (t > 1e-9 && u >= -1e-9 && u <= 1 + 1e-9) nearest = std::min(nearest, t);
+      if (t > tolerance::kZeroLengthMm && u >= -tolerance::kSegmentParameter && u <= 1 + tolerance::kSegmentParameter)
+        nearest = std::min(nearest, t);
     }
     exits[side] = nearest;
   }
-  if (!std::isfinite(exits[0]) || !std::isfinite(exits[1]) || std::abs(exits[0] - exits[1]) > kSameExit)
+  if (!std::isfinite(exits[0]) || !std::isfinite(exits[1]) || std::abs(exits[0] - exits[1]) > tolerance::kSameExitMm)
     return std::nullopt;
   return std::min(exits[0], exits[1]);
 }
@@ -179,7 +180,7 @@ std::optional<DovetailSite> dovetailSiteOf(const std::vector<Plate>& plates, con
     return Loop{jointPoint(plates, *edge, s0, low, 0), jointPoint(plates, *edge, s1, low, 0),
                 jointPoint(plates, *edge, s1, high, 0), jointPoint(plates, *edge, s0, high, 0)};
   };
-  constexpr double kFlush = 0.01;  // mm
+  constexpr double kFlush = tolerance::kFlushMm;
   // Open at an end, `reach` past the contact: the face plate's material ends there (nothing of it
   // just beyond), and the housing from the stop to there lies inside it.
   auto opensAt = [&](int end, double reach) {
@@ -187,8 +188,8 @@ std::optional<DovetailSite> dovetailSiteOf(const std::vector<Plate>& plates, con
     const Loop beyond = rectangle(std::min(at + sign * kFlush, at + sign * options.woodMargin),
                                   std::max(at + sign * kFlush, at + sign * options.woodMargin));
     const Loop housing = end == 1 ? rectangle(edge->from + stop, at - kFlush) : rectangle(at + kFlush, edge->to - stop);
-    return areaAgainst({beyond}, housingPlate.bottom, frame, false) < 1e-6 &&
-           areaAgainst({housing}, housingPlate.bottom, frame, true) < 1e-6;
+    return areaAgainst({beyond}, housingPlate.bottom, frame, false) < tolerance::kEmptyAreaMm2 &&
+           areaAgainst({housing}, housingPlate.bottom, frame, true) < tolerance::kEmptyAreaMm2;
   };
   for (int end = 0; end < 2; ++end) {
     site.opens[end] = opensAt(end, 0);

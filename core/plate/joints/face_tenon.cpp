@@ -5,6 +5,7 @@
 
 #include "analysis/vec3.h"
 #include "desia/error.h"
+#include "desia/tolerances.h"
 #include "plate/joints/joint_geometry.h"
 #include "plate/plane_frame.h"
 #include "plate/plate_shape.h"
@@ -60,9 +61,9 @@ std::optional<FaceTenon> faceTenonOf(const std::vector<Plate>& plates, const Pla
   const Plate& mortise = plates[tenon.mortisePlate];
   if (!isPrism(plates[tenonPlate]) || !isPrism(mortise)) return std::nullopt;
   tenon.out = contact.a == tenonPlate ? negated(contact.normal) : contact.normal;
-  if (dot(normalized(d), tenon.out) < 1 - 1e-9) return std::nullopt;  // straight off the lap only
+  if (dot(normalized(d), tenon.out) < 1 - tolerance::kDirection) return std::nullopt;  // straight off the lap only
   tenon.u = normalized(contact.edgeDirection);
-  if (std::abs(dot(tenon.u, tenon.out)) > kSquare) return std::nullopt;
+  if (std::abs(dot(tenon.u, tenon.out)) > tolerance::kSquareCosine) return std::nullopt;
   tenon.v = normalized(cross(tenon.out, tenon.u));
   tenon.origin = contact.region[0];
   const auto [s0, s1] = extentAlong(contact.region, tenon.origin, tenon.u);
@@ -79,7 +80,7 @@ std::optional<FaceTenon> faceTenonOf(const std::vector<Plate>& plates, const Pla
   tenon.depth = sizes.depth.of(plateThickness(mortise));
   // The block inside the lap (a lap that is not a rectangle may not hold the middle).
   const PlaneFrame frame(tenon.origin, tenon.out);
-  if (areaAgainst({tenon.footprint(0)}, {contact.region}, frame, true) > 1e-6) return std::nullopt;
+  if (areaAgainst({tenon.footprint(0)}, {contact.region}, frame, true) > tolerance::kEmptyAreaMm2) return std::nullopt;
   return tenon;
 }
 

@@ -8,6 +8,7 @@
 
 #include "analysis/vec3.h"
 #include "desia/error.h"
+#include "desia/tolerances.h"
 #include "plate/joints/dovetail.h"
 #include "plate/joints/face_tenon.h"
 #include "plate/joints/halved.h"
@@ -56,7 +57,7 @@ bool makesJoints(JointRealization realization) { return realization != JointReal
 
 bool exitsLet(const std::vector<Vec3>& exits, int tenonPlate, int mover, const Vec3& d) {
   for (const Vec3& exit : exits) {
-    if (dot(tenonPlate == mover ? exit : negated(exit), d) > 1 - 1e-9) return true;
+    if (dot(tenonPlate == mover ? exit : negated(exit), d) > 1 - tolerance::kDirection) return true;
   }
   return false;
 }
@@ -79,7 +80,7 @@ void requireShare(const LengthShare& share, const char* setting, bool whole) {
 
 std::vector<Vec3> plannedJointNormals(const Vec3& thicknessAxis, const Vec3& d) {
   Vec3 u = minus(thicknessAxis, scaled(d, dot(thicknessAxis, d)));
-  if (norm(u) < 1e-6) u = cross(d, std::abs(d[0]) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0});
+  if (norm(u) < tolerance::kParallelSine) u = cross(d, std::abs(d[0]) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0});
   u = normalized(u);
   const Vec3 v = cross(d, u);
   return {negated(d), u, negated(u), v, negated(v)};
@@ -88,7 +89,7 @@ std::vector<Vec3> plannedJointNormals(const Vec3& thicknessAxis, const Vec3& d) 
 JointType plannedJointType(const Vec3& edge, const Vec3& d) {
   if (parallel(edge, d)) return JointType::Halved;
   const double cosine = std::abs(dot(normalized(edge), normalized(d)));
-  return cosine <= std::cos(M_PI / 4) + 1e-12 ? JointType::MortiseTenon : JointType::Empty;
+  return cosine <= std::cos(M_PI / 4) + tolerance::kExactCosine ? JointType::MortiseTenon : JointType::Empty;
 }
 
 const char* jointTypeName(JointType type) {

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "analysis/vec3.h"
+#include "desia/tolerances.h"
 
 namespace desia {
 
@@ -46,7 +47,7 @@ std::optional<int> touchingPartnerOf(const PlateContact& contact, int plate) {
 int facesOnContact(const std::vector<Plate>& plates, const PlateContact& contact) {
   int faces = 0;
   for (int plate : {contact.a, contact.b})
-    faces += std::abs(dot(contact.normal, plateThicknessAxis(plates[plate]))) > 1 - kSquare ? 1 : 0;
+    faces += std::abs(dot(contact.normal, plateThicknessAxis(plates[plate]))) > 1 - tolerance::kFacingCosine ? 1 : 0;
   return faces;
 }
 

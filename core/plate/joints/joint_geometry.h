@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // What every plate joint family measures the plates with (paper Section 5.2, geometry
-// realization): the tolerances of the joint geometry, and the small questions every joint asks of
-// a contact or a plate's face.
+// realization): the small questions every joint asks of a contact or a plate's face. Its
+// tolerances are in desia/tolerances.h.
 #pragma once
 
 #include <polyclipping/clipper.hpp>
@@ -14,9 +14,6 @@
 #include "plate/plane_frame.h"
 
 namespace desia {
-
-constexpr double kSquare = 1e-6;     // |cos| below this: at a right angle
-constexpr double kTolerance = 0.05;  // mm: faces closer than this lie on one another
 
 // The area (mm^2) of Clipper paths in a PlaneFrame's integer coordinates.
 double areaOf(const ClipperLib::Paths& paths);

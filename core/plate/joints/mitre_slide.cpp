@@ -6,6 +6,7 @@
 
 #include "analysis/vec3.h"
 #include "desia/error.h"
+#include "desia/tolerances.h"
 #include "plate/joints/joint_geometry.h"
 #include "plate/joints/mitre_tenon.h"
 #include "plate/plane_frame.h"
@@ -71,8 +72,8 @@ std::pair<double, double> cornersAlongEdge(const Plate& plate, const MitreSlide&
         const Vec3 a = minus(loop[k], slide.middle), b = minus(loop[(k + 1) % loop.size()], slide.middle);
         const double sa = dot(a, slide.line), sb = dot(b, slide.line), ua = dot(a, inward), ub = dot(b, inward);
         // The mitre's own edges (along the line, between its outer and inner lines) do not count.
-        const bool alongLine = std::abs(ua - ub) < 1e-6 * (1 + std::abs(sa - sb));
-        if (alongLine && ua >= mitreFrom - 1e-3 && ua <= mitreTo + 1e-3) continue;
+        const bool alongLine = std::abs(ua - ub) < tolerance::kParallelSine * (1 + std::abs(sa - sb));
+        if (alongLine && ua >= mitreFrom - tolerance::kSamePointMm && ua <= mitreTo + tolerance::kSamePointMm) continue;
         // The part of the edge with u <= notchReach.
         double t0 = 0, t1 = 1;
         if (ua > slide.notchReach && ub > slide.notchReach) continue;
@@ -121,7 +122,7 @@ bool setSlideFrame(MitreSlide& slide, const PlateContact& contact, const Plate& 
   slide.across = normalized(cross(slide.mitreNormal, slide.line));
   slide.into = normalized(cross(plateThicknessAxis(plate), slide.line));
   if (dot(slide.into, slide.mitreNormal) < 0) slide.into = negated(slide.into);
-  return !(dot(slide.into, slide.mitreNormal) < 0.05);
+  return !(dot(slide.into, slide.mitreNormal) < tolerance::kGlancingCosine);
 }
 
 // The groove as deep as the slide plate holds it with the margin of wood on both faces: from the
@@ -180,7 +181,8 @@ bool notchCutsCleanly(const MitreSlide& slide, const Plate& plate, const Vec3& i
   auto at = [&](double s, double u) { return plus(slide.middle, plus(scaled(slide.line, s), scaled(inward, u))); };
   const Loop end{at(slide.woodFrom, mitreTo), at(slide.tongueTo, mitreTo), at(slide.tongueTo, slide.notchReach),
                  at(slide.woodFrom, slide.notchReach)};
-  return !(areaAgainst({end}, faceRegion(plate, ClipperLib::ctIntersection), planeFrame, true) > 1e-6);
+  return !(areaAgainst({end}, faceRegion(plate, ClipperLib::ctIntersection), planeFrame, true) >
+           tolerance::kEmptyAreaMm2);
 }
 
 }  // namespace
@@ -195,7 +197,8 @@ std::optional<MitreSlide> mitreSlideOf(const std::vector<Plate>& plates, const P
   slide.tonguePlate = *partner;
   const Plate& plate = plates[slidePlate];
   const Vec3 edge = normalized(contact.edgeDirection);
-  if (std::abs(std::abs(dot(edge, normalized(d))) - 1) > 1e-12) return std::nullopt;  // along the edge only
+  if (std::abs(std::abs(dot(edge, normalized(d))) - 1) > tolerance::kExactCosine)
+    return std::nullopt;  // along the edge only
   if (!setSlideFrame(slide, contact, plate, d)) return std::nullopt;
   const auto [s0, s1] = extentAlong(contact.region, contact.region[0], slide.line);
   const auto [x0, x1] = extentAlong(contact.region, contact.region[0], slide.across);

@@ -7,6 +7,7 @@
 
 #include "analysis/vec3.h"
 #include "desia/error.h"
+#include "desia/tolerances.h"
 #include "plate/joints/joint_geometry.h"
 #include "plate/plan_squaring.h"
 #include "plate/plane_frame.h"
@@ -82,11 +83,11 @@ Plate pocketEndWedge(const MitreTenon& tenon, double pocketEnd, double flat) {
                                                  {tenon.depth, flat}};
   std::vector<std::pair<double, double>> triangle;
   for (const auto& corner : corners) {
-    if (triangle.empty() || std::abs(triangle.back().second - corner.second) > 1e-12 ||
+    if (triangle.empty() || std::abs(triangle.back().second - corner.second) > tolerance::kRoundingMm ||
         triangle.back().first != corner.first)
       triangle.push_back(corner);
   }
-  if (triangle.size() > 3 && std::abs(triangle.back().second - triangle.front().second) < 1e-12 &&
+  if (triangle.size() > 3 && std::abs(triangle.back().second - triangle.front().second) < tolerance::kRoundingMm &&
       triangle.back().first == triangle.front().first)
     triangle.pop_back();
   Plate wedge;
@@ -134,7 +135,7 @@ std::vector<Plate> pocketSurround(const std::vector<Plate>& plates, const MitreT
     straight.top = {atSlant};
     pieces.push_back(straight);
     // A slant below a micrometre leaves no wedge worth a solid.
-    if (std::abs(slant) > 1e-3) pieces.push_back(pocketEndWedge(tenon, pocketEnd, straightTo));
+    if (std::abs(slant) > tolerance::kSamePointMm) pieces.push_back(pocketEndWedge(tenon, pocketEnd, straightTo));
   }
   return pieces;
 }
@@ -194,7 +195,7 @@ std::vector<Flat> woodAroundPocket(const std::vector<Plate>& plates, const Mitre
   wood = clipHalfPlane(wood, a[0], a[1], plateThickness(pocket) - level);   // below the second
   wood = clipHalfPlane(wood, u[0], u[1], tenon.notchReach);                 // to the notch's end
   std::vector<Flat> bitten;
-  const double onMitre = 1e-9 * big;
+  const double onMitre = tolerance::kRelativeRounding * big;
   for (size_t i = 0; i < wood.size(); ++i) {
     const Flat& p = wood[i];
     const Flat& q = wood[(i + 1) % wood.size()];
@@ -227,8 +228,9 @@ bool setPocketDepth(MitreTenon& tenon, const Plate& pocket, const JointCutOption
   for (const double side : {-1.0, 1.0}) {
     const double height = dot(minus(plus(tenon.middle, scaled(tenon.across, side * tenon.halfHeight)), pocket.bottom[0][0]), axis);
     if (height < options.woodMargin || height > thickness - options.woodMargin) return false;
-    if (rate > 1e-9) tenon.depth = std::min(tenon.depth, (thickness - options.woodMargin - height) / rate);
-    if (rate < -1e-9) tenon.depth = std::min(tenon.depth, (height - options.woodMargin) / -rate);
+    if (rate > tolerance::kDirection)
+      tenon.depth = std::min(tenon.depth, (thickness - options.woodMargin - height) / rate);
+    if (rate < -tolerance::kDirection) tenon.depth = std::min(tenon.depth, (height - options.woodMargin) / -rate);
   }
   return true;
 }
@@ -252,7 +254,7 @@ bool setNotchReach(MitreTenon& tenon, const std::vector<Plate>& plates, const Pl
   const double half = notchHalfWidth(tenon);
   const Loop end{at(-half, mitreReach), at(half, mitreReach), at(half, tenon.notchReach), at(-half, tenon.notchReach)};
   const PlaneFrame frame(pocket.bottom[0][0], plateThicknessAxis(pocket));
-  return !(areaAgainst({end}, faceRegion(pocket, ClipperLib::ctIntersection), frame, true) > 1e-6);
+  return !(areaAgainst({end}, faceRegion(pocket, ClipperLib::ctIntersection), frame, true) > tolerance::kEmptyAreaMm2);
 }
 
 }  // namespace
@@ -270,7 +272,9 @@ std::optional<MitreTenon> mitreTenonOf(const std::vector<Plate>& plates, const P
   tenon.line = normalized(contact.edgeDirection);
   tenon.into = normalized(into);
   // The paper's mortise-and-tenon: the edge within 45..135 degrees of the way out.
-  if (std::abs(dot(tenon.into, tenon.line)) > std::sqrt(0.5) + 1e-9 || dot(tenon.into, normal) < 0.05) return std::nullopt;
+  if (std::abs(dot(tenon.into, tenon.line)) > std::sqrt(0.5) + tolerance::kDirection ||
+      dot(tenon.into, normal) < tolerance::kGlancingCosine)
+    return std::nullopt;
   tenon.across = normalized(cross(normal, tenon.line));
   const auto [s0, s1] = extentAlong(contact.region, contact.region[0], tenon.line);
   const auto [x0, x1] = extentAlong(contact.region, contact.region[0], tenon.across);
@@ -322,9 +326,9 @@ class MitreTenonFamily final : public JointFamily {
 
   // Straight away from a plate it meets at a mitre (a mitre tenon's way out; every touching
   // contact gives one), made square to the plates around it that it all but lies along: a
-  // mitre's normal computed from its face is off by 5e-9, and the LIZARD's plate 33, leaving so
-  // along plate 1's face, had its tenon's faces in plate 1's pocket tilted by as much against
-  // every other way out in that plane.
+  // mitre's normal computed from its face is off by 5e-9, and a plate leaving so along another's
+  // face would have its tenon's faces in that plate's pocket tilted by as much against every other
+  // way out in that plane.
   void addWaysOut(int contact, int plate, std::vector<Vec3>& ways) const override {
     const PlateContact& touching = this->contact(contact);
     if (touching.crossing) return;

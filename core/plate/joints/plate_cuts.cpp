@@ -7,6 +7,7 @@
 
 #include "analysis/vec3.h"
 #include "desia/error.h"
+#include "desia/tolerances.h"
 #include "plate/exact_vertices.h"
 #include "plate/joints/joint_geometry.h"
 #include "plate/plate_shape.h"
@@ -48,11 +49,11 @@ std::vector<Loop> cutFace(const Plate& plate, const std::vector<Loop>& added, co
 // as Clipper's 1e-4 mm grid, whose area grows with the edge's length (3e-3 mm^2 along 60 mm):
 // they run into each other only where they share more than a thousandth of a square millimetre of
 // the plate and the shared region is wider than a micrometre on average (twice its area over its
-// perimeter). Judged pair by pair, by the designer (footprintsOverlap) and the cut alike: a test
-// on the sum of three cuts' areas against their union's refused 438 complete plans of the LIZARD
-// (slivers at a corner of plate 24) whose steps the designer had let through.
+// perimeter). Judged pair by pair, by the designer (footprintsOverlap) and the cut alike: a test on
+// the sum of several cuts' areas against their union's would add up slivers at a corner and refuse
+// complete plans whose steps the designer let through.
 bool cutsShareWood(const Plate& plate, const Loop& a, const Loop& b, const PlaneFrame& frame) {
-  constexpr double kLeastArea = 1e-3, kLeastWidth = 1e-3;
+  constexpr double kLeastArea = tolerance::kLeastSharedAreaMm2, kLeastWidth = tolerance::kLeastSharedWidthMm;
   ClipperLib::Clipper clipper;
   clipper.AddPaths(clipperPaths({a}, frame), ClipperLib::ptSubject, true);
   clipper.AddPaths(clipperPaths({b}, frame), ClipperLib::ptClip, true);
@@ -94,7 +95,7 @@ void requireApart(const Plate& plate, const std::vector<Loop>& cuts, const Plane
 Vec3 secondFacePartner(const Plate& plate, const Vec3& point, const Vec3* wall = nullptr) {
   for (size_t l = 0; l < plate.bottom.size(); ++l) {
     for (size_t k = 0; k < plate.bottom[l].size(); ++k) {
-      if (norm(minus(plate.bottom[l][k], point)) < 1e-3) return plate.top[l][k];
+      if (norm(minus(plate.bottom[l][k], point)) < tolerance::kSamePointMm) return plate.top[l][k];
     }
   }
   for (size_t l = 0; l < plate.bottom.size(); ++l) {
@@ -103,10 +104,10 @@ Vec3 secondFacePartner(const Plate& plate, const Vec3& point, const Vec3* wall =
       const size_t next = (k + 1) % bottom.size();
       const Vec3 edge = minus(bottom[next], bottom[k]);
       const double length = norm(edge);
-      if (length < 1e-9) continue;
+      if (length < tolerance::kZeroLengthMm) continue;
       const double t = dot(minus(point, bottom[k]), edge) / (length * length);
-      if (t < -1e-9 || t > 1 + 1e-9) continue;
-      if (norm(minus(point, plus(bottom[k], scaled(edge, t)))) > 1e-3) continue;
+      if (t < -tolerance::kSegmentParameter || t > 1 + tolerance::kSegmentParameter) continue;
+      if (norm(minus(point, plus(bottom[k], scaled(edge, t)))) > tolerance::kSamePointMm) continue;
       // Across the side, square to its edges (they are parallel): the cuts that reach a mitred
       // side meet it with walls square to it (a mitre tenon's notch).
       const Vec3 along = scaled(edge, 1 / length);
@@ -116,7 +117,8 @@ Vec3 secondFacePartner(const Plate& plate, const Vec3& point, const Vec3* wall =
       // Where the wall's plane (along the cut's edge and the plate's axis) meets the second-face edge.
       const Vec3 wallNormal = cross(*wall, plateThicknessAxis(plate));
       const double rate = dot(along, wallNormal);
-      if (norm(wallNormal) < 1e-9 || std::abs(rate) < 1e-6 * norm(wallNormal)) return square;
+      if (norm(wallNormal) < tolerance::kZeroLengthMm || std::abs(rate) < tolerance::kSquareCosine * norm(wallNormal))
+        return square;
       return plus(square, scaled(along, dot(minus(point, square), wallNormal) / rate));
     }
   }
@@ -129,14 +131,15 @@ std::optional<std::pair<size_t, size_t>> sideHolding(const Plate& plate, const V
   for (size_t l = 0; l < plate.bottom.size(); ++l) {
     const Loop& bottom = plate.bottom[l];
     for (size_t k = 0; k < bottom.size(); ++k) {
-      if (norm(minus(bottom[k], point)) < 1e-3) return std::nullopt;
+      if (norm(minus(bottom[k], point)) < tolerance::kSamePointMm) return std::nullopt;
     }
     for (size_t k = 0; k < bottom.size(); ++k) {
       const Vec3 edge = minus(bottom[(k + 1) % bottom.size()], bottom[k]);
       const double length = norm(edge);
-      if (length < 1e-9) continue;
+      if (length < tolerance::kZeroLengthMm) continue;
       const double t = dot(minus(point, bottom[k]), edge) / (length * length);
-      if (t > 1e-9 && t < 1 - 1e-9 && norm(minus(point, plus(bottom[k], scaled(edge, t)))) <= 1e-3)
+      if (t > tolerance::kSegmentParameter && t < 1 - tolerance::kSegmentParameter &&
+          norm(minus(point, plus(bottom[k], scaled(edge, t)))) <= tolerance::kSamePointMm)
         return std::make_pair(l, k);
     }
   }
@@ -153,7 +156,7 @@ std::unique_ptr<Vec3> cutWallAt(const Plate& plate, const Loop& loop, size_t i) 
   const Vec3 along = normalized(minus(bottom[(side->second + 1) % bottom.size()], a));
   for (const size_t j : {(i + 1) % loop.size(), (i + loop.size() - 1) % loop.size()}) {
     const Vec3 offset = minus(loop[j], a);
-    const bool onTheLine = norm(minus(offset, scaled(along, dot(offset, along)))) <= 1e-3;
+    const bool onTheLine = norm(minus(offset, scaled(along, dot(offset, along)))) <= tolerance::kSamePointMm;
     if (!onTheLine) return std::make_unique<Vec3>(minus(loop[j], loop[i]));
   }
   return nullptr;

@@ -12,6 +12,7 @@
 #include <cmath>
 
 #include "analysis/vec3.h"
+#include "desia/tolerances.h"
 #include "plate/joints/joint_geometry.h"
 #include "plate/plane_frame.h"
 #include "plate/plate_shape.h"
@@ -24,8 +25,8 @@ namespace {
 bool sideIsSquare(const Plate& plate, size_t k) {
   const Vec3 lift = scaled(plateThicknessAxis(plate), plateThickness(plate));
   const size_t next = (k + 1) % plate.bottom[0].size();
-  return norm(minus(plate.top[0][k], plus(plate.bottom[0][k], lift))) < 1e-6 &&
-         norm(minus(plate.top[0][next], plus(plate.bottom[0][next], lift))) < 1e-6;
+  return norm(minus(plate.top[0][k], plus(plate.bottom[0][k], lift))) < tolerance::kPrismMm &&
+         norm(minus(plate.top[0][next], plus(plate.bottom[0][next], lift))) < tolerance::kPrismMm;
 }
 
 // A rectangle on the tenon plate's side: [start, end] along it, [low, high] across the tenon
@@ -50,8 +51,8 @@ Loop mortiseOf(const std::vector<Plate>& plates, const TenonSite& site, double s
 Loop tenonOf(const std::vector<Plate>& plates, const TenonSite& site, double start, double end) {
   const Vec3 base = plates[site.tenonPlate].bottom[0][site.edge];
   const Vec3 out = scaled(site.intoMortise, plateThickness(plates[site.mortisePlate]));
-  // Reaching 0.01 mm into the plate, so that the union joins them across rounding (a turned design).
-  const Vec3 in = scaled(site.intoMortise, -0.01);
+  // Reaching into the plate, so that the union joins them across rounding (a turned design).
+  const Vec3 in = scaled(site.intoMortise, -tolerance::kTenonRootOverlapMm);
   const Vec3 a = plus(base, scaled(site.along, start)), b = plus(base, scaled(site.along, end));
   return {plus(a, in), plus(b, in), plus(b, out), plus(a, out)};
 }
@@ -64,19 +65,19 @@ std::optional<int> mortiseKind(const std::vector<Plate>& plates, TenonSite site,
   const Plate& mortisePlate = plates[site.mortisePlate];
   const PlaneFrame frame(mortisePlate.bottom[0][0], plateThicknessAxis(mortisePlate));
   const double width = plateThickness(tenonPlate), margin = options.woodMargin + options.clearance / 2;
-  constexpr double kFlush = 0.01;  // mm
+  constexpr double kFlush = tolerance::kFlushMm;
   const std::vector<Loop> whole = faceRegion(mortisePlate, ClipperLib::ctIntersection);
   const std::vector<Loop> any = faceRegion(mortisePlate, ClipperLib::ctUnion);
   auto inside = [&](double low, double high) {
     std::vector<Loop> rects;
     for (const auto& [start, end] : spans)
       rects.push_back(footprint(tenonPlate, site, start - margin, end + margin, low, high));
-    return areaAgainst(rects, whole, frame, true) < 1e-6;
+    return areaAgainst(rects, whole, frame, true) < tolerance::kEmptyAreaMm2;
   };
   auto clearBeyond = [&](double low, double high) {
     std::vector<Loop> rects;
     for (const auto& [start, end] : spans) rects.push_back(footprint(tenonPlate, site, start, end, low, high));
-    return areaAgainst(rects, any, frame, false) < 1e-6;
+    return areaAgainst(rects, any, frame, false) < tolerance::kEmptyAreaMm2;
   };
   if (inside(-margin, width + margin)) return 0;
   if (inside(-margin, width - kFlush) && clearBeyond(width + kFlush, width + options.woodMargin)) return 1;
@@ -158,8 +159,8 @@ void staggerOpposingSites(const std::vector<Plate>& plates, std::vector<std::opt
       std::optional<TenonSite>& b = (*sites)[j];
       if (!a || !b || a->mortisePlate != b->mortisePlate || dot(a->intoMortise, b->intoMortise) > -0.5) continue;
       const std::array<double, 4> p = footprintBox(*a), q = footprintBox(*b);
-      if (p[2] <= q[0] + kTolerance || q[2] <= p[0] + kTolerance || p[3] <= q[1] + kTolerance ||
-          q[3] <= p[1] + kTolerance)
+      if (p[2] <= q[0] + tolerance::kContactMm || q[2] <= p[0] + tolerance::kContactMm ||
+          p[3] <= q[1] + tolerance::kContactMm || q[3] <= p[1] + tolerance::kContactMm)
         continue;
       const bool aFromBelow = dot(a->intoMortise, plateThicknessAxis(plates[a->mortisePlate])) > 0;
       a->stagger = aFromBelow ? 1 : -1;
@@ -173,9 +174,9 @@ void staggerOpposingSites(const std::vector<Plate>& plates, std::vector<std::opt
 std::optional<TenonSite> squareEdgeSite(const std::vector<Plate>& plates, const PlateContact& contact,
                                         const JointCutOptions& options) {
   const Vec3 axisA = plateThicknessAxis(plates[contact.a]), axisB = plateThicknessAxis(plates[contact.b]);
-  const bool aOnFace = std::abs(dot(contact.normal, axisA)) > 1 - kSquare;
-  const bool bOnFace = std::abs(dot(contact.normal, axisB)) > 1 - kSquare;
-  if (aOnFace == bOnFace || std::abs(dot(axisA, axisB)) > kSquare) return std::nullopt;
+  const bool aOnFace = std::abs(dot(contact.normal, axisA)) > 1 - tolerance::kFacingCosine;
+  const bool bOnFace = std::abs(dot(contact.normal, axisB)) > 1 - tolerance::kFacingCosine;
+  if (aOnFace == bOnFace || std::abs(dot(axisA, axisB)) > tolerance::kSquareCosine) return std::nullopt;
   // Plates given by two faces may have mitred sides: the edge itself must be square (below), and
   // the other plate is cut only where it is whole (mortiseKind).
   TenonSite site;
@@ -193,8 +194,8 @@ std::optional<TenonSite> squareEdgeSite(const std::vector<Plate>& plates, const 
   }();
   for (size_t k = 0; k < bottom.size(); ++k) {
     const size_t next = (k + 1) % bottom.size();
-    if (dot(sideNormals[k], site.intoMortise) < 1 - kSquare) continue;
-    if (std::abs(dot(minus(middle, bottom[k]), site.intoMortise)) > kTolerance) continue;
+    if (dot(sideNormals[k], site.intoMortise) < 1 - tolerance::kFacingCosine) continue;
+    if (std::abs(dot(minus(middle, bottom[k]), site.intoMortise)) > tolerance::kContactMm) continue;
     if (!sideIsSquare(tenonPlate, k)) return std::nullopt;
     site.edge = static_cast<int>(k);
     site.along = normalized(minus(bottom[next], bottom[k]));
@@ -203,7 +204,8 @@ std::optional<TenonSite> squareEdgeSite(const std::vector<Plate>& plates, const 
     site.to = std::min(norm(minus(bottom[next], bottom[k])), regionEnd);
     // The whole thickness of S must stand on F, or the tenon would hang beside the mortise.
     const auto [acrossStart, acrossEnd] = extentAlong(contact.region, bottom[k], site.across);
-    if (acrossStart > kTolerance || acrossEnd < plateThickness(tenonPlate) - kTolerance) return std::nullopt;
+    if (acrossStart > tolerance::kContactMm || acrossEnd < plateThickness(tenonPlate) - tolerance::kContactMm)
+      return std::nullopt;
     if (site.to - site.from < options.shortestJoint) return std::nullopt;
     return site;
   }
