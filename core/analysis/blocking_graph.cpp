@@ -37,7 +37,7 @@ DirectionKey keyOf(const Vec3& unit) {
 // descending order of the vectors themselves. Few distinct directions (voxel assemblies: three
 // lines among thousands of contacts) are found by a scan of those seen so far; past a few dozen,
 // sorting keeps this O(L log L) where the scan would be O(L^2) (O(L^4) for the O(L^2) crossings
-// of L normals, issue 14).
+// of L normals).
 std::vector<Vec3> uniqueDirections(const std::vector<Vec3>& directions) {
   constexpr size_t kScanLimit = 32;
   std::vector<std::pair<DirectionKey, size_t>> seen;

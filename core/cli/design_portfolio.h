@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// A portfolio of voxel designs on threads (issue 10, "all cores"): native only, for the CLI. The
+// A portfolio of voxel designs on threads (all cores): native only, for the CLI. The
 // core stays single-threaded (WebAssembly has no threads); this runs independent searches of it.
 #pragma once
 

@@ -40,10 +40,9 @@ uint64_t attemptSeed(uint64_t seed, int64_t attempt) {
 
 // The budget unit of a search tree, in work (beam-direction corridors and voxel-set pairs tried,
 // so a tree of slow nodes is cut as soon as one of many fast ones): a node tries about as many
-// pairs as R has beams next to taken ones, and a design of n beams takes n nodes, hence n^2. On
-// SCAFFOLD (92 beams) seeds that succeed mostly do within this; the failing ones would thrash for
-// tens of thousands of nodes. The floor lets small frames of slow curved beams (FLOWER) finish
-// their first tree as before.
+// pairs as R has beams next to taken ones, and a design of n beams takes n nodes, hence n^2: seeds
+// that succeed mostly do within this, and the failing ones would thrash for tens of thousands of
+// nodes. The floor lets small frames of slow curved beams (FLOWER) finish their first tree.
 int64_t restartUnit(int beams) { return std::max<int64_t>(int64_t(1) << 16, 3 * int64_t(beams) * beams); }
 
 void FrameDesigner::apply(const Step& step) {

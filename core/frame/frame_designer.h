@@ -30,16 +30,15 @@
 // then grow from the key's corner as one front, and R_i stays the compact block behind it,
 // shrinking onto the opposite corner, where joints hold the fewest beams (3 on a lattice) and
 // their cubes keep free voxels for the last splits (Section 5.3: R's beams there share what the
-// earlier parts left). Peeling the beams with the fewest neighbours in R first (the order
-// before) ate R from every side at once and left it a path through joints of valence 6 whose
-// cubes earlier beams had filled: each end of the path had one voxel set left and split an axis
-// DBG, a dead end decided some 50 steps above, so SCAFFOLD 300 (71,103 nodes in 120 s, deepest
-// 299 of 300) and every lattice of 3 x 3 x 3 cells or more never finished.
+// earlier parts left). Peeling the beams with the fewest neighbours in R first instead eats R from
+// every side at once and leaves it a path through joints of valence 6 whose cubes earlier beams
+// have filled: each end of the path has one voxel set left and splits an axis DBG, a dead end
+// decided some 50 steps above, and lattices of 3 x 3 x 3 cells or more do not finish.
 // A look-ahead keeps R_i from collapsing onto one joint: a beam is not taken when the three or more
 // beams left in R_i would all meet at one joint (a star). The last splits of such an R_i are
 // almost never interlocking (each of its beams owns every free voxel at its outer joint, so the
 // earlier parts there decide alone whether it is blocked), and the depth-first search would then
-// backtrack through every ordering of the star (thousands of dead nodes on SCAFFOLD).
+// backtrack through every ordering of the star (thousands of dead nodes on a lattice).
 // The search is depth first with backtracking over an explicit stack, restarted with a seed
 // derived from the user's seed when a search tree spends its node budget (budgets follow the
 // Luby sequence, so the heavy tail of a bad early choice is cut while no budget is too short

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// A designed frame as a voxel assembly (issue 9; paper Section 5.3 builds frame joints from the
+// A designed frame as a voxel assembly (paper Section 5.3 builds frame joints from the
 // voxels of Section 4): when every beam is straight and axis-aligned and every joint cube sits on
 // one grid of the joint voxel size, each beam becomes a rod of voxels of that size (through the
 // centre voxels of the two faces it enters) plus the voxels it owns in its two joint cubes. The

@@ -271,11 +271,10 @@ constexpr int kEnumeratedPartsStillToPlace = 3;
 
 // The deep end of Algorithm 1 (Section 4.1): for the last three splits, when the random graph
 // designs of Fig. 7 found no child and R_(i-1) has at most 64 voxels, the splits are enumerated
-// (final_split.h). Measured on the 5x5x5 cube at N=20 before this (seed 1, 40 s): 373 of 378 nodes
-// with three parts left and 507 of 648 with four got no child from their 1400 random attempts, and
-// the search could not tell bad luck from a dead node. The enumeration shows that the former are
-// dead (no split leaves a remainder with a last split of its own), while with four parts left it
-// finds children at nodes where the random designs found none. With three parts left a child
+// (final_split.h). Near the end most nodes get no child from their random attempts, and random
+// attempts cannot tell bad luck from a dead node; the enumeration can: with three parts left such
+// a node is mostly dead (no split leaves a remainder with a last split of its own), while with
+// four parts left it finds children where the random designs found none. With three parts left a child
 // also needs a last split of its own (look-ahead: a child without one is a dead branch the search
 // would otherwise descend into). Returns false when the enumeration was cut short by its limits
 // without a child, or did not run.
@@ -295,11 +294,10 @@ bool enumeratedChildren(const VoxelGrid& grid, int remainder, const DesignContex
 }
 
 // A part that cuts pieces off the remainder takes them in, when they fit within `maxSize` with
-// what clearing their way out adds (Section 4.1 requires R_i connected). Measured on the bunny
-// at N=120 (seed 1, 15 s): 17,112 of 19,630 candidates built were refused for cutting R apart,
-// and by the last ten parts R was one-voxel strands over the whole shape, which any part cuts
-// (a strand's end hangs off the part). Taking such pieces in turns those candidates into
-// children and eats the strands.
+// what clearing their way out adds (Section 4.1 requires R_i connected). Otherwise most candidates
+// of a large shape are refused for cutting R apart, and R thins to one-voxel strands over the
+// whole shape, which any part cuts (a strand's end hangs off the part). Taking such pieces in
+// turns those candidates into children and eats the strands.
 bool absorbPiecesCutOff(SplitEvaluator& evaluator, int maxSize, const Int3& removal, PartBuilder& builder) {
   const int room = maxSize - builder.size();
   if (room <= 0) return true;  // nothing fits: the candidate is judged as it is

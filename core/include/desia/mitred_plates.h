@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Plate sculptures from a low-poly mesh (issue 8, paper Section 5.2, the LIZARD of Fig. 1): every
+// Plate sculptures from a low-poly mesh (paper Section 5.2, the LIZARD of Fig. 1): every
 // planar face of a closed, consistently oriented mesh becomes a plate of one thickness, inset
 // inside the mesh, with mitred edges. The plate's outer face is the mesh face; its inner face lies
 // on the face's plane moved inward by the thickness; each side face lies on the plane that bisects
