@@ -262,7 +262,8 @@ val exportAssembly(const std::string& text, const std::string& format, int part,
   return guarded([&] {
     desia::ExportSettings settings;
     settings.mesh.part = part;
-    settings.mesh.voxelSize = voxelSize;
+    settings.mesh.voxelSizeFromDocument = std::isnan(voxelSize);  // not given: the .puz file's, else 1
+    if (!settings.mesh.voxelSizeFromDocument) settings.mesh.voxelSize = voxelSize;
     settings.mesh.clearance = clearance;
     if (!std::isnan(spacing)) settings.mesh.spacing = spacing;
     settings.mesh.source = source;

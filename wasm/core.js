@@ -262,11 +262,11 @@ function makeCore(module) {
      * Voxel assemblies print-ready: 'stl-zip' (a ZIP of one STL per part) and 'build-plate-stl'
      * (every part lying flat on z = 0, `spacing` apart, default one voxel).
      * `part` 0 exports every part, k only part k; `voxelSize` scales voxel assemblies (model units
-     * per voxel); `clearance` moves every face between two voxel parts in by that much (below half
+     * per voxel; default: the voxel size a .puz file gives, else 1); `clearance` moves every face between two voxel parts in by that much (below half
      * a voxel). Returns the file's bytes.
      */
     exportAssembly(assembly, options) {
-      const { format = 'stl', part = 0, voxelSize = 1, clearance = 0, source = '<input>', sheetIndex = 0, ...cut } =
+      const { format = 'stl', part = 0, voxelSize, clearance = 0, source = '<input>', sheetIndex = 0, ...cut } =
         requireOptions('exportAssembly', options, OPTION_NAMES.exportAssembly);
       // The core's registry says what each format reads: `spacing` is a cut-sheet option, and the
       // gap between the parts of a build plate.
@@ -288,7 +288,7 @@ function makeCore(module) {
       const text = assemblyText(assembly, 'exportAssembly: assembly');
       requireString(format, 'exportAssembly: format');
       requireInt32(part, 'exportAssembly: part');
-      for (const [name, value] of [['voxelSize', voxelSize], ['clearance', clearance], ['spacing', spacing ?? 0]]) {
+      for (const [name, value] of [['voxelSize', voxelSize ?? 1], ['clearance', clearance], ['spacing', spacing ?? 0]]) {
         if (typeof value !== 'number' || Number.isNaN(value)) {
           throw new DesiaError(`exportAssembly: ${name} must be a number, got ${describeValue(value)}`, 'bad-input');
         }
@@ -297,8 +297,8 @@ function makeCore(module) {
       if (typeof module.exportAssembly !== 'function') {
         throw new DesiaError('exportAssembly: this build of the WebAssembly module has no exporter (rebuild dist/ with scripts/build.sh wasm)', 'unsupported');
       }
-      // NaN: no spacing given, the core's default (one voxel).
-      const bytes = callModule(() => module.exportAssembly(text, format, part, voxelSize, clearance, spacing ?? NaN, source));
+      // NaN: not given, the core's default (spacing: one voxel; voxelSize: the .puz file's, else 1).
+      const bytes = callModule(() => module.exportAssembly(text, format, part, voxelSize ?? NaN, clearance, spacing ?? NaN, source));
       // A view into the module's memory would be detached by the next memory growth: own a copy.
       return bytes.buffer === module.HEAPU8?.buffer ? bytes.slice() : bytes;
     },

@@ -121,6 +121,7 @@ int exportFile(const std::vector<std::string>& args) {
   desia::ExportOptions& options = settings.mesh;
   desia::CutSheetOptions& cut = settings.sheets;
   std::optional<double> spacing;
+  options.voxelSizeFromDocument = true;  // a .puz file's voxel-size line, unless --voxel-size says otherwise
   const desia::cli::Arguments arguments =
       desia::cli::splitArguments(withoutFlag(args, "--hairline", &cut.hairline), {"--format", "--part", "--voxel-size", "--clearance", "--output", "--sheet", "--kerf", "--spacing"});
   if (arguments.positional.size() > 1) throw UsageError{"export takes one FILE, got also " + arguments.positional[1]};
@@ -129,7 +130,10 @@ int exportFile(const std::vector<std::string>& args) {
     if (name == "--format") format = value;
     if (name == "--output") output = value;
     if (name == "--part") options.part = parsePart(value);
-    if (name == "--voxel-size") options.voxelSize = parseVoxelSize(value);
+    if (name == "--voxel-size") {
+      options.voxelSize = parseVoxelSize(value);
+      options.voxelSizeFromDocument = false;
+    }
     // Range checks against the voxel size are the core's (the clearance below half a voxel).
     if (name == "--clearance") options.clearance = desia::cli::numberOption(name, value, 0, 1e6);
     if (name == "--sheet") desia::parseSheetSize(value, &cut);

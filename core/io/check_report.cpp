@@ -75,6 +75,27 @@ json graphsJson(const Assembly& assembly, const std::vector<DirectionalBlockingG
   return list;
 }
 
+json stepsJson(const Assembly& assembly, const std::vector<GroupMove>& moves) {
+  json steps = json::array();
+  for (const GroupMove& move : moves) {
+    const double length = move.out ? 1.0 : move.steps;
+    steps.push_back({{"parts", idsJson(assembly, move.parts)},
+                     {"move", json::array({static_cast<int>(move.direction[0] * length), static_cast<int>(move.direction[1] * length),
+                                           static_cast<int>(move.direction[2] * length)})},
+                     {"out", move.out}});
+  }
+  return steps;
+}
+
+// Voxel plans carry their moves and level; plans from contacts alone do not.
+void addMovesJson(const Assembly& assembly, const DisassemblyPlan& plan, json* object) {
+  if (plan.level.empty() && plan.moves.empty()) return;
+  (*object)["level"] = plan.level;
+  (*object)["levelMinimal"] = plan.levelMinimal;
+  (*object)["moves"] = plan.moves.size();
+  (*object)["steps"] = stepsJson(assembly, plan.moves);
+}
+
 json disassemblyJson(const Assembly& assembly, const DisassemblyPlan& plan) {
   if (!plan.complete) return nullptr;
   json order = json::array(), paths = json::array();
@@ -84,7 +105,27 @@ json disassemblyJson(const Assembly& assembly, const DisassemblyPlan& plan) {
     for (const Move& move : removal.path) path.push_back({{"dir", directionLabel(move.direction)}, {"steps", move.steps}});
     paths.push_back(path);
   }
-  return {{"order", order}, {"paths", paths}};
+  json result = {{"order", order}, {"paths", plan.singlePartPaths ? paths : json(nullptr)}};
+  addMovesJson(assembly, plan, &result);
+  if (!plan.limit.empty()) result["limit"] = plan.limit;
+  return result;
+}
+
+json disassemblyFailureJson(const Assembly& assembly, const DisassemblyPlan& plan) {
+  std::vector<int> removed;
+  for (const Removal& r : plan.removals) removed.push_back(r.part);
+  json failure = {{"removed", idsJson(assembly, removed)},
+                  {"stuck", idsJson(assembly, plan.stuck)},
+                  {"searchLimitReached", plan.searchLimitReached}};
+  if (!plan.unseparated.empty()) {
+    json groups = json::array();
+    for (const auto& together : plan.unseparated) groups.push_back(idsJson(assembly, together));
+    failure["unseparated"] = groups;
+    failure["level"] = plan.level;
+    failure["steps"] = stepsJson(assembly, plan.moves);
+  }
+  if (!plan.limit.empty()) failure["limit"] = plan.limit;
+  return failure;
 }
 
 std::string pathText(const std::vector<Move>& path) {
@@ -94,6 +135,66 @@ std::string pathText(const std::vector<Move>& path) {
     text += directionLabel(move.direction) + " " + std::to_string(move.steps);
   }
   return text;
+}
+
+std::string idsText(const Assembly& assembly, const std::vector<int>& parts, const char* separator) {
+  std::string text;
+  for (int part : parts) text += (text.empty() ? "" : separator) + std::to_string(assembly.parts[part].id);
+  return text;
+}
+
+std::string levelText(const std::vector<int>& level) {
+  std::string text;
+  for (int moves : level) text += (text.empty() ? "" : ".") + std::to_string(moves);
+  return text;
+}
+
+// "move 3: parts 2, 4  +x 1", or "+x out" for a separation.
+void writeMoves(const Assembly& assembly, const std::vector<GroupMove>& moves, std::ostringstream& out) {
+  for (size_t m = 0; m < moves.size(); ++m) {
+    const GroupMove& move = moves[m];
+    out << "\n  move " << m + 1 << ": part" << (move.parts.size() > 1 ? "s " : " ") << idsText(assembly, move.parts, ", ")
+        << "  " << directionLabel(move.direction) << ' ' << (move.out ? std::string("out") : std::to_string(move.steps));
+  }
+}
+
+void writeDisassembly(const Assembly& assembly, const DisassemblyPlan& plan, std::ostringstream& out) {
+  if (plan.complete) {
+    out << "disassembly:";
+    if (!plan.level.empty()) {
+      out << " level " << levelText(plan.level) << ", " << plan.moves.size() << " move" << (plan.moves.size() == 1 ? "" : "s");
+      if (!plan.levelMinimal) out << " (not proven the fewest: " << plan.limit << ")";
+    }
+  } else {
+    out << (plan.searchLimitReached ? "disassembly: not proven (search limit); " : "disassembly: none found; ")
+        << (plan.singlePartPaths ? (plan.searchLimitReached ? "removed before stopping:" : "removed before getting stuck:")
+                                 : (plan.searchLimitReached ? "moves before stopping:" : "moves before getting stuck:"));
+  }
+  if (plan.singlePartPaths) {
+    for (const Removal& removal : plan.removals) {
+      out << "\n  part " << assembly.parts[removal.part].id;
+      if (!removal.path.empty()) out << ": " << pathText(removal.path);
+    }
+  }
+  if (!plan.movesFollowRemovals) {
+    if (plan.singlePartPaths) out << "\n  the fewest moves, parts moved together:";
+    writeMoves(assembly, plan.moves, out);
+  }
+  if (!plan.complete) {
+    if (plan.unseparated.empty()) {
+      out << (plan.searchLimitReached ? "\n  not removed:" : "\n  stuck:");
+      for (int part : plan.stuck) out << ' ' << assembly.parts[part].id;
+    } else {
+      for (const auto& together : plan.unseparated) {
+        out << (plan.searchLimitReached ? "\n  not separated: " : "\n  stuck together: ") << idsText(assembly, together, " ");
+      }
+    }
+    if (plan.searchLimitReached) {
+      out << "\n  (the search stopped at its limit" << (plan.limit.empty() ? "" : ", " + plan.limit)
+          << ": these parts are not proven stuck)";
+    }
+  }
+  out << "\n";
 }
 
 }  // namespace
@@ -125,13 +226,7 @@ std::string checkReportToJson(const AssemblyDocument& document, const CheckRepor
   }
   if (report.disassembly) {
     root["disassembly"] = disassemblyJson(assembly, *report.disassembly);
-    if (!report.disassembly->complete) {
-      std::vector<int> removed;
-      for (const Removal& r : report.disassembly->removals) removed.push_back(r.part);
-      root["disassemblyFailure"] = {{"removed", idsJson(assembly, removed)},
-                                    {"stuck", idsJson(assembly, report.disassembly->stuck)},
-                                    {"searchLimitReached", report.disassembly->searchLimitReached}};
-    }
+    if (!report.disassembly->complete) root["disassemblyFailure"] = disassemblyFailureJson(assembly, *report.disassembly);
   } else {
     root["disassembly"] = nullptr;
   }
@@ -176,22 +271,7 @@ std::string checkReportToText(const AssemblyDocument& document, const CheckRepor
     for (const DirectionalBlockingGraph& dbg : report.graphs) out << ' ' << dbg.direction.label();
   }
   out << "\n";
-  if (report.disassembly) {
-    const DisassemblyPlan& plan = *report.disassembly;
-    out << (plan.complete ? "disassembly:"
-                          : plan.searchLimitReached ? "disassembly: not proven (search limit); removed before stopping:"
-                                                    : "disassembly: none found; removed before getting stuck:");
-    for (const Removal& removal : plan.removals) {
-      out << "\n  part " << assembly.parts[removal.part].id;
-      if (!removal.path.empty()) out << ": " << pathText(removal.path);
-    }
-    if (!plan.complete) {
-      out << (plan.searchLimitReached ? "\n  not removed:" : "\n  stuck:");
-      for (int part : plan.stuck) out << ' ' << assembly.parts[part].id;
-      if (plan.searchLimitReached) out << "\n  (the path search stopped at its work limit: these parts are not proven stuck)";
-    }
-    out << "\n";
-  }
+  if (report.disassembly) writeDisassembly(assembly, *report.disassembly, out);
   if (report.shapeRemoval) {
     out << "removal on the shapes: "
         << (report.shapeRemoval->failure.empty() ? "clear" : "FAILS: " + report.shapeRemoval->failure) << " ("

@@ -6,6 +6,7 @@
 #include <algorithm>
 
 #include "desia/error.h"
+#include "io/export_internals.h"
 #include "desia/frame_design_io.h"
 #include "desia/frame_format.h"
 
@@ -74,6 +75,23 @@ const char* exportOptionGroupName(ExportOptionGroup option) {
   return "part";
 }
 
+namespace {
+
+// A .puz file's voxel size, when the caller asked for it: its voxels must be cubes.
+ExportOptions meshOptionsFor(const AssemblyDocument& document, ExportOptions options) {
+  if (!options.voxelSizeFromDocument || !document.voxelSize) return options;
+  const std::array<double, 3>& size = *document.voxelSize;
+  if (size[0] != size[1] || size[0] != size[2]) {
+    throwBadInput(options.source, "the file's voxels are not cubes (voxel size " + formatNumber(size[0]) + " x " +
+                                      formatNumber(size[1]) + " x " + formatNumber(size[2]) +
+                                      "): give the voxel size of the export (--voxel-size)");
+  }
+  options.voxelSize = size[0];
+  return options;
+}
+
+}  // namespace
+
 std::vector<std::string> exportFiles(const AssemblyDocument& document, const ExportFormatInfo& format,
                                      const ExportSettings& settings) {
   const std::string& source = settings.mesh.source;
@@ -86,7 +104,7 @@ std::vector<std::string> exportFiles(const AssemblyDocument& document, const Exp
   } else if (format.kinds.size() == 1 && takes(format, Kind::Frame)) {
     throwBadInput(source, "." + std::string(format.name) + " exports are for frame structures");
   } else {
-    bytes = exportAssembly(document, parseExportFormat(format.name), settings.mesh);
+    bytes = exportAssembly(document, parseExportFormat(format.name), meshOptionsFor(document, settings.mesh));
   }
   return {std::string(bytes.begin(), bytes.end())};
 }

@@ -347,7 +347,12 @@ AssemblyDocument parseJsonDocument(const std::string& text, const std::string& s
 
 AssemblyDocument parseAssemblyText(const std::string& text, const std::string& source) {
   if (isFpuzSource(source)) return frameAssemblyDocumentFromFpuz(text, source);
-  if (looksLikePuz(text)) return documentFromVoxels(parsePuz(text, source));
+  if (looksLikePuz(text)) {
+    PuzFile file = readPuz(text, source);
+    AssemblyDocument document = documentFromVoxels(std::move(file.grid));
+    document.voxelSize = file.voxelSize;
+    return document;
+  }
   for (char c : text) {
     if (c == ' ' || c == '\n' || c == '\r' || c == '\t') continue;
     if (c == '{' || c == '[') return parseJsonDocument(text, source);

@@ -128,7 +128,11 @@ int64_t countLabel(const VoxelGrid& grid, int label) {
 // The final check (Section 4.1 requirements, by the foundation's own tests): interlocking with
 // part 1 as key, and a disassembly in the order 1, 2, ..., N.
 bool verifyPuzzle(const VoxelGrid& grid, int parts, CheckReport* report) {
-  *report = checkVoxelAssembly(grid);
+  // The designer's puzzles come apart one part at a time (Section 4.1): the single-part planner
+  // decides, without the complete disassembler's search for moves of several parts.
+  VoxelDisassemblyOptions singleParts;
+  singleParts.groupMoves = false;
+  *report = checkVoxelAssembly(grid, {}, singleParts);
   if (report->result.verdict != Verdict::Interlocking || report->result.key != 0) return false;
   if (!report->disassembly || !report->disassembly->complete) return false;
   for (int k = 0; k < parts; ++k) {

@@ -11,6 +11,7 @@
 
 #include "desia/voxel_disassembly.h"
 #include "desia/error.h"
+#include "voxel/group_disassembly.h"
 #include "voxel/voxel_removal.h"
 
 namespace desia {
@@ -358,8 +359,10 @@ bool findVoxelRemovalPathOf(const VoxelGrid& occupancy, int label, const std::ve
 // The plan is therefore the one that searches every part every round (same removals, same
 // paths), at one search per part plus one per removal of one of its blockers. The witness chosen
 // for each collision (see RemovalSearch::collides) keeps the latter rare.
-DisassemblyPlan planVoxelDisassembly(const VoxelGrid& grid, const Assembly& assembly,
-                                     const VoxelDisassemblyOptions& options) {
+namespace {
+
+DisassemblyPlan planSinglePartRemovals(const VoxelGrid& grid, const Assembly& assembly,
+                                       const VoxelDisassemblyOptions& options) {
   const int partCount = assembly.partCount();
   std::vector<std::vector<Int3>> voxels(partCount);
   std::vector<Box> boxes(partCount);
@@ -441,9 +444,78 @@ DisassemblyPlan planVoxelDisassembly(const VoxelGrid& grid, const Assembly& asse
   return plan;
 }
 
-CheckReport checkVoxelAssembly(const VoxelGrid& grid, const CheckOptions& options) {
+bool everyRemovalStraight(const DisassemblyPlan& plan) {
+  for (const Removal& removal : plan.removals) {
+    if (removal.path.size() > 1) return false;
+  }
+  return true;
+}
+
+// A single-part plan as moves, and its level (each removal a separation of its own).
+void describeAsMoves(DisassemblyPlan* plan) {
+  std::vector<int> moveCounts;
+  for (const Removal& removal : plan->removals) {
+    if (removal.path.empty()) continue;  // the last part stays
+    moveCounts.push_back(static_cast<int>(removal.path.size()));
+    for (size_t m = 0; m < removal.path.size(); ++m) {
+      const bool out = m + 1 == removal.path.size();
+      plan->moves.push_back({{removal.part}, removal.path[m].direction, out ? 0 : removal.path[m].steps, out});
+    }
+  }
+  plan->level = singlePartLevel(moveCounts);
+}
+
+}  // namespace
+
+// The single-part plan first: when every removal is straight, each separation takes one move,
+// the fewest possible, so the plan is already of the least level. Otherwise the complete
+// disassembler decides; a bent single-part plan stands in only where it stops at its bounds.
+DisassemblyPlan planVoxelDisassembly(const VoxelGrid& grid, const Assembly& assembly,
+                                     const VoxelDisassemblyOptions& options) {
+  DisassemblyPlan plan = planSinglePartRemovals(grid, assembly, options);
+  if (plan.complete && everyRemovalStraight(plan)) {
+    describeAsMoves(&plan);
+    plan.levelMinimal = true;
+    return plan;
+  }
+  if (!options.groupMoves) return plan;  // bent: the level is left to the complete disassembler
+  GroupPlan group = planGroupDisassembly(grid, assembly.partCount(), options);
+  plan.groupStates = group.states;
+  if (!group.complete && plan.complete) {
+    describeAsMoves(&plan);
+    plan.limit = group.limit;
+    return plan;
+  }
+  if (plan.complete) {
+    // The single-part plan stands as `removals` (order and paths); the moves are the fewest.
+    plan.moves = std::move(group.moves);
+    plan.level = std::move(group.level);
+    plan.levelMinimal = true;
+    plan.movesFollowRemovals = false;
+    return plan;
+  }
+  // The complete disassembler's plan, or what it took apart before it stopped.
+  plan.complete = group.complete;
+  plan.movesFollowRemovals = false;
+  plan.singlePartPaths = false;
+  plan.removals.clear();
+  for (int part : group.freeOrder) plan.removals.push_back({part, {}});
+  plan.moves = std::move(group.moves);
+  plan.level = std::move(group.level);
+  plan.levelMinimal = group.complete;
+  plan.unseparated = std::move(group.unseparated);
+  plan.stuck.clear();
+  for (const auto& together : plan.unseparated) plan.stuck.insert(plan.stuck.end(), together.begin(), together.end());
+  std::sort(plan.stuck.begin(), plan.stuck.end());
+  plan.searchLimitReached = group.limitReached;
+  plan.limit = group.limit;
+  return plan;
+}
+
+CheckReport checkVoxelAssembly(const VoxelGrid& grid, const CheckOptions& options,
+                               const VoxelDisassemblyOptions& disassembly) {
   return checkContacts(assemblyFromVoxels(grid), options,
-                       [&](const Assembly& assembly) { return planVoxelDisassembly(grid, assembly, {}); });
+                       [&](const Assembly& assembly) { return planVoxelDisassembly(grid, assembly, disassembly); });
 }
 
 }  // namespace desia

@@ -98,6 +98,7 @@ TEST(VoxelDisassembly, WorkLimitIsReportedNotPassedOffAsStuck) {
   const AssemblyDocument document = documentFromVoxels(testing::gridFromLayers(testing::sChannelLayers()));
   VoxelDisassemblyOptions tight;
   tight.maxVoxelTests = 10;
+  tight.groupMoves = false;  // the single-part planner's own limit (the complete disassembler has its own)
   const DisassemblyPlan limited = planVoxelDisassembly(document.voxels, document.assembly, tight);
   EXPECT_FALSE(limited.complete);
   EXPECT_TRUE(limited.searchLimitReached);

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "desia/error.h"
+#include "desia/document.h"
 #include "desia/puz_format.h"
 #include "test_support.h"
 
@@ -45,6 +46,27 @@ TEST(PuzFormat, ReferenceSizesMatchTheirHeaders) {
 TEST(PuzFormat, AcceptsWindowsLineEndingsAndExtraBlankLines) {
   const VoxelGrid grid = parsePuz("2 1 1\r\n\r\n1 1\r\n\r\n\r\n");
   EXPECT_EQ(grid.label(1, 0, 0), 1);
+}
+
+// The layout later interlocking-puzzle research writes: a '#' comment, a line of voxel sizes after
+// the header, and the labels either as rows or as one flat list (x fastest, then y, then z).
+TEST(PuzFormat, ReadsCommentsVoxelSizesAndFlatLists) {
+  const std::string rows = "3 2 2\n1 1 2\n1 3 2\n\n1 1 2\n1 3 2\n";
+  const VoxelGrid plain = parsePuz(rows);
+  const PuzFile withSizes = readPuz("# puzzle 7, made by hand\n3 2 2\n0.250000 0.250000 0.250000\n# layer 1\n"
+                                    "1 1 2\n1 3 2\n\n1 1 2\n1 3 2\n");
+  EXPECT_EQ(withSizes.grid.labels(), plain.labels());
+  ASSERT_TRUE(withSizes.voxelSize.has_value());
+  EXPECT_EQ(*withSizes.voxelSize, (std::array<double, 3>{0.25, 0.25, 0.25}));
+  EXPECT_FALSE(readPuz(rows).voxelSize.has_value());
+  EXPECT_EQ(parsePuz("3 2 2\n0.5 0.5 1e0\n1 1 2 1 3 2 1 1 2 1 3 2\n").labels(), plain.labels());
+  EXPECT_EQ(parsePuz("3 2 2\n1 1 2 1 3 2 1\n1 2\n1 3 2\n").labels(), plain.labels());
+  // Three integers after the header are a row of labels, not voxel sizes.
+  EXPECT_EQ(parsePuz("3 1 1\n1 1 2\n").label(2, 0, 0), 2);
+  // The document keeps the sizes: exports take them as their voxel size.
+  const AssemblyDocument document = parseAssemblyText("# sized\n3 1 1\n2.5 2.5 2.5\n1 1 2\n", "sized.puz");
+  ASSERT_TRUE(document.voxelSize.has_value());
+  EXPECT_EQ((*document.voxelSize)[0], 2.5);
 }
 
 struct BadPuz {
@@ -92,7 +114,12 @@ INSTANTIATE_TEST_SUITE_P(
         BadPuz{"absurdSize", "100000 100000 100000\n", "bad.puz:1:1: grid size Nx 100000 is out of range (1 to 1024)"},
         BadPuz{"tooManyVoxels", "1024 1024 1024\n", "bad.puz:1: grid 1024 x 1024 x 1024 has more than 16777216 voxels", ErrorCode::TooLarge},
         BadPuz{"binaryGarbage", "\x89PNG\r\n\x1a\n", "bad.puz:1:1: not a text file: unexpected byte 0x89 at offset 0"},
-        BadPuz{"nulByte", withNul(), "bad.puz:2:3: not a text file: unexpected byte 0x00 at offset 8"}),
+        BadPuz{"nulByte", withNul(), "bad.puz:2:3: not a text file: unexpected byte 0x00 at offset 8"},
+        BadPuz{"badVoxelSize", "# c\n2 1 1\n0.25 -1 0.25\n1 1\n", "bad.puz:3:6: the voxel size along y must be a positive number, found '-1'"},
+        BadPuz{"onlyVoxelSizes", "2 1 1\n0.25 0.25 0.25\n", "bad.puz:2: the file ends after the voxel sizes: expected the voxel labels"},
+        BadPuz{"flatTooLong", "2 1 2\n1 1 1 1 1\n", "bad.puz:2:9: more voxel values than the grid holds (2 x 1 x 2 = 4)"},
+        BadPuz{"flatTooShort", "2 2 2\n1 1 1\n1 1\n", "bad.puz:3: the file ends early: 5 voxel values of 8 (grid 2 x 2 x 2)"},
+        BadPuz{"onlyComments", "# nothing here\n# at all\n", "bad.puz: the file is empty"}),
     [](const auto& info) { return std::string(info.param.name); });
 
 }  // namespace

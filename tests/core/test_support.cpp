@@ -7,7 +7,11 @@
 #include <cmath>
 #include <cctype>
 #include <fstream>
+#include <algorithm>
+#include <cstdlib>
+#include <limits>
 #include <map>
+#include <set>
 #include <sstream>
 
 namespace desia::testing {
@@ -139,8 +143,88 @@ std::string verifyRemoval(const VoxelGrid& grid, const std::vector<bool>& presen
   return "";
 }
 
+std::string replayVoxelMoves(const VoxelGrid& grid, const std::vector<GroupMove>& moves, bool complete) {
+  using Cell = std::array<int, 3>;
+  const int parts = grid.maxLabel();
+  std::vector<std::vector<Cell>> cells(static_cast<size_t>(parts));
+  for (int z = 0; z < grid.nz(); ++z) {
+    for (int y = 0; y < grid.ny(); ++y) {
+      for (int x = 0; x < grid.nx(); ++x) {
+        if (grid.label(x, y, z) > 0) cells[static_cast<size_t>(grid.label(x, y, z) - 1)].push_back({x, y, z});
+      }
+    }
+  }
+  std::vector<int> group(static_cast<size_t>(parts), 0);
+  int groups = 1;
+  for (size_t m = 0; m < moves.size(); ++m) {
+    const GroupMove& move = moves[m];
+    const std::string where = "move " + std::to_string(m + 1) + ": ";
+    if (move.parts.empty()) return where + "moves no part";
+    int axis = -1, sign = 0, nonZero = 0;
+    for (int a = 0; a < 3; ++a) {
+      if (move.direction[a] == 0) continue;
+      ++nonZero;
+      axis = a;
+      sign = move.direction[a] > 0 ? 1 : -1;
+      if (std::abs(move.direction[a]) != 1) return where + "the direction is not a unit axis";
+    }
+    if (nonZero != 1) return where + "the direction is not a unit axis";
+    if (!move.out && move.steps < 1) return where + "moves by " + std::to_string(move.steps) + " units";
+    std::set<int> moving;
+    for (int part : move.parts) {
+      if (part < 0 || part >= parts || !moving.insert(part).second) return where + "lists a part twice or a part that does not exist";
+      if (group[static_cast<size_t>(part)] != group[static_cast<size_t>(move.parts[0])]) return where + "moves parts of different sub-assemblies";
+    }
+    const int together = group[static_cast<size_t>(move.parts[0])];
+    std::set<Cell> still;
+    int stillMin = std::numeric_limits<int>::max(), stillMax = std::numeric_limits<int>::min();
+    for (int part = 0; part < parts; ++part) {
+      if (group[static_cast<size_t>(part)] != together || moving.count(part)) continue;
+      for (const Cell& c : cells[static_cast<size_t>(part)]) {
+        still.insert(c);
+        stillMin = std::min(stillMin, c[axis]);
+        stillMax = std::max(stillMax, c[axis]);
+      }
+    }
+    if (still.empty()) return where + "moves a whole sub-assembly";
+    auto pastTheRest = [&] {
+      for (int part : moving) {
+        for (const Cell& c : cells[static_cast<size_t>(part)]) {
+          if (sign > 0 ? c[axis] <= stillMax : c[axis] >= stillMin) return false;
+        }
+      }
+      return true;
+    };
+    for (int step = 0; move.out ? !pastTheRest() : step < move.steps; ++step) {
+      for (int part : moving) {
+        for (Cell& c : cells[static_cast<size_t>(part)]) {
+          c[axis] += sign;
+          if (still.count(c)) return where + "part " + std::to_string(part + 1) + " runs into a part of its sub-assembly";
+        }
+      }
+    }
+    if (move.out) {
+      for (int part : moving) group[static_cast<size_t>(part)] = groups;
+      ++groups;
+    }
+  }
+  if (complete) {
+    std::map<int, int> sizes;
+    for (int g : group) ++sizes[g];
+    for (const auto& [g, size] : sizes) {
+      if (size > 1) return "the plan ends with " + std::to_string(size) + " parts still together";
+    }
+  }
+  return "";
+}
+
 std::string verifyPlan(const VoxelGrid& grid, const Assembly& assembly, const DisassemblyPlan& plan) {
   if (!plan.complete) return "plan incomplete";
+  if (!plan.moves.empty()) {
+    const std::string problem = replayVoxelMoves(grid, plan.moves, true);
+    if (!problem.empty()) return problem;
+  }
+  if (!plan.singlePartPaths) return "";
   if (static_cast<int>(plan.removals.size()) != assembly.partCount()) return "plan does not list every part";
   std::vector<bool> present(assembly.partCount(), true);
   for (size_t i = 0; i + 1 < plan.removals.size(); ++i) {

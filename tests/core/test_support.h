@@ -61,8 +61,17 @@ void ExpectInterlocking(const AssemblyDocument& document, const InterlockingResu
 std::string verifyRemoval(const VoxelGrid& grid, const std::vector<bool>& present, int partId,
                           const std::vector<Move>& path);
 
-// Verifies a complete plan removal by removal; returns an empty string when valid.
+// Verifies a complete plan removal by removal (or, for a plan of parts moved together, move by
+// move with replayVoxelMoves); returns an empty string when valid.
 std::string verifyPlan(const VoxelGrid& grid, const Assembly& assembly, const DisassemblyPlan& plan);
+
+// Re-plays moves of sets of parts (parts are grid labels - 1) one unit step at a time, each part
+// kept as a set of voxel coordinates, independently of the planner: every moved set must lie in
+// one sub-assembly and not be all of it, must not meet a part of its sub-assembly on the way, and
+// an `out` move must go on until its parts' box is past the box of the rest, after which they form
+// a sub-assembly of their own. With `complete`, every part must end alone. Returns an empty string
+// when valid, otherwise what went wrong.
+std::string replayVoxelMoves(const VoxelGrid& grid, const std::vector<GroupMove>& moves, bool complete);
 
 // Empty when every directed edge (a, b) of the indexed mesh occurs exactly once and (b, a) exactly
 // once: each edge in exactly two triangles, in opposite directions (a closed, consistently oriented

@@ -15,6 +15,14 @@
 namespace desia {
 namespace {
 
+// These tests pin the single-part planner (its search caching and work limits); the complete
+// disassembler, which takes over where it fails, is tested in group_disassembly_test.cpp.
+DisassemblyPlan singlePartPlan(const VoxelGrid& grid, const Assembly& assembly, VoxelDisassemblyOptions options = {}) {
+  options.groupMoves = false;
+  return planVoxelDisassembly(grid, assembly, options);
+}
+
+
 // The worst case of the issue: part 1 is a container of cellsX x cellsY x cellsZ sealed cells
 // (hollow 14^3 boxes with walls one voxel thick, joined by one voxel between neighbours), each
 // holding an 8^3 part (ids 2, 3, ...) that can rattle two voxels each way but never get out; on
@@ -137,12 +145,12 @@ TEST(VoxelDisassemblyScale, SkippingUnchangedSearchesKeepsThePlanOfSearchingEver
         "result_puz/cube_5x5x5_K16.puz", "result_puz/cartoon_dog.puz", "result_puz/bunny_15x14x11_K80.puz"}) {
     const AssemblyDocument document = testing::loadReference(file);
     ExpectSamePlan(planBySearchingEveryPart(document.voxels, document.assembly.partCount()),
-                   planVoxelDisassembly(document.voxels, document.assembly), file);
+                   singlePartPlan(document.voxels, document.assembly), file);
   }
   const SealedCells small = sealedCells(2, 2, 2, 2);
   const AssemblyDocument document = documentFromVoxels(small.grid);
   ExpectSamePlan(planBySearchingEveryPart(small.grid, document.assembly.partCount()),
-                 planVoxelDisassembly(document.voxels, document.assembly), "sealed cells 2x2x2");
+                 singlePartPlan(document.voxels, document.assembly), "sealed cells 2x2x2");
 }
 
 TEST(VoxelDisassemblyScale, SealedCellsAreSearchedOncePerPartNotOncePerRound) {
@@ -150,7 +158,7 @@ TEST(VoxelDisassemblyScale, SealedCellsAreSearchedOncePerPartNotOncePerRound) {
   const AssemblyDocument document = documentFromVoxels(puzzle.grid);
   const int parts = document.assembly.partCount();
   ASSERT_EQ(parts, 1 + puzzle.cells + puzzle.tops);  // 55
-  const DisassemblyPlan plan = planVoxelDisassembly(document.voxels, document.assembly);
+  const DisassemblyPlan plan = singlePartPlan(document.voxels, document.assembly);
   // The loose voxels leave in id order, straight up; the container and the parts sealed in it
   // are proven stuck (every search ran out of offsets, none stopped at a limit).
   EXPECT_FALSE(plan.complete);
@@ -167,7 +175,7 @@ TEST(VoxelDisassemblyScale, SealedCellsAreSearchedOncePerPartNotOncePerRound) {
   // much (the quadratic planner: about (27/8)^2).
   const SealedCells smaller = sealedCells(2, 2, 2, 3);
   const AssemblyDocument smallerDocument = documentFromVoxels(smaller.grid);
-  const DisassemblyPlan smallerPlan = planVoxelDisassembly(smallerDocument.voxels, smallerDocument.assembly);
+  const DisassemblyPlan smallerPlan = singlePartPlan(smallerDocument.voxels, smallerDocument.assembly);
   EXPECT_FALSE(smallerPlan.searchLimitReached);
   EXPECT_EQ(smallerPlan.stuck, range(0, 1 + smaller.cells));
   EXPECT_LE(plan.voxelTests * smaller.cells, 3 * puzzle.cells * smallerPlan.voxelTests / 2)
@@ -181,7 +189,7 @@ TEST(VoxelDisassemblyScale, PlanBudgetStopsWithoutClaimingPartsStuck) {
   const int parts = document.assembly.partCount();
   VoxelDisassemblyOptions tiny;
   tiny.maxTotalVoxelTests = 1000;
-  const DisassemblyPlan plan = planVoxelDisassembly(document.voxels, document.assembly, tiny);
+  const DisassemblyPlan plan = singlePartPlan(document.voxels, document.assembly, tiny);
   // The container's search (the first) uses the budget up: nothing is removed, and every part is
   // left, the loose voxels on top too, although each could leave: the flag says "not proven".
   EXPECT_FALSE(plan.complete);
@@ -193,10 +201,10 @@ TEST(VoxelDisassemblyScale, PlanBudgetStopsWithoutClaimingPartsStuck) {
   EXPECT_LT(plan.voxelTests, 100'000);
 
   // Half the work of the full plan: a prefix of its removals, the rest listed but not proven.
-  const DisassemblyPlan full = planVoxelDisassembly(document.voxels, document.assembly);
+  const DisassemblyPlan full = singlePartPlan(document.voxels, document.assembly);
   VoxelDisassemblyOptions half;
   half.maxTotalVoxelTests = full.voxelTests / 2;
-  const DisassemblyPlan cut = planVoxelDisassembly(document.voxels, document.assembly, half);
+  const DisassemblyPlan cut = singlePartPlan(document.voxels, document.assembly, half);
   EXPECT_FALSE(cut.complete);
   EXPECT_TRUE(cut.searchLimitReached);
   const std::vector<int> fullOrder = removedParts(full), cutOrder = removedParts(cut);

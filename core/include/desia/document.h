@@ -3,6 +3,7 @@
 // frame assemblies, or bare contact graphs, optionally carrying analysis results.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -29,6 +30,8 @@ struct AssemblyDocument {
   AssemblyKind kind = AssemblyKind::Voxel;
   std::string name;
   VoxelGrid voxels;          // kind == Voxel
+  // kind == Voxel: the voxel edge lengths a .puz file gives (x, y, z), the default size of exports.
+  std::optional<std::array<double, 3>> voxelSize;
   Assembly assembly;         // parts and contacts (derived from the grid for voxel documents)
   std::string geometryJson;  // plate / frame geometry sections, kept verbatim for round trips
   std::vector<Plate> plates;          // kind == Plate, read from geometry (then contacts are computed)

@@ -35,6 +35,8 @@ const char* exportFormatName(ExportFormat format);
 struct ExportOptions {
   int part = 0;                    // 0 = all parts; k >= 1 = only part k (meshes only)
   double voxelSize = 1.0;          // edge length of a voxel in the mesh's units (1e-6 to 1e6); ignored by xmpuzzle
+  // Take the voxel size from the document (a .puz file's voxel-size line) when it gives one.
+  bool voxelSizeFromDocument = false;
   // Voxel meshes: every face of a part against another part moves in by this much (0 <= c <
   // voxelSize / 2), so two touching parts print with a gap of twice the clearance; faces against
   // empty space stay. 0 for xmpuzzle and plates.

@@ -23,11 +23,20 @@ struct VoxelDisassemblyOptions {
   // parts each needing a long search. When it runs out the plan stops: searchLimitReached, and
   // every part still in place is listed in `stuck` without being proven stuck.
   int64_t maxTotalVoxelTests = 1'000'000'000;
+  // The complete disassembler (moves of several parts at once, searched breadth-first, as
+  // BurrTools does), run when the single-part plan fails or needs a bent path. Its bounds, per
+  // sub-assembly searched: positions kept, and the memory they take (about 1 GiB by default).
+  bool groupMoves = true;
+  int64_t maxGroupStates = 4'000'000;
+  int64_t maxGroupBytes = int64_t{1} << 30;
+  int maxGroupParts = 1000;  // sub-assemblies of more parts are not searched (said in `limit`)
 };
 
-// Voxel assemblies: removals are collision-free translations to infinity checked by sweeping; when
-// no straight path exists, a breadth-first search over unit axis steps finds a bent path (as the
-// original code does). Each round removes the lowest-id part that can leave, which is complete:
+// Voxel assemblies: first the single-part plan: removals are collision-free translations to
+// infinity checked by sweeping; when no straight path exists, a breadth-first search over unit
+// axis steps finds a bent path (as the original code does). When that plan fails or bends, the
+// complete disassembler (group_disassembly.h) searches moves of several parts for the fewest
+// moves (the level); a straight single-part plan is already level 1 and kept as it is. Each round removes the lowest-id part that can leave, which is complete:
 // removing a part never blocks another, so greedy removal finds a sequence whenever one exists.
 // A part whose search failed is searched again only when a removal could change that search
 // (it removed a part the search collided with, or shrank the box of the other parts); the plan is
@@ -43,6 +52,7 @@ bool findVoxelRemovalPath(const VoxelGrid& occupancy, int label, std::vector<Mov
 
 // The project's check of a voxel assembly (paper Sections 3 and 4.1 (iii)): the interlocking tests
 // on the grid's contacts, and its disassembly planned on the voxels (planVoxelDisassembly).
-CheckReport checkVoxelAssembly(const VoxelGrid& grid, const CheckOptions& options = {});
+CheckReport checkVoxelAssembly(const VoxelGrid& grid, const CheckOptions& options = {},
+                               const VoxelDisassemblyOptions& disassembly = {});
 
 }  // namespace desia

@@ -1,0 +1,639 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The complete disassembler (group_disassembly.h). For one position of a sub-assembly and one
+// axis, a gap matrix tells how far each part can slide before it meets each other part (Bill
+// Cutler's movement matrix, as BurrTools computes it). A set of parts can move `a` units along a
+// direction when no part outside the set is within a gap smaller than `a` of a part inside it:
+// the least such set containing a part is its closure, and every such set is a union of
+// closures. A set whose gaps to the rest are all infinite leaves: a separation.
+#include "voxel/group_disassembly.h"
+
+#include <algorithm>
+#include <array>
+#include <cstdlib>
+#include <limits>
+#include <unordered_map>
+#include <utility>
+
+#include "desia/error.h"
+
+namespace desia {
+namespace {
+
+constexpr int kFar = std::numeric_limits<int>::max() / 4;  // no meeting at any distance
+// Directions in the order they are tried (that of the single-part planner: +y first).
+constexpr std::array<std::array<int, 2>, 6> kDirections{{{1, +1}, {1, -1}, {0, +1}, {0, -1}, {2, +1}, {2, -1}}};
+// Sets moved together per direction and distance, at one position: closures and their unions.
+// Hundreds of independent parts could make unions explode; beyond this bound the search is not
+// complete and says so.
+constexpr size_t kMaxSetsPerMove = 4096;
+constexpr int kMaxOffset = 30000;  // positions are stored as int16
+
+Vec3 directionVector(int direction) {
+  Vec3 v{0, 0, 0};
+  v[kDirections[direction][0]] = kDirections[direction][1];
+  return v;
+}
+
+// One part's voxels seen along one axis: its columns (the two other coordinates) in sorted
+// order, each with the sorted coordinates of its voxels along the axis.
+struct Columns {
+  std::vector<int64_t> keys;
+  std::vector<int> u, v;
+  std::vector<int> first;  // keys.size() + 1 entries into `along`
+  std::vector<int> along;
+  int minU = kFar, maxU = -kFar, minV = kFar, maxV = -kFar;
+};
+
+int64_t columnKey(int u, int v) { return static_cast<int64_t>(u) * 4294967296LL + (static_cast<int64_t>(v) + 2147483648LL); }
+
+// Coordinates of a voxel as (along, u, v) for an axis.
+std::array<int, 3> alongAxis(const Int3& c, int axis) {
+  if (axis == 0) return {c.x, c.y, c.z};
+  if (axis == 1) return {c.y, c.x, c.z};
+  return {c.z, c.x, c.y};
+}
+
+Columns columnsOf(const std::vector<Int3>& voxels, int axis) {
+  std::vector<std::array<int, 3>> cells;
+  for (const Int3& c : voxels) {
+    const auto a = alongAxis(c, axis);
+    cells.push_back({a[1], a[2], a[0]});
+  }
+  std::sort(cells.begin(), cells.end());
+  Columns columns;
+  for (size_t k = 0; k < cells.size(); ++k) {
+    const auto& [u, v, w] = cells[k];
+    if (k == 0 || cells[k - 1][0] != u || cells[k - 1][1] != v) {
+      columns.keys.push_back(columnKey(u, v));
+      columns.u.push_back(u);
+      columns.v.push_back(v);
+      columns.first.push_back(static_cast<int>(columns.along.size()));
+      columns.minU = std::min(columns.minU, u);
+      columns.maxU = std::max(columns.maxU, u);
+      columns.minV = std::min(columns.minV, v);
+      columns.maxV = std::max(columns.maxV, v);
+    }
+    columns.along.push_back(w);
+  }
+  columns.first.push_back(static_cast<int>(columns.along.size()));
+  return columns;
+}
+
+// Gaps between two parts along an axis: how far the first can slide up the axis before it meets
+// the second, and how far the second can; kFar when they never meet.
+struct AxisGaps {
+  int firstUp = kFar, secondUp = kFar;
+};
+
+AxisGaps gapsAlong(const Columns& a, const Columns& b, const std::array<int, 3>& shift) {
+  AxisGaps gaps;
+  const int sw = shift[0], su = shift[1], sv = shift[2];  // b's voxels sit at their coordinates + shift
+  if (a.keys.empty() || b.keys.empty() || a.maxU < b.minU + su || b.maxU + su < a.minU || a.maxV < b.minV + sv ||
+      b.maxV + sv < a.minV) {
+    return gaps;
+  }
+  for (size_t c = 0; c < a.keys.size(); ++c) {
+    const int64_t key = columnKey(a.u[c] - su, a.v[c] - sv);
+    const auto found = std::lower_bound(b.keys.begin(), b.keys.end(), key);
+    if (found == b.keys.end() || *found != key) continue;
+    const size_t d = static_cast<size_t>(found - b.keys.begin());
+    int p = a.first[c], q = b.first[d];
+    const int pEnd = a.first[c + 1], qEnd = b.first[d + 1];
+    int lastA = 0, lastB = 0;
+    bool seenA = false, seenB = false;
+    while (p < pEnd || q < qEnd) {
+      const bool takeA = q >= qEnd || (p < pEnd && a.along[p] < b.along[q] + sw);
+      if (takeA) {
+        const int t = a.along[p++];
+        if (seenB) gaps.secondUp = std::min(gaps.secondUp, t - lastB - 1);
+        lastA = t;
+        seenA = true;
+      } else {
+        const int s = b.along[q++] + sw;
+        if (seenA) gaps.firstUp = std::min(gaps.firstUp, s - lastA - 1);
+        lastB = s;
+        seenB = true;
+      }
+    }
+  }
+  return gaps;
+}
+
+// Every part's columns along each axis, and the gaps of part pairs remembered by their relative
+// position (positions repeat across a search, and across the searches of its sub-assemblies).
+class PartGeometry {
+ public:
+  PartGeometry(const VoxelGrid& grid, int partCount) : columns_(static_cast<size_t>(partCount)) {
+    std::vector<std::vector<Int3>> voxels(static_cast<size_t>(partCount));
+    for (int64_t i = 0; i < grid.voxelCount(); ++i) {
+      const int label = grid.labelAt(i);
+      if (label > 0 && label <= partCount) voxels[static_cast<size_t>(label - 1)].push_back(grid.coordinates(i));
+    }
+    for (int part = 0; part < partCount; ++part) {
+      for (int axis = 0; axis < 3; ++axis) columns_[part][axis] = columnsOf(voxels[part], axis);
+    }
+  }
+
+  // Gaps of parts i < j, j placed at `relative` from i: per axis, i up then j up.
+  const std::array<AxisGaps, 3>& gaps(int i, int j, const Int3& relative) {
+    const PairKey key{i, j, relative.x, relative.y, relative.z};
+    auto found = cache_.find(key);
+    if (found != cache_.end()) return found->second;
+    if (cache_.size() > kMaxCachedPairs) cache_.clear();
+    std::array<AxisGaps, 3> result;
+    for (int axis = 0; axis < 3; ++axis) {
+      result[axis] = gapsAlong(columns_[i][axis], columns_[j][axis], alongAxis(relative, axis));
+    }
+    return cache_.emplace(key, result).first->second;
+  }
+
+ private:
+  struct PairKey {
+    int i, j, x, y, z;
+    bool operator==(const PairKey& o) const { return i == o.i && j == o.j && x == o.x && y == o.y && z == o.z; }
+  };
+  struct PairKeyHash {
+    size_t operator()(const PairKey& k) const {
+      uint64_t h = 1469598103934665603ULL;
+      for (int value : {k.i, k.j, k.x, k.y, k.z}) {
+        h ^= static_cast<uint32_t>(value);
+        h *= 1099511628211ULL;
+      }
+      return static_cast<size_t>(h ^ (h >> 32));
+    }
+  };
+  static constexpr size_t kMaxCachedPairs = 1 << 21;
+  std::vector<std::array<Columns, 3>> columns_;
+  std::unordered_map<PairKey, std::array<AxisGaps, 3>, PairKeyHash> cache_;
+};
+
+// The gaps between every two parts of a sub-assembly at one position.
+class GapMatrix {
+ public:
+  GapMatrix(PartGeometry& geometry, const std::vector<int>& parts)
+      : geometry_(geometry), parts_(parts), k_(static_cast<int>(parts.size())) {
+    for (auto& axis : up_) axis.assign(static_cast<size_t>(k_) * static_cast<size_t>(k_), kFar);
+  }
+
+  // `offsets`: 3 per part, in the order of `parts`.
+  template <typename Offset>
+  void fill(const Offset* offsets) {
+    for (int p = 0; p < k_; ++p) {
+      for (int q = p + 1; q < k_; ++q) {
+        const Int3 relative{offsets[3 * q] - offsets[3 * p], offsets[3 * q + 1] - offsets[3 * p + 1],
+                            offsets[3 * q + 2] - offsets[3 * p + 2]};
+        const auto& gaps = geometry_.gaps(parts_[p], parts_[q], relative);
+        for (int axis = 0; axis < 3; ++axis) {
+          up_[axis][index(p, q)] = gaps[axis].firstUp;
+          up_[axis][index(q, p)] = gaps[axis].secondUp;
+        }
+      }
+    }
+  }
+
+  // How far part p slides along `direction` before it meets part q.
+  int gap(int direction, int p, int q) const {
+    const int axis = kDirections[direction][0];
+    return kDirections[direction][1] > 0 ? up_[axis][index(p, q)] : up_[axis][index(q, p)];
+  }
+
+ private:
+  size_t index(int p, int q) const { return static_cast<size_t>(p) * static_cast<size_t>(k_) + static_cast<size_t>(q); }
+
+  PartGeometry& geometry_;
+  const std::vector<int>& parts_;
+  int k_;
+  std::array<std::vector<int>, 3> up_;  // up_[axis][p * k + q]: how far p slides up the axis before meeting q
+};
+
+// Sets of parts of a sub-assembly (local indices): one word for up to 64 parts, words beyond.
+class SmallPartSet {
+ public:
+  explicit SmallPartSet(int = 0) {}
+  void add(int p) { bits_ |= uint64_t{1} << p; }
+  bool has(int p) const { return (bits_ >> p) & 1; }
+  void unite(const SmallPartSet& other) { bits_ |= other.bits_; }
+  int count() const {
+    int n = 0;
+    for (uint64_t b = bits_; b; b &= b - 1) ++n;
+    return n;
+  }
+  bool operator==(const SmallPartSet& other) const { return bits_ == other.bits_; }
+  bool operator<(const SmallPartSet& other) const { return bits_ < other.bits_; }
+
+ private:
+  uint64_t bits_ = 0;
+};
+
+class WidePartSet {
+ public:
+  explicit WidePartSet(int parts = 0) : words_(static_cast<size_t>((parts + 63) / 64), 0) {}
+  void add(int p) { words_[static_cast<size_t>(p / 64)] |= uint64_t{1} << (p % 64); }
+  bool has(int p) const { return (words_[static_cast<size_t>(p / 64)] >> (p % 64)) & 1; }
+  void unite(const WidePartSet& other) {
+    for (size_t w = 0; w < words_.size(); ++w) words_[w] |= other.words_[w];
+  }
+  int count() const {
+    int n = 0;
+    for (uint64_t word : words_) {
+      for (uint64_t b = word; b; b &= b - 1) ++n;
+    }
+    return n;
+  }
+  bool operator==(const WidePartSet& other) const { return words_ == other.words_; }
+  bool operator<(const WidePartSet& other) const { return words_ < other.words_; }
+
+ private:
+  std::vector<uint64_t> words_;
+};
+
+// The positions of one sub-assembly visited breadth-first: the offsets of its k parts (int16,
+// relative to its first part), the position each was reached from, and a hash set over them.
+// The move between two positions is read back from their difference (the parts that moved).
+class PositionStore {
+ public:
+  explicit PositionStore(int parts) : width_(3 * parts) {}
+
+  size_t size() const { return parent_.size(); }
+  int width() const { return width_; }
+  const int16_t* offsets(size_t state) const { return &offsets_[state * static_cast<size_t>(width_)]; }
+  int32_t parent(size_t state) const { return parent_[state]; }
+  int64_t bytes() const {
+    return static_cast<int64_t>(offsets_.capacity() * sizeof(int16_t) + parent_.capacity() * sizeof(int32_t) +
+                                slots_.capacity() * sizeof(int32_t));
+  }
+
+  // Adds the position unless already known; true when it is new.
+  bool insert(const std::vector<int16_t>& offsets, int32_t parent) {
+    if ((parent_.size() + 1) * 2 > slots_.size()) grow();
+    size_t slot = hashOf(offsets.data()) & (slots_.size() - 1);
+    while (slots_[slot] >= 0) {
+      if (std::equal(offsets.begin(), offsets.end(), this->offsets(static_cast<size_t>(slots_[slot])))) return false;
+      slot = (slot + 1) & (slots_.size() - 1);
+    }
+    slots_[slot] = static_cast<int32_t>(parent_.size());
+    offsets_.insert(offsets_.end(), offsets.begin(), offsets.end());
+    parent_.push_back(parent);
+    return true;
+  }
+
+ private:
+  uint64_t hashOf(const int16_t* offsets) const {
+    uint64_t h = 1469598103934665603ULL;
+    for (int k = 0; k < width_; ++k) {
+      h ^= static_cast<uint16_t>(offsets[k]);
+      h *= 1099511628211ULL;
+    }
+    return h ^ (h >> 29);
+  }
+
+  void grow() {
+    std::vector<int32_t> slots(std::max<size_t>(64, slots_.size() * 2), -1);
+    for (size_t state = 0; state < parent_.size(); ++state) {
+      size_t slot = hashOf(offsets(state)) & (slots.size() - 1);
+      while (slots[slot] >= 0) slot = (slot + 1) & (slots.size() - 1);
+      slots[slot] = static_cast<int32_t>(state);
+    }
+    slots_.swap(slots);
+  }
+
+  int width_;
+  std::vector<int16_t> offsets_;
+  std::vector<int32_t> parent_;
+  std::vector<int32_t> slots_;
+};
+
+// One sub-assembly's search: from its parts' offsets to the first separation, breadth-first.
+template <typename PartSet>
+class SubAssemblySearch {
+ public:
+  enum class Outcome { Separated, Stuck, LimitReached };
+
+  SubAssemblySearch(PartGeometry& geometry, const std::vector<int>& parts, const VoxelDisassemblyOptions& options)
+      : parts_(parts), k_(static_cast<int>(parts.size())), options_(options), store_(k_), gaps_(geometry, parts_) {}
+
+  // `offsets`: 3 per part, in the order of `parts`.
+  Outcome run(const std::vector<int>& offsets) {
+    std::vector<int16_t> start(offsets.size());
+    for (size_t n = 0; n < offsets.size(); ++n) start[n] = static_cast<int16_t>(offsets[n] - offsets[n % 3]);
+    store_.insert(start, -1);
+    std::vector<Moved> moves;
+    std::vector<int16_t> next(start.size());
+    for (size_t state = 0; state < store_.size(); ++state) {
+      gaps_.fill(store_.offsets(state));
+      if (findSeparation()) {
+        separationState_ = state;
+        return Outcome::Separated;
+      }
+      if (!movesFrom(&moves)) {
+        limit_ = "more than " + std::to_string(kMaxSetsPerMove) + " sets of parts move alike at one position";
+        return Outcome::LimitReached;
+      }
+      for (const Moved& move : moves) {
+        if (!moved(store_.offsets(state), move, &next)) {
+          limit_ = "parts moved more than " + std::to_string(kMaxOffset) + " units apart";
+          return Outcome::LimitReached;
+        }
+        store_.insert(next, static_cast<int32_t>(state));
+        if (static_cast<int64_t>(store_.size()) > options_.maxGroupStates) {
+          limit_ = std::to_string(options_.maxGroupStates) + " positions of a sub-assembly (maxGroupStates)";
+          return Outcome::LimitReached;
+        }
+        if (store_.bytes() > options_.maxGroupBytes) {
+          limit_ = std::to_string(options_.maxGroupBytes >> 20) + " MiB of positions (maxGroupBytes)";
+          return Outcome::LimitReached;
+        }
+      }
+    }
+    return Outcome::Stuck;
+  }
+
+  int64_t states() const { return static_cast<int64_t>(store_.size()); }
+  const std::string& limit() const { return limit_; }
+
+  // After Separated: the moves from the start to the separation, the last one `out`.
+  std::vector<GroupMove> plan() const {
+    std::vector<GroupMove> moves{outMove()};
+    for (size_t state = separationState_; store_.parent(state) >= 0; state = static_cast<size_t>(store_.parent(state))) {
+      moves.push_back(moveBetween(store_.offsets(static_cast<size_t>(store_.parent(state))), store_.offsets(state)));
+    }
+    std::reverse(moves.begin(), moves.end());
+    return moves;
+  }
+  // After Separated: which parts left, and every part's offset at that moment.
+  std::vector<char> leaving() const {
+    std::vector<char> flags(static_cast<size_t>(k_));
+    for (int p = 0; p < k_; ++p) flags[static_cast<size_t>(p)] = separation_.parts.has(p);
+    return flags;
+  }
+  std::vector<int> offsetsAtSeparation() const {
+    const int16_t* offsets = store_.offsets(separationState_);
+    return std::vector<int>(offsets, offsets + store_.width());
+  }
+
+ private:
+  struct Moved {
+    int direction = 0;
+    int amount = 0;  // 0: out to infinity
+    PartSet parts;
+  };
+
+  // The least set containing part x that can move `amount` units (kFar: out) along `direction`.
+  PartSet closure(int x, int direction, int amount) const {
+    PartSet set(k_);
+    set.add(x);
+    std::vector<int>& frontier = frontier_;
+    frontier.assign(1, x);
+    while (!frontier.empty()) {
+      const int p = frontier.back();
+      frontier.pop_back();
+      for (int q = 0; q < k_; ++q) {
+        if (set.has(q) || gaps_.gap(direction, p, q) >= amount) continue;
+        set.add(q);
+        frontier.push_back(q);
+      }
+    }
+    return set;
+  }
+
+  // The smallest set that can leave (ties: the first direction, then the lowest part).
+  bool findSeparation() {
+    bool found = false;
+    int bestCount = 0;
+    for (int direction = 0; direction < 6; ++direction) {
+      for (int x = 0; x < k_; ++x) {
+        PartSet set = closure(x, direction, kFar);
+        const int count = set.count();
+        if (count == k_ || (found && count >= bestCount)) continue;
+        separation_ = Moved{direction, 0, std::move(set)};
+        bestCount = count;
+        found = true;
+      }
+    }
+    return found;
+  }
+
+  // Every finite move from the current gaps: closures for each part, direction and distance,
+  // and their unions (moving independent sets at once is one move). False past kMaxSetsPerMove.
+  bool movesFrom(std::vector<Moved>* moves) const {
+    moves->clear();
+    std::vector<PartSet> sets;
+    for (int direction = 0; direction < 6; ++direction) {
+      for (int amount = 1;; ++amount) {
+        sets.clear();
+        for (int x = 0; x < k_; ++x) {
+          PartSet set = closure(x, direction, amount);
+          if (set.count() != k_) sets.push_back(std::move(set));
+        }
+        if (sets.empty()) break;
+        std::sort(sets.begin(), sets.end());
+        sets.erase(std::unique(sets.begin(), sets.end()), sets.end());
+        if (!addUnions(&sets)) return false;
+        for (PartSet& set : sets) moves->push_back(Moved{direction, amount, std::move(set)});
+      }
+    }
+    return true;
+  }
+
+  bool addUnions(std::vector<PartSet>* sets) const {
+    for (size_t a = 0; a < sets->size(); ++a) {
+      for (size_t b = 0; b < a; ++b) {
+        PartSet joined = (*sets)[a];
+        joined.unite((*sets)[b]);
+        if (joined.count() == k_ || std::find(sets->begin(), sets->end(), joined) != sets->end()) continue;
+        if (sets->size() >= kMaxSetsPerMove) return false;
+        sets->push_back(std::move(joined));
+      }
+    }
+    return true;
+  }
+
+  bool moved(const int16_t* offsets, const Moved& move, std::vector<int16_t>* next) const {
+    const int axis = kDirections[move.direction][0], step = kDirections[move.direction][1] * move.amount;
+    const bool firstMoves = move.parts.has(0);
+    for (int p = 0; p < k_; ++p) {
+      for (int a = 0; a < 3; ++a) {
+        int value = offsets[3 * p + a];
+        if (a == axis && move.parts.has(p)) value += step;
+        if (a == axis && firstMoves) value -= step;  // keep the first part at the origin
+        if (value > kMaxOffset || value < -kMaxOffset) return false;
+        (*next)[static_cast<size_t>(3 * p + a)] = static_cast<int16_t>(value);
+      }
+    }
+    return true;
+  }
+
+  // The move from one position to the next: the parts whose offset changed moved by that change
+  // (the first part never moves: when it went with others, the rest moved the other way).
+  GroupMove moveBetween(const int16_t* before, const int16_t* after) const {
+    GroupMove move;
+    int shift[3] = {0, 0, 0};
+    for (int p = 0; p < k_; ++p) {
+      const int d[3] = {after[3 * p] - before[3 * p], after[3 * p + 1] - before[3 * p + 1],
+                        after[3 * p + 2] - before[3 * p + 2]};
+      if (d[0] == 0 && d[1] == 0 && d[2] == 0) continue;
+      move.parts.push_back(parts_[p]);
+      std::copy(d, d + 3, shift);
+    }
+    std::sort(move.parts.begin(), move.parts.end());
+    for (int a = 0; a < 3; ++a) {
+      if (shift[a] == 0) continue;
+      move.direction[a] = shift[a] > 0 ? 1 : -1;
+      move.steps = std::abs(shift[a]);
+    }
+    return move;
+  }
+
+  GroupMove outMove() const {
+    GroupMove move;
+    for (int p = 0; p < k_; ++p) {
+      if (separation_.parts.has(p)) move.parts.push_back(parts_[p]);
+    }
+    std::sort(move.parts.begin(), move.parts.end());
+    move.direction = directionVector(separation_.direction);
+    move.out = true;
+    return move;
+  }
+
+  std::vector<int> parts_;
+  int k_;
+  const VoxelDisassemblyOptions& options_;
+  PositionStore store_;
+  GapMatrix gaps_;
+  mutable std::vector<int> frontier_;
+  size_t separationState_ = 0;
+  Moved separation_;
+  std::string limit_;
+};
+
+// A separation of the tree BurrTools' level notation is read from.
+struct Separation {
+  int moves = 0;
+  int left = -1, removed = -1;  // sub-assemblies of two parts or more, when separated
+};
+
+// A sub-assembly waiting to be taken apart: its parts, their offsets, and where its separation
+// hangs in the tree (parent separation, and whether it is the part left in place).
+struct PendingSubAssembly {
+  std::vector<int> parts;
+  std::vector<int> offsets;
+  int parent = -1;
+  bool left = true;
+};
+
+// BurrTools' movesText: a separation's moves, then, in pre-order, those of the side left in place
+// and of the side removed, where that side contains a separation of more than one move.
+std::vector<int> levelOf(const std::vector<Separation>& tree) {
+  if (tree.empty()) return {};
+  std::vector<bool> multi(tree.size(), false);
+  for (size_t n = tree.size(); n-- > 0;) {  // children come after their parent
+    const Separation& s = tree[n];
+    multi[n] = s.moves > 1 || (s.left >= 0 && multi[s.left]) || (s.removed >= 0 && multi[s.removed]);
+  }
+  std::vector<int> level, stack{0};
+  while (!stack.empty()) {
+    const Separation& s = tree[static_cast<size_t>(stack.back())];
+    stack.pop_back();
+    level.push_back(s.moves);
+    if (s.removed >= 0 && multi[s.removed]) stack.push_back(s.removed);
+    if (s.left >= 0 && multi[s.left]) stack.push_back(s.left);
+  }
+  return level;
+}
+
+}  // namespace
+
+std::vector<int> singlePartLevel(const std::vector<int>& moveCounts) {
+  std::vector<Separation> chain;
+  for (size_t k = 0; k < moveCounts.size(); ++k) {
+    chain.push_back({moveCounts[k], k + 1 < moveCounts.size() ? static_cast<int>(k + 1) : -1, -1});
+  }
+  return levelOf(chain);
+}
+
+namespace {
+
+// Records a separation of `current` (the moves to it, the last one out) and queues both sides,
+// each continuing from `offsets` (where its parts were when they separated).
+void recordSeparation(const PendingSubAssembly& current, const std::vector<GroupMove>& moves,
+                      const std::vector<char>& leaving, const std::vector<int>& offsets, GroupPlan* plan,
+                      std::vector<Separation>* tree, std::vector<PendingSubAssembly>* pending) {
+  plan->moves.insert(plan->moves.end(), moves.begin(), moves.end());
+  const int node = static_cast<int>(tree->size());
+  tree->push_back({static_cast<int>(moves.size()), -1, -1});
+  if (current.parent >= 0) {
+    Separation& parent = (*tree)[static_cast<size_t>(current.parent)];
+    (current.left ? parent.left : parent.removed) = node;
+  }
+  PendingSubAssembly sides[2];  // [0] left in place, [1] removed
+  for (size_t p = 0; p < current.parts.size(); ++p) {
+    PendingSubAssembly& side = sides[leaving[p] ? 1 : 0];
+    side.parts.push_back(current.parts[p]);
+    side.offsets.insert(side.offsets.end(), offsets.begin() + static_cast<std::ptrdiff_t>(3 * p),
+                        offsets.begin() + static_cast<std::ptrdiff_t>(3 * p + 3));
+  }
+  for (int s : {1, 0}) {
+    if (sides[s].parts.size() == 1) plan->freeOrder.push_back(sides[s].parts[0]);
+  }
+  for (int s : {1, 0}) {  // pushed removed first, so the side left in place is taken apart first
+    if (sides[s].parts.size() < 2) continue;
+    sides[s].parent = node;
+    sides[s].left = s == 0;
+    pending->push_back(std::move(sides[s]));
+  }
+}
+
+// Searches one sub-assembly; on a separation records it and queues both sides.
+template <typename PartSet>
+bool searchSubAssembly(PartGeometry& geometry, const PendingSubAssembly& current, const VoxelDisassemblyOptions& options,
+                       GroupPlan* plan, std::vector<Separation>* tree, std::vector<PendingSubAssembly>* pending) {
+  SubAssemblySearch<PartSet> search(geometry, current.parts, options);
+  const auto outcome = search.run(current.offsets);
+  plan->states += search.states();
+  if (outcome == SubAssemblySearch<PartSet>::Outcome::Separated) {
+    recordSeparation(current, search.plan(), search.leaving(), search.offsetsAtSeparation(), plan, tree, pending);
+    return true;
+  }
+  if (outcome == SubAssemblySearch<PartSet>::Outcome::LimitReached) {
+    plan->limitReached = true;
+    plan->limit = search.limit();
+  }
+  return false;
+}
+
+}  // namespace
+
+GroupPlan planGroupDisassembly(const VoxelGrid& grid, int partCount, const VoxelDisassemblyOptions& options) {
+  GroupPlan plan;
+  if (partCount < 2) {
+    plan.complete = true;
+    if (partCount == 1) plan.freeOrder.push_back(0);
+    return plan;
+  }
+  PartGeometry geometry(grid, partCount);
+  std::vector<Separation> tree;
+  PendingSubAssembly whole;
+  for (int part = 0; part < partCount; ++part) whole.parts.push_back(part);
+  whole.offsets.assign(static_cast<size_t>(3 * partCount), 0);
+  std::vector<PendingSubAssembly> pending{whole};
+  while (!pending.empty()) {
+    PendingSubAssembly current = std::move(pending.back());
+    pending.pop_back();
+    const int k = static_cast<int>(current.parts.size());
+    if (k > options.maxGroupParts) {
+      plan.unseparated.push_back(current.parts);
+      plan.limitReached = true;
+      plan.limit = std::to_string(k) + " parts held together: the search takes at most " +
+                   std::to_string(options.maxGroupParts) + " (maxGroupParts)";
+      continue;
+    }
+    const bool separated = k <= 64 ? searchSubAssembly<SmallPartSet>(geometry, current, options, &plan, &tree, &pending)
+                                   : searchSubAssembly<WidePartSet>(geometry, current, options, &plan, &tree, &pending);
+    if (!separated) plan.unseparated.push_back(current.parts);
+  }
+  plan.complete = plan.unseparated.empty();
+  plan.level = levelOf(tree);  // of the separations made, when the plan stopped short
+  return plan;
+}
+
+}  // namespace desia
