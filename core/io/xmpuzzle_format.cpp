@@ -67,11 +67,12 @@ std::string voxelElement(const VoxelGrid& grid, const Box& box, int partId, cons
   return out + "</voxel>\n";
 }
 
-// Where each piece is while a separation runs: offsets from its assembled place, in voxels.
+// Where each piece is while a separation runs: its position in the result shape, in voxels (the
+// <assembly> placement, then moved).
 using Offset = std::array<int, 3>;
 
-// BurrTools takes a piece whose offset exceeds 10000 along an axis as removed; its own
-// disassembler writes 20000 times the direction of the last move.
+// BurrTools takes a piece whose position exceeds 10000 along an axis as removed; its own
+// disassembler writes about 30000 along the direction of the last move.
 constexpr int kRemovedDistance = 20000;
 
 std::string numberList(const std::vector<int>& values) {
@@ -92,38 +93,93 @@ std::string stateElement(const std::vector<Offset>& offsets, const std::string& 
   return out + "</state>\n";
 }
 
-// The disassembly as BurrTools' separation tree. Each separation holds the pieces still together
-// (0-based piece numbers, ascending), one state per position along the way (the first: everything
-// in place), and ends when the removed piece is gone (kRemovedDistance along its last move, which
-// the plan guarantees is free to infinity: the part has left the others' box). desia removes one
-// part at a time and the others stay put, so the pieces left after each removal form the next
-// separation, nested as its "left" branch; a single removed piece needs no branch of its own, nor
-// do the last two pieces. Written as a chain of nested elements, closed at the end.
-std::string separationElements(const DisassemblyPlan& plan, const Assembly& assembly, int parts) {
-  std::vector<int> together;
-  for (int piece = 0; piece < parts; ++piece) together.push_back(piece);
-  std::string out, closing;
-  std::string indent = "     ";
-  for (size_t r = 0; r < plan.removals.size() && together.size() >= 2; ++r) {
-    const Removal& removal = plan.removals[r];
-    const int piece = assembly.parts[removal.part].id - 1;
-    const size_t moving = static_cast<size_t>(std::find(together.begin(), together.end(), piece) - together.begin());
-    out += indent + (r == 0 ? "<separation>" : "<separation type=\"left\">") + "\n";
-    out += indent + " <pieces count=\"" + std::to_string(together.size()) + "\">" + numberList(together) + "</pieces>\n";
-    std::vector<Offset> offsets(together.size(), Offset{0, 0, 0});
-    out += stateElement(offsets, indent + " ");
-    for (size_t m = 0; m < removal.path.size(); ++m) {
-      const Move& move = removal.path[m];
-      const bool last = m + 1 == removal.path.size();
-      const int distance = last ? kRemovedDistance : move.steps;
-      for (int axis = 0; axis < 3; ++axis) offsets[moving][axis] += distance * static_cast<int>(move.direction[axis]);
-      out += stateElement(offsets, indent + " ");
+// One separation of BurrTools' tree: the pieces together (0-based piece numbers, ascending), one
+// state per position along the way, the last with the removed pieces beyond 10000; then the
+// separations of the two sides, where a side keeps two pieces or more.
+struct SeparationNode {
+  std::vector<int> pieces;
+  std::vector<std::vector<Offset>> states;
+  int left = -1, removed = -1;
+};
+
+// The plan's moves replayed into the tree: each move belongs to the sub-assembly holding its
+// parts; a move out closes that sub-assembly's separation and opens one per side of two pieces
+// or more, starting where its pieces were. `position`: each piece's placement.
+std::vector<SeparationNode> separationTree(const DisassemblyPlan& plan, const Assembly& assembly,
+                                           std::vector<Offset> position) {
+  const int pieces = static_cast<int>(position.size());
+  std::vector<SeparationNode> tree(1);
+  for (int piece = 0; piece < pieces; ++piece) tree[0].pieces.push_back(piece);
+  std::vector<int> nodeOf(static_cast<size_t>(pieces), 0);
+  auto stateOf = [&](const SeparationNode& node) {
+    std::vector<Offset> state;
+    for (int piece : node.pieces) state.push_back(position[static_cast<size_t>(piece)]);
+    return state;
+  };
+  auto shift = [&](const std::vector<int>& moving, const GroupMove& move, int distance) {
+    for (int piece : moving) {
+      for (int axis = 0; axis < 3; ++axis) {
+        position[static_cast<size_t>(piece)][axis] += distance * static_cast<int>(move.direction[axis]);
+      }
     }
-    closing = indent + "</separation>\n" + closing;
-    together.erase(together.begin() + static_cast<std::ptrdiff_t>(moving));
-    indent += " ";
+  };
+  tree[0].states.push_back(stateOf(tree[0]));
+  for (const GroupMove& move : plan.moves) {
+    std::vector<int> moving;
+    for (int part : move.parts) moving.push_back(assembly.parts[part].id - 1);
+    std::sort(moving.begin(), moving.end());
+    const int node = nodeOf[static_cast<size_t>(moving[0])];
+    const int distance = move.out ? kRemovedDistance : move.steps;
+    shift(moving, move, distance);
+    tree[static_cast<size_t>(node)].states.push_back(stateOf(tree[static_cast<size_t>(node)]));
+    if (!move.out) continue;
+    shift(moving, move, -distance);  // each side goes on from where its pieces were
+    SeparationNode sides[2];         // [0] left, [1] removed
+    for (int piece : tree[static_cast<size_t>(node)].pieces) {
+      sides[std::binary_search(moving.begin(), moving.end(), piece) ? 1 : 0].pieces.push_back(piece);
+    }
+    for (int s = 0; s < 2; ++s) {
+      const bool alone = sides[s].pieces.size() < 2;
+      const int child = alone ? -1 : static_cast<int>(tree.size());
+      for (int piece : sides[s].pieces) nodeOf[static_cast<size_t>(piece)] = child;
+      if (alone) continue;
+      sides[s].states.push_back(stateOf(sides[s]));
+      (s == 0 ? tree[static_cast<size_t>(node)].left : tree[static_cast<size_t>(node)].removed) = child;
+      tree.push_back(std::move(sides[s]));
+    }
   }
-  return out + closing;
+  return tree;
+}
+
+// The tree as nested <separation> elements (the sides as type "left" and "removed"), written
+// with an explicit stack.
+std::string separationElements(const std::vector<SeparationNode>& tree) {
+  struct Open {
+    int node;
+    const char* type;
+    int depth;
+    bool contentWritten;
+  };
+  std::string out;
+  std::vector<Open> stack{{0, nullptr, 0, false}};
+  while (!stack.empty()) {
+    Open& top = stack.back();
+    const SeparationNode& node = tree[static_cast<size_t>(top.node)];
+    const std::string indent(static_cast<size_t>(5 + top.depth), ' ');
+    if (top.contentWritten) {
+      out += indent + "</separation>\n";
+      stack.pop_back();
+      continue;
+    }
+    out += indent + (top.type ? std::string("<separation type=\"") + top.type + "\">" : std::string("<separation>")) + "\n";
+    out += indent + " <pieces count=\"" + std::to_string(node.pieces.size()) + "\">" + numberList(node.pieces) + "</pieces>\n";
+    for (const auto& state : node.states) out += stateElement(state, indent + " ");
+    top.contentWritten = true;
+    const int depth = top.depth + 1;
+    if (node.removed >= 0) stack.push_back({node.removed, "removed", depth, false});
+    if (node.left >= 0) stack.push_back({node.left, "left", depth, false});
+  }
+  return out;
 }
 
 // <solution>: the assembly (per piece its offset in the result shape and transformation 0, i.e.
@@ -139,7 +195,9 @@ std::string solutionElement(const AssemblyDocument& document, const std::vector<
   std::string out = "   <solutions>\n    <solution>\n     <assembly>" + placements + "</assembly>\n";
   if (parts >= 2) {
     const DisassemblyPlan plan = planVoxelDisassembly(document.voxels, document.assembly);
-    if (plan.complete) out += separationElements(plan, document.assembly, parts);
+    std::vector<Offset> placements;
+    for (int part = 1; part <= parts; ++part) placements.push_back(boxes[static_cast<size_t>(part)].low);
+    if (plan.complete) out += separationElements(separationTree(plan, document.assembly, placements));
   }
   return out + "    </solution>\n   </solutions>\n";
 }

@@ -507,12 +507,14 @@ TEST(ExportXmPuzzle, PiecesReproduceTheLabelsOfEveryReferencePuzzle) {
   }
 }
 
-// One <separation> of the saved solution: the pieces still together, and the offsets of each piece
-// (in the order of `pieces`) in every state.
+// One <separation> of the saved solution: its side ("" for the root, "left" or "removed"), the
+// pieces still together, the position of each piece (in the order of `pieces`) in every state,
+// and where it nests.
 struct Separation {
-  bool left = false;
+  std::string type;
   std::vector<int> pieces;
   std::vector<std::vector<std::array<int, 3>>> states;
+  int parent = -1;
 };
 
 std::vector<int> numbersOf(const std::string& text) {
@@ -522,41 +524,93 @@ std::vector<int> numbersOf(const std::string& text) {
   return numbers;
 }
 
-// The separations in document order, after checking that they nest as one chain (each one's
-// states before the separation nested in it) and that every tag is closed.
-std::vector<Separation> separationChainOf(const std::string& xml) {
-  std::vector<Separation> chain;
+// The separations in document order (pre-order), after checking that every tag is closed.
+std::vector<Separation> separationTreeOf(const std::string& xml) {
+  std::vector<Separation> tree;
   const std::regex token(
-      R"re(<separation( type="left")?>|<pieces count="(\d+)">([^<]*)</pieces>|<state><dx>([^<]*)</dx><dy>([^<]*)</dy><dz>([^<]*)</dz></state>|</separation>)re");
-  int open = 0, closed = 0;
+      R"re(<separation( type="(left|removed)")?>|<pieces count="(\d+)">([^<]*)</pieces>|<state><dx>([^<]*)</dx><dy>([^<]*)</dy><dz>([^<]*)</dz></state>|</separation>)re");
+  std::vector<int> open;
   for (auto it = std::sregex_iterator(xml.begin(), xml.end(), token); it != std::sregex_iterator(); ++it) {
     const std::smatch& m = *it;
     if (m.str(0).rfind("<separation", 0) == 0) {
-      EXPECT_EQ(closed, 0) << "a separation after a closing tag: not a chain";
-      chain.push_back({m[1].matched, {}, {}});
-      ++open;
+      tree.push_back({m[2].matched ? m.str(2) : "", {}, {}, open.empty() ? -1 : open.back()});
+      open.push_back(static_cast<int>(tree.size()) - 1);
     } else if (m.str(0) == "</separation>") {
-      ++closed;
-    } else if (m[2].matched) {
-      chain.back().pieces = numbersOf(m[3]);
-      EXPECT_EQ(static_cast<int>(chain.back().pieces.size()), std::stoi(m[2]));
+      EXPECT_FALSE(open.empty());
+      if (!open.empty()) open.pop_back();
+    } else if (m[3].matched) {
+      tree[open.back()].pieces = numbersOf(m[4]);
+      EXPECT_EQ(static_cast<int>(tree[open.back()].pieces.size()), std::stoi(m[3]));
     } else {
-      const std::vector<int> dx = numbersOf(m[4]), dy = numbersOf(m[5]), dz = numbersOf(m[6]);
-      EXPECT_EQ(dx.size(), chain.back().pieces.size());
+      const std::vector<int> dx = numbersOf(m[5]), dy = numbersOf(m[6]), dz = numbersOf(m[7]);
+      EXPECT_EQ(dx.size(), tree[open.back()].pieces.size());
       EXPECT_EQ(dy.size(), dx.size());
       EXPECT_EQ(dz.size(), dx.size());
-      std::vector<std::array<int, 3>> offsets;
-      for (size_t k = 0; k < dx.size() && k < dy.size() && k < dz.size(); ++k) offsets.push_back({dx[k], dy[k], dz[k]});
-      chain.back().states.push_back(offsets);
+      std::vector<std::array<int, 3>> positions;
+      for (size_t k = 0; k < dx.size() && k < dy.size() && k < dz.size(); ++k) positions.push_back({dx[k], dy[k], dz[k]});
+      tree[open.back()].states.push_back(positions);
     }
   }
-  EXPECT_EQ(open, closed);
-  return chain;
+  EXPECT_TRUE(open.empty());
+  return tree;
+}
+
+// The moves a separation tree stands for, as BurrTools reads it: between two states one set of
+// pieces moves along one axis; in the last state the removed pieces are beyond 10000. Checks
+// that each side starts where its pieces were before they separated.
+std::vector<GroupMove> movesOfTree(const std::vector<Separation>& tree, const std::string& file) {
+  std::vector<GroupMove> moves;
+  for (size_t n = 0; n < tree.size(); ++n) {
+    const Separation& separation = tree[n];
+    EXPECT_GE(separation.states.size(), 2u) << file;
+    if (separation.parent >= 0) {
+      const Separation& parent = tree[static_cast<size_t>(separation.parent)];
+      const auto& before = parent.states[parent.states.size() - 2];
+      for (size_t p = 0; p < separation.pieces.size(); ++p) {
+        const size_t at = static_cast<size_t>(
+            std::find(parent.pieces.begin(), parent.pieces.end(), separation.pieces[p]) - parent.pieces.begin());
+        EXPECT_EQ(separation.states[0][p], before[at]) << file << ": a side starts where its pieces were";
+      }
+    }
+    for (size_t k = 1; k < separation.states.size(); ++k) {
+      GroupMove move;
+      move.out = k + 1 == separation.states.size();
+      std::array<int, 3> shift{0, 0, 0};
+      for (size_t p = 0; p < separation.pieces.size(); ++p) {
+        std::array<int, 3> delta;
+        for (int axis = 0; axis < 3; ++axis) delta[axis] = separation.states[k][p][axis] - separation.states[k - 1][p][axis];
+        if (delta == std::array<int, 3>{0, 0, 0}) continue;
+        EXPECT_TRUE(move.parts.empty() || delta == shift) << file << ": pieces moved together move alike";
+        shift = delta;
+        move.parts.push_back(separation.pieces[p]);
+        const bool gone = std::any_of(separation.states[k][p].begin(), separation.states[k][p].end(),
+                                      [](int d) { return std::abs(d) > 10000; });
+        EXPECT_EQ(gone, move.out) << file << ": gone in the last state only";
+      }
+      int axesMoved = 0;
+      for (int axis = 0; axis < 3; ++axis) {
+        if (shift[axis] == 0) continue;
+        ++axesMoved;
+        move.direction[axis] = shift[axis] > 0 ? 1 : -1;
+        move.steps = move.out ? 0 : std::abs(shift[axis]);
+      }
+      EXPECT_EQ(axesMoved, 1) << file << " separation " << n << " state " << k;
+      moves.push_back(move);
+    }
+  }
+  return moves;
 }
 
 TEST(ExportXmPuzzle, SavedSolutionPlacesEveryPieceAndReplaysTheDisassemblyPlan) {
-  for (const std::string& file : kReferencePuzzles) {
-    const AssemblyDocument document = loadReference(file);
+  std::vector<std::string> files = kReferencePuzzles;
+  // BurrTools' own puzzles, whose plans move several pieces at once (the level-98 PelikanBurr).
+  for (const char* burr : {"SolidSixPieceBurrs-p0-s0.puz", "SolidSixPieceBurrs-p0-s257.puz", "PelikanBurr-p0-s0.puz"}) {
+    files.push_back(std::string("tests/data/burrtools/") + burr);
+  }
+  for (const std::string& file : files) {
+    const AssemblyDocument document = file.rfind("tests/", 0) == 0
+                                          ? parseAssemblyText(testing::readFileText(testing::projectPath(file)), file)
+                                          : loadReference(file);
     const VoxelGrid& grid = document.voxels;
     const int parts = grid.maxLabel();
     const std::string xml = xmpuzzleXml(document, file);
@@ -584,57 +638,24 @@ TEST(ExportXmPuzzle, SavedSolutionPlacesEveryPieceAndReplaysTheDisassemblyPlan) 
     }
     EXPECT_TRUE(rebuilt == grid.labels()) << file;
 
-    // The separations: one chain, each removing one piece, in the order of desia's plan, every
-    // move replayed against the pieces still there.
-    const std::vector<Separation> chain = separationChainOf(xml);
+    // The separation tree: the root starts with every piece at its placement; its moves, as
+    // BurrTools reads them, are the plan's and take the puzzle apart voxel by voxel.
+    const std::vector<Separation> tree = separationTreeOf(xml);
     if (parts == 1) {
-      EXPECT_TRUE(chain.empty()) << file << ": one piece, nothing to take apart";
+      EXPECT_TRUE(tree.empty()) << file << ": one piece, nothing to take apart";
       continue;
     }
     const DisassemblyPlan plan = planVoxelDisassembly(grid, document.assembly);
     ASSERT_TRUE(plan.complete) << file;
-    ASSERT_EQ(static_cast<int>(chain.size()), parts - 1) << file;
-    std::vector<bool> present(parts, true);
-    for (size_t s = 0; s < chain.size(); ++s) {
-      const Separation& separation = chain[s];
-      EXPECT_EQ(separation.left, s > 0) << file << ": the pieces left over nest as the 'left' branch";
-      std::vector<int> together;
-      for (int piece = 0; piece < parts; ++piece) {
-        if (present[piece]) together.push_back(piece);
-      }
-      EXPECT_EQ(separation.pieces, together) << file << " separation " << s;
-      ASSERT_GE(separation.states.size(), 2u) << file;
-      for (const auto& offset : separation.states.front()) EXPECT_EQ(offset, (std::array<int, 3>{0, 0, 0}));
-      // Exactly one piece moves, along one axis per state; the last state puts it beyond 10000.
-      const int removedId = document.assembly.parts[plan.removals[s].part].id;
-      const size_t moving = static_cast<size_t>(
-          std::find(separation.pieces.begin(), separation.pieces.end(), removedId - 1) - separation.pieces.begin());
-      ASSERT_LT(moving, separation.pieces.size()) << file << ": the plan's next part is among the pieces";
-      std::vector<Move> path;
-      for (size_t k = 1; k < separation.states.size(); ++k) {
-        Move move;
-        int axesMoved = 0;
-        for (size_t piece = 0; piece < separation.pieces.size(); ++piece) {
-          for (int axis = 0; axis < 3; ++axis) {
-            const int delta = separation.states[k][piece][axis] - separation.states[k - 1][piece][axis];
-            if (delta == 0) continue;
-            EXPECT_EQ(piece, moving) << file << ": only the removed piece moves";
-            ++axesMoved;
-            move.direction[axis] = delta > 0 ? 1 : -1;
-            move.steps = std::abs(delta);
-          }
-        }
-        EXPECT_EQ(axesMoved, 1) << file << " separation " << s << " state " << k;
-        const bool last = k + 1 == separation.states.size();
-        const bool removed = std::any_of(separation.states[k][moving].begin(), separation.states[k][moving].end(),
-                                         [](int d) { return std::abs(d) > 10000; });
-        EXPECT_EQ(removed, last) << file << ": gone in the last state only";
-        if (last) move.steps = 1;  // verifyRemoval goes on to infinity along the last direction
-        path.push_back(move);
-      }
-      EXPECT_EQ(verifyRemoval(grid, present, removedId, path), "") << file << " separation " << s;
-      present[removedId - 1] = false;
+    ASSERT_FALSE(tree.empty()) << file;
+    for (int piece = 0; piece < parts; ++piece) {
+      EXPECT_EQ(tree[0].states[0][piece], (std::array<int, 3>{placements[4 * piece], placements[4 * piece + 1],
+                                                              placements[4 * piece + 2]}))
+          << file << ": BurrTools' states are positions, the first one the placements";
     }
+    const std::vector<GroupMove> moves = movesOfTree(tree, file);
+    EXPECT_EQ(moves.size(), plan.moves.size()) << file;
+    EXPECT_EQ(testing::replayVoxelMoves(grid, moves, true), "") << file;
   }
 }
 
