@@ -487,7 +487,15 @@ DisassemblyPlan planVoxelDisassembly(const VoxelGrid& grid, const Assembly& asse
     return plan;
   }
   if (plan.complete) {
-    // The single-part plan stands as `removals` (order and paths); the moves are the fewest.
+    // The single-part plan stands as `removals` (order and paths); the moves are the search's,
+    // whose separations come in the order BurrTools' would mostly choose, so that the levels
+    // below the first compare. When the single-part plan has that very level, it is those moves.
+    DisassemblyPlan asMoves = plan;
+    describeAsMoves(&asMoves);
+    if (asMoves.level == group.level && asMoves.moves.size() == group.moves.size()) {
+      asMoves.levelMinimal = true;
+      return asMoves;
+    }
     plan.moves = std::move(group.moves);
     plan.level = std::move(group.level);
     plan.levelMinimal = true;

@@ -67,7 +67,8 @@ int main(int argc, char** argv) {
   std::printf("designed, DBG test: %s (key %d), median %.1f ms CPU\n", desia::verdictName(dbg.verdict), dbg.key, dbgMs);
   std::printf("designed, LP test: %s (key %d), median %.1f ms CPU\n", desia::verdictName(lp.verdict), lp.key, lpMs);
   std::printf("designed, contacts from voxels alone: median %.1f ms CPU\n", contactsMs);
-  const desia::bench::WorkloadInputs inputs(readFile(argv[2]), argv[2]);
+  const std::string levelPuzzle = "tests/data/burrtools/PelikanBurr-p0-s0.puz";  // run from the checkout
+  const desia::bench::WorkloadInputs inputs(readFile(argv[2]), argv[2], readFile(levelPuzzle), levelPuzzle);
   for (const char* name : {"cube35-1500 dbg (full work)", "cube35-1500 lp (full work)", "cube35-1500 contacts only"}) {
     const desia::bench::WorkloadSpec& spec = desia::bench::workloadByName(name);
     std::printf("generated, %s: median %.1f ms CPU\n", name,

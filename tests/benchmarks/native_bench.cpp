@@ -6,7 +6,7 @@
 // WebAssembly side by side.
 //
 // Own flags (besides every --benchmark_* flag): --desia_bunny=PATH (the 80-part BUNNY .puz),
-// --desia_json=PATH (where to write the results; empty: do not write).
+// --desia_level_puzzle=PATH (BurrTools' PelikanBurr .puz), --desia_json=PATH (where to write the results; empty: do not write).
 #include <benchmark/benchmark.h>
 #include <unistd.h>
 
@@ -42,6 +42,7 @@ constexpr const char* kPaperMachine = "an iMac with a 4.2GHz CPU (paper Section 
 
 struct Options {
   std::string bunnyPath = DESIA_BENCH_DEFAULT_BUNNY;
+  std::string levelPuzzlePath = DESIA_BENCH_DEFAULT_LEVEL_PUZZLE;
   std::string jsonPath = DESIA_BENCH_DEFAULT_JSON;
 };
 
@@ -55,6 +56,8 @@ bool parseOptions(int argc, char** argv, Options* options) {
     };
     if (auto v = valueOf("--desia_bunny")) {
       options->bunnyPath = *v;
+    } else if (auto v = valueOf("--desia_level_puzzle")) {
+      options->levelPuzzlePath = *v;
     } else if (auto v = valueOf("--desia_json")) {
       options->jsonPath = *v;
     } else {
@@ -274,7 +277,7 @@ int main(int argc, char** argv) {
   if (!parseOptions(argc, argv, &options)) return 2;
   std::optional<WorkloadInputs> inputs;
   try {
-    inputs.emplace(readFile(options.bunnyPath), options.bunnyPath);
+    inputs.emplace(readFile(options.bunnyPath), options.bunnyPath, readFile(options.levelPuzzlePath), options.levelPuzzlePath);
   } catch (const std::exception& e) {
     std::cerr << "desia_bench: error: preparing the inputs: " << e.what() << "\n";
     return 2;

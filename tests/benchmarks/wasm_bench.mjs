@@ -13,6 +13,7 @@ import { fileURLToPath } from 'node:url';
 
 const root = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..', '..');
 const BUNNY = 'tests/reference/desia/data/result_puz/bunny_15x14x11_K80.puz';
+const LEVEL_PUZZLE = 'tests/data/burrtools/PelikanBurr-p0-s0.puz';
 // A sample is the mean of as many calls as fit in this time, as a native repetition is
 // (Google Benchmark's min time): a single 0.3 ms call is mostly timer and scheduling noise.
 const SAMPLE_MS = 100;
@@ -175,7 +176,8 @@ function writeResults(file, workloads, results, stats) {
 async function main() {
   const options = parseArguments(process.argv.slice(2));
   const module = await loadModule(path.resolve(options.module));
-  const stats = module.prepare(fs.readFileSync(path.join(root, BUNNY), 'utf8'), BUNNY);
+  const stats = module.prepare(fs.readFileSync(path.join(root, BUNNY), 'utf8'), BUNNY,
+    fs.readFileSync(path.join(root, LEVEL_PUZZLE), 'utf8'), LEVEL_PUZZLE);
   console.log(describe('bunny-80', stats.bunny));
   console.log(describe('cube35-1500 (generated)', stats.cube));
   const native = readNative(options.native);

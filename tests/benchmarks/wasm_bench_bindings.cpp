@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // embind module for the WebAssembly side of the interlocking-test benchmarks (paper Section 3.2):
 // the same workloads.cpp as the native desia_bench, driven from node by wasm_bench.mjs.
-//   prepare(bunnyPuzText, source) -> { bunny: stats, cube: stats }   (untimed)
+//   prepare(bunnyPuzText, source, levelPuzzleText, levelPuzzleSource) -> { bunny: stats, cube: stats }   (untimed)
 //   workloads()                   -> [{ name, paperMs, measures, slow }]
 //   run(name, runs)               -> [milliseconds of each run]
 // Each run is timed in C++ with std::chrono::steady_clock (performance.now() underneath), so the
@@ -49,9 +49,10 @@ val statsToJs(const bench::GridStats& stats) {
   return out;
 }
 
-val prepare(const std::string& bunnyPuzText, const std::string& source) {
+val prepare(const std::string& bunnyPuzText, const std::string& source, const std::string& levelPuzzleText,
+            const std::string& levelPuzzleSource) {
   return guarded([&] {
-    gInputs = std::make_unique<bench::WorkloadInputs>(bunnyPuzText, source);
+    gInputs = std::make_unique<bench::WorkloadInputs>(bunnyPuzText, source, levelPuzzleText, levelPuzzleSource);
     val out = val::object();
     out.set("bunny", statsToJs(bench::gridStats(gInputs->bunny())));
     out.set("cube", statsToJs(bench::gridStats(gInputs->cube())));

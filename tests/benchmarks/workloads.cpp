@@ -14,6 +14,7 @@
 #include "desia/directed_graph.h"
 #include "desia/interlocking.h"
 #include "desia/puz_format.h"
+#include "desia/voxel_disassembly.h"
 
 namespace desia::bench {
 namespace {
@@ -169,6 +170,18 @@ int64_t plateOutlineRead(const WorkloadInputs& inputs) {
   return static_cast<int64_t>(document.plates[0].bottom[0].size());
 }
 
+// The complete disassembly of a puzzle whose first part comes out after 98 moves: the single-part
+// plan fails, then the breadth-first search over moves of several parts.
+int64_t levelPuzzleDisassembly(const WorkloadInputs& inputs) {
+  const VoxelGrid& grid = inputs.levelPuzzle();
+  const DisassemblyPlan plan = planVoxelDisassembly(grid, assemblyFromVoxels(grid));
+  if (!plan.complete || plan.level.empty() || plan.level[0] != kLevelPuzzleLevel) {
+    throw WrongVerdict("PelikanBurr disassembly: expected a complete plan of level " + std::to_string(kLevelPuzzleLevel) +
+                       ", got " + (plan.level.empty() ? std::string("none") : std::to_string(plan.level[0])));
+  }
+  return static_cast<int64_t>(plan.moves.size());
+}
+
 }  // namespace
 
 std::string roundPlateDocument(int vertices) {
@@ -228,6 +241,8 @@ const std::vector<WorkloadSpec>& workloadSpecs() {
        "checkAssembly --method lp of the same ring (base directions, LPs, plan); target 1000 ms", true},
       {Workload::PlateOutlineRead, "plate outline 30000 vertices (read)", kNoPaperFigure,
        "parseAssemblyText of a round top (30,000-vertex outline) on a board: validation, snapping, contacts; target 500 ms", true},
+      {Workload::LevelPuzzleDisassembly, "PelikanBurr level 98 (disassembly)", kNoPaperFigure,
+       "planVoxelDisassembly of BurrTools' PelikanBurr (7 parts, 8^3): single-part plan, then the search over moves of several parts; target 1 s native, 2 s wasm", false},
   };
   return specs;
 }
@@ -292,11 +307,13 @@ std::string describeStats(const std::string& what, const GridStats& stats) {
   return out.str();
 }
 
-WorkloadInputs::WorkloadInputs(const std::string& bunnyPuzText, const std::string& bunnySource)
+WorkloadInputs::WorkloadInputs(const std::string& bunnyPuzText, const std::string& bunnySource,
+                               const std::string& levelPuzzleText, const std::string& levelPuzzleSource)
     : bunny_(parsePuz(bunnyPuzText, bunnySource)),
       cube_(generateCubePartition(kCubeSide, kCubeParts, kCubeSeed)),
       ring_(generateNormalRing(kRingParts, kRingContacts, kCubeSeed)),
-      roundPlate_(roundPlateDocument(kOutlineVertices)) {
+      roundPlate_(roundPlateDocument(kOutlineVertices)),
+      levelPuzzle_(parsePuz(levelPuzzleText, levelPuzzleSource)) {
   // Throws BadInput if a region were empty or split; the generator guarantees neither happens.
   validateVoxelParts(cube_, "generated cube");
 }
@@ -323,6 +340,8 @@ int64_t runWorkload(Workload workload, const WorkloadInputs& inputs) {
       return ringCheck(inputs, CheckMethod::Inequalities, "ring10-800 normals lp (check)");
     case Workload::PlateOutlineRead:
       return plateOutlineRead(inputs);
+    case Workload::LevelPuzzleDisassembly:
+      return levelPuzzleDisassembly(inputs);
   }
   throw std::invalid_argument("unknown workload");
 }

@@ -37,6 +37,8 @@ enum class Workload {
   RingLpCheck,
   // Issue 24: reading a plate with a finely drawn outline (validation, snapping, contacts).
   PlateOutlineRead,
+  // Issue 27: the complete disassembler on BurrTools' level-98 PelikanBurr.
+  LevelPuzzleDisassembly,
 };
 
 struct WorkloadSpec {
@@ -91,18 +93,24 @@ std::string roundPlateDocument(int vertices);
 // and validates the CUBE; neither step is timed.
 class WorkloadInputs {
  public:
-  WorkloadInputs(const std::string& bunnyPuzText, const std::string& bunnySource);
+  WorkloadInputs(const std::string& bunnyPuzText, const std::string& bunnySource, const std::string& levelPuzzleText,
+                 const std::string& levelPuzzleSource);
   const VoxelGrid& bunny() const { return bunny_; }
   const VoxelGrid& cube() const { return cube_; }
   const Assembly& ring() const { return ring_; }
   const std::string& roundPlate() const { return roundPlate_; }
+  const VoxelGrid& levelPuzzle() const { return levelPuzzle_; }
 
  private:
   VoxelGrid bunny_;
   VoxelGrid cube_;
   Assembly ring_;
   std::string roundPlate_;
+  VoxelGrid levelPuzzle_;
 };
+
+// BurrTools' PelikanBurr (tests/data/burrtools): 7 parts in 8^3 voxels, level 98 (BurrTools' own).
+constexpr int kLevelPuzzleLevel = 98;
 
 // Runs one workload once. Throws WrongVerdict when the result is not the expected one. The
 // returned number depends on the whole result (so no compiler can drop the work) and is otherwise
