@@ -7,7 +7,7 @@ import os from 'node:os';
 import path from 'node:path';
 import { test } from 'node:test';
 
-import { referenceDir, runCli } from './support.mjs';
+import { referenceDir, root as projectRoot, runCli } from './support.mjs';
 
 const tmp = fs.mkdtempSync(path.join(os.tmpdir(), 'desia-cli-'));
 function writeTemp(name, content) {
@@ -22,6 +22,42 @@ test('text report of an interlocking puzzle, exit 0', () => {
   assert.match(result.stdout, /^verdict: interlocking \(method dbg\)$/m);
   assert.match(result.stdout, /^key: part 1, free along \+y$/m);
   assert.match(result.stdout, /^ {2}part 2: \+z 1, \+y 2$/m);
+});
+
+test('a puzzle of level 98 (BurrTools\' PelikanBurr): the level, every move, and the JSON steps', () => {
+  const file = path.join(projectRoot, 'tests/data/burrtools/PelikanBurr-p0-s0.puz');
+  const text = runCli(['check', file]);
+  assert.match(text.stdout, /^disassembly: level 98\.2\.5, 108 moves$/m);
+  assert.match(text.stdout, /^ {2}move 1: parts? [\d, ]+ {2}[+-][xyz] \d+$/m);
+  assert.match(text.stdout, /^ {2}move 108: parts? [\d, ]+ {2}[+-][xyz] out$/m);
+  const report = JSON.parse(runCli(['check', file, '--json']).stdout);
+  const { disassembly } = report;
+  assert.deepEqual(disassembly.level, [98, 2, 5]);
+  assert.equal(disassembly.levelMinimal, true);
+  assert.equal(disassembly.paths, null);  // no single-part plan: the steps are the plan
+  assert.equal(disassembly.steps.length, disassembly.moves);
+  assert.equal(disassembly.order.length, 7);
+  for (const step of disassembly.steps) {
+    assert.equal(step.move.filter((d) => d !== 0).length, 1);
+    if (step.out) assert.equal(Math.abs(step.move.find((d) => d !== 0)), 1);
+  }
+  assert.equal(disassembly.steps.filter((step) => step.out).length, 6);  // 7 parts: 6 separations
+  // A six-piece burr whose first move takes three parts out together.
+  const burr = JSON.parse(runCli(['check', path.join(projectRoot, 'tests/data/burrtools/SolidSixPieceBurrs-p0-s0.puz'), '--json']).stdout);
+  assert.deepEqual(burr.disassembly.steps[0], { parts: [1, 3, 5], move: [1, 0, 0], out: true });
+});
+
+test('the .puz layout of later research: comments, voxel sizes, a flat list', () => {
+  const file = writeTemp('research.puz', '# a 3-part puzzle\n3 1 1\n0.250000 0.250000 0.250000\n1 2 3\n');
+  const result = runCli(['check', file]);
+  assert.match(result.stdout, /^parts: 3 \(voxel grid 3x1x1\)$/m);
+  const obj = path.join(tmp, 'research.obj');
+  assert.equal(runCli(['export', file, '--format', 'obj', '--output', obj]).status, 0);
+  const xs = fs.readFileSync(obj, 'utf8').split('\n').filter((l) => l.startsWith('v ')).map((l) => Number(l.split(' ')[1]));
+  assert.equal(Math.max(...xs), 0.75);  // three voxels of 0.25
+  const bad = runCli(['check', writeTemp('bad-size.puz', '3 1 1\n0.25 zero 0.25\n1 2 3\n')]);
+  assert.equal(bad.status, 2);
+  assert.match(bad.stderr, /bad-size\.puz:2:6: the voxel size along y must be a positive number, found 'zero'/);
 });
 
 test('an input shape (one part) is a verdict: exit 1 with the reason', () => {
@@ -57,7 +93,11 @@ test('a deadlocked assembly: exit 1, deadlocked, no disassembly but the stuck pa
   assert.equal(report.deadlocked, true);
   assert.equal(report.key, null);
   assert.equal(report.disassembly, null);
-  assert.deepEqual(report.disassemblyFailure, { removed: [], stuck: [1, 2, 3, 4, 5, 6, 7], searchLimitReached: false });
+  // Proven stuck: the search over moves of several parts ran out of positions without a separation.
+  assert.deepEqual(report.disassemblyFailure, {
+    removed: [], stuck: [1, 2, 3, 4, 5, 6, 7], searchLimitReached: false,
+    unseparated: [[1, 2, 3, 4, 5, 6, 7]], level: [], steps: [],
+  });
 });
 
 const badInputs = [
