@@ -27,7 +27,7 @@ struct VoxelDisassemblyOptions {
   // BurrTools does), run when the single-part plan fails or needs a bent path. Its bounds, per
   // sub-assembly searched: positions kept, and the memory they take (about 1 GiB by default).
   bool groupMoves = true;
-  int64_t maxGroupStates = 4'000'000;
+  int64_t maxGroupStates = 2'000'000;
   int64_t maxGroupBytes = int64_t{1} << 30;
   int maxGroupParts = 1000;  // sub-assemblies of more parts are not searched (said in `limit`)
 };
