@@ -258,7 +258,8 @@ std::string xmpuzzleXml(const AssemblyDocument& document, const std::string& sou
     offsets += "part " + std::to_string(part) + ": " + std::to_string(boxes[part].low[0]) + " " +
                std::to_string(boxes[part].low[1]) + " " + std::to_string(boxes[part].low[2]) + "\n";
   }
-  xml += " </shapes>\n <problems>\n  <problem name=\"desia\" state=\"3\">\n   <shapes>\n";
+  // The counts say one assembly and one solution are saved: without them BurrTools lists none.
+  xml += " </shapes>\n <problems>\n  <problem name=\"desia\" state=\"3\" assemblies=\"1\" solutions=\"1\" time=\"0\">\n   <shapes>\n";
   for (int part = 1; part <= parts; ++part) xml += "    <shape id=\"" + std::to_string(part) + "\" count=\"1\"/>\n";
   xml += "   </shapes>\n   <result id=\"0\"/>\n   <bitmap/>\n" + solutionElement(document, boxes, parts) +
          "  </problem>\n </problems>\n";

@@ -499,7 +499,7 @@ TEST(ExportXmPuzzle, PiecesReproduceTheLabelsOfEveryReferencePuzzle) {
     // one saved solution (ExportXmPuzzle.SavedSolution... checks its content).
     std::string problemShapes;
     for (int id = 1; id <= parts; ++id) problemShapes += "    <shape id=\"" + std::to_string(id) + "\" count=\"1\"/>\n";
-    EXPECT_NE(xml.find("<problem name=\"desia\" state=\"3\">\n   <shapes>\n" + problemShapes +
+    EXPECT_NE(xml.find("<problem name=\"desia\" state=\"3\" assemblies=\"1\" solutions=\"1\" time=\"0\">\n   <shapes>\n" + problemShapes +
                        "   </shapes>\n   <result id=\"0\"/>\n   <bitmap/>\n   <solutions>\n    <solution>\n     <assembly>"),
               std::string::npos)
         << file;
