@@ -163,6 +163,11 @@ function buildCases() {
   cases.push(
     plateCase('chair_cut_point', 'cut', 1, { variant: 'repair', repair: true }),
     plateCase('chair_cut_point', 'milled', 1),
+    // The default, auto (issue 26): cut where a plan exists, else milled, else planned.
+    plateCase('table', 'auto', 1),
+    plateCase('cabinet', 'auto', 1),
+    plateCase('icosahedron', 'auto', 1),
+    plateCase('chair_cut_point', 'auto', 1),
     plateCase('table', 'cut', 1, { variant: 'clearance', clearance: 0.2 }),
     plateCase('table', 'cut', 1, { variant: 'tenons', tenonCount: 2, tenonWidth: 20 }),
     plateCase('table_divider', 'cut', 1, { variant: 'm5', candidates: 5 }),

@@ -61,6 +61,81 @@ export interface Move {
   steps: number;
 }
 
+/**
+ * One move of a voxel disassembly plan: the listed parts move together by whole voxels along one
+ * axis, e.g. `{ parts: [2, 4], move: [1, 0, 0], out: false }` ("move 3: parts 2, 4  +x 1"). With
+ * `out: true`, `move` is a unit axis and the parts leave to infinity along it ("+z out"): they
+ * form a sub-assembly of their own, and later steps move parts within one sub-assembly, checked
+ * against the other parts of that same sub-assembly only.
+ */
+export interface DisassemblyStep {
+  /** Part ids moved together, ascending. */
+  parts: number[];
+  /** Direction times voxels ([0, 0, -2]: two voxels along -z); a unit axis when `out`. */
+  move: [number, number, number];
+  /** A separation: the parts go out to infinity along `move`. */
+  out: boolean;
+}
+
+/**
+ * A disassembly that takes every part apart. Plans from contacts alone (contact documents, plate
+ * and frame plans) have only `order` and `paths`; voxel plans add their moves and level.
+ */
+export interface Disassembly {
+  /**
+   * The parts in the order they come free (the last one stays). With `paths` null this is only
+   * an order: `steps` is the plan.
+   */
+  order: number[];
+  /**
+   * One path per part of `order` (the last one empty): each part taken out alone, the others
+   * standing still. null when the plan needs parts moved together.
+   */
+  paths: Move[][] | null;
+  /**
+   * Voxel plans: the disassembly level in BurrTools' notation, [98, 2, 5] written "98.2.5": the
+   * moves up to and including the first separation, then those of the separations below it (in
+   * pre-order) where a sub-assembly needs more than one move to come apart.
+   */
+  level?: number[];
+  /**
+   * True when the plan was found breadth-first, so that no plan needs fewer moves before each
+   * separation; false when it was found otherwise (`limit` then says which search limit stopped
+   * the breadth-first search).
+   */
+  levelMinimal?: boolean;
+  /** The number of moves of `steps` (separations included). */
+  moves?: number;
+  /**
+   * Voxel plans: the whole plan, move by move. When `paths` is not null both plans are valid;
+   * `steps` may then be a different plan with fewer moves, or the same one, move by move.
+   */
+  steps?: DisassemblyStep[];
+  /** Which search limit was reached, in words (absent when none was). */
+  limit?: string;
+}
+
+/** Why no disassembly was found (CheckReport.disassemblyFailure). */
+export interface DisassemblyFailure {
+  /** Parts removed (come free) before the plan stopped, in order. */
+  removed: number[];
+  /** Every part not removed. */
+  stuck: number[];
+  /** A search stopped at its work limit: `stuck` is not proven (see `limit`). */
+  searchLimitReached: boolean;
+  /**
+   * Voxel plans that moved parts together: the parts still together when the plan stopped, one
+   * list per sub-assembly (e.g. [[1, 2, 3]]: parts 1, 2 and 3 are stuck together).
+   */
+  unseparated?: number[][];
+  /** With `unseparated`: the level of the moves made, as in {@link Disassembly.level}. */
+  level?: number[];
+  /** With `unseparated`: the moves made before the plan stopped (a partial plan to replay). */
+  steps?: DisassemblyStep[];
+  /** Which search limit was reached, in words. */
+  limit?: string;
+}
+
 export interface BlockingGraph {
   direction: string;
   vector: [number, number, number];
@@ -86,13 +161,17 @@ export interface CheckReport extends Verdict {
   graphsOmitted: boolean;
   /** Per-method verdicts when method is 'both'. */
   methods?: { dbg: Verdict; lp: Verdict };
-  /** Removal order (part ids) and one path per removed part; null when no disassembly exists. */
-  disassembly: { order: number[]; paths: Move[][] } | null;
+  /**
+   * How every part comes free; null when no disassembly was found (then see disassemblyFailure).
+   * Voxel assemblies add the moves of the plan (`level`, `levelMinimal`, `moves`, `steps`).
+   */
+  disassembly: Disassembly | null;
   /**
    * When no disassembly was found: the parts removed before getting stuck, the stuck ones, and
-   * whether a path search stopped at its work limit (then "stuck" is not proven).
+   * whether a search stopped at its work limit (then "stuck" is not proven). A voxel plan that
+   * needed parts moved together adds the moves made before it stopped.
    */
-  disassemblyFailure?: { removed: number[]; stuck: number[]; searchLimitReached: boolean };
+  disassemblyFailure?: DisassemblyFailure;
   /**
    * Plate results with cut or milled joints and frame results: their removal plan replayed on the
    * real shapes (plates: contacts recomputed from the jointed plates and each plate swept; frames:
@@ -456,7 +535,10 @@ export interface PlateDesignOptions {
   /** Seconds, default 60. */
   timeLimit?: number;
   /**
-   * 'cut' (default): joints cut into the plates (through and open mortise-and-tenon joints where a
+   * 'auto' (default): 'cut' if a plan with cut joints exists, else 'milled', else 'planned', within
+   * one time limit; the result's `jointGeometry` is the one used and its message says why (first
+   * line `joints: milled (no laser-cut plan: …)`). Step by step, 'auto' steps with milled joints.
+   * 'cut': joints cut into the plates (through and open mortise-and-tenon joints where a
    * square edge stands on a face at a right angle), verified on the jointed plates. 'planned': the
    * paper's graph design alone (halved, mortise-and-tenon or empty joints by angle), verified on
    * the joints' model contacts; nothing to cut. 'milled': as 'cut', and where no mortise-and-tenon
@@ -466,7 +548,7 @@ export interface PlateDesignOptions {
    * (`jointGeometry: 'milled'`). Cut sheets (SVG, DXF) cannot hold a dovetail and refuse such a
    * result.
    */
-  joints?: 'cut' | 'milled' | 'planned';
+  joints?: 'auto' | 'cut' | 'milled' | 'planned';
   /** mm of play between a tenon and its mortise, cut into `fabricationPlates` (0 to 10, default 0). */
   clearance?: number;
   /** mm along the edge (default: from the edge's length). */

@@ -787,7 +787,7 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy, showL
     /**
      * An example that needs its own joints ('milled': the Bookshelf's dovetails; 'planned': the
      * mitred and flush designs) was loaded: Joints is set to them. null (an example without, or
-     * the user's own file): Joints goes back to 'cut' if an example had set it; the user's own
+     * the user's own file): Joints goes back to 'auto' if an example had set it; the user's own
      * choice stays. `timeLimit` (seconds): the least time limit the example needs.
      */
     setExampleJoints(joints, timeLimit = null) {
@@ -801,7 +801,7 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy, showL
         FIELDS.joints.value = joints;
         jointsFromExample = true;
       } else if (jointsFromExample) {
-        FIELDS.joints.value = 'cut';
+        FIELDS.joints.value = 'auto';
         jointsFromExample = false;
       } else {
         return;

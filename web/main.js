@@ -16,7 +16,7 @@
 
 import { byId, element, fitSelectToValue } from './dom.js';
 import { AssemblyView, createPlaybackControls } from './view.js';
-import { highlightRemovalStep, renderPlan, renderReport, resetReport, withPlannedRemoval } from './report.js';
+import { highlightMove, highlightRemovalStep, renderPlan, renderReport, resetReport, withPlannedRemoval } from './report.js';
 import { CoreWorker, MAX_FAILED_STARTS } from './worker-client.js';
 import { createDesignPanel } from './design-panel.js';
 import { readUrlState, writeUrlState } from './url-state.js';
@@ -32,7 +32,7 @@ import { createPartsPanel } from './parts-panel.js';
  * Bundled voxel files (copies of the original authors' results and input shapes) and plate
  * designs (examples/plate/, in mm), served from this origin. Shapes are one-part assemblies to
  * design from; plate designs have no joints yet (Design plans them). `joints`: the Joints choice
- * a plate design needs ('milled', 'planned'; else the default 'cut'), set when it is loaded.
+ * a plate design needs ('milled', 'planned'; else the default 'auto'), set when it is loaded.
  */
 const EXAMPLES = [
   { file: 'Cube_4x4x4_K9.puz', label: 'Cube 4×4×4, 9 parts' },
@@ -171,7 +171,13 @@ const playback = createPlaybackControls(view, {
   loopCheckbox: ui.disassemblyLoop,
   explodedRange: ui.explodedRange,
   root: ui.viewerControls,
-}, { onStep: ({ index }) => highlightRemovalStep(index) });
+}, {
+  // A plan of moves marks its move in the list of moves; a part-by-part plan its removal.
+  onStep: ({ index, moves }) => {
+    highlightMove(moves ? index : -1);
+    highlightRemovalStep(moves ? -1 : index);
+  },
+});
 // A small read-only handle for tests and debugging in the console.
 window.__desiaView = {
   partPositions: () => view.partPositions(),
@@ -185,6 +191,8 @@ window.__desiaView = {
   framing: () => view.framing(),
   get step() { return view.disassemblyStep; },
   get steps() { return playback.player.length; },
+  /** Playing a plan of moves: the parts of the move shown (they glow). */
+  get movingParts() { return view.movingParts; },
   get playing() { return playback.player.playing; },
   get exploded() { return view.exploded; },
 };
@@ -282,7 +290,8 @@ function present(assembly) {
   view.applyReport(played, { keepCamera });
   if (emphasis) view.setEmphasis(emphasis);
   partsPanel.setAssembly(name, document_, played);
-  setUpDisassemblySlider(view.available ? played.disassembly : null);
+  // A partial plan of moves (a disassemblyFailure with steps) plays up to where it stops.
+  setUpDisassemblySlider(view.available ? (played.disassembly ?? played.disassemblyFailure ?? null) : null);
 }
 
 /**
@@ -380,7 +389,7 @@ function loadExample(file, { keepJoints = false, first = false } = {}) {
 
 function loadUserFile(file) {
   lastUserFile = file;
-  designPanel.setExampleJoints(null); // the user's own design: 'cut' unless the user chose otherwise
+  designPanel.setExampleJoints(null); // the user's own design: 'auto' unless the user chose otherwise
   designPanel.inputChanged();
   selectMenuEntry(USER_FILE_OPTION, `Your file: ${file.name}`);
   if (isMeshName(file.name)) return openMeshOrFrame(file);
@@ -424,7 +433,8 @@ function decodeText(name, buffer) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// The disassembly slider: 0 = assembled, i..i+1 = the (i+1)-th part of the order moving out.
+// The disassembly slider: 0 = assembled, i..i+1 = the (i+1)-th part of the order moving out, or,
+// for a plan of moves (the report's steps), the (i+1)-th move under way.
 
 function setUpDisassemblySlider(disassembly) {
   playback.setDisassembly(disassembly);

@@ -44,6 +44,7 @@ int reportCutPoint(const desia::AssemblyDocument& document, const std::string& i
 int runPlateDesignCommand(const std::vector<std::string>& args) {
   std::string input, output, repairOutput;
   desia::PlateDesignOptions options;
+  options.realization = desia::JointRealization::Auto;  // cut if possible, else milled, else planned
   bool quiet = false;
   for (size_t i = 1; i < args.size(); ++i) {
     const std::string& flag = args[i];

@@ -41,6 +41,7 @@ PlateDesignOptions parsePlateDesignOptionsJson(const std::string& text) {
   const json root = parseJsonText(text, "design options");
   if (!root.is_object()) throwBadInput("", "design options must be an object");
   PlateDesignOptions options;
+  options.realization = JointRealization::Auto;  // the package's default, as the CLI's
   for (const auto& [name, value] : root.items()) {
     if (name == "seed")
       options.seed = static_cast<uint64_t>(integerOption(value, name, 0, int64_t(1) << 62));

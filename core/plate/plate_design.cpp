@@ -3,6 +3,8 @@
 // step-by-step session, both driving the joint planner (plate_planner.h).
 #include "desia/plate_design.h"
 
+#include <algorithm>
+#include <chrono>
 #include <memory>
 #include <optional>
 #include <string>
@@ -60,10 +62,17 @@ PlateDesignStep publicStep(const PlanStep& step) { return {step.plate, step.dire
 
 }  // namespace
 
+// Step by step there is no whole design to choose among: 'auto' steps with milled joints, which
+// are cut joints wherever those fit.
+PlateDesignOptions steppingOptions(PlateDesignOptions options) {
+  if (options.realization == JointRealization::Auto) options.realization = JointRealization::Milled;
+  return options;
+}
+
 PlateDesignSession::PlateDesignSession(std::vector<Plate> plates, std::vector<PlateContact> contacts,
                                        const PlateDesignOptions& options) {
   if (options.candidates < 1) throwBadInput("", "candidates must be at least 1");
-  state_ = std::make_unique<State>(std::move(plates), std::move(contacts), options);
+  state_ = std::make_unique<State>(std::move(plates), std::move(contacts), steppingOptions(options));
   if (std::optional<PlateDesignResult> refused = state_->planner.refusal()) throwBadInput("", refused->message);
   state_->showProgress();
 }
@@ -149,9 +158,11 @@ JointRealization parseJointRealization(const std::string& name) {
   if (name == "cut") return JointRealization::Cut;
   if (name == "milled") return JointRealization::Milled;
   if (name == "planned") return JointRealization::Planned;
+  if (name == "auto") return JointRealization::Auto;
   throwBadInput("",
-                "joints must be 'cut' (laser or router cuts through the plates, verified there), 'milled' (also "
-                "sliding dovetails) or 'planned' (the paper's graph design alone), got '" +
+                "joints must be 'auto' (cut if possible, else milled, else planned), 'cut' (laser or router cuts "
+                "through the plates, verified there), 'milled' (also sliding dovetails) or 'planned' (the "
+                "paper's graph design alone), got '" +
                     name + "'");
 }
 
@@ -160,13 +171,65 @@ const char* jointRealizationName(JointRealization realization) {
     case JointRealization::Cut: return "cut";
     case JointRealization::Milled: return "milled";
     case JointRealization::Planned: return "planned";
+    case JointRealization::Auto: return "auto";
   }
   return "cut";
 }
 
+namespace {
+
+// Why an attempt found no plan, without the advice to try other joints (auto tries them).
+std::string reasonOf(const PlateDesignResult& result) {
+  const std::string& message = result.message;
+  const size_t advice = message.find("; joints '");
+  return advice == std::string::npos ? message : message.substr(0, advice);
+}
+
+// 'auto': what a laser can cut, else what a router can mill, else the paper's plan, within one
+// time budget (each attempt gets what the ones before left; node limits apply per attempt).
+PlateDesignResult designWithChosenJoints(const std::vector<Plate>& plates, const std::vector<PlateContact>& contacts,
+                                         const PlateDesignOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  std::string why;
+  PlateDesignResult result;
+  for (JointRealization realization : {JointRealization::Cut, JointRealization::Milled, JointRealization::Planned}) {
+    PlateDesignOptions attempt = options;
+    attempt.realization = realization;
+    if (options.limits.timeLimitSeconds > 0) {
+      const double spent = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      attempt.limits.timeLimitSeconds = std::max(0.001, options.limits.timeLimitSeconds - spent);
+    }
+    result = designPlateJoints(plates, contacts, attempt);
+    if (result.status == DesignStatus::Success) {
+      std::string said = std::string("joints: ") + jointRealizationName(realization);
+      if (realization == JointRealization::Planned) {
+        said += ", nothing is cut: the paper's plan of which joint each pair needs (" + why + ")";
+      } else if (!why.empty()) {
+        said += " (" + why + ")";
+      }
+      result.message = said + "\n" + result.message;
+      return result;
+    }
+    // A cut point, a cancelled search or a spent time budget ends the choice there.
+    if (result.status == DesignStatus::CutPoint || result.status == DesignStatus::Cancelled) return result;
+    why += std::string(why.empty() ? "" : "; ") + "no " +
+           (realization == JointRealization::Cut ? "laser-cut" : realization == JointRealization::Milled ? "milled" : "planned") +
+           " plan: " + reasonOf(result);
+    if (options.limits.timeLimitSeconds > 0 &&
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() >= options.limits.timeLimitSeconds) {
+      break;
+    }
+  }
+  result.message = "no joints found (" + why + ")";
+  return result;
+}
+
+}  // namespace
+
 PlateDesignResult designPlateJoints(const std::vector<Plate>& plates, const std::vector<PlateContact>& contacts,
                                     const PlateDesignOptions& options) {
   if (options.candidates < 1) throwBadInput("", "candidates must be at least 1");
+  if (options.realization == JointRealization::Auto) return designWithChosenJoints(plates, contacts, options);
   PlateJointPlanner planner(plates, contacts, options);
   PlateDesignResult result = planner.run();
   // The search accepts only what passes; checking again guards the result, never a guess.

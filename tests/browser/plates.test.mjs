@@ -162,8 +162,8 @@ describe('plate structures in the playground (headless Chromium)', { timeout: 12
     assert.equal(await page.locator('#export-format option[value="stl"]').isDisabled(), false);
     assert.equal(await page.isVisible('#export-sheet'), true);
     assert.equal(await page.isVisible('#export-kerf'), true);
-    // The joints are cut by default, with no clearance.
-    assert.equal(await page.inputValue('#design-joints'), 'cut');
+    // The joints are chosen for the user by default (cut, else milled, else planned), with no clearance.
+    assert.equal(await page.inputValue('#design-joints'), 'auto');
     assert.equal(await page.isVisible('#design-clearance'), true);
     await screenshot(page, 'plates-table-1400');
   });
@@ -427,10 +427,10 @@ describe('plate structures in the playground (headless Chromium)', { timeout: 12
     await screenshot(page, 'plates-bookshelf-milled-390');
     await page.setViewportSize({ width: 1400, height: 900 });
 
-    // The TABLE needs no dovetails: loading it puts Joints back to 'cut', and its sheets are offered again.
+    // The TABLE needs no dovetails: loading it puts Joints back to 'auto', and its sheets are offered again.
     await page.selectOption('#example-select', TABLE);
     await waitForReady(page, TABLE);
-    assert.equal(await page.inputValue('#design-joints'), 'cut');
+    assert.equal(await page.inputValue('#design-joints'), 'auto');
     assert.equal(await page.locator('#export-format option[value="svg"]').isDisabled(), false);
   });
 

@@ -1396,3 +1396,56 @@ TEST(PlateJointSizes, TheMitreTenonsWidthAndHeightAreSharesOfTheMitre) {
 
 }  // namespace
 }  // namespace desia
+
+namespace desia {
+namespace {
+
+PlateDesignResult designAuto(const std::string& example) {
+  const AssemblyDocument document = loadPlateExample(example);
+  PlateDesignOptions options;
+  options.realization = JointRealization::Auto;
+  options.limits.timeLimitSeconds = 0;  // bounded by nodes: the same answer on a loaded machine
+  options.limits.nodeLimit = 20000;
+  return designPlateJoints(document.plates, document.plateContacts, options);
+}
+
+// Issue 26: joints chosen for the user. The TABLE is cut, the CABINET's mitred ridge needs a
+// router, the ICOSAHEDRON gets the paper's plan only; each result says which and why.
+TEST(AutoJoints, CutIfPossibleThenMilledThenPlannedAndSaysWhich) {
+  const PlateDesignResult table = designAuto("table.json");
+  ASSERT_EQ(table.status, DesignStatus::Success) << table.message;
+  EXPECT_EQ(table.realization, JointRealization::Cut);
+  EXPECT_EQ(table.message.rfind("joints: cut\n", 0), 0u) << table.message;
+
+  const PlateDesignResult cabinet = designAuto("cabinet.json");
+  ASSERT_EQ(cabinet.status, DesignStatus::Success) << cabinet.message;
+  EXPECT_EQ(cabinet.realization, JointRealization::Milled);
+  EXPECT_EQ(cabinet.message.rfind("joints: milled (no laser-cut plan: no interlocking joint plan exists", 0), 0u)
+      << cabinet.message;
+  EXPECT_EQ(cabinet.message.find("joints 'milled' adds"), std::string::npos) << "no advice to try what auto tried";
+  EXPECT_FALSE(cabinet.jointedPlates.empty());
+
+  const PlateDesignResult icosahedron = designAuto("icosahedron.json");
+  ASSERT_EQ(icosahedron.status, DesignStatus::Success) << icosahedron.message;
+  EXPECT_EQ(icosahedron.realization, JointRealization::Planned);
+  EXPECT_EQ(icosahedron.message.rfind("joints: planned, nothing is cut", 0), 0u) << icosahedron.message;
+  EXPECT_NE(icosahedron.message.find("no milled plan"), std::string::npos) << icosahedron.message;
+}
+
+TEST(AutoJoints, IsTheDefaultOfThePackageAndStepsWithMilledJoints) {
+  EXPECT_EQ(parsePlateDesignOptionsJson("{}").realization, JointRealization::Auto);
+  EXPECT_EQ(parseJointRealization("auto"), JointRealization::Auto);
+  const AssemblyDocument cabinet = loadPlateExample("cabinet.json");
+  PlateDesignOptions automatic, milled;
+  automatic.realization = JointRealization::Auto;
+  milled.realization = JointRealization::Milled;
+  PlateDesignSession a(cabinet.plates, cabinet.plateContacts, automatic);
+  PlateDesignSession m(cabinet.plates, cabinet.plateContacts, milled);
+  ASSERT_EQ(a.childCount(), m.childCount());
+  ASSERT_GT(a.childCount(), 0);
+  EXPECT_EQ(a.childPreview(0).plate, m.childPreview(0).plate);
+  EXPECT_EQ(a.childPreview(0).joints.size(), m.childPreview(0).joints.size());
+}
+
+}  // namespace
+}  // namespace desia

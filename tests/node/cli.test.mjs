@@ -174,9 +174,14 @@ test('design plate: a verified joint plan (exit 0) that check re-verifies; a cut
   assert.match(bad.stderr, /flat\.json: plates\[0\] \(plate 1\)\.thickness: must be positive, found 0/);
   assert.equal(document.jointGeometry, 'cut', 'the joints are cut into the plates by default');
   assert.equal(runCli(['design', 'plate', '--input', path.join(examples, 'table.json'), '--output', path.join(tmp, 'x.json'), '--clearance', 'wide']).status, 2);
+  const cutOnly = runCli(['design', 'plate', '--input', path.join(examples, 'mitred_box.json'), '--output', path.join(tmp, 'box.json'), '--joints', 'cut']);
+  assert.equal(cutOnly.status, 1, 'mitred edges get no cut joints yet');
+  assert.match(cutOnly.stderr, /joints 'planned' gives the paper's graph design alone/);
+  // The default, auto: no laser-cut plan, so milled joints, and the output says which and why.
   const box = runCli(['design', 'plate', '--input', path.join(examples, 'mitred_box.json'), '--output', path.join(tmp, 'box.json')]);
-  assert.equal(box.status, 1, 'mitred edges get no cut joints yet');
-  assert.match(box.stderr, /joints 'planned' gives the paper's graph design alone/);
+  assert.equal(box.status, 0, box.stderr);
+  assert.match(box.stdout, /^joints: milled \(no laser-cut plan: no interlocking joint plan exists/m);
+  assert.equal(JSON.parse(fs.readFileSync(path.join(tmp, 'box.json'), 'utf8')).jointGeometry, 'milled');
   const planned = runCli(['design', 'plate', '--input', path.join(examples, 'mitred_box.json'), '--output', path.join(tmp, 'box.json'), '--joints', 'planned']);
   assert.equal(planned.status, 0, planned.stderr);
   assert.equal(JSON.parse(fs.readFileSync(path.join(tmp, 'box.json'), 'utf8')).jointGeometry, 'planned');

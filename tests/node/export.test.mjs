@@ -148,7 +148,7 @@ for (const file of puzzles) {
     }
     assert.deepEqual(rebuilt, labels);
     const problemShapes = Array.from({ length: parts }, (_, k) => `    <shape id="${k + 1}" count="1"/>\n`).join('');
-    assert.ok(xml.includes(`<problem name="desia" state="3">\n   <shapes>\n${problemShapes}   </shapes>\n   <result id="0"/>`));
+    assert.ok(xml.includes(`<problem name="desia" state="3" assemblies="1" solutions="1" time="0">\n   <shapes>\n${problemShapes}   </shapes>\n   <result id="0"/>`));
     // desia's assembly as BurrTools' saved solution: the pieces at their crop offsets, and one
     // separation per removal (the last two pieces come apart in the last one).
     const placements = /<assembly>([^<]*)<\/assembly>/.exec(xml)[1].split(' ').map(Number);

@@ -116,6 +116,10 @@ enum class JointRealization {
   // joint has; verified on that model. Nothing to cut yet: halved joints need plates that cross,
   // and the non-orthogonal variants (Fig. 16) and dovetails are not made.
   Planned,
+  // Chosen for the user (the CLI's and the package's default): Cut if a plan exists, else Milled,
+  // else Planned; the result says which and why (PlateDesignResult::realization and message).
+  // Step by step, Auto steps with Milled joints (cut joints where they fit, milled where not).
+  Auto,
 };
 
 // A joint between two touching plates (internal indices): it lets `mover` leave `other` along
@@ -199,7 +203,7 @@ class PlateDesignSession {
   std::unique_ptr<State> state_;
 };
 
-// "cut", "milled" or "planned"; BadInput naming the value else.
+// "cut", "milled", "planned" or "auto"; BadInput naming the value else.
 JointRealization parseJointRealization(const std::string& name);
 const char* jointRealizationName(JointRealization realization);
 
