@@ -84,14 +84,7 @@ VoxelGrid quarterTurned(const VoxelGrid& grid, int axis, int turns) {
 // for small puzzles only. Returns 0 when no separation exists within `maxDepth` moves.
 int bruteForceFirstSeparation(const VoxelGrid& grid, int maxDepth) {
   const int parts = grid.maxLabel();
-  std::vector<std::vector<Cell>> cells(static_cast<size_t>(parts));
-  for (int z = 0; z < grid.nz(); ++z) {
-    for (int y = 0; y < grid.ny(); ++y) {
-      for (int x = 0; x < grid.nx(); ++x) {
-        if (grid.label(x, y, z) > 0) cells[static_cast<size_t>(grid.label(x, y, z) - 1)].push_back({x, y, z});
-      }
-    }
-  }
+  const std::vector<std::vector<Cell>> cells = testing::partCells(grid);
   using Position = std::vector<Cell>;  // offset of each part; part 1 stays at the origin
   std::map<Position, int> depth;
   std::vector<Position> frontier{Position(static_cast<size_t>(parts), Cell{0, 0, 0})};

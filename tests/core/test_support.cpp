@@ -143,10 +143,8 @@ std::string verifyRemoval(const VoxelGrid& grid, const std::vector<bool>& presen
   return "";
 }
 
-std::string replayVoxelMoves(const VoxelGrid& grid, const std::vector<GroupMove>& moves, bool complete) {
-  using Cell = std::array<int, 3>;
-  const int parts = grid.maxLabel();
-  std::vector<std::vector<Cell>> cells(static_cast<size_t>(parts));
+std::vector<std::vector<std::array<int, 3>>> partCells(const VoxelGrid& grid) {
+  std::vector<std::vector<std::array<int, 3>>> cells(static_cast<size_t>(grid.maxLabel()));
   for (int z = 0; z < grid.nz(); ++z) {
     for (int y = 0; y < grid.ny(); ++y) {
       for (int x = 0; x < grid.nx(); ++x) {
@@ -154,6 +152,13 @@ std::string replayVoxelMoves(const VoxelGrid& grid, const std::vector<GroupMove>
       }
     }
   }
+  return cells;
+}
+
+std::string replayVoxelMoves(const VoxelGrid& grid, const std::vector<GroupMove>& moves, bool complete) {
+  using Cell = std::array<int, 3>;
+  const int parts = grid.maxLabel();
+  std::vector<std::vector<Cell>> cells = partCells(grid);
   std::vector<int> group(static_cast<size_t>(parts), 0);
   int groups = 1;
   for (size_t m = 0; m < moves.size(); ++m) {

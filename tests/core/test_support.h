@@ -65,6 +65,9 @@ std::string verifyRemoval(const VoxelGrid& grid, const std::vector<bool>& presen
 // move with replayVoxelMoves); returns an empty string when valid.
 std::string verifyPlan(const VoxelGrid& grid, const Assembly& assembly, const DisassemblyPlan& plan);
 
+// The voxels of each part (label k at index k - 1), as (x, y, z).
+std::vector<std::vector<std::array<int, 3>>> partCells(const VoxelGrid& grid);
+
 // Re-plays moves of sets of parts (parts are grid labels - 1) one unit step at a time, each part
 // kept as a set of voxel coordinates, independently of the planner: every moved set must lie in
 // one sub-assembly and not be all of it, must not meet a part of its sub-assembly on the way, and
