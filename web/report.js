@@ -13,12 +13,19 @@
 // "interlocking" or "deadlocked" is not exact (paper Section 3.2): #method-note says so and offers
 // the LP test.
 //
+// A voxel plan's moves (issue 27): #disassembly-level says the level in BurrTools' notation and
+// the number of moves ("level 98.2.5, 108 moves"; a partial plan: where it stopped), and #moves
+// lists them ("move 3: parts 2, 4  +x 1", "move 5: part 3  +z out"), a long list shortened to its
+// first and last moves (and the one played) until "show all".
+//
 // For tests: #verdict[data-verdict, data-key], #method-note[hidden, data-directions], #paths
-// li[aria-current] (the removal shown by the disassembly animation), #dbg-panel (see dbg-panel.js).
+// li[aria-current] (the removal shown by the disassembly animation), #disassembly-level[data-level,
+// data-moves, data-partial], #moves li[data-parts, aria-current] (the move shown), #dbg-panel
+// (see dbg-panel.js).
 
 import { byId, element } from './dom.js';
 import { clearBlockingGraphs, renderBlockingGraphs } from './dbg-panel.js';
-import { formatDirection } from './view.js';
+import { formatDirection, formatLevel, formatStep, formatStuck, stepsToPlay } from './view.js';
 
 // A plate plan's removal as a disassembly (view.js, shared with the drop-in viewer).
 export { planDisassembly, withPlannedRemoval } from './view.js';
@@ -50,7 +57,16 @@ const ui = {
   joints: byId('joints'),
   methodNote: byId('method-note'),
   methodNoteText: byId('method-note-text'),
+  level: byId('disassembly-level'),
+  movesDetails: byId('moves-details'),
+  movesSummary: byId('moves-summary'),
+  moves: byId('moves'),
 };
+
+/** Lists of more moves than this show the first MOVES_HEAD and the last MOVES_TAIL until "show all". */
+const MOVES_SHORT_LIST = 12;
+const MOVES_HEAD = 8;
+const MOVES_TAIL = 2;
 
 /** The base directions the core gives when every contact normal is along an axis. */
 const AXIS_DIRECTIONS = new Set(['+x', '+y', '+z']);
@@ -70,6 +86,8 @@ function formatOrder(order) {
 function formatDisassemblyFailure(failure) {
   if (!failure) return 'none found';
   const removed = failure.removed?.length ? `after removing ${formatList(failure.removed)}, ` : '';
+  // A plan of moves names the parts left together, per sub-assembly.
+  if (Array.isArray(failure.unseparated) && failure.unseparated.length) return `none: ${removed}${formatStuck(failure)}`;
   return `none: ${removed}parts ${formatList(failure.stuck)} are stuck`;
 }
 
@@ -134,6 +152,7 @@ export function renderReport(report, elapsedMs, timingLabel = 'Check time', { vo
   ui.timingLabel.textContent = timingLabel;
   ui.timing.textContent = Number.isFinite(elapsedMs) ? formatDuration(elapsedMs) : '—';
   renderPaths(report.disassembly);
+  renderMoves(report.disassembly, report.disassemblyFailure);
   renderGraphs(report.graphs);
   renderBlockingGraphs(ui.dbgPanel, report);
   renderCutPoints(report.cutPoints);
@@ -226,12 +245,95 @@ export function highlightRemovalStep(index) {
   });
 }
 
+/**
+ * A voxel plan's level and moves: "level 98.2.5, 108 moves" (with "not proven the fewest" and the
+ * limit when the level was not found breadth-first) and the list of moves; for a partial plan
+ * (disassemblyFailure with steps) the moves made and where they stopped. Hidden for plans without
+ * moves (contacts, plates, frames).
+ */
+function renderMoves(disassembly, failure) {
+  const partial = !disassembly && Array.isArray(failure?.steps) ? failure : null;
+  const plan = disassembly ?? partial;
+  const steps = Array.isArray(plan?.steps) ? plan.steps : [];
+  const level = formatLevel(plan?.level);
+  const count = Number.isInteger(plan?.moves) ? plan.moves : steps.length;
+  const movesText = `${count} move${count === 1 ? '' : 's'}`;
+  let text = '';
+  if (partial) {
+    text = `Partial plan: ${level ? `level ${level}, ` : ''}${movesText}, then ${formatStuck(partial)}`;
+  } else if (level) {
+    text = `level ${level}, ${movesText}`;
+    if (plan.levelMinimal === false) text += ` (not proven the fewest${plan.limit ? `: ${plan.limit}` : ''})`;
+  }
+  ui.level.textContent = text;
+  ui.level.hidden = !text;
+  Object.assign(ui.level.dataset, { level, moves: text ? String(count) : '', partial: String(Boolean(partial)) });
+  const items = steps.map((step, index) => {
+    const item = element('li', `move ${index + 1}: ${formatStep(step)}`);
+    item.dataset.parts = (step.parts ?? []).join(' ');
+    if (step.out) item.dataset.out = 'true';
+    return item;
+  });
+  ui.movesDetails.hidden = items.length === 0;
+  // Whether the moves are what the view plays, or a plan beside the removal paths (as many moves).
+  const played = Boolean(stepsToPlay(plan));
+  ui.movesSummary.textContent = items.length === 0 ? 'Moves'
+    : `Moves (${items.length})${played ? '' : '; Play follows the removal paths'}`;
+  ui.moves.dataset.count = String(items.length);
+  ui.moves.dataset.expanded = String(items.length <= MOVES_SHORT_LIST);
+  if (items.length > MOVES_SHORT_LIST) {
+    const more = element('li');
+    more.className = 'moves-more';
+    const button = element('button', `… ${items.length - MOVES_HEAD - MOVES_TAIL} more moves: show all`);
+    button.type = 'button';
+    button.className = 'link-button';
+    button.addEventListener('click', () => {
+      ui.moves.dataset.expanded = 'true';
+      more.hidden = true;
+      for (const item of items) item.hidden = false;
+    });
+    more.append(button);
+    items.splice(MOVES_HEAD, 0, more);
+  }
+  ui.moves.replaceChildren(...items);
+  markedMove = -1;
+  shortenMoves();
+}
+
+/** A short list hides the middle moves, except the one played. */
+function shortenMoves() {
+  if (ui.moves.dataset.expanded === 'true') return;
+  const moves = [...ui.moves.querySelectorAll('li:not(.moves-more)')];
+  moves.forEach((item, index) => {
+    item.hidden = index >= MOVES_HEAD && index < moves.length - MOVES_TAIL && item.getAttribute('aria-current') !== 'step';
+  });
+}
+
+/** The move marked in the list (highlightMove is called on every animation frame). */
+let markedMove = -1;
+
+/** Marks the move the animation shows (`index` into the steps; -1 for none) in the list of moves. */
+export function highlightMove(index) {
+  if (index === markedMove) return;
+  markedMove = index;
+  [...ui.moves.querySelectorAll('li:not(.moves-more)')].forEach((item, position) => {
+    if (position === index) item.setAttribute('aria-current', 'step');
+    else item.removeAttribute('aria-current');
+  });
+  shortenMoves();
+}
+
 /** Milliseconds below ten seconds, seconds above: a design can take minutes. */
 export function formatDuration(ms) {
   return ms < 10_000 ? `${ms.toFixed(1)} ms` : `${(ms / 1000).toFixed(1)} s`;
 }
 
 function renderPaths(disassembly) {
+  // A plan that moves parts together has no single-part paths: its moves are listed instead.
+  if (disassembly && disassembly.paths === null) {
+    ui.paths.replaceChildren(element('li', `no single-part paths: parts come free in the order ${formatOrder(disassembly.order ?? [])} by moving together (see Moves)`));
+    return;
+  }
   const items = (disassembly?.order ?? []).map((partId, index) => element(
     'li',
     `part ${partId}: ${formatMoves(disassembly.paths?.[index])}`,
@@ -264,6 +366,7 @@ export function resetReport(message) {
     field.textContent = '—';
   }
   ui.paths.replaceChildren();
+  renderMoves(null, null);
   ui.graphs.replaceChildren();
   clearBlockingGraphs(ui.dbgPanel);
   renderCutPoints([]);

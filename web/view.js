@@ -11,8 +11,14 @@
 // speed select and an explode slider to a view), describeDisassemblyStep, partColorCss, and for
 // plate plans formatDirection, planDisassembly and withPlannedRemoval.
 //
-// For tests the container gets data-parts (meshes drawn), data-step (the disassembly step shown)
-// and data-exploded (the explode factor); AssemblyView.partPositions() reads the parts back.
+// Voxel plans that move several parts together (the report's `steps`, issue 27) play move by
+// move instead (stepsToPlay says which plan plays): the parts of a move slide together by its
+// offset and glow; a part going out alone leaves like a removed part, a group going out moves just
+// clear of the rest of its sub-assembly and stays there. Only the offsets are computed here.
+//
+// For tests the container gets data-parts (meshes drawn), data-step (the disassembly step shown),
+// data-move and data-moving (playing moves: the move shown, 1-based, and its parts) and
+// data-exploded (the explode factor); AssemblyView.partPositions() reads the parts back.
 // With the playground's playback aids (options `tray` and `arrows`): data-visible (meshes shown,
 // the tray included), data-tray (removed parts laid out in the tray), data-arrow (the part whose
 // way out is drawn), data-selected and data-hidden (the part list's selection and hidden parts).
@@ -223,6 +229,11 @@ export class AssemblyView {
   #traySlots = new Map();
   #trayBox = null;
   #removalOrder = [];
+  /**
+   * A plan of moves of several parts (the report's `steps`, see stepsToPlay), played instead of
+   * the removal paths: stepMotions' result, or null.
+   */
+  #stepPlay = null;
   #arrow = new THREE.Group();
   #arrowKey = '';
   /** What show() measured, to size the grid again once the tray is known. */
@@ -296,6 +307,21 @@ export class AssemblyView {
   /** The disassembly step shown (0 = assembled; see setDisassemblyStep). */
   get disassemblyStep() {
     return this.#step;
+  }
+
+  /**
+   * Playing a plan of moves (the report's `steps`): the parts of the move shown (moving now, or
+   * the move just made at a whole step), else an empty list.
+   */
+  get movingParts() {
+    const index = this.#currentMove();
+    return index >= 0 ? [...this.#stepPlay.moving[index]] : [];
+  }
+
+  /** The move shown when playing `steps`: the one under way, or just made at a whole step; -1 for none. */
+  #currentMove() {
+    if (!this.#stepPlay || this.#step <= 0) return -1;
+    return Math.min(Math.ceil(this.#step - 1e-9), this.#stepPlay.steps.length) - 1;
   }
 
   get exploded() {
@@ -536,12 +562,22 @@ export class AssemblyView {
       mesh.userData.baseOpacity = dimmed ? 0.18 : 1;
       material.needsUpdate = true;
     }
-    this.#motions = removalMotions(report ?? {}, this.#scale);
-    this.#removalOrder = [...(report?.disassembly?.order ?? [])];
+    // A plan that moves parts together plays its moves; any other its removal order and paths.
+    const steps = stepsToPlay(report?.disassembly) ?? stepsToPlay(report?.disassemblyFailure);
+    if (steps && this.#meshes.size > 0) {
+      const boxes = new Map([...this.#meshes].map(([partId, mesh]) => [partId, mesh.geometry.boundingBox]));
+      this.#stepPlay = stepMotions(steps, boxes, this.#scale);
+      this.#motions = new Map();
+      this.#removalOrder = [...this.#stepPlay.leaves.keys()];
+    } else {
+      this.#stepPlay = null;
+      this.#motions = removalMotions(report ?? {}, this.#scale);
+      this.#removalOrder = [...(report?.disassembly?.order ?? [])];
+    }
     this.#layOutTray();
     this.setDisassemblyStep(0);
     // Parts leaving along their paths should stay in the picture: frame their way out too.
-    if (!keepCamera && this.#motions.size > 0 && this.#meshes.size > 0) this.#fitCamera(this.#framingBox());
+    if (!keepCamera && (this.#motions.size > 0 || this.#stepPlay) && this.#meshes.size > 0) this.#fitCamera(this.#framingBox());
   }
 
   /**
@@ -587,16 +623,20 @@ export class AssemblyView {
       mesh.position.copy(placement.position);
       this.#setFade(mesh, placement.fade);
       const selected = partId === this.#selected;
-      mesh.material.emissive.copy(selected ? SELECTION_COLOR : (mesh.userData.emissive ?? NO_GLOW)).multiplyScalar(selected ? SELECTION_GLOW : 1);
+      const glow = placement.marked ? mesh.material.color.clone().multiplyScalar(HIGHLIGHT_GLOW) : (mesh.userData.emissive ?? NO_GLOW);
+      mesh.material.emissive.copy(selected ? SELECTION_COLOR : glow).multiplyScalar(selected ? SELECTION_GLOW : 1);
       const edges = mesh.children[0].material;
-      edges.color.set(selected ? SELECTION_COLOR : (placement.moving ? MOVING_EDGE_COLOR : mesh.userData.edgeColor));
-      if (selected) edges.opacity = 1;
+      edges.color.set(selected ? SELECTION_COLOR : (placement.moving || placement.marked ? MOVING_EDGE_COLOR : mesh.userData.edgeColor));
+      if (selected || placement.marked) edges.opacity = 1;
       if (mesh.visible) visible += 1;
       if (placement.inTray) inTray += 1;
     }
     this.#updateArrow();
+    const move = this.#currentMove();
     Object.assign(this.#container.dataset, {
       step: this.#step.toFixed(2),
+      move: move >= 0 ? String(move + 1) : '',
+      moving: this.movingParts.join(' '),
       exploded: this.#exploded.toFixed(2),
       visible: String(visible),
       tray: String(inTray),
@@ -613,6 +653,7 @@ export class AssemblyView {
    * content's frame) to its place in the tray, on the floor (`lift` taken back).
    */
   #placement(partId, mesh, lift, top) {
+    if (this.#stepPlay) return this.#stepPlacement(partId, mesh, lift, top);
     const exploded = this.#explodeOffsets.get(partId).clone().multiplyScalar(this.#exploded);
     const motion = this.#motions.get(partId);
     if (!motion) return { position: exploded, visible: true, fade: 1, moving: false, inTray: false };
@@ -643,6 +684,54 @@ export class AssemblyView {
   }
 
   /**
+   * #placement for a plan of moves: between whole steps i and i + 1 the parts of move i slide
+   * from where the moves before put them by the move's offset (stepMotions); the others stand
+   * still. A single part going out then flies to its place in the tray (without a tray it runs
+   * out and fades), as a removed part does; a group going out stays where it went. `marked`: the
+   * part belongs to the move shown (#currentMove), which glows.
+   */
+  #stepPlacement(partId, mesh, lift, top) {
+    const play = this.#stepPlay;
+    const exploded = this.#explodeOffsets.get(partId).clone().multiplyScalar(this.#exploded);
+    const count = play.steps.length;
+    const step = THREE.MathUtils.clamp(this.#step, 0, count);
+    const index = Math.min(Math.floor(step), count - 1);
+    const progress = step - index;
+    const current = this.#currentMove();
+    const marked = current >= 0 && play.moving[current].has(partId);
+    const left = play.leaves.get(partId);
+    const base = play.before[index].get(partId) ?? new THREE.Vector3();
+    const slot = this.#traySlots.get(partId);
+    if (left !== undefined && (left < index || (left === index && progress >= 1))) {
+      if (!slot) return { position: exploded.add(base), visible: false, fade: 0, moving: false, marked, inTray: false };
+      const resting = slot.clone().setY(slot.y - lift);
+      resting.x += this.#trayShift();
+      return { position: resting, visible: true, fade: 1, moving: false, marked, inTray: true };
+    }
+    const still = { position: exploded.clone().add(base), visible: true, fade: 1, moving: false, marked, inTray: false };
+    if (progress <= 0 || !play.moving[index].has(partId)) return still;
+    const delta = play.deltas[index];
+    if (left !== index) return { ...still, position: exploded.add(base).addScaledVector(delta, progress), moving: true };
+    if (!slot) {
+      // Out and on a little further, fading away over that last stretch.
+      const runOut = delta.clone().setLength(this.#scale.runOut);
+      const waypoints = [base.clone(), base.clone().add(delta), base.clone().add(delta).add(runOut)];
+      const fadeFrom = delta.length() / (delta.length() + runOut.length());
+      const fade = progress > fadeFrom ? 1 - (progress - fadeFrom) / (1 - fadeFrom) : 1;
+      return { ...still, position: exploded.add(pointAlong(waypoints, progress)), fade, moving: true };
+    }
+    const resting = slot.clone().setY(slot.y - lift);
+    resting.x += this.#trayShift();
+    if (progress <= TRAY_PATH_SHARE) {
+      return { ...still, position: exploded.add(base).addScaledVector(delta, progress / TRAY_PATH_SHARE), moving: true };
+    }
+    const from = exploded.add(base).add(delta);
+    const above = Math.max(from.y, resting.y, top - mesh.geometry.boundingBox.min.y + this.#scale.cell);
+    const flight = [from, new THREE.Vector3(from.x, above, from.z), new THREE.Vector3(resting.x, above, resting.z), resting];
+    return { ...still, position: pointAlong(flight, (progress - TRAY_PATH_SHARE) / (1 - TRAY_PATH_SHARE)), moving: true };
+  }
+
+  /**
    * The tray: every part that leaves gets a place on the floor beside the assembly, in removal
    * order, in rows (layOutTray). Only where it lands is computed here; the moves are the core's.
    */
@@ -651,7 +740,7 @@ export class AssemblyView {
     this.#trayBox = null;
     if (!this.#trayEnabled || !this.#bounds) return;
     const leaving = this.#removalOrder
-      .filter((partId) => this.#meshes.has(partId) && (this.#motions.get(partId)?.waypoints.length ?? 0) > 1)
+      .filter((partId) => this.#meshes.has(partId) && (this.#stepPlay?.leaves.has(partId) || (this.#motions.get(partId)?.waypoints.length ?? 0) > 1))
       .map((partId) => ({ partId, box: this.#meshes.get(partId).geometry.boundingBox }));
     if (leaving.length === 0) return;
     const { min, max, offset } = this.#bounds;
@@ -677,6 +766,10 @@ export class AssemblyView {
    * a head per move of its path from the core, the run-out included, from the part's centre.
    */
   #updateArrow() {
+    if (this.#stepPlay) {
+      this.#updateMoveArrow();
+      return;
+    }
     const index = Math.floor(this.#step);
     const partId = this.#arrowsEnabled && this.#step > 0 ? this.#removalOrder[index] : undefined;
     const motion = partId === undefined ? null : this.#motions.get(partId);
@@ -690,7 +783,37 @@ export class AssemblyView {
     if (!show) return;
     const start = mesh.geometry.boundingBox.getCenter(new THREE.Vector3())
       .add(this.#explodeOffsets.get(partId).clone().multiplyScalar(this.#exploded));
-    const points = motion.waypoints.map((point) => start.clone().add(point));
+    this.#drawArrow(motion.waypoints.map((point) => start.clone().add(point)));
+  }
+
+  /**
+   * #updateArrow for a plan of moves: one arrow for the move shown, from the centre of the parts
+   * moved together (where the moves before put them) along the move (data-arrow lists the parts).
+   */
+  #updateMoveArrow() {
+    const index = this.#currentMove();
+    const parts = this.#arrowsEnabled && index >= 0
+      ? [...this.#stepPlay.moving[index]].filter((partId) => this.#meshes.has(partId) && !this.#hiddenParts.has(partId)) : [];
+    const delta = index >= 0 ? this.#stepPlay.deltas[index] : null;
+    const show = parts.length > 0 && delta.lengthSq() > 0;
+    const key = show ? `move ${index}@${this.#exploded}` : '';
+    this.#container.dataset.arrow = show ? parts.join(' ') : '';
+    if (key === this.#arrowKey) return;
+    this.#arrowKey = key;
+    disposeChildren(this.#arrow);
+    if (!show) return;
+    const box = new THREE.Box3();
+    for (const partId of parts) {
+      box.union(this.#meshes.get(partId).geometry.boundingBox.clone()
+        .translate(this.#stepPlay.before[index].get(partId))
+        .translate(this.#explodeOffsets.get(partId).clone().multiplyScalar(this.#exploded)));
+    }
+    const start = box.getCenter(new THREE.Vector3());
+    this.#drawArrow([start, start.clone().add(delta)]);
+  }
+
+  /** Arrows (a shaft and a head per segment) along `points`, in the content's frame. */
+  #drawArrow(points) {
     const size = this.#scale.arrow ?? 1;
     const material = new THREE.MeshBasicMaterial({ color: ARROW_COLOR, depthTest: false, transparent: true, opacity: 0.9 });
     for (let i = 1; i < points.length; i += 1) {
@@ -739,6 +862,8 @@ export class AssemblyView {
         .translate(motion.pathEnd);
       box.union(partBox);
     }
+    // A plan of moves: wherever its parts go before they leave (groups that went out stay there).
+    if (this.#stepPlay) box.union(this.#stepPlay.framing.clone().translate(this.#content.position));
     box.translate(new THREE.Vector3(0, this.#lift.position.y, 0));
     // The tray lies on the floor: what is removed stays in the picture.
     if (this.#trayBox) box.union(this.#trayBox.clone().translate(this.#content.position).translate(new THREE.Vector3(this.#trayShift(), 0, 0)));
@@ -894,6 +1019,7 @@ export class AssemblyView {
     this.#traySlots = new Map();
     this.#trayBox = null;
     this.#removalOrder = [];
+    this.#stepPlay = null;
     disposeChildren(this.#arrow);
     this.#arrowKey = '';
     this.#bounds = null;
@@ -913,7 +1039,7 @@ export class AssemblyView {
     this.#container.dataset.parts = '0';
     this.#container.dataset.highlight = '';
     this.#container.dataset.ghost = '';
-    Object.assign(this.#container.dataset, { visible: '0', tray: '0', arrow: '', hover: '' });
+    Object.assign(this.#container.dataset, { visible: '0', tray: '0', arrow: '', hover: '', move: '', moving: '' });
     this.requestRender();
   }
 
@@ -1071,6 +1197,113 @@ function pointAlong(waypoints, fraction) {
     remaining -= length;
   }
   return waypoints[waypoints.length - 1].clone();
+}
+
+// ---------------------------------------------------------------------------------------------
+// Voxel plans of several parts moved together: the report's `steps` (issue 27).
+
+/**
+ * The moves to play for a disassembly (or a disassemblyFailure): its `steps` when the plan needs
+ * parts moved together (`paths` null, or no paths at all: a partial plan) or when the steps are
+ * fewer than the single-part paths' moves; otherwise null, and the order and paths are played.
+ */
+export function stepsToPlay(disassembly) {
+  const steps = disassembly?.steps;
+  if (!Array.isArray(steps) || steps.length === 0) return null;
+  if (Array.isArray(disassembly.paths)) {
+    const segments = disassembly.paths.reduce((sum, path) => sum + (Array.isArray(path) ? path.length : 0), 0);
+    if (steps.length >= segments) return null;
+  }
+  return steps;
+}
+
+/** A step's move as the CLI writes it: '+x 1', '-z 6', '+z out'. */
+export function formatStepMove(step) {
+  const move = Array.isArray(step?.move) ? step.move.map(Number) : [0, 0, 0];
+  const axis = move.findIndex((value) => value !== 0);
+  if (axis < 0) return 'no move';
+  return `${move[axis] > 0 ? '+' : '-'}${'xyz'[axis]} ${step.out ? 'out' : Math.abs(move[axis])}`;
+}
+
+/** 'parts 2, 4  +x 1', 'part 3  +z out'. */
+export function formatStep(step) {
+  const parts = Array.isArray(step?.parts) ? step.parts : [];
+  return `${parts.length === 1 ? 'part' : 'parts'} ${parts.join(', ')}  ${formatStepMove(step)}`;
+}
+
+/** BurrTools' notation: [98, 2, 5] -> '98.2.5'. */
+export function formatLevel(level) {
+  return Array.isArray(level) ? level.join('.') : '';
+}
+
+/**
+ * Where every part is before each step of `steps` (the report's moves, in voxels; `boxes`: each
+ * part's bounds as assembled, partId -> Box3). A move translates its parts by `move` times
+ * `scale.step`. An `out` step moves its parts along its axis just far enough that their bounds
+ * clear the rest of their sub-assembly, plus a cell; they then form a sub-assembly of their own.
+ * A single part that goes out has left (the tray, or it runs out and fades). Nothing here decides
+ * whether a move is possible: that is the core's plan. Returns { steps, before (N + 1 maps
+ * partId -> offset), deltas, moving (Set per step), leaves (partId -> the step it leaves in),
+ * framing (a Box3 around every position a visible part takes) }.
+ */
+function stepMotions(steps, boxes, scale) {
+  const ids = [...boxes.keys()];
+  let offsets = new Map(ids.map((id) => [id, new THREE.Vector3()]));
+  const subAssembly = new Map(ids.map((id) => [id, 0]));
+  let subAssemblies = 1;
+  const before = [];
+  const deltas = [];
+  const moving = [];
+  const leaves = new Map();
+  const framing = new THREE.Box3();
+  const include = (step) => {
+    for (const id of ids) {
+      const left = leaves.get(id);
+      if (left === undefined || left >= step) framing.union(boxes.get(id).clone().translate(offsets.get(id)));
+    }
+  };
+  include(0);
+  steps.forEach((step, index) => {
+    before.push(offsets);
+    const parts = (Array.isArray(step?.parts) ? step.parts : []).filter((id) => boxes.has(id));
+    const move = new THREE.Vector3(...(Array.isArray(step?.move) ? step.move : [0, 0, 0]).map((value) => Number(value) || 0));
+    let delta = move.clone().multiplyScalar(scale.step);
+    if (step?.out && parts.length > 0 && move.lengthSq() > 0) {
+      const unit = move.clone().normalize();
+      const group = new Set(parts);
+      const from = subAssembly.get(parts[0]);
+      const rest = ids.filter((id) => subAssembly.get(id) === from && !group.has(id) && !leaves.has(id));
+      delta = unit.clone().multiplyScalar(clearingDistance(parts, rest, unit, boxes, offsets) + scale.cell);
+      subAssemblies += 1;
+      for (const id of parts) subAssembly.set(id, subAssemblies);
+      if (parts.length === 1) leaves.set(parts[0], index);
+    }
+    deltas.push(delta);
+    moving.push(new Set(parts));
+    offsets = new Map(offsets);
+    for (const id of parts) offsets.set(id, offsets.get(id).clone().add(delta));
+    include(index);
+  });
+  before.push(offsets);
+  return { steps, before, deltas, moving, leaves, framing };
+}
+
+/**
+ * How far the parts `group` must move along `unit` (an axis) for their bounds to lie past the
+ * bounds of `rest` (their size along it when `rest` is empty).
+ */
+function clearingDistance(group, rest, unit, boxes, offsets) {
+  const span = (id) => {
+    const box = boxes.get(id).clone().translate(offsets.get(id));
+    const a = box.min.dot(unit);
+    const b = box.max.dot(unit);
+    return [Math.min(a, b), Math.max(a, b)];
+  };
+  const groupSpans = group.map(span);
+  const low = Math.min(...groupSpans.map(([min]) => min));
+  if (rest.length === 0) return Math.max(...groupSpans.map(([, max]) => max)) - low;
+  const high = Math.max(...rest.map((id) => span(id)[1]));
+  return Math.max(high - low, 0);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -1303,6 +1536,18 @@ export class DisassemblyPlayer {
   }
 }
 
+/**
+ * Where a partial plan (a disassemblyFailure with moves) stopped: 'parts 1, 2, 3 are stuck
+ * together', or 'parts 1, 2, 3 are not separated (search limit)' when a search gave up.
+ */
+export function formatStuck(failure) {
+  const groups = Array.isArray(failure?.unseparated) && failure.unseparated.length ? failure.unseparated : [failure?.stuck ?? []];
+  const named = groups.map((group) => `${group.length === 1 ? 'part' : 'parts'} ${group.join(', ')}`).join(' and ');
+  const plural = groups.length > 1 || groups[0]?.length > 1;
+  if (failure?.searchLimitReached) return `${named} ${plural ? 'are' : 'is'} not separated (search limit${failure.limit ? `: ${failure.limit}` : ''})`;
+  return `${named} ${plural ? 'are' : 'is'} stuck${groups.some((group) => group.length > 1) ? ' together' : ''}`;
+}
+
 /** '8 s', '1 min 20 s'. */
 function formatSeconds(seconds) {
   const whole = Math.round(seconds);
@@ -1319,8 +1564,21 @@ export function formatMoves(path) {
 /**
  * What the disassembly shows at `step`: `{ text, partId, index, moves }`, e.g. "removing part 3
  * (2 of 8)" with moves "+z×1, then -x×2"; "assembled" at 0 and "part 9 left" at the end.
+ * A plan of moves (stepsToPlay) says "move 5 of 27" with moves "parts 2, 4  +x 1" (the move
+ * under way, or just made at a whole step) and lists its `parts`; `index` is then the move's.
+ * At the end of a partial plan (a disassemblyFailure) the moves text names the stuck parts.
  */
 export function describeDisassemblyStep(disassembly, step) {
+  const steps = stepsToPlay(disassembly);
+  if (steps) {
+    if (step <= 0) return { text: 'assembled', partId: null, index: -1, moves: '', parts: [] };
+    const index = Math.min(Math.ceil(step - 1e-9), steps.length) - 1;
+    let moves = formatStep(steps[index]);
+    if (index === steps.length - 1 && step >= steps.length && Array.isArray(disassembly.unseparated)) {
+      moves += `; then ${formatStuck(disassembly)}`;
+    }
+    return { text: `move ${index + 1} of ${steps.length}`, partId: null, index, moves, parts: [...(steps[index].parts ?? [])] };
+  }
   const order = disassembly?.order ?? [];
   if (order.length < 2) return { text: '', partId: null, index: -1, moves: '' };
   if (step <= 0) return { text: 'assembled', partId: null, index: -1, moves: '' };
@@ -1341,9 +1599,11 @@ export function describeDisassemblyStep(disassembly, step) {
  * `label` (where describeDisassemblyStep's text goes), and optional `moves` (the moving part's
  * path), `playButton`, `speedSelect` (values are speed factors), `loopCheckbox`, `explodedRange`
  * (0..1), `previousButton` / `nextButton` (one removal back / on), `root` (gets data-playing).
- * `onStep({ step, index, partId })` is told about every
- * change (e.g. to highlight the current removal in a list). Returns { setDisassembly, play,
- * pause, seek, setExploded, player, dispose }.
+ * `onStep({ step, index, partId, parts, moves })` is told about every change (e.g. to highlight
+ * the current removal in a list; `moves` is true when a plan of moves is played, `index` then
+ * being the move's). Returns { setDisassembly, play, pause, seek, setExploded, player, dispose }.
+ * setDisassembly takes the report's disassembly, or a disassemblyFailure whose moves are played
+ * up to where they stop.
  */
 export function createPlaybackControls(view, elements, { onStep = () => {}, loop = false } = {}) {
   const { range, label, moves, playButton, speedSelect, loopCheckbox, explodedRange, previousButton, nextButton, root } = elements;
@@ -1363,7 +1623,7 @@ export function createPlaybackControls(view, elements, { onStep = () => {}, loop
       if (label) label.textContent = described.text;
       if (moves) moves.textContent = described.moves;
       updateStepButtons(step);
-      onStep({ step, index: described.index, partId: described.partId });
+      onStep({ step, index: described.index, partId: described.partId, parts: described.parts ?? [], moves: Boolean(stepsToPlay(disassembly)) });
     },
     onPlayingChange(playing) {
       if (playButton) {
@@ -1376,6 +1636,10 @@ export function createPlaybackControls(view, elements, { onStep = () => {}, loop
   player.loop = loopCheckbox ? loopCheckbox.checked : loop;
   if (speedSelect) player.speed = Number(speedSelect.value) || 1;
 
+  const stepTitles = {
+    previous: { removal: previousButton?.getAttribute('title') ?? null, move: 'Previous step: undo the last move' },
+    next: { removal: nextButton?.getAttribute('title') ?? null, move: 'Next step: the next move of the plan' },
+  };
   const listeners = [];
   const listen = (target, type, handler) => {
     if (!target) return;
@@ -1395,7 +1659,9 @@ export function createPlaybackControls(view, elements, { onStep = () => {}, loop
   listen(explodedRange, 'input', () => view.setExploded(Number(explodedRange.value)));
 
   function setDisassembly(next) {
-    const removable = (next?.order?.length ?? 0) - 1;
+    // A plan of moves plays move by move; any other part by part (the last part stays).
+    const steps = stepsToPlay(next);
+    const removable = steps ? steps.length : (next?.order?.length ?? 0) - 1;
     disassembly = removable > 0 && view.available ? next : null;
     const length = disassembly ? removable : 0;
     if (range) {
@@ -1403,12 +1669,16 @@ export function createPlaybackControls(view, elements, { onStep = () => {}, loop
       range.max = String(Math.max(length, 1));
     }
     if (playButton) playButton.disabled = !disassembly;
+    // Previous / Next say what they do: a move, or a removal.
+    for (const [button, titles] of [[previousButton, stepTitles.previous], [nextButton, stepTitles.next]]) {
+      if (button && titles.removal !== null) button.title = steps ? titles.move : titles.removal;
+    }
     if (explodedRange) {
       explodedRange.disabled = !view.available;
       view.setExploded(Number(explodedRange.value));
     }
     player.setLength(length);
-    if (range) range.title = disassembly ? `${length} removals, ${formatSeconds(length / player.stepsPerSecond)} at 1×` : '';
+    if (range) range.title = disassembly ? `${length} ${steps ? 'moves' : 'removals'}, ${formatSeconds(length / player.stepsPerSecond)} at 1×` : '';
   }
 
   return {

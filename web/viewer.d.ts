@@ -58,7 +58,10 @@ export interface ViewerHandle {
   pause(): void;
   /** 0 = assembled, 1 = fully exploded. */
   setExploded(factor: number): void;
-  /** One moment of the disassembly: 0 = assembled, i..i+1 = the (i+1)-th part leaving. */
+  /**
+   * One moment of the disassembly: 0 = assembled, i..i+1 = the (i+1)-th part leaving (a voxel plan
+   * of moves of several parts: the (i+1)-th move under way).
+   */
   setStep(step: number): void;
   setLoop(loop: boolean): void;
   readonly playing: boolean;

@@ -365,7 +365,8 @@ export function mountViewer(host, options = {}) {
     // A plate plan or a designed frame plays its own removal directions.
     const planned = report ? withPlannedRemoval(report, document_) : null;
     view.applyReport(planned ?? {});
-    playback.setDisassembly(planned?.disassembly ?? null);
+    // A plan of moves plays move by move; a partial one (disassemblyFailure) up to where it stops.
+    playback.setDisassembly(planned?.disassembly ?? planned?.disassemblyFailure ?? null);
     renderBadge(report);
     if (report) renderBlockingGraphs(graphsPanel, report);
     else graphsPanel.replaceChildren();
@@ -436,7 +437,7 @@ export function mountViewer(host, options = {}) {
     setExploded(factor) {
       playback.setExploded(factor);
     },
-    /** Shows one moment of the disassembly: 0 = assembled, i..i+1 = the (i+1)-th part leaving. */
+    /** Shows one moment of the disassembly: 0 = assembled, i..i+1 = the (i+1)-th part leaving (or move). */
     setStep(step) {
       playback.seek(step);
     },
