@@ -3,7 +3,6 @@
 // step-by-step session, both driving the joint planner (plate_planner.h).
 #include "desia/plate_design.h"
 
-#include <algorithm>
 #include <chrono>
 #include <memory>
 #include <optional>
@@ -197,7 +196,8 @@ PlateDesignResult designWithChosenJoints(const std::vector<Plate>& plates, const
     attempt.realization = realization;
     if (options.limits.timeLimitSeconds > 0) {
       const double spent = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      attempt.limits.timeLimitSeconds = std::max(0.001, options.limits.timeLimitSeconds - spent);
+      if (spent >= options.limits.timeLimitSeconds) break;  // the budget is spent: say what was tried
+      attempt.limits.timeLimitSeconds = options.limits.timeLimitSeconds - spent;
     }
     result = designPlateJoints(plates, contacts, attempt);
     if (result.status == DesignStatus::Success) {
@@ -215,10 +215,6 @@ PlateDesignResult designWithChosenJoints(const std::vector<Plate>& plates, const
     why += std::string(why.empty() ? "" : "; ") + "no " +
            (realization == JointRealization::Cut ? "laser-cut" : realization == JointRealization::Milled ? "milled" : "planned") +
            " plan: " + reasonOf(result);
-    if (options.limits.timeLimitSeconds > 0 &&
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() >= options.limits.timeLimitSeconds) {
-      break;
-    }
   }
   result.message = "no joints found (" + why + ")";
   return result;
