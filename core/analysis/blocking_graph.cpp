@@ -102,20 +102,25 @@ void sortForReports(std::vector<Vec3>* directions) {
 
 }  // namespace
 
+// A label is for people: components that print as 0 at the label's 4 digits are 0, so a
+// direction computed 3e-9 off an axis reads "+x", not "(1,-2.766e-09,4.475e-09)".
 std::string directionLabel(const Vec3& direction) {
   static const char* kAxisNames = "xyz";
+  Vec3 shown = direction;
+  for (double& c : shown) {
+    if (std::abs(c) < tolerance::kLabelZero) c = 0.0;
+  }
   for (int axis = 0; axis < 3; ++axis) {
     bool others = true;
     for (int k = 0; k < 3; ++k) {
-      if (k != axis && std::abs(direction[k]) > tolerance::kDirection) others = false;
+      if (k != axis && shown[k] != 0.0) others = false;
     }
-    if (others && std::abs(std::abs(direction[axis]) - 1.0) < tolerance::kDirection) {
-      return std::string(direction[axis] > 0 ? "+" : "-") + kAxisNames[axis];
+    if (others && std::abs(std::abs(shown[axis]) - 1.0) < tolerance::kLabelZero) {
+      return std::string(shown[axis] > 0 ? "+" : "-") + kAxisNames[axis];
     }
   }
   char buffer[96];
-  std::snprintf(buffer, sizeof buffer, "(%.4g,%.4g,%.4g)", direction[0] + 0.0, direction[1] + 0.0,
-                direction[2] + 0.0);
+  std::snprintf(buffer, sizeof buffer, "(%.4g,%.4g,%.4g)", shown[0] + 0.0, shown[1] + 0.0, shown[2] + 0.0);
   return buffer;
 }
 

@@ -74,6 +74,9 @@ constexpr double kNoTwiceAreaMm2 = 1e-12;
 // angle a geometry means, far above the rounding of the cross products that produce normals.
 // The same slack when a cosine is compared with a bound (45 degrees).
 constexpr double kDirection = 1e-9;
+// Unitless: a direction's component below this prints as 0 in labels (+x, "(0.9864,0.1644,0)"),
+// which show 4 significant digits; labels are for people, the vectors stay exact.
+constexpr double kLabelZero = 5e-5;
 // A unit vector's component (or a vector's, as a fraction of its largest component) below this
 // is rounding residue (1e-16-sized after a rotation or a cross product) and counts as zero.
 constexpr double kComponentNoise = 1e-12;
