@@ -537,7 +537,7 @@ export interface PlateDesignOptions {
   /**
    * 'auto' (default): 'cut' if a plan with cut joints exists, else 'milled', else 'planned', within
    * one time limit; the result's `jointGeometry` is the one used and its message says why (first
-   * line `joints: milled (no laser-cut plan: …)`). Step by step, 'auto' steps with milled joints.
+   * line `joints: milled (no laser-cut plan: …)`). Step by step, 'auto' steps with cut joints.
    * 'cut': joints cut into the plates (through and open mortise-and-tenon joints where a
    * square edge stands on a face at a right angle), verified on the jointed plates. 'planned': the
    * paper's graph design alone (halved, mortise-and-tenon or empty joints by angle), verified on

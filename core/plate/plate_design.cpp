@@ -61,10 +61,10 @@ PlateDesignStep publicStep(const PlanStep& step) { return {step.plate, step.dire
 
 }  // namespace
 
-// Step by step there is no whole design to choose among: 'auto' steps with milled joints, which
-// are cut joints wherever those fit.
+// Step by step there is no whole design to choose among: 'auto' steps with cut joints, the first
+// it tries, so that stepping a design that can be cut reaches the plan designPlateJoints finds.
 PlateDesignOptions steppingOptions(PlateDesignOptions options) {
-  if (options.realization == JointRealization::Auto) options.realization = JointRealization::Milled;
+  if (options.realization == JointRealization::Auto) options.realization = JointRealization::Cut;
   return options;
 }
 

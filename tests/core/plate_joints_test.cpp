@@ -1432,15 +1432,15 @@ TEST(AutoJoints, CutIfPossibleThenMilledThenPlannedAndSaysWhich) {
   EXPECT_NE(icosahedron.message.find("no milled plan"), std::string::npos) << icosahedron.message;
 }
 
-TEST(AutoJoints, IsTheDefaultOfThePackageAndStepsWithMilledJoints) {
+TEST(AutoJoints, IsTheDefaultOfThePackageAndStepsWithCutJoints) {
   EXPECT_EQ(parsePlateDesignOptionsJson("{}").realization, JointRealization::Auto);
   EXPECT_EQ(parseJointRealization("auto"), JointRealization::Auto);
-  const AssemblyDocument cabinet = loadPlateExample("cabinet.json");
-  PlateDesignOptions automatic, milled;
+  const AssemblyDocument table = loadPlateExample("table.json");
+  PlateDesignOptions automatic, cut;
   automatic.realization = JointRealization::Auto;
-  milled.realization = JointRealization::Milled;
-  PlateDesignSession a(cabinet.plates, cabinet.plateContacts, automatic);
-  PlateDesignSession m(cabinet.plates, cabinet.plateContacts, milled);
+  cut.realization = JointRealization::Cut;
+  PlateDesignSession a(table.plates, table.plateContacts, automatic);
+  PlateDesignSession m(table.plates, table.plateContacts, cut);
   ASSERT_EQ(a.childCount(), m.childCount());
   ASSERT_GT(a.childCount(), 0);
   EXPECT_EQ(a.childPreview(0).plate, m.childPreview(0).plate);

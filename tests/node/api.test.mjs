@@ -264,7 +264,7 @@ test('designPlate plans the CLI\'s joints in the worker, with progress; bad opti
   assert.equal(loose.document.fabricationPlates.length, 6);
   const planned = await desia.designPlate(table, { joints: 'planned' });
   assert.equal(planned.document.jointGeometry, 'planned');
-  await assert.rejects(desia.designPlate(table, { joints: 'glued' }), (error) => error.code === 'bad-input' && /joints must be 'cut'/.test(error.message));
+  await assert.rejects(desia.designPlate(table, { joints: 'glued' }), (error) => error.code === 'bad-input' && /joints must be 'auto' \(cut if possible, else milled, else planned\), 'cut'/.test(error.message));
   await assert.rejects(desia.designPlate(table, { clearance: -1 }), (error) => error.code === 'bad-input' && /clearance/.test(error.message));
   // Cut sheets in the worker are the CLI's, byte for byte.
   const resultFile = path.join(os.tmpdir(), `desia-plate-${process.pid}.json`);

@@ -118,7 +118,8 @@ enum class JointRealization {
   Planned,
   // Chosen for the user (the CLI's and the package's default): Cut if a plan exists, else Milled,
   // else Planned; the result says which and why (PlateDesignResult::realization and message).
-  // Step by step, Auto steps with Milled joints (cut joints where they fit, milled where not).
+  // Step by step, Auto steps with Cut joints (the first it tries; choose Milled or Planned to step
+  // a design that needs them).
   Auto,
 };
 
