@@ -469,8 +469,9 @@ function documentDifference(what, golden, name, value) {
 /** The package's message against the CLI's: "MESSAGE in <T> s" on stdout, or "desia: [SOURCE: ]MESSAGE" on stderr. */
 function messageDifference(testCase, record, result) {
   if (record.exit === 0) {
-    const line = record.stdout.split('\n')[0];
-    return line === `${result.message} in <T> s` ? null : `message: the CLI printed ${clip(line)}, the package says ${clip(result.message)}`;
+    // A message may have several lines ('joints: milled (…)' above 'designed …'): the time ends the last.
+    const lines = record.stdout.split('\n').slice(0, result.message.split('\n').length).join('\n');
+    return lines === `${result.message} in <T> s` ? null : `message: the CLI printed ${clip(lines)}, the package says ${clip(result.message)}`;
   }
   const line = record.stderr.split('\n')[0];
   return line === `desia: ${result.message}` || line === `desia: ${testCase.input}: ${result.message}`

@@ -138,6 +138,9 @@ bool verifyPuzzle(const VoxelGrid& grid, int parts, CheckReport* report) {
   for (int k = 0; k < parts; ++k) {
     if (report->disassembly->removals[k].part != k) return false;
   }
+  // What the result says of itself is what `desia check` says of it: the level and the fewest
+  // moves too (the complete disassembler runs only here, once a puzzle is verified).
+  report->disassembly = planVoxelDisassembly(grid, assemblyFromVoxels(grid));
   return true;
 }
 
