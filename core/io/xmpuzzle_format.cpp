@@ -5,6 +5,7 @@
 // parsers in src/lib/solution.cpp, assembly.cpp, disassembly.cpp; no code taken from them).
 #include <algorithm>
 #include <array>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -53,9 +54,8 @@ struct Box {
 
 // A <voxel> shape: x*y*z characters in index order x + X*(y + Y*z), '#' filled, '_' empty, no
 // whitespace (BurrTools rejects any other character in the voxel text).
-std::string voxelElement(const VoxelGrid& grid, const Box& box, int partId, const std::string& name) {
-  std::string out = "  <voxel x=\"" + std::to_string(box.size(0)) + "\" y=\"" + std::to_string(box.size(1)) +
-                    "\" z=\"" + std::to_string(box.size(2)) + "\" name=\"" + escapeXml(name) + "\" type=\"0\">";
+std::string voxelCharacters(const VoxelGrid& grid, const Box& box, int partId) {
+  std::string out;
   for (int z = box.low[2]; z <= box.high[2]; ++z) {
     for (int y = box.low[1]; y <= box.high[1]; ++y) {
       for (int x = box.low[0]; x <= box.high[0]; ++x) {
@@ -64,7 +64,44 @@ std::string voxelElement(const VoxelGrid& grid, const Box& box, int partId, cons
       }
     }
   }
-  return out + "</voxel>\n";
+  return out;
+}
+
+std::string voxelElement(const VoxelGrid& grid, const Box& box, int partId, const std::string& name) {
+  return "  <voxel x=\"" + std::to_string(box.size(0)) + "\" y=\"" + std::to_string(box.size(1)) + "\" z=\"" +
+         std::to_string(box.size(2)) + "\" name=\"" + escapeXml(name) + "\" type=\"0\">" +
+         voxelCharacters(grid, box, partId) + "</voxel>\n";
+}
+
+// BurrTools' pieces: parts whose cropped voxels are equal (the same shape, translated) are copies
+// of one shape with a count, so that its solver does not count their permutations as different
+// assemblies (AlPackino's 12 pieces of 3 shapes: 1 assembly, not 13,824). Shapes come in the order
+// of their first part; a shape's pieces are consecutive, in part order.
+struct PieceLayout {
+  std::vector<std::vector<int>> partsOfShape;  // shape s (1..S) at s - 1: its part ids, ascending
+  std::vector<int> pieceOfPart;                // part id (1..K) at id: its 0-based piece number
+  std::vector<int> partOfPiece;                // piece number: its part id
+};
+
+PieceLayout pieceLayout(const VoxelGrid& grid, const std::vector<Box>& boxes, int parts) {
+  PieceLayout layout;
+  std::map<std::string, size_t> shapeOf;  // size and voxels -> shape index
+  for (int part = 1; part <= parts; ++part) {
+    const Box& box = boxes[static_cast<size_t>(part)];
+    const std::string key = std::to_string(box.size(0)) + " " + std::to_string(box.size(1)) + " " +
+                            std::to_string(box.size(2)) + " " + voxelCharacters(grid, box, part);
+    const auto [at, added] = shapeOf.emplace(key, layout.partsOfShape.size());
+    if (added) layout.partsOfShape.emplace_back();
+    layout.partsOfShape[at->second].push_back(part);
+  }
+  layout.pieceOfPart.assign(static_cast<size_t>(parts) + 1, -1);
+  for (const std::vector<int>& shape : layout.partsOfShape) {
+    for (int part : shape) {
+      layout.pieceOfPart[static_cast<size_t>(part)] = static_cast<int>(layout.partOfPiece.size());
+      layout.partOfPiece.push_back(part);
+    }
+  }
+  return layout;
 }
 
 // Where each piece is while a separation runs: its position in the result shape, in voxels (the
@@ -106,7 +143,7 @@ struct SeparationNode {
 // parts; a move out closes that sub-assembly's separation and opens one per side of two pieces
 // or more, starting where its pieces were. `position`: each piece's placement.
 std::vector<SeparationNode> separationTree(const DisassemblyPlan& plan, const Assembly& assembly,
-                                           std::vector<Offset> position) {
+                                           const PieceLayout& layout, std::vector<Offset> position) {
   const int pieces = static_cast<int>(position.size());
   std::vector<SeparationNode> tree(1);
   for (int piece = 0; piece < pieces; ++piece) tree[0].pieces.push_back(piece);
@@ -126,7 +163,7 @@ std::vector<SeparationNode> separationTree(const DisassemblyPlan& plan, const As
   tree[0].states.push_back(stateOf(tree[0]));
   for (const GroupMove& move : plan.moves) {
     std::vector<int> moving;
-    for (int part : move.parts) moving.push_back(assembly.parts[part].id - 1);
+    for (int part : move.parts) moving.push_back(layout.pieceOfPart[static_cast<size_t>(assembly.parts[part].id)]);
     std::sort(moving.begin(), moving.end());
     const int node = nodeOf[static_cast<size_t>(moving[0])];
     const int distance = move.out ? kRemovedDistance : move.steps;
@@ -185,19 +222,22 @@ std::string separationElements(const std::vector<SeparationNode>& tree) {
 // <solution>: the assembly (per piece its offset in the result shape and transformation 0, i.e.
 // as drawn in the file; a piece's voxel (x, y, z) goes to (x, y, z) + offset), then, when the plan
 // removed every part, its separation tree. Without a complete plan the assembly alone is written.
-std::string solutionElement(const AssemblyDocument& document, const std::vector<Box>& boxes, int parts) {
+std::string solutionElement(const AssemblyDocument& document, const std::vector<Box>& boxes, const PieceLayout& layout,
+                            int parts) {
   std::string placements;
-  for (int part = 1; part <= parts; ++part) {
-    const Box& box = boxes[part];
-    placements += (part > 1 ? " " : "") + std::to_string(box.low[0]) + " " + std::to_string(box.low[1]) + " " +
+  for (int piece = 0; piece < parts; ++piece) {
+    const Box& box = boxes[static_cast<size_t>(layout.partOfPiece[static_cast<size_t>(piece)])];
+    placements += (piece > 0 ? " " : "") + std::to_string(box.low[0]) + " " + std::to_string(box.low[1]) + " " +
                   std::to_string(box.low[2]) + " 0";
   }
   std::string out = "   <solutions>\n    <solution>\n     <assembly>" + placements + "</assembly>\n";
   if (parts >= 2) {
     const DisassemblyPlan plan = planVoxelDisassembly(document.voxels, document.assembly);
     std::vector<Offset> placements;
-    for (int part = 1; part <= parts; ++part) placements.push_back(boxes[static_cast<size_t>(part)].low);
-    if (plan.complete) out += separationElements(separationTree(plan, document.assembly, placements));
+    for (int piece = 0; piece < parts; ++piece) {
+      placements.push_back(boxes[static_cast<size_t>(layout.partOfPiece[static_cast<size_t>(piece)])].low);
+    }
+    if (plan.complete) out += separationElements(separationTree(plan, document.assembly, layout, placements));
   }
   return out + "    </solution>\n   </solutions>\n";
 }
@@ -205,7 +245,8 @@ std::string solutionElement(const AssemblyDocument& document, const std::vector<
 }  // namespace
 
 // Layout (the one BurrTools writes): shape 0 is the result, the assembled puzzle in the full grid;
-// shapes 1..K are parts 1..K, each cropped to its bounding box. BurrTools places the pieces itself
+// shapes 1..S are the parts, each cropped to its bounding box, equal parts as one shape with a
+// count (PieceLayout). BurrTools places the pieces itself
 // when it solves (it tries every position and rotation), so a piece's position in the file carries
 // no meaning for it; cropping keeps the file near the size of the grid instead of K times it (the
 // gzip stream is stored, not compressed). The crop offsets are listed in the comment, and they are
@@ -248,27 +289,37 @@ std::string xmpuzzleXml(const AssemblyDocument& document, const std::string& sou
   const std::string title = !document.name.empty() ? document.name : !stem.empty() ? stem : "assembly";
   std::string xml = "<?xml version=\"1.0\"?>\n<puzzle version=\"2\">\n <gridType type=\"0\"/>\n <colors/>\n <shapes>\n";
   xml += voxelElement(grid, whole, 0, title);
+  const PieceLayout layout = pieceLayout(grid, boxes, parts);
+  auto partName = [&](int part) {
+    const int index = document.assembly.indexOfId(part);
+    return index >= 0 && !document.assembly.parts[index].name.empty() ? document.assembly.parts[index].name
+                                                                       : "part " + std::to_string(part);
+  };
+  for (const std::vector<int>& shape : layout.partsOfShape) {
+    std::string name = shape.size() == 1 ? partName(shape[0]) : "parts";
+    for (size_t k = 0; shape.size() > 1 && k < shape.size(); ++k) name += (k ? ", " : " ") + std::to_string(shape[k]);
+    xml += voxelElement(grid, boxes[static_cast<size_t>(shape[0])], shape[0], name);
+  }
   std::string offsets;
   for (int part = 1; part <= parts; ++part) {
-    const int index = document.assembly.indexOfId(part);
-    const std::string partName = index >= 0 && !document.assembly.parts[index].name.empty()
-                                     ? document.assembly.parts[index].name
-                                     : "part " + std::to_string(part);
-    xml += voxelElement(grid, boxes[part], part, partName);
     offsets += "part " + std::to_string(part) + ": " + std::to_string(boxes[part].low[0]) + " " +
                std::to_string(boxes[part].low[1]) + " " + std::to_string(boxes[part].low[2]) + "\n";
   }
   // The counts say one assembly and one solution are saved: without them BurrTools lists none.
   xml += " </shapes>\n <problems>\n  <problem name=\"desia\" state=\"3\" assemblies=\"1\" solutions=\"1\" time=\"0\">\n   <shapes>\n";
-  for (int part = 1; part <= parts; ++part) xml += "    <shape id=\"" + std::to_string(part) + "\" count=\"1\"/>\n";
-  xml += "   </shapes>\n   <result id=\"0\"/>\n   <bitmap/>\n" + solutionElement(document, boxes, parts) +
+  for (size_t shape = 0; shape < layout.partsOfShape.size(); ++shape) {
+    xml += "    <shape id=\"" + std::to_string(shape + 1) + "\" count=\"" + std::to_string(layout.partsOfShape[shape].size()) +
+           "\"/>\n";
+  }
+  xml += "   </shapes>\n   <result id=\"0\"/>\n   <bitmap/>\n" + solutionElement(document, boxes, layout, parts) +
          "  </problem>\n </problems>\n";
   xml += " <comment>" +
          escapeXml("Exported by desia from " + title + ". Shape 0 is the assembled puzzle (grid " +
                    std::to_string(grid.nx()) + " x " + std::to_string(grid.ny()) + " x " + std::to_string(grid.nz()) +
-                   "); shapes 1 to " + std::to_string(parts) + " are parts 1 to " + std::to_string(parts) +
-                   ", each cropped to its bounding box. The saved solution is desia's assembly and its "
-                   "disassembly plan. Offsets of the boxes in the grid (x y z):") +
+                   "); the other shapes are the parts, each cropped to its bounding box, parts of the same "
+                   "shape as one shape with its count (pieces in the order of the shapes). The saved "
+                   "solution is desia's assembly and its disassembly plan. Offsets of the parts' boxes in "
+                   "the grid (x y z):") +
          "\n" + offsets + "</comment>\n</puzzle>\n";
   if (static_cast<int64_t>(xml.size()) > kMaxExportBytes) {
     throwExportTooLarge(source, "xmpuzzle file", static_cast<int64_t>(xml.size()));

@@ -683,11 +683,13 @@ TEST(ExportXmPuzzle, DocumentStructureAndEscapedNames) {
   const std::string escaped = "Tom &amp; Jerry&apos;s &lt;&quot;cube&quot;&gt; v2";
   EXPECT_NE(xml.find("  <voxel x=\"3\" y=\"1\" z=\"1\" name=\"" + escaped +
                      "\" type=\"0\">###</voxel>\n"
-                     "  <voxel x=\"1\" y=\"1\" z=\"1\" name=\"part 1\" type=\"0\">#</voxel>\n"
-                     "  <voxel x=\"1\" y=\"1\" z=\"1\" name=\"part 2\" type=\"0\">#</voxel>\n"
-                     "  <voxel x=\"1\" y=\"1\" z=\"1\" name=\"part 3\" type=\"0\">#</voxel>\n </shapes>\n"),
+                     "  <voxel x=\"1\" y=\"1\" z=\"1\" name=\"parts 1, 2, 3\" type=\"0\">#</voxel>\n </shapes>\n"),
             std::string::npos)
       << xml;
+  // Three equal parts are one shape with count 3 (BurrTools' solver would count 6 permutations
+  // of three separate shapes as 6 assemblies), placed as pieces 1, 2, 3 in part order.
+  EXPECT_NE(xml.find("   <shapes>\n    <shape id=\"1\" count=\"3\"/>\n   </shapes>\n"), std::string::npos) << xml;
+  EXPECT_NE(xml.find("<assembly>0 0 0 0 1 0 0 0 2 0 0 0</assembly>"), std::string::npos) << xml;
   EXPECT_NE(xml.find(" <comment>Exported by desia from " + escaped), std::string::npos) << xml;
   EXPECT_NE(xml.find("\npart 1: 0 0 0\npart 2: 1 0 0\npart 3: 2 0 0\n</comment>\n</puzzle>\n"), std::string::npos)
       << xml;
