@@ -212,9 +212,10 @@ PlateDesignResult designWithChosenJoints(const std::vector<Plate>& plates, const
     }
     // A cut point, a cancelled search or a spent time budget ends the choice there.
     if (result.status == DesignStatus::CutPoint || result.status == DesignStatus::Cancelled) return result;
+    // A search stopped at its limits proved nothing: say so.
     why += std::string(why.empty() ? "" : "; ") + "no " +
            (realization == JointRealization::Cut ? "laser-cut" : realization == JointRealization::Milled ? "milled" : "planned") +
-           " plan: " + reasonOf(result);
+           (result.status == DesignStatus::LimitReached ? " plan found within the limits: " : " plan: ") + reasonOf(result);
   }
   result.message = "no joints found (" + why + ")";
   return result;

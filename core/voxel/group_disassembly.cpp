@@ -11,6 +11,7 @@
 #include <array>
 #include <cstdlib>
 #include <limits>
+#include <set>
 #include <unordered_map>
 #include <utility>
 
@@ -258,9 +259,14 @@ class PositionStore {
   int width() const { return width_; }
   const int16_t* offsets(size_t state) const { return &offsets_[state * static_cast<size_t>(width_)]; }
   int32_t parent(size_t state) const { return parent_[state]; }
-  int64_t bytes() const {
-    return static_cast<int64_t>(offsets_.capacity() * sizeof(int16_t) + parent_.capacity() * sizeof(int32_t) +
-                                slots_.capacity() * sizeof(int32_t));
+  // The memory the store would hold after one more insert (vectors grow by doubling).
+  int64_t bytesAfterInsert() const {
+    auto grown = [](size_t size, size_t capacity, size_t added) {
+      return size + added <= capacity ? capacity : std::max(size + added, 2 * capacity);
+    };
+    const size_t slots = (parent_.size() + 1) * 2 > slots_.size() ? std::max<size_t>(64, slots_.size() * 2) : slots_.size();
+    return static_cast<int64_t>(grown(offsets_.size(), offsets_.capacity(), static_cast<size_t>(width_)) * sizeof(int16_t) +
+                                grown(parent_.size(), parent_.capacity(), 1) * sizeof(int32_t) + slots * sizeof(int32_t));
   }
 
   // Adds the position unless already known; true when it is new.
@@ -309,8 +315,12 @@ class SubAssemblySearch {
  public:
   enum class Outcome { Separated, Stuck, LimitReached };
 
-  SubAssemblySearch(PartGeometry& geometry, const std::vector<int>& parts, const VoxelDisassemblyOptions& options)
-      : parts_(parts), k_(static_cast<int>(parts.size())), options_(options), store_(k_), gaps_(geometry, parts_) {}
+  // `work`: the plan's count of the search's operations (part-pair tests and set unions), shared
+  // by its sub-assemblies and bounded by options.maxGroupWork.
+  SubAssemblySearch(PartGeometry& geometry, const std::vector<int>& parts, const VoxelDisassemblyOptions& options,
+                    int64_t* work)
+      : parts_(parts), k_(static_cast<int>(parts.size())), options_(options), store_(k_), gaps_(geometry, parts_),
+        work_(work) {}
 
   // `offsets`: 3 per part, in the order of `parts`.
   Outcome run(const std::vector<int>& offsets) {
@@ -321,12 +331,18 @@ class SubAssemblySearch {
     std::vector<int16_t> next(start.size());
     for (size_t state = 0; state < store_.size(); ++state) {
       gaps_.fill(store_.offsets(state));
+      *work_ += static_cast<int64_t>(k_) * k_;
       if (findSeparation()) {
         separationState_ = state;
         return Outcome::Separated;
       }
-      if (!movesFrom(&moves)) {
+      const MovesFound found = movesFrom(&moves);
+      if (found == MovesFound::TooManySets) {
         limit_ = "more than " + std::to_string(kMaxSetsPerMove) + " sets of parts move alike at one position";
+        return Outcome::LimitReached;
+      }
+      if (found == MovesFound::OutOfWork || *work_ > options_.maxGroupWork) {
+        limit_ = std::to_string(options_.maxGroupWork) + " operations of the search for moves (maxGroupWork)";
         return Outcome::LimitReached;
       }
       for (const Moved& move : moves) {
@@ -334,15 +350,16 @@ class SubAssemblySearch {
           limit_ = "parts moved more than " + std::to_string(kMaxOffset) + " units apart";
           return Outcome::LimitReached;
         }
-        store_.insert(next, static_cast<int32_t>(state));
-        if (static_cast<int64_t>(store_.size()) > options_.maxGroupStates) {
+        // Bounds checked before the position is kept: its memory would be taken first.
+        if (static_cast<int64_t>(store_.size()) >= options_.maxGroupStates) {
           limit_ = std::to_string(options_.maxGroupStates) + " positions of a sub-assembly (maxGroupStates)";
           return Outcome::LimitReached;
         }
-        if (store_.bytes() > options_.maxGroupBytes) {
+        if (store_.bytesAfterInsert() > options_.maxGroupBytes) {
           limit_ = std::to_string(options_.maxGroupBytes >> 20) + " MiB of positions (maxGroupBytes)";
           return Outcome::LimitReached;
         }
+        store_.insert(next, static_cast<int32_t>(state));
       }
     }
     return Outcome::Stuck;
@@ -387,6 +404,7 @@ class SubAssemblySearch {
     while (!frontier.empty()) {
       const int p = frontier.back();
       frontier.pop_back();
+      *work_ += k_;
       for (int q = 0; q < k_; ++q) {
         if (set.has(q) || gaps_.gap(direction, p, q) >= amount) continue;
         set.add(q);
@@ -413,9 +431,11 @@ class SubAssemblySearch {
     return found;
   }
 
+  enum class MovesFound { All, TooManySets, OutOfWork };
+
   // Every finite move from the current gaps: closures for each part, direction and distance,
-  // and their unions (moving independent sets at once is one move). False past kMaxSetsPerMove.
-  bool movesFrom(std::vector<Moved>* moves) const {
+  // and their unions (moving independent sets at once is one move).
+  MovesFound movesFrom(std::vector<Moved>* moves) const {
     moves->clear();
     std::vector<PartSet> sets;
     for (int direction = 0; direction < 6; ++direction) {
@@ -428,24 +448,31 @@ class SubAssemblySearch {
         if (sets.empty()) break;
         std::sort(sets.begin(), sets.end());
         sets.erase(std::unique(sets.begin(), sets.end()), sets.end());
-        if (!addUnions(&sets)) return false;
+        const MovesFound unions = addUnions(&sets);
+        if (unions != MovesFound::All) return unions;
         for (PartSet& set : sets) moves->push_back(Moved{direction, amount, std::move(set)});
+        if (*work_ > options_.maxGroupWork) return MovesFound::OutOfWork;
       }
     }
-    return true;
+    return MovesFound::All;
   }
 
-  bool addUnions(std::vector<PartSet>* sets) const {
+  // Unions of the closures, each set once (the closures are sorted and distinct on entry). With
+  // m independent closures there are 2^m - 1: kMaxSetsPerMove and the work bound stop that.
+  MovesFound addUnions(std::vector<PartSet>* sets) const {
+    std::set<PartSet> known(sets->begin(), sets->end());
     for (size_t a = 0; a < sets->size(); ++a) {
       for (size_t b = 0; b < a; ++b) {
+        *work_ += 4 * k_;  // a union, its count and a lookup in an ordered set: a few closure steps
         PartSet joined = (*sets)[a];
         joined.unite((*sets)[b]);
-        if (joined.count() == k_ || std::find(sets->begin(), sets->end(), joined) != sets->end()) continue;
-        if (sets->size() >= kMaxSetsPerMove) return false;
+        if (joined.count() == k_ || !known.insert(joined).second) continue;
+        if (sets->size() >= kMaxSetsPerMove) return MovesFound::TooManySets;
         sets->push_back(std::move(joined));
       }
+      if (*work_ > options_.maxGroupWork) return MovesFound::OutOfWork;
     }
-    return true;
+    return MovesFound::All;
   }
 
   bool moved(const int16_t* offsets, const Moved& move, std::vector<int16_t>* next) const {
@@ -501,6 +528,7 @@ class SubAssemblySearch {
   PositionStore store_;
   GapMatrix gaps_;
   mutable std::vector<int> frontier_;
+  int64_t* work_;
   size_t separationState_ = 0;
   Moved separation_;
   std::string limit_;
@@ -587,7 +615,7 @@ void recordSeparation(const PendingSubAssembly& current, const std::vector<Group
 template <typename PartSet>
 bool searchSubAssembly(PartGeometry& geometry, const PendingSubAssembly& current, const VoxelDisassemblyOptions& options,
                        GroupPlan* plan, std::vector<Separation>* tree, std::vector<PendingSubAssembly>* pending) {
-  SubAssemblySearch<PartSet> search(geometry, current.parts, options);
+  SubAssemblySearch<PartSet> search(geometry, current.parts, options, &plan->work);
   const auto outcome = search.run(current.offsets);
   plan->states += search.states();
   if (outcome == SubAssemblySearch<PartSet>::Outcome::Separated) {

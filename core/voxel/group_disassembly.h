@@ -21,6 +21,7 @@ struct GroupPlan {
   bool limitReached = false;                   // some sub-assembly's search stopped at a bound
   std::string limit;                           // that bound, in words
   int64_t states = 0;                          // positions visited, all searches together
+  int64_t work = 0;                            // part-pair tests and set unions, all searches together
 };
 
 // Takes the grid's parts (labels 1..partCount) apart. Each sub-assembly is searched breadth-first

@@ -255,6 +255,34 @@ TEST(GroupDisassembly, ASearchStoppedAtItsBoundSaysSoAndNeverClaimsAPlan) {
   EXPECT_NE(bounded.limit.find("MiB of positions"), std::string::npos) << bounded.limit;
 }
 
+// A closed box holding m single voxels, each in a cell of its own two voxels long: every voxel
+// slides on its own, so 2^m - 1 sets move alike at every position. Nothing can come out.
+VoxelGrid voxelsInCells(int m) {
+  VoxelGrid grid(3 * m + 1, 3, 3);
+  for (int64_t i = 0; i < grid.voxelCount(); ++i) grid.setLabelAt(i, 1);
+  for (int k = 0; k < m; ++k) {
+    grid.setLabel(3 * k + 1, 1, 1, k + 2);
+    grid.setLabel(3 * k + 2, 1, 1, 0);
+  }
+  return grid;
+}
+
+TEST(GroupDisassembly, ManyIndependentPartsStopAtTheWorkBoundNotAtTheUsersPatience) {
+  // Small: the whole search runs and proves the parts stuck.
+  const DisassemblyPlan small = plan(voxelsInCells(4));
+  EXPECT_FALSE(small.complete);
+  EXPECT_FALSE(small.searchLimitReached);
+  EXPECT_EQ(small.unseparated.size(), 1u);
+  // Eight voxels: 255 sets move alike; the work bound (here a small one) stops it and says so.
+  VoxelDisassemblyOptions bounded;
+  bounded.maxGroupWork = 20'000'000;
+  const DisassemblyPlan large = plan(voxelsInCells(8), bounded);
+  EXPECT_FALSE(large.complete);
+  EXPECT_TRUE(large.searchLimitReached);
+  EXPECT_NE(large.limit.find("maxGroupWork"), std::string::npos) << large.limit;
+  EXPECT_EQ(large.stuck.size(), 9u);
+}
+
 TEST(GroupDisassembly, ThePapersPuzzlesKeepTheirSinglePartPlanAndAreLevelOne) {
   for (const std::string file : {"result_puz/Cube_4x4x4_K9.puz", "result_puz/Cube_4x4x4_K9_01.puz",
                                  "result_puz/Cube_Hollow_4x4x4_K7", "result_puz/cube_5x5x5_K16.puz",

@@ -42,7 +42,9 @@ struct DisassemblyPlan {
   // BurrTools' notation: moves of the first separation (the final move out included), then of
   // the separations below it, in pre-order, where a sub-assembly needs more than one move for
   // one of its separations. levelMinimal: found by breadth-first search, so no plan has fewer
-  // moves before each separation; false when the level is that of a plan found otherwise.
+  // moves before the first separation, and each later entry is the fewest for its sub-assembly
+  // as the separations before it left it (as BurrTools counts); false when the level is that of
+  // a plan found otherwise.
   std::vector<GroupMove> moves;
   std::vector<int> level;
   bool levelMinimal = false;

@@ -30,6 +30,9 @@ struct VoxelDisassemblyOptions {
   int64_t maxGroupStates = 2'000'000;
   int64_t maxGroupBytes = int64_t{1} << 30;
   int maxGroupParts = 1000;  // sub-assemblies of more parts are not searched (said in `limit`)
+  // Operations of that search for the whole plan (part-pair tests and unions of sets): its time
+  // bound, about a few seconds natively. Many parts that move independently make 2^m moves.
+  int64_t maxGroupWork = 4'000'000'000;
 };
 
 // Voxel assemblies: first the single-part plan: removals are collision-free translations to
