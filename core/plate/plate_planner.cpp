@@ -60,10 +60,12 @@ PlateJointPlanner::PlateJointPlanner(const std::vector<Plate>& plates, const std
       families_(graph_, options_.joints, options_.realization),
       random_(options.seed * 0x9E3779B97F4A7C15ull + 1) {
   for (const Plate& plate : plates) meshes_.push_back(plateMesh(plate));
+  meshIndex_.emplace(meshes_);
   for (int plate = 0; plate < graph_.plateCount; ++plate) {
     std::vector<Vec3> ways;
     for (const Vec3& d : rawCandidateDirections(plate)) ways.push_back(canonical(d));
     canonicalDirections_.push_back(ways);
+    lastInTheWay_.push_back(std::vector<int>(ways.size(), -1));
   }
 }
 
@@ -84,9 +86,8 @@ Vec3 PlateJointPlanner::canonical(const Vec3& d) {
   return d;
 }
 
-std::vector<Vec3> PlateJointPlanner::candidateDirections(int plate) const {
-  const auto& known = canonicalDirections_[static_cast<size_t>(plate)];
-  return known;
+const std::vector<Vec3>& PlateJointPlanner::candidateDirections(int plate) const {
+  return canonicalDirections_[static_cast<size_t>(plate)];
 }
 
 std::vector<Vec3> PlateJointPlanner::rawCandidateDirections(int plate) const {
@@ -104,9 +105,19 @@ std::vector<Vec3> PlateJointPlanner::rawCandidateDirections(int plate) const {
   return directions;
 }
 
-PlanStep PlateJointPlanner::makeStep(const std::vector<PlanStep>& steps, int plate, const Vec3& d) const {
-  std::vector<bool> taken(graph_.plateCount, false);
-  for (const PlanStep& s : steps) taken[s.plate] = true;
+PlateJointPlanner::NodeFacts PlateJointPlanner::factsOf(const std::vector<PlanStep>& steps) const {
+  NodeFacts node;
+  node.taken.assign(graph_.plateCount, false);
+  node.cutsOn.resize(graph_.plateCount);
+  for (const PlanStep& s : steps) {
+    node.taken[s.plate] = true;
+    for (const CutFootprint& cut : s.cuts) node.cutsOn[cut.plate].push_back(&cut);
+  }
+  return node;
+}
+
+PlanStep PlateJointPlanner::makeStep(const NodeFacts& node, int plate, const Vec3& d) const {
+  const std::vector<bool>& taken = node.taken;
   PlanStep step;
   step.plate = plate;
   step.direction = d;
@@ -122,7 +133,7 @@ PlanStep PlateJointPlanner::makeStep(const std::vector<PlanStep>& steps, int pla
   }
   if (makesJoints(options_.realization) && !step.blocked) {
     step.cuts = cutsOf(step.joints);
-    step.blocked = cutsCollide(steps, step.cuts);
+    step.blocked = cutsCollide(node, step.cuts);
   }
   return step;
 }
@@ -136,15 +147,14 @@ std::vector<CutFootprint> PlateJointPlanner::cutsOf(const std::vector<PlateJoint
 // through this step can be cut (cutJoints refuses it): drop the step now, not after every
 // ordering of the plates after it has been tried (BOOKSHELF: a mortise from below and a dovetail
 // housing from above at the same place in a shelf).
-bool PlateJointPlanner::cutsCollide(const std::vector<PlanStep>& steps, const std::vector<CutFootprint>& cuts) const {
+// Only cuts in one plate can overlap: the node's cuts are looked up by plate.
+bool PlateJointPlanner::cutsCollide(const NodeFacts& node, const std::vector<CutFootprint>& cuts) const {
   for (size_t i = 0; i < cuts.size(); ++i) {
     for (size_t j = 0; j < i; ++j) {
       if (footprintsOverlap(plates_, cuts[i], cuts[j])) return true;
     }
-    for (const PlanStep& step : steps) {
-      for (const CutFootprint& earlier : step.cuts) {
-        if (footprintsOverlap(plates_, cuts[i], earlier)) return true;
-      }
+    for (const CutFootprint* earlier : node.cutsOn[cuts[i].plate]) {
+      if (footprintsOverlap(plates_, cuts[i], *earlier)) return true;
     }
   }
   return false;
@@ -187,13 +197,20 @@ bool PlateJointPlanner::heldByInequalities(const std::vector<PlanStep>& path) co
 // cross part by their slots)? Joints only make room where plates meet, so the step cannot be part
 // of a plan that verifies: skip it now rather than when a complete plan's sweep fails (the TABLE's
 // divider would hit the back apron; the LIZARD's plate 34 ran 13 mm into plate 2 beyond their mitre).
-bool PlateJointPlanner::runsIntoARemainingPlate(int plate, const Vec3& d, const std::vector<int>& rest) const {
-  for (int q : rest) {
+// Whether a plate is in the way depends on the two plates alone: the last one found stays in the
+// way while it is in place, and only the plates whose bounds reach into the swept region are tried.
+bool PlateJointPlanner::runsIntoARemainingPlate(int plate, size_t way, const std::vector<bool>& taken) const {
+  int& last = lastInTheWay_[plate][way];
+  if (last >= 0 && !taken[last]) return true;
+  const Vec3& d = candidateDirections(plate)[way];
+  const double tolerance = options_.geometry.contactTolerance;
+  return meshIndex_->anyInTheWay(plate, d, tolerance, [&](int q) {
     // Plates that cross part by their slots; the others, touching or not, must let it pass.
-    if (q == plate || crossingBetween(graph_, plate, q) >= 0) continue;
-    if (meshCollidesAlong(meshes_[plate], meshes_[q], d, options_.geometry.contactTolerance)) return true;
-  }
-  return false;
+    if (taken[q] || crossingBetween(graph_, plate, q) >= 0) return false;
+    if (!meshCollidesAlong(meshes_[plate], meshes_[q], d, tolerance)) return false;
+    last = q;
+    return true;
+  });
 }
 
 // Would the plate just taken (the path's last step), with the joints made so far cut into it and
@@ -276,15 +293,18 @@ std::vector<PlanStep> PlateJointPlanner::candidatesOf(const std::vector<PlanStep
   std::vector<bool> isCut(graph_.plateCount, false);
   for (int i : findCutPoints(static_cast<int>(rest.size()), restEdges)) isCut[rest[i]] = true;
 
+  const NodeFacts node = factsOf(steps);
+  std::vector<bool> inRest(graph_.plateCount);
+  for (int p = 0; p < graph_.plateCount; ++p) inRest[p] = !taken[p];
   std::vector<std::pair<uint64_t, PlanStep>> ranked;
   for (int plate : rest) {
     if (isCut[plate]) continue;
-    std::vector<bool> others = std::vector<bool>(graph_.plateCount, false);
-    for (int q : rest) others[q] = q != plate;
-    for (const Vec3& d : candidateDirections(plate)) {
-      if (!leavesWithoutPushing(graph_, plate, others, d)) continue;
-      if (runsIntoARemainingPlate(plate, d, rest)) continue;
-      PlanStep step = makeStep(steps, plate, d);
+    const std::vector<Vec3>& ways = candidateDirections(plate);
+    for (size_t way = 0; way < ways.size(); ++way) {
+      const Vec3& d = ways[way];
+      if (!leavesWithoutPushing(graph_, plate, inRest, d)) continue;
+      if (runsIntoARemainingPlate(plate, way, taken)) continue;
+      PlanStep step = makeStep(node, plate, d);
       if (step.blocked) continue;
       ranked.push_back({nextRandom(), std::move(step)});
     }

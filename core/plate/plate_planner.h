@@ -17,6 +17,7 @@
 #include "plate/joint_model.h"
 #include "plate/joints/joint_families.h"
 #include "plate/plate_graph.h"
+#include "plate/swept_collision.h"
 
 namespace desia {
 
@@ -48,16 +49,22 @@ class PlateJointPlanner {
 
  private:
   bool acceptable(const std::vector<PlanStep>& steps) const;
-  bool runsIntoARemainingPlate(int plate, const Vec3& d, const std::vector<int>& rest) const;
+  bool runsIntoARemainingPlate(int plate, size_t way, const std::vector<bool>& taken) const;
   bool runsIntoJointsSoFar(const std::vector<PlanStep>& path) const;
   bool heldByInequalities(const std::vector<PlanStep>& path) const;
   const Plate& jointedPlate(int plate, const std::vector<PlateJoint>& joints) const;
   bool cutAndVerify(const std::vector<PlateJoint>& joints, const std::vector<int>& order,
                     const std::vector<Vec3>& directions, PlateDesignResult* result);
-  PlanStep makeStep(const std::vector<PlanStep>& steps, int plate, const Vec3& d) const;
+  // What every candidate of a node asks of it: the plates taken, and the cuts of its steps by plate.
+  struct NodeFacts {
+    std::vector<bool> taken;
+    std::vector<std::vector<const CutFootprint*>> cutsOn;
+  };
+  NodeFacts factsOf(const std::vector<PlanStep>& steps) const;
+  PlanStep makeStep(const NodeFacts& node, int plate, const Vec3& d) const;
   std::vector<CutFootprint> cutsOf(const std::vector<PlateJoint>& joints) const;
-  bool cutsCollide(const std::vector<PlanStep>& steps, const std::vector<CutFootprint>& cuts) const;
-  std::vector<Vec3> candidateDirections(int plate) const;
+  bool cutsCollide(const NodeFacts& node, const std::vector<CutFootprint>& cuts) const;
+  const std::vector<Vec3>& candidateDirections(int plate) const;
   std::vector<Vec3> rawCandidateDirections(int plate) const;
   Vec3 canonical(const Vec3& d);
   std::vector<Vec3> canonical_;                        // see canonical()
@@ -80,6 +87,10 @@ class PlateJointPlanner {
   // changes only its plate and the plates it leaves; cleared when it grows large.
   mutable std::map<std::string, Plate> jointedCache_;
   std::vector<TriangleMesh> meshes_;  // the plates as given (for the sweep of each step)
+  std::optional<SweptBoxIndex> meshIndex_;  // their bounds, for the sweep's first test
+  // For each plate and way out (candidateDirections' index), the last plate found in its way
+  // (-1: none yet): while that plate is in place, the way is blocked, whatever else has left.
+  mutable std::vector<std::vector<int>> lastInTheWay_;
 };
 
 }  // namespace desia

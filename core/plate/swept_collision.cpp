@@ -107,17 +107,40 @@ bool plateCollidesAlong(const Plate& mover, const Plate& obstacle, const Vec3& d
   return meshCollidesAlong(plateMesh(mover), plateMesh(obstacle), d, tolerance);
 }
 
+namespace {
+
+Box boxOf(const TriangleMesh& mesh) {
+  Box box{{HUGE_VAL, HUGE_VAL, HUGE_VAL}, {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL}};
+  for (const auto& p : mesh.vertices) {
+    for (int k = 0; k < 3; ++k) box.lo[k] = std::min(box.lo[k], p[k]), box.hi[k] = std::max(box.hi[k], p[k]);
+  }
+  return box;
+}
+
+// The region a box sweeps along d (unbounded on the side d points to, on each axis).
+Box sweptRegion(const Box& mover, const Vec3& d) {
+  Box region = mover;
+  for (int k = 0; k < 3; ++k) {
+    if (d[k] > tolerance::kComponentNoise) region.hi[k] = HUGE_VAL;
+    if (d[k] < -tolerance::kComponentNoise) region.lo[k] = -HUGE_VAL;
+  }
+  return region;
+}
+
+// Does the box reach more than the tolerance into the region on every axis?
+bool reachesInto(const Box& box, const Box& region, double tolerance) {
+  for (int k = 0; k < 3; ++k) {
+    if (box.hi[k] <= region.lo[k] + tolerance || region.hi[k] <= box.lo[k] + tolerance) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
 bool meshCollidesAlong(const TriangleMesh& mover, const TriangleMesh& obstacle, const Vec3& d, double tolerance) {
   if (mover.vertices.empty() || obstacle.vertices.empty()) return false;
   // Boxes first: the obstacle must reach into the box the mover sweeps.
-  for (int k = 0; k < 3; ++k) {
-    double moverLo = HUGE_VAL, moverHi = -HUGE_VAL, lo = HUGE_VAL, hi = -HUGE_VAL;
-    for (const auto& p : mover.vertices) moverLo = std::min(moverLo, p[k]), moverHi = std::max(moverHi, p[k]);
-    for (const auto& p : obstacle.vertices) lo = std::min(lo, p[k]), hi = std::max(hi, p[k]);
-    if (d[k] > tolerance::kComponentNoise) moverHi = HUGE_VAL;
-    if (d[k] < -tolerance::kComponentNoise) moverLo = -HUGE_VAL;
-    if (hi <= moverLo + tolerance || moverHi <= lo + tolerance) return false;
-  }
+  if (!reachesInto(boxOf(obstacle), sweptRegion(boxOf(mover), d), tolerance)) return false;
   const PlaneFrame frame(mover.vertices[0], d);
   // On a line along d, a piece [p0, p1] of the mover moved by t > 0 meets a piece [q0, q1] of the
   // obstacle for some t exactly when q1 > p0: the obstacle's far end (a triangle facing +d) lies
@@ -139,6 +162,71 @@ bool meshCollidesAlong(const TriangleMesh& mover, const TriangleMesh& obstacle, 
         if (depthAt(s, p) - depthAt(m, p) > tolerance) return true;
       }
     }
+  }
+  return false;
+}
+
+}  // namespace desia
+
+namespace desia {
+
+SweptBoxIndex::SweptBoxIndex(const std::vector<TriangleMesh>& meshes) {
+  for (const TriangleMesh& mesh : meshes) boxes_.push_back(boxOf(mesh));
+  for (size_t k = 0; k < meshes.size(); ++k) {
+    if (!meshes[k].vertices.empty()) order_.push_back(static_cast<int>(k));
+  }
+  if (order_.empty()) return;
+  std::vector<size_t> pending{add(0, order_.size())};
+  while (!pending.empty()) {
+    const size_t at = pending.back();
+    pending.pop_back();
+    const size_t begin = nodes_[at].begin, end = nodes_[at].end;
+    if (end - begin <= 8) continue;
+    int axis = 0;
+    const Box& b = nodes_[at].bounds;
+    for (int k = 1; k < 3; ++k) axis = b.hi[k] - b.lo[k] > b.hi[axis] - b.lo[axis] ? k : axis;
+    const size_t middle = (begin + end) / 2;
+    std::nth_element(order_.begin() + begin, order_.begin() + middle, order_.begin() + end, [&](int i, int j) {
+      return boxes_[i].lo[axis] + boxes_[i].hi[axis] < boxes_[j].lo[axis] + boxes_[j].hi[axis];
+    });
+    const size_t left = add(begin, middle), right = add(middle, end);
+    nodes_[at].children = {left, right};
+    pending.push_back(left);
+    pending.push_back(right);
+  }
+}
+
+size_t SweptBoxIndex::add(size_t begin, size_t end) {
+  Node node{begin, end, boxes_[order_[begin]]};
+  for (size_t r = begin; r < end; ++r) {
+    for (int k = 0; k < 3; ++k) {
+      node.bounds.lo[k] = std::min(node.bounds.lo[k], boxes_[order_[r]].lo[k]);
+      node.bounds.hi[k] = std::max(node.bounds.hi[k], boxes_[order_[r]].hi[k]);
+    }
+  }
+  nodes_.push_back(node);
+  return nodes_.size() - 1;
+}
+
+bool SweptBoxIndex::anyInTheWay(int mover, const Vec3& d, double tolerance,
+                                const std::function<bool(int)>& visit) const {
+  if (nodes_.empty()) return false;
+  // A node's bounds hold its boxes: if they miss the region, so does each box (same comparisons).
+  const Box region = sweptRegion(boxes_[static_cast<size_t>(mover)], d);
+  std::vector<size_t> pending{0};
+  while (!pending.empty()) {
+    const Node& node = nodes_[pending.back()];
+    pending.pop_back();
+    if (!reachesInto(node.bounds, region, tolerance)) continue;
+    if (node.children[0] == 0) {
+      for (size_t r = node.begin; r < node.end; ++r) {
+        const int q = order_[r];
+        if (q != mover && reachesInto(boxes_[q], region, tolerance) && visit(q)) return true;
+      }
+      continue;
+    }
+    pending.push_back(node.children[0]);
+    pending.push_back(node.children[1]);
   }
   return false;
 }
