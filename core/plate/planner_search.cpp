@@ -26,8 +26,8 @@ class PlateJointPlanner::SearchTree : public search::ConstructionTree {
     const uint64_t seed = planner_.options_.seed;
     planner_.random_ = restartState(seed, attempt, seed * 0x9E3779B97F4A7C15ull + 1);
     path_ = prefix_;
-    pending_ = {planner_.candidatesOf(prefix_)};
-    accepted_ = {0};
+    pending_.clear();
+    pending_.push_back(planner_.rankedCandidatesOf(prefix_));
   }
 
   // Tree k gets luby(k) units of nodes; the unit counts the plates still to take (at least 64). A
@@ -41,10 +41,9 @@ class PlateJointPlanner::SearchTree : public search::ConstructionTree {
   bool exhausted() const override { return pending_.empty(); }
 
   search::Move step() override {
-    std::optional<PlanStep> child = planner_.nextChild(path_, &pending_.back(), &accepted_.back());
+    std::optional<PlanStep> child = planner_.nextChild(&path_, &pending_.back());
     if (!child) {  // no child left here: back to the parent's next sibling
       pending_.pop_back();
-      accepted_.pop_back();
       if (path_.size() > prefix_.size()) path_.pop_back();
       return search::Move::Returned;
     }
@@ -54,10 +53,7 @@ class PlateJointPlanner::SearchTree : public search::ConstructionTree {
       path_.pop_back();
       return search::Move::Returned;
     }
-    if (!complete()) {
-      pending_.push_back(planner_.candidatesOf(path_));
-      accepted_.push_back(0);
-    }
+    if (!complete()) pending_.push_back(planner_.rankedCandidatesOf(path_));
     return search::Move::Entered;
   }
 
@@ -70,7 +66,6 @@ class PlateJointPlanner::SearchTree : public search::ConstructionTree {
     if (planner_.acceptComplete(path_, &result_)) return true;
     path_.pop_back();
     planner_.backjump(prefix_.size(), &path_, &pending_);
-    accepted_.resize(pending_.size());
     return false;
   }
 
@@ -84,9 +79,8 @@ class PlateJointPlanner::SearchTree : public search::ConstructionTree {
   const std::vector<PlanStep>& prefix_;
   PlateDesignResult& result_;
   std::vector<PlanStep> path_;
-  // pending_[k]: the candidates left at depth prefix + k; accepted_[k]: how many of them passed.
-  std::vector<std::vector<PlanStep>> pending_;
-  std::vector<int> accepted_;
+  // pending_[k]: the candidates left at depth prefix + k, and how many of them passed.
+  std::vector<RankedCandidates> pending_;
 };
 
 // After a complete plan failed because plate i, swept out, ran into plate j taken at depth j of the
@@ -96,7 +90,7 @@ class PlateJointPlanner::SearchTree : public search::ConstructionTree {
 // while the search tried orders of the plates after it). The pruned plans would all fail, so a
 // tree searched to its end still proves that no plan exists.
 void PlateJointPlanner::backjump(size_t prefixSize, std::vector<PlanStep>* path,
-                                 std::vector<std::vector<PlanStep>>* pending) const {
+                                 std::vector<RankedCandidates>* pending) const {
   if (lastDoomedDepth_ < 0) return;
   const size_t depth = static_cast<size_t>(lastDoomedDepth_);
   if (depth >= path->size()) return;  // the last plate, or the step just undone

@@ -73,6 +73,40 @@ std::vector<PlateContact> computePlateContacts(const std::vector<Plate>& plates,
 
 namespace {
 
+// A face's loops in a frame's integer coordinates, with their bounds: a face with hundreds of holes
+// (a long table's top, a mortise for each panel) meets each panel at a few of them. Loops whose
+// bounds miss the other face's change nothing in the even-odd intersection with it and are left
+// out (the top of a LONG TABLE of 1,002 plates gave Clipper all 2,000 of its loops for each panel).
+struct FlatLoops {
+  struct Bounds {
+    ClipperLib::cInt loX = 0, loY = 0, hiX = -1, hiY = -1;
+    bool meets(const Bounds& o) const { return loX <= o.hiX && o.loX <= hiX && loY <= o.hiY && o.loY <= hiY; }
+  };
+  FlatLoops(const std::vector<Loop>& loops, const PlaneFrame& frame) : paths(clipperPaths(loops, frame)) {
+    for (const ClipperLib::Path& path : paths) {
+      Bounds b{path[0].X, path[0].Y, path[0].X, path[0].Y};
+      for (const ClipperLib::IntPoint& point : path) {
+        b.loX = std::min(b.loX, point.X), b.hiX = std::max(b.hiX, point.X);
+        b.loY = std::min(b.loY, point.Y), b.hiY = std::max(b.hiY, point.Y);
+      }
+      loopBounds.push_back(b);
+      bounds = loopBounds.size() == 1 ? b : Bounds{std::min(bounds.loX, b.loX), std::min(bounds.loY, b.loY),
+                                                   std::max(bounds.hiX, b.hiX), std::max(bounds.hiY, b.hiY)};
+    }
+  }
+  // The loops whose bounds meet `other`, in their order.
+  ClipperLib::Paths near(const Bounds& other) const {
+    ClipperLib::Paths kept;
+    for (size_t k = 0; k < paths.size(); ++k) {
+      if (loopBounds[k].meets(other)) kept.push_back(paths[k]);
+    }
+    return kept;
+  }
+  ClipperLib::Paths paths;
+  std::vector<Bounds> loopBounds;
+  Bounds bounds;
+};
+
 // Solids from `firstAttached` on are attached solids (milled joint pieces, built from the joint's
 // exact directions); a cut plate's faces come from a 2D boolean on a 1e-4 mm grid. Where the two
 // meet, the attached solid's face gives the contact's normal: a wall the grid turned by 1e-5 rad
@@ -94,12 +128,15 @@ std::vector<PlateContact> contactsOfSolids(const std::vector<Plate>& plates, con
       if (owner[p] == owner[q] || !boxes[p].touches(boxes[q], tolerance)) continue;
       for (const SolidFace& f : faces[p]) {
         const PlaneFrame frame(f.loops[0][0], f.normal);
+        std::optional<FlatLoops> fFlat;
         for (const SolidFace& g : faces[q]) {
           if (dot(f.normal, g.normal) > -0.999) continue;                // not facing each other
           if (maxDistanceToPlane(g.loops, frame) > tolerance) continue;  // not in one plane
+          if (!fFlat) fFlat = FlatLoops(f.loops, frame);
+          const FlatLoops gFlat(g.loops, frame);
           ClipperLib::Clipper clipper;
-          clipper.AddPaths(clipperPaths(f.loops, frame), ClipperLib::ptSubject, true);
-          clipper.AddPaths(clipperPaths(g.loops, frame), ClipperLib::ptClip, true);
+          clipper.AddPaths(fFlat->near(gFlat.bounds), ClipperLib::ptSubject, true);
+          clipper.AddPaths(gFlat.near(fFlat->bounds), ClipperLib::ptClip, true);
           ClipperLib::Paths overlap;
           clipper.Execute(ClipperLib::ctIntersection, overlap, ClipperLib::pftEvenOdd, ClipperLib::pftEvenOdd);
           double area = 0;

@@ -339,30 +339,60 @@ std::vector<PlanStep> PlateJointPlanner::candidatesOf(const std::vector<PlanStep
 // The node's children as the paper keeps them: its ranked candidates that pass the node test
 // (acceptable), the first m (options_.candidates) of them.
 std::vector<PlanStep> PlateJointPlanner::childrenOf(const std::vector<PlanStep>& steps) {
-  std::vector<PlanStep> candidates = candidatesOf(steps);
+  RankedCandidates candidates = rankedCandidatesOf(steps);
+  std::vector<PlanStep> path = steps;
   std::vector<PlanStep> children;
-  int accepted = 0;
-  while (std::optional<PlanStep> child = nextChild(steps, &candidates, &accepted)) children.push_back(std::move(*child));
+  while (std::optional<PlanStep> child = nextChild(&path, &candidates)) children.push_back(std::move(*child));
   return children;
 }
 
-// The next of `candidates` (ranked, taken from the front) that passes the node test, while fewer
-// than m have passed (`accepted`); none when none is left. The search asks for children one at a
-// time: the node test (a model of all contacts and its DBGs, milliseconds on 400 plates) is then
-// made only for the children it enters, not for every candidate of every node it passes.
-std::optional<PlanStep> PlateJointPlanner::nextChild(const std::vector<PlanStep>& steps, std::vector<PlanStep>* candidates,
-                                                 int* accepted) {
-  std::vector<PlanStep> next = steps;
-  while (!candidates->empty() && *accepted < options_.candidates) {
-    next.push_back(std::move(candidates->front()));
-    candidates->erase(candidates->begin());
-    if (acceptable(next)) {
-      ++*accepted;
-      return std::move(next.back());
+namespace {
+constexpr size_t kCandidateWindow = 32;
+}  // namespace
+
+void PlateJointPlanner::takeWindow(std::vector<PlanStep> ranked, RankedCandidates* candidates) const {
+  const size_t start = std::min(candidates->windowStart, ranked.size());
+  const size_t end = std::min(start + kCandidateWindow, ranked.size());
+  candidates->window.assign(std::make_move_iterator(ranked.begin() + static_cast<long>(start)),
+                            std::make_move_iterator(ranked.begin() + static_cast<long>(end)));
+  candidates->next = 0;
+  candidates->rankedAll = end == ranked.size();
+}
+
+PlateJointPlanner::RankedCandidates PlateJointPlanner::rankedCandidatesOf(const std::vector<PlanStep>& steps) {
+  RankedCandidates candidates;
+  candidates.randomState = random_;
+  takeWindow(candidatesOf(steps), &candidates);
+  return candidates;
+}
+
+// The search asks for children one at a time: the node test (a model of all contacts and its DBGs,
+// milliseconds on 400 plates) is made only for the children it enters, not for every candidate of
+// every node it passes.
+std::optional<PlanStep> PlateJointPlanner::nextChild(std::vector<PlanStep>* path, RankedCandidates* candidates) {
+  while (candidates->accepted < options_.candidates) {
+    if (candidates->next == candidates->window.size()) {
+      if (candidates->rankedAll) break;
+      // Ranked again as first ranked; the tie-breaking stream goes on where it was.
+      const uint64_t state = random_;
+      random_ = candidates->randomState;
+      candidates->windowStart += candidates->window.size();
+      takeWindow(candidatesOf(*path), candidates);
+      random_ = state;
+      if (candidates->window.empty()) break;
     }
-    next.pop_back();
+    path->push_back(std::move(candidates->window[candidates->next++]));
+    const bool passes = acceptable(*path);
+    PlanStep child = std::move(path->back());
+    path->pop_back();
+    if (passes) {
+      ++candidates->accepted;
+      return child;
+    }
   }
-  candidates->clear();
+  candidates->window.clear();
+  candidates->next = 0;
+  candidates->rankedAll = true;
   return std::nullopt;
 }
 

@@ -35,20 +35,36 @@ class PlateJointPlanner {
   // stay, restarts re-seed below that node.
   PlateDesignResult run(const std::vector<PlanStep>& prefix = {});
   class SearchTree;
-  void backjump(size_t prefixSize, std::vector<PlanStep>* path, std::vector<std::vector<PlanStep>>* pending) const;
 
   // What the search and a step-by-step session share.
   // A structure no joints can make interlocking (a cut point, fewer than 3 plates): its result.
   std::optional<PlateDesignResult> refusal() const;
   std::vector<PlanStep> childrenOf(const std::vector<PlanStep>& steps);
   std::vector<PlanStep> candidatesOf(const std::vector<PlanStep>& steps);
-  std::optional<PlanStep> nextChild(const std::vector<PlanStep>& steps, std::vector<PlanStep>* candidates, int* accepted);
+  // A node's ranked candidates, taken from the front. Only a window of them is kept: a design of
+  // thousands of plates has thousands at each of thousands of depths (a LONG TABLE of 9,998
+  // plates held 2.6 GB of them 592 deep). When the window runs out the node is ranked again from
+  // the tie-breaking state it was first ranked with, which gives the same order.
+  struct RankedCandidates {
+    std::vector<PlanStep> window;
+    size_t next = 0;          // the window's next one
+    size_t windowStart = 0;   // its rank in the node's whole ranking
+    bool rankedAll = true;    // the window ends the ranking
+    uint64_t randomState = 0; // the tie-breaking state the node was ranked with
+    int accepted = 0;         // how many passed the node test
+  };
+  RankedCandidates rankedCandidatesOf(const std::vector<PlanStep>& steps);
+  // The next candidate of the node `path` that passes the node test, while fewer than m have
+  // passed; none when none is left. `path` is the same on return.
+  std::optional<PlanStep> nextChild(std::vector<PlanStep>* path, RankedCandidates* candidates);
   bool acceptComplete(const std::vector<PlanStep>& path, PlateDesignResult* result);
   int plateCount() const { return graph_.plateCount; }
   const std::string& lastRejection() const { return lastRejection_; }
+  void backjump(size_t prefixSize, std::vector<PlanStep>* path, std::vector<RankedCandidates>* pending) const;
 
  private:
   bool acceptable(const std::vector<PlanStep>& steps) const;
+  void takeWindow(std::vector<PlanStep> ranked, RankedCandidates* candidates) const;
   bool runsIntoARemainingPlate(int plate, size_t way, const std::vector<bool>& taken) const;
   bool runsIntoJointsSoFar(const std::vector<PlanStep>& path) const;
   bool heldByInequalities(const std::vector<PlanStep>& path) const;

@@ -38,23 +38,33 @@ std::string planFailure(const Assembly& model, const std::vector<Vec3>& directio
   return "";
 }
 
+// Each plate in turn, along its direction, against every plate after it in the order: the first
+// one it runs into (the earliest in the order) is named. Only plates whose bounds reach into the
+// region its bounds sweep are tried (SweptBoxIndex): comparing every pair was quadratic.
 std::string sweepFailure(const std::vector<Plate>& plates, const std::vector<int>& order,
                          const std::vector<Vec3>& directions, double tolerance, int* hitPosition,
                          const std::vector<std::pair<int, int>>& skip) {
   if (hitPosition) *hitPosition = -1;
   std::vector<TriangleMesh> meshes;
   for (const Plate& plate : plates) meshes.push_back(plateMesh(plate));
+  const SweptBoxIndex index(meshes);
+  std::vector<int> positionOf(plates.size(), -1);
+  for (size_t k = 0; k < order.size(); ++k) positionOf[order[k]] = static_cast<int>(k);
   const auto skipped = [&](int a, int b) {
     return std::find(skip.begin(), skip.end(), std::make_pair(std::min(a, b), std::max(a, b))) != skip.end();
   };
   for (size_t k = 0; k < directions.size(); ++k) {
-    for (size_t j = k + 1; j < order.size(); ++j) {
-      if (skipped(static_cast<int>(k), static_cast<int>(j))) continue;
-      if (meshCollidesAlong(meshes[order[k]], meshes[order[j]], directions[k], tolerance)) {
-        if (hitPosition) *hitPosition = static_cast<int>(j);
-        return "plate " + std::to_string(plates[order[k]].id) + " runs into plate " +
-               std::to_string(plates[order[j]].id) + " when it leaves";
-      }
+    int first = -1;  // the earliest position after k of a plate it runs into
+    index.anyInTheWay(order[k], directions[k], tolerance, [&](int q) {
+      const int j = positionOf[q];
+      if (j <= static_cast<int>(k) || (first >= 0 && j >= first) || skipped(static_cast<int>(k), j)) return false;
+      if (meshCollidesAlong(meshes[order[k]], meshes[q], directions[k], tolerance)) first = j;
+      return false;
+    });
+    if (first >= 0) {
+      if (hitPosition) *hitPosition = first;
+      return "plate " + std::to_string(plates[order[k]].id) + " runs into plate " + std::to_string(plates[order[first]].id) +
+             " when it leaves";
     }
   }
   return "";
