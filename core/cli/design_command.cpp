@@ -72,6 +72,7 @@ std::string seedsText(const DesignArguments& parsed) {
 }  // namespace
 
 int runDesignCommand(const std::vector<std::string>& args) {
+  const desia::cli::CommandClock clock;
   if (!args.empty() && args[0] == "plate") return runPlateDesignCommand(args);
   if (!args.empty() && args[0] == "frame") return runFrameDesignCommand(args);
   DesignArguments parsed = parseArguments(args);
@@ -85,6 +86,7 @@ int runDesignCommand(const std::vector<std::string>& args) {
   {
     desia::cli::LiveProgress progress(parsed.quiet, parsed.jobs > 1 ? ", " + std::to_string(parsed.jobs) + " seeds" : "");
     parsed.options.limits.onProgress = progress.callback();
+    clock.leaveRestToSearch(&parsed.options.limits);
     result = desia::cli::designVoxelPortfolio(document.voxels, parsed.options, parsed.jobs);
   }
   if (result.status != desia::DesignStatus::Success) {

@@ -3,6 +3,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <csignal>
 #include <cstdio>
@@ -53,6 +54,15 @@ bool parseSearchFlag(const std::string& flag, const std::string& value, const Se
     return false;
   }
   return true;
+}
+
+double CommandClock::seconds() const {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+}
+
+void CommandClock::leaveRestToSearch(DesignLimits* limits) const {
+  if (limits->timeLimitSeconds <= 0) return;
+  limits->timeLimitSeconds = std::max(limits->timeLimitSeconds - seconds(), 1e-6);
 }
 
 LiveProgress::LiveProgress(bool quiet, std::string suffix) : live_(!quiet && isatty(STDERR_FILENO)), suffix_(std::move(suffix)) {

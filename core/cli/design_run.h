@@ -4,6 +4,7 @@
 // only after the project's check passed on it as written.
 #pragma once
 
+#include <chrono>
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -22,6 +23,20 @@ struct SearchFlags {
 
 // Consumes `flag value` when it is a search flag (true); false leaves it to the command.
 bool parseSearchFlag(const std::string& flag, const std::string& value, const SearchFlags& into);
+
+// --time-limit bounds the whole command, not the search alone: reading and checking the input
+// count (a design of 9,998 plates takes seconds to read), and the search gets what is left.
+class CommandClock {
+ public:
+  CommandClock() : start_(std::chrono::steady_clock::now()) {}
+  double seconds() const;
+  // The search's time limit made the limit less the time spent so far (at least a moment: the
+  // search then stops after its first node, with what it has). No limit stays no limit.
+  void leaveRestToSearch(DesignLimits* limits) const;
+
+ private:
+  std::chrono::steady_clock::time_point start_;
+};
 
 // While it lives: Ctrl-C stops the search (it keeps what it has), and a terminal sees one line of
 // progress, redrawn at most five times a second (none with --quiet or when stderr is a file).

@@ -32,6 +32,7 @@ double positiveNumber(const std::string& flag, const std::string& text, double l
 }  // namespace
 
 int runFrameDesignCommand(const std::vector<std::string>& args) {
+  const desia::cli::CommandClock clock;
   std::string input, output;
   desia::FrameDesignOptions options;
   double jointSize = 0;
@@ -62,6 +63,7 @@ int runFrameDesignCommand(const std::vector<std::string>& args) {
   {
     desia::cli::LiveProgress progress(quiet);
     options.limits.onProgress = progress.callback();
+    clock.leaveRestToSearch(&options.limits);
     result = desia::designFrame(frame.layout, options);
   }
   if (result.status != desia::DesignStatus::Success) {

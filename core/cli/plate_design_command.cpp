@@ -42,6 +42,7 @@ int reportCutPoint(const desia::AssemblyDocument& document, const std::string& i
 }  // namespace
 
 int runPlateDesignCommand(const std::vector<std::string>& args) {
+  const desia::cli::CommandClock clock;
   std::string input, output, repairOutput;
   desia::PlateDesignOptions options;
   options.realization = desia::JointRealization::Auto;  // cut if possible, else milled, else planned
@@ -90,6 +91,7 @@ int runPlateDesignCommand(const std::vector<std::string>& args) {
   {
     desia::cli::LiveProgress progress(quiet);
     options.limits.onProgress = progress.callback();
+    clock.leaveRestToSearch(&options.limits);
     result = desia::designPlateJoints(document.plates, document.plateContacts, options);
   }
   if (result.status == desia::DesignStatus::CutPoint)
