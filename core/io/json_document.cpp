@@ -296,7 +296,7 @@ AssemblyDocument documentFromPlates(std::vector<Plate> plates, const PlateOption
 }
 
 AssemblyDocument parseJsonDocument(const std::string& text, const std::string& source) {
-  const json root = parseJsonText(text, source);
+  json root = parseJsonText(text, source);
   if (!root.is_object()) fail(source, "", "the JSON document must be an object");
   if (root.contains("format") && root["format"] != "desia-assembly") {
     fail(source, "format", "expected \"desia-assembly\", found " + root["format"].dump());
@@ -339,7 +339,7 @@ AssemblyDocument parseJsonDocument(const std::string& text, const std::string& s
   json geometry = json::object();
   for (const char* section : {"plates", "frame", "joints", "removal", "jointGeometry", "clearance", "fabricationPlates",
                               "contactTolerance"}) {
-    if (root.contains(section)) geometry[section] = root[section];
+    if (root.contains(section)) geometry[section] = std::move(root[section]);  // read: no second copy
   }
   if (!geometry.empty()) document.geometryJson = geometry.dump();
   return document;
