@@ -5,8 +5,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "desia/check.h"
 #include "desia/error.h"
@@ -15,6 +18,7 @@
 #include "desia/frame_format.h"
 #include "desia/mesh.h"
 #include "desia/puz_format.h"
+#include "frame/frame_designer.h"
 #include "test_support.h"
 
 namespace desia {
@@ -60,6 +64,30 @@ TEST(FrameDesign, FrameCubeIsInterlockingWithKeyOneAndRemovableInOrder) {
   const FrameDocument cube = loadFrameExample("frame_cube.json");
   EXPECT_EQ(cube.layout.frame.joints.size(), 8u);
   ExpectVerifiedResult(cube, design(cube), 12);
+}
+
+// The joint cubes are square to x, y and z: the FRAME CUBE turned about all three axes meets every
+// cube at an angle, its search finds nothing, and the message says that the turn is why (issue 24:
+// such a frame got "no interlocking joints exist" and no word about the turn).
+TEST(FrameDesign, AFrameTurnedOffTheAxesIsToldSo) {
+  std::string text = testing::readFileText(testing::projectPath("examples/frame/frame_cube.json"));
+  nlohmann::json document = nlohmann::json::parse(text);
+  const double a = 0.3, b = 0.2, c = 0.4;  // about x, then y, then z
+  for (nlohmann::json& joint : document["joints"]) {
+    const double x0 = joint["position"][0], y0 = joint["position"][1], z0 = joint["position"][2];
+    const double y1 = y0 * std::cos(a) - z0 * std::sin(a), z1 = y0 * std::sin(a) + z0 * std::cos(a);
+    const double x2 = x0 * std::cos(b) + z1 * std::sin(b), z2 = -x0 * std::sin(b) + z1 * std::cos(b);
+    const double x3 = x2 * std::cos(c) - y1 * std::sin(c), y3 = x2 * std::sin(c) + y1 * std::cos(c);
+    joint["position"] = {x3, y3, z2};
+  }
+  const FrameDocument turned = parseFrameText(document.dump(), "turned.json");
+  const FrameDesignResult result = design(turned);
+  ASSERT_EQ(result.status, DesignStatus::NotFound) << result.message;
+  EXPECT_NE(result.message.find("no beam meets its joints along the x, y or z axis"), std::string::npos) << result.message;
+  EXPECT_NE(result.message.find("turn it square to the axes"), std::string::npos) << result.message;
+  // Square to the axes (the same frame designs, above), nothing is said of turns.
+  EXPECT_EQ(frame_design::offTheAxesNote(loadFrameExample("frame_cube.json").layout.frame), "");
+  EXPECT_NE(frame_design::offTheAxesNote(turned.layout.frame), "");
 }
 
 TEST(FrameDesign, FrameChairIsInterlocking) {
