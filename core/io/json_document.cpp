@@ -295,8 +295,9 @@ AssemblyDocument documentFromPlates(std::vector<Plate> plates, const PlateOption
   return document;
 }
 
-AssemblyDocument parseJsonDocument(const std::string& text, const std::string& source) {
-  json root = parseJsonText(text, source);
+namespace {
+
+AssemblyDocument documentFromJson(json root, const std::string& source) {
   if (!root.is_object()) fail(source, "", "the JSON document must be an object");
   if (root.contains("format") && root["format"] != "desia-assembly") {
     fail(source, "format", "expected \"desia-assembly\", found " + root["format"].dump());
@@ -343,6 +344,29 @@ AssemblyDocument parseJsonDocument(const std::string& text, const std::string& s
   }
   if (!geometry.empty()) document.geometryJson = geometry.dump();
   return document;
+}
+
+// The text's first character that is not white space ('\0' for none).
+char firstNonBlank(const std::string& text) {
+  const size_t at = text.find_first_not_of(" \n\r\t");
+  return at == std::string::npos ? '\0' : text[at];
+}
+
+}  // namespace
+
+AssemblyDocument parseJsonDocument(const std::string& text, const std::string& source) {
+  return documentFromJson(parseJsonText(text, source), source);
+}
+
+AssemblyDocument parseAssemblyText(std::string&& text, const std::string& source) {
+  const char first = firstNonBlank(text);
+  if (isFpuzSource(source) || looksLikePuz(text) || (first != '{' && first != '[')) {
+    return parseAssemblyText(static_cast<const std::string&>(text), source);
+  }
+  // The text is let go once parsed: the parsed JSON and the text at once were the peak.
+  json root = parseJsonText(text, source);
+  std::string().swap(text);
+  return documentFromJson(std::move(root), source);
 }
 
 AssemblyDocument parseAssemblyText(const std::string& text, const std::string& source) {

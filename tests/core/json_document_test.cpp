@@ -82,6 +82,34 @@ INSTANTIATE_TEST_SUITE_P(
         BadJson{"noParts", R"({"kind": "plate", "parts": [], "contacts": []})", "parts: the assembly is empty"}),
     [](const auto& info) { return std::string(info.param.name); });
 
+// The reader that lets its text go once parsed (a moved string) reads what the other reads: a plate
+// design, a plate result with its geometry sections, a voxel .puz and a bad document's message.
+TEST(JsonDocument, ReadingAMovedTextGivesTheSameDocument) {
+  for (const char* path : {"examples/plate/table.json", "tests/golden/cases/plate/bench_2_bays-cut-s1/result.json",
+                           "tests/golden/cases/plate/bench_2_bays-planned-s1/result.json",
+                           "examples/voxel/Cube_4x4x4_K9.puz"}) {
+    const std::string text = testing::readFileText(testing::projectPath(path));
+    const AssemblyDocument kept = parseAssemblyText(text, path);
+    const AssemblyDocument moved = parseAssemblyText(std::string(text), path);
+    EXPECT_EQ(documentToJson(moved), documentToJson(kept)) << path;
+    EXPECT_EQ(moved.geometryJson, kept.geometryJson) << path;
+  }
+  const std::string bad = "{\"kind\": \"plate\", \"plates\": [{\"id\": 1, \"thickness\": -2}]}";
+  std::string keptMessage, movedMessage;
+  try {
+    parseAssemblyText(bad, "bad.json");
+  } catch (const Error& error) {
+    keptMessage = error.what();
+  }
+  try {
+    parseAssemblyText(std::string(bad), "bad.json");
+  } catch (const Error& error) {
+    movedMessage = error.what();
+  }
+  EXPECT_NE(keptMessage, "");
+  EXPECT_EQ(movedMessage, keptMessage);
+}
+
 TEST(CheckMethodNames, UnknownMethodIsBadInput) {
   EXPECT_EQ(parseCheckMethod("lp"), CheckMethod::Inequalities);
   EXPECT_THROW(parseCheckMethod("simplex"), Error);

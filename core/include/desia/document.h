@@ -47,6 +47,8 @@ struct AssemblyDocument {
 
 // Reads .puz or JSON text (detected from the content). `source` names the input in messages.
 AssemblyDocument parseAssemblyText(const std::string& text, const std::string& source = "<input>");
+// The same, letting the text go as soon as it is parsed (less memory for large documents).
+AssemblyDocument parseAssemblyText(std::string&& text, const std::string& source = "<input>");
 AssemblyDocument parseJsonDocument(const std::string& text, const std::string& source = "<input>");
 AssemblyDocument documentFromVoxels(VoxelGrid grid, std::string name = "");
 // A plate design: the plates validated, their contacts computed (they must all be connected), and
