@@ -8,6 +8,7 @@
 #include <csignal>
 #include <cstdio>
 #include <iostream>
+#include <limits>
 
 #include "cli_arguments.h"
 #include "cli_files.h"
@@ -62,7 +63,8 @@ double CommandClock::seconds() const {
 
 void CommandClock::leaveRestToSearch(DesignLimits* limits) const {
   if (limits->timeLimitSeconds <= 0) return;
-  limits->timeLimitSeconds = std::max(limits->timeLimitSeconds - seconds(), 1e-6);
+  // Nothing left: the smallest positive limit, so that the search stops at its first look at the clock.
+  limits->timeLimitSeconds = std::max(limits->timeLimitSeconds - seconds(), std::numeric_limits<double>::min());
 }
 
 LiveProgress::LiveProgress(bool quiet, std::string suffix) : live_(!quiet && isatty(STDERR_FILENO)), suffix_(std::move(suffix)) {
