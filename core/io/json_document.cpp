@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The JSON assembly document (docs/json-schema.md).
 #include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <optional>
 #include <nlohmann/json.hpp>
 #include <set>
 
@@ -93,6 +96,89 @@ std::vector<Part> parseParts(const json& root, const std::string& source) {
   return result;
 }
 
+// Contacts are the bulk of a plan's JSON (45,005 for a table of 4,002 plates), and a JSON object
+// per contact (a map of its four keys) took four times its text's size. Each well-formed contact is
+// packed as it is parsed into a binary value, which no JSON text can give, and parseContacts reads
+// it with the same checks as the object; anything else stays an object, for the checks to name.
+constexpr std::uint8_t kPackedContact = 0x43;
+constexpr int64_t kLargestPartId = 1 << 30;
+
+struct ContactFields {
+  int64_t a = 0, b = 0;
+  Vec3 normal{};
+  std::optional<double> area;
+};
+
+std::vector<std::uint8_t> packedContact(const ContactFields& fields) {
+  const double hasArea = fields.area ? 1 : 0, area = fields.area.value_or(0);
+  std::vector<std::uint8_t> bytes(sizeof(int64_t) * 2 + sizeof(double) * 5);
+  std::uint8_t* at = bytes.data();
+  for (const int64_t id : {fields.a, fields.b}) std::memcpy(at, &id, sizeof id), at += sizeof id;
+  for (const double value : {fields.normal[0], fields.normal[1], fields.normal[2], hasArea, area})
+    std::memcpy(at, &value, sizeof value), at += sizeof value;
+  return bytes;
+}
+
+ContactFields unpackedContact(const json::binary_t& bytes) {
+  ContactFields fields;
+  const std::uint8_t* at = bytes.data();
+  for (int64_t* id : {&fields.a, &fields.b}) std::memcpy(id, at, sizeof *id), at += sizeof *id;
+  double values[5];
+  std::memcpy(values, at, sizeof values);
+  fields.normal = {values[0], values[1], values[2]};
+  if (values[3] != 0) fields.area = values[4];
+  return fields;
+}
+
+// The contact's fields when it has exactly the form parseContacts accepts (ids in range, a normal
+// of three numbers, a number for its area, no other key); none otherwise.
+std::optional<ContactFields> wellFormedContact(const json& entry) {
+  if (!entry.is_object() || !entry.contains("a") || !entry.contains("b") || !entry.contains("normal")) return std::nullopt;
+  ContactFields fields;
+  for (const auto& [key, value] : entry.items()) {
+    if (key == "a" || key == "b") {
+      if (!value.is_number_integer()) return std::nullopt;
+      const bool inRange = value.is_number_unsigned()
+                               ? value.get<uint64_t>() >= 1 && value.get<uint64_t>() <= static_cast<uint64_t>(kLargestPartId)
+                               : value.get<int64_t>() >= 1 && value.get<int64_t>() <= kLargestPartId;
+      if (!inRange) return std::nullopt;
+      (key == "a" ? fields.a : fields.b) = value.get<int64_t>();
+    } else if (key == "normal") {
+      if (!value.is_array() || value.size() != 3) return std::nullopt;
+      for (int k = 0; k < 3; ++k) {
+        if (!value[k].is_number()) return std::nullopt;
+        fields.normal[k] = value[k].get<double>();
+      }
+    } else if (key == "area") {
+      if (!value.is_number()) return std::nullopt;
+      fields.area = value.get<double>();
+    } else {
+      return std::nullopt;
+    }
+  }
+  return fields;
+}
+
+// A document's JSON, with the root's contacts packed as they are parsed (only documents that have
+// contacts are parsed with a callback: it is called for every value, a voxel grid's millions too).
+json parseDocumentJson(const std::string& text, const std::string& source) {
+  if (text.find("\"contacts\"") == std::string::npos) return parseJsonText(text, source);
+  std::string rootKey;
+  return parseJsonText(text, source, [&rootKey](int depth, json::parse_event_t event, json& parsed) {
+    if (depth == 1 && event == json::parse_event_t::key) rootKey = parsed.get<std::string>();
+    if (depth == 2 && event == json::parse_event_t::object_end && rootKey == "contacts") {
+      if (const std::optional<ContactFields> fields = wellFormedContact(parsed))
+        parsed = json::binary(packedContact(*fields), kPackedContact);
+    }
+    return true;
+  });
+}
+
+bool isPackedContact(const json& entry) {
+  return entry.is_binary() && entry.get_binary().has_subtype() && entry.get_binary().subtype() == kPackedContact;
+}
+
+// Each contact checked in one order, packed or not (a packed contact passed the checks of form).
 std::vector<Contact> parseContacts(const json& root, const Assembly& assembly, const std::string& source) {
   const json& contacts = require(root, "contacts", source, "");
   if (!contacts.is_array()) fail(source, "contacts", "expected an array");
@@ -101,35 +187,44 @@ std::vector<Contact> parseContacts(const json& root, const Assembly& assembly, c
   for (size_t i = 0; i < contacts.size(); ++i) {
     const std::string path = "contacts[" + std::to_string(i) + "]";
     const json& entry = contacts[i];
-    if (!entry.is_object()) fail(source, path, "expected an object {a, b, normal}");
+    const bool packed = isPackedContact(entry);
+    const ContactFields given = packed ? unpackedContact(entry.get_binary()) : ContactFields{};
+    if (!packed && !entry.is_object()) fail(source, path, "expected an object {a, b, normal}");
     Contact contact;
     for (const char* side : {"a", "b"}) {
-      const int id = static_cast<int>(integerField(require(entry, side, source, path), source, path + "." + side, 1, 1 << 30));
-      const int index = assembly.indexOfId(id);
+      const int64_t id = packed ? (side[0] == 'a' ? given.a : given.b)
+                                : integerField(require(entry, side, source, path), source, path + "." + side, 1, kLargestPartId);
+      const int index = assembly.indexOfId(static_cast<int>(id));
       if (index < 0) fail(source, path + "." + side, "part " + std::to_string(id) + " is not in 'parts'");
       (side[0] == 'a' ? contact.a : contact.b) = index;
     }
     if (contact.a == contact.b) fail(source, path, "a part cannot touch itself (a = b = " + std::to_string(assembly.parts[contact.a].id) + ")");
-    const json& normal = require(entry, "normal", source, path);
-    if (!normal.is_array() || normal.size() != 3) fail(source, path + ".normal", "expected [nx, ny, nz]");
-    Vec3 raw{};
+    Vec3 raw = given.normal;
+    if (!packed) {
+      const json& normal = require(entry, "normal", source, path);
+      if (!normal.is_array() || normal.size() != 3) fail(source, path + ".normal", "expected [nx, ny, nz]");
+      for (int k = 0; k < 3; ++k) {
+        if (!normal[k].is_number()) fail(source, path + ".normal", "expected three numbers, found " + normal.dump());
+        raw[k] = normal[k].get<double>();
+      }
+    }
     for (int k = 0; k < 3; ++k) {
-      if (!normal[k].is_number()) fail(source, path + ".normal", "expected three numbers, found " + normal.dump());
-      raw[k] = normal[k].get<double>();
       if (!std::isfinite(raw[k])) fail(source, path + ".normal", "is not finite");
     }
     const std::optional<Vec3> unit = cleanedNormal(raw);
     if (!unit) fail(source, path + ".normal", "is the zero vector");
     contact.normal = *unit;
-    if (entry.contains("area")) {
-      if (!entry["area"].is_number() || !(entry["area"].get<double>() > 0)) fail(source, path + ".area", "expected a positive number");
-      contact.area = entry["area"].get<double>();
+    const bool hasArea = packed ? given.area.has_value() : entry.contains("area");
+    if (hasArea) {
+      const bool number = packed || entry["area"].is_number();
+      const double area = packed ? *given.area : number ? entry["area"].get<double>() : 0;
+      if (!number || !(area > 0)) fail(source, path + ".area", "expected a positive number");
+      contact.area = area;
     }
     result.push_back(contact);
   }
   return result;
 }
-
 
 // The ids of `plates` must be exactly the parts' ids: one plate per part, one part per plate.
 void requirePlatePerPart(const std::vector<Plate>& plates, const Assembly& assembly, const std::string& source,
@@ -355,7 +450,7 @@ char firstNonBlank(const std::string& text) {
 }  // namespace
 
 AssemblyDocument parseJsonDocument(const std::string& text, const std::string& source) {
-  return documentFromJson(parseJsonText(text, source), source);
+  return documentFromJson(parseDocumentJson(text, source), source);
 }
 
 AssemblyDocument parseAssemblyText(std::string&& text, const std::string& source) {
@@ -364,7 +459,7 @@ AssemblyDocument parseAssemblyText(std::string&& text, const std::string& source
     return parseAssemblyText(static_cast<const std::string&>(text), source);
   }
   // The text is let go once parsed: the parsed JSON and the text at once were the peak.
-  json root = parseJsonText(text, source);
+  json root = parseDocumentJson(text, source);
   std::string().swap(text);
   return documentFromJson(std::move(root), source);
 }

@@ -105,10 +105,10 @@ void refuseDeepNesting(const std::string& text, const std::string& source) {
 
 }  // namespace
 
-json parseJsonText(const std::string& text, const std::string& source) {
+json parseJsonText(const std::string& text, const std::string& source, const json::parser_callback_t& callback) {
   refuseDeepNesting(text, source);
   try {
-    return json::parse(text);
+    return json::parse(text, callback);
   } catch (const json::parse_error& e) {
     std::string message = e.what();
     // nlohmann prefixes "[json.exception.parse_error.101] parse error at line 1, column 2: ".

@@ -14,6 +14,7 @@ constexpr int kMaxJsonNesting = 256;
 
 // Parses `text`; throws BadInput naming `source`, line and column for malformed JSON, and the
 // path of the first value nested deeper than kMaxJsonNesting.
-nlohmann::json parseJsonText(const std::string& text, const std::string& source);
+nlohmann::json parseJsonText(const std::string& text, const std::string& source,
+                             const nlohmann::json::parser_callback_t& callback = nullptr);
 
 }  // namespace desia

@@ -79,7 +79,14 @@ INSTANTIATE_TEST_SUITE_P(
         BadJson{"zeroNormal", R"({"kind": "contacts", "parts": [{"id": 1}, {"id": 2}], "contacts": [{"a": 1, "b": 2, "normal": [0, 0, 0]}]})", "contacts[0].normal: is the zero vector"},
         BadJson{"selfContact", R"({"kind": "contacts", "parts": [{"id": 1}], "contacts": [{"a": 1, "b": 1, "normal": [1, 0, 0]}]})", "contacts[0]: a part cannot touch itself"},
         BadJson{"duplicateId", R"({"kind": "contacts", "parts": [{"id": 1}, {"id": 1}], "contacts": []})", "parts[1].id: duplicate part id 1"},
-        BadJson{"noParts", R"({"kind": "plate", "parts": [], "contacts": []})", "parts: the assembly is empty"}),
+        BadJson{"noParts", R"({"kind": "plate", "parts": [], "contacts": []})", "parts: the assembly is empty"},
+        // Contacts of a well-formed shape are packed as they are parsed, the others stay objects:
+        // both are checked in one order and named alike.
+        BadJson{"zeroArea", R"({"kind": "contacts", "parts": [{"id": 1}, {"id": 2}], "contacts": [{"a": 1, "b": 2, "normal": [1, 0, 0], "area": 0}]})", "contacts[0].area: expected a positive number"},
+        BadJson{"textArea", R"({"kind": "contacts", "parts": [{"id": 1}, {"id": 2}], "contacts": [{"a": 1, "b": 2, "normal": [1, 0, 0], "area": "big"}]})", "contacts[0].area: expected a positive number"},
+        BadJson{"idZero", R"({"kind": "contacts", "parts": [{"id": 1}, {"id": 2}], "contacts": [{"a": 0, "b": 2, "normal": [1, 0, 0]}]})", "contacts[0].a: 0 is out of range"},
+        BadJson{"shortNormal", R"({"kind": "contacts", "parts": [{"id": 1}, {"id": 2}], "contacts": [{"a": 1, "b": 2, "normal": [1, 0]}]})", "contacts[0].normal: expected [nx, ny, nz]"},
+        BadJson{"secondContactUnknownPart", R"({"kind": "contacts", "parts": [{"id": 1}, {"id": 2}], "contacts": [{"a": 1, "b": 2, "normal": [1, 0, 0]}, {"a": 7, "b": 2, "normal": [1, 0, 0], "note": "x"}]})", "contacts[1].a: part 7 is not in 'parts'"}),
     [](const auto& info) { return std::string(info.param.name); });
 
 // The reader that lets its text go once parsed (a moved string) reads what the other reads: a plate
@@ -108,6 +115,26 @@ TEST(JsonDocument, ReadingAMovedTextGivesTheSameDocument) {
   }
   EXPECT_NE(keptMessage, "");
   EXPECT_EQ(movedMessage, keptMessage);
+}
+
+// Packed on parsing or not (an extra key keeps a contact an object), contacts read the same.
+TEST(JsonDocument, ContactsReadTheSamePackedOrNot) {
+  const std::string packed =
+      R"({"kind": "contacts", "parts": [{"id": 1}, {"id": 2}, {"id": 5}], "contacts": [)"
+      R"({"a": 1, "b": 2, "normal": [0, 0, 2], "area": 12.5}, {"a": 5, "b": 1, "normal": [0.6, -0.8, 0]}]})";
+  std::string objects = packed;
+  const std::string note = "\"note\": \"kept as an object\", ";
+  for (size_t at = objects.find("\"normal\""); at != std::string::npos;
+       at = objects.find("\"normal\"", at + note.size() + 1)) {
+    objects.insert(at, note);
+  }
+  ASSERT_NE(objects, packed);
+  const AssemblyDocument a = parseAssemblyText(packed, "packed.json"), b = parseAssemblyText(objects, "objects.json");
+  ASSERT_EQ(a.assembly.contacts.size(), 2u);
+  EXPECT_EQ(documentToJson(a), documentToJson(b));
+  EXPECT_EQ(a.assembly.contacts[0].normal, (Vec3{0, 0, 1}));
+  EXPECT_EQ(a.assembly.contacts[0].area, 12.5);
+  EXPECT_EQ(a.assembly.parts[a.assembly.contacts[1].a].id, 5);
 }
 
 TEST(CheckMethodNames, UnknownMethodIsBadInput) {
