@@ -415,6 +415,7 @@ export class AssemblyView {
   /** Frames the assembly again from the usual three-quarter view (double-click on the view). */
   fit() {
     if (!this.available || this.#meshes.size === 0) return;
+    if (this.#step === 0) this.#widened = false; // assembled: the assembly alone again
     this.#fitCamera(this.#framingBox());
     this.requestRender();
   }
@@ -518,6 +519,12 @@ export class AssemblyView {
   /** What the camera was last fitted to, so explode changes can keep the same framing. */
   #framed = null;
 
+  /**
+   * Whether the framing takes in the removal paths and the tray: not until the disassembly is
+   * played (a step past 0), so that a result first fills the view; playing widens it once.
+   */
+  #widened = false;
+
   #fitDistance(box) {
     const radius = Math.max(box.getSize(new THREE.Vector3()).length() / 2, 1);
     // The narrower of the vertical and horizontal fields of view decides what fits.
@@ -539,6 +546,7 @@ export class AssemblyView {
    */
   applyReport(report, { keepCamera = false } = {}) {
     if (!this.available) return;
+    if (!keepCamera) this.#widened = false;
     this.#keyId = report?.key ?? null;
     // A plate design without joints is not interlocking by nature: greying out all but its
     // witness would hide the design. Its cut points (no joints can help) are marked instead.
@@ -546,7 +554,8 @@ export class AssemblyView {
     // The same for a frame without joints: its beams merely touch.
     const structure = plate || report?.kind === 'frame';
     const witnessParts = new Set(structure ? [] : (report?.witness?.parts ?? []));
-    this.#cutPoints = new Set(plate ? (report?.cutPoints ?? []) : []);
+    // Cut points: a plate's from its check; a frame's once the core's frame check reports them.
+    this.#cutPoints = new Set(structure ? (report?.cutPoints ?? []) : []);
     for (const [partId, mesh] of this.#meshes) {
       const isKey = partId === this.#keyId;
       const isCut = this.#cutPoints.has(partId);
@@ -588,6 +597,11 @@ export class AssemblyView {
   setDisassemblyStep(step) {
     this.#step = Number.isFinite(step) ? Math.max(step, 0) : 0;
     this.#updatePositions();
+    // The first step of a played disassembly widens the framing to the paths and the tray.
+    if (this.#step > 0 && !this.#widened && this.#meshes.size > 0) {
+      this.#widened = true;
+      this.#reframe();
+    }
   }
 
   /**
@@ -849,9 +863,13 @@ export class AssemblyView {
     mesh.children[0].material.opacity = (mesh.userData.baseEdgeOpacity ?? 0.55) * fade;
   }
 
-  /** What the camera frames: the parts as exploded, and where their removal paths take them. */
+  /**
+   * What the camera frames: the parts as exploded; once the disassembly is played (#widened), also
+   * where their removal paths take them and the tray.
+   */
   #framingBox() {
     const box = this.#explodedBox();
+    if (!this.#widened) return box.translate(new THREE.Vector3(0, this.#lift.position.y, 0));
     const partBox = new THREE.Box3();
     for (const [partId, mesh] of this.#meshes) {
       const motion = this.#motions.get(partId);
@@ -910,7 +928,34 @@ export class AssemblyView {
       target: this.available ? this.#controls.target.toArray() : null,
       gridCell: this.#scale.cell,
       removalStep: this.#scale.step,
+      widened: this.#widened,
+      ...this.#screenFill(),
     };
+  }
+
+  /**
+   * The share of the view's width and height the visible parts cover on screen (0..1 each; the
+   * box around their projected bounding-box corners, clipped to the view).
+   */
+  #screenFill() {
+    if (!this.available || this.#meshes.size === 0) return { fillWidth: 0, fillHeight: 0 };
+    this.#camera.updateMatrixWorld();
+    this.#scene.updateMatrixWorld();
+    const box = new THREE.Box3();
+    const corner = new THREE.Vector3();
+    let minX = Infinity; let maxX = -Infinity; let minY = Infinity; let maxY = -Infinity;
+    for (const mesh of this.#meshes.values()) {
+      if (!mesh.visible) continue;
+      box.copy(mesh.geometry.boundingBox).applyMatrix4(mesh.matrixWorld);
+      for (let k = 0; k < 8; k += 1) {
+        corner.set(k & 1 ? box.max.x : box.min.x, k & 2 ? box.max.y : box.min.y, k & 4 ? box.max.z : box.min.z).project(this.#camera);
+        minX = Math.min(minX, corner.x); maxX = Math.max(maxX, corner.x);
+        minY = Math.min(minY, corner.y); maxY = Math.max(maxY, corner.y);
+      }
+    }
+    const clip = (value) => Math.min(Math.max(value, -1), 1);
+    if (!Number.isFinite(minX)) return { fillWidth: 0, fillHeight: 0 };
+    return { fillWidth: (clip(maxX) - clip(minX)) / 2, fillHeight: (clip(maxY) - clip(minY)) / 2 };
   }
 
   /**
