@@ -162,14 +162,19 @@ export function createExportPanel({ core }) {
    * warning in plain sight: someone may cut wood from them.
    */
   function renderWarning() {
-    const text = assembly && !assembly.verified ? warningText(assembly) : '';
+    const text = assembly && (!assembly.verified || assembly.planned) ? warningText(assembly) : '';
     ui.warning.textContent = text;
     ui.warning.hidden = !text;
     ui.panel.dataset.unverified = String(Boolean(text));
   }
 
-  function warningText({ name, kind, unjointed, reason, parts }) {
+  function warningText({ name, kind, unjointed, reason, parts, planned, verified }) {
     const noun = partNoun(kind);
+    if (planned && verified) {
+      // The paper's plan alone (Joints: planned): verified as a plan, but no joint is in the plates.
+      return `Joints planned, not cut: ${name} says which joint goes where (the Joints list), but these files are `
+        + 'the bare plates (plain outlines on the cut sheets). Design with Joints auto, cut or milled for plates with their joints.';
+    }
     if (kind === 'voxel' && parts <= 1) return ''; // a shape to design from: one part, nothing to hold
     if (kind === 'contacts') return '';
     if (unjointed) {
@@ -182,7 +187,8 @@ export function createExportPanel({ core }) {
 
   /** What a saved file's message adds when the assembly is not verified. */
   function unverifiedSuffix() {
-    return assembly && !assembly.verified && ui.warning.textContent ? ' Not jointed or verified: see the warning above.' : '';
+    if (!assembly || !ui.warning.textContent) return '';
+    return assembly.verified ? ' Joints not cut: see the warning above.' : ' Not jointed or verified: see the warning above.';
   }
 
   /**
@@ -349,6 +355,7 @@ export function createExportPanel({ core }) {
         partIds: report?.partIds ?? [],
         parts: report?.parts ?? report?.partIds?.length ?? 0,
         milled: report?.kind === 'plate' && document_?.jointGeometry === 'milled',
+        planned: report?.kind === 'plate' && document_?.jointGeometry === 'planned',
         verified: report?.verdict === 'interlocking',
         unjointed: Boolean(unjointedKind(document_)),
         reason: report?.reason ?? '',

@@ -243,6 +243,17 @@ for (const viewport of [{ width: 1400, height: 900 }, { width: 390, height: 844 
       await page.locator('#export-panel').scrollIntoViewIfNeeded();
       await screenshot(page, `first-screen-export-warning-${size}`);
 
+      // The paper's plan alone (Joints: planned): verified, but no joint is in the plates.
+      await page.selectOption('#example-select', 'table.json');
+      await waitForReady(page, 'table.json');
+      await page.selectOption('#design-joints', 'planned');
+      const planned = await design(page);
+      assert.equal(planned.outcome, 'success', planned.message);
+      await page.waitForFunction(() => document.body.dataset.status === 'ready');
+      await page.selectOption('#export-format', 'svg');
+      assert.equal(await page.isVisible('#export-warning'), true);
+      assert.match(await page.textContent('#export-warning'), /^Joints planned, not cut: table_plan_seed1\.json says which joint goes where/);
+
       // A milled result: SVG and DXF greyed, the reason in the panel, not only in a tooltip.
       await page.selectOption('#example-select', 'mitred_box.json');
       await waitForReady(page, 'mitred_box.json');
