@@ -122,6 +122,20 @@ for (const viewport of [{ width: 1400, height: 900 }, { width: 390, height: 844 
         assert.deepEqual(small, [], `controls under ${TAP_PX} px`);
         const loop = await page.locator('#disassembly-loop').evaluate((box) => box.closest('label').getBoundingClientRect().height);
         assert.ok(loop >= TAP_PX, `Loop is ${loop} px tall (it was 13)`);
+        // Every control of the page, with every section unfolded (the issue counted 48 under 32 px).
+        const folded = await page.evaluate(() => [...document.querySelectorAll('details:not([open])')].map((details) => {
+          details.open = true;
+          return details.id;
+        }));
+        const everywhere = await page.evaluate((minimum) => [...document.querySelectorAll('button, select, input, summary, a, .part-item')]
+          .filter((node) => node.getClientRects().length > 0 && node.type !== 'file'
+            && !(node.type === 'checkbox' && node.closest('label')?.getBoundingClientRect().height >= minimum))
+          .map((node) => {
+            const box = node.getBoundingClientRect();
+            return { id: node.id || node.className || node.tagName, width: Math.round(box.width), height: Math.round(box.height) };
+          }).filter((box) => box.width < minimum || box.height < minimum), TAP_PX);
+        assert.deepEqual(everywhere, [], `controls under ${TAP_PX} px anywhere on the page`);
+        await page.evaluate((ids) => { for (const id of ids) if (id) document.getElementById(id).open = false; }, folded);
       } else {
         assert.equal(layout.settingsOpen, true, 'wide screens show the settings');
       }
