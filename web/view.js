@@ -29,7 +29,7 @@
 import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { RUN_OUT_VOXELS, layOutTray, pointAlong, removalMotions, stepMotions, stepsToPlay } from './view-motions.js';
-import { fitCamera, reframeCamera, screenFill } from './view-camera.js';
+import { fitCamera, fitDistance, reframeCamera, screenFill, setDepthRange } from './view-camera.js';
 import { isClick, pickPart, screenPointOf } from './view-picking.js';
 
 export {
@@ -1051,7 +1051,21 @@ export class AssemblyView {
     const width = Math.max(this.#container.clientWidth, 1);
     const height = Math.max(this.#container.clientHeight, 1);
     this.#renderer.setSize(width, height, false);
-    this.#camera.aspect = width / height;
+    const aspect = width / height;
+    if (aspect !== this.#camera.aspect && this.#framed && this.#meshes.size > 0) {
+      // A narrower or wider view: the camera moves in or out along its line of sight so that
+      // what was framed still fits as it did (direction, target and relative zoom kept).
+      const box = this.#framingBox();
+      const before = fitDistance(this.#camera, box);
+      this.#camera.aspect = aspect;
+      const ratio = fitDistance(this.#camera, box) / before;
+      const offset = this.#camera.position.clone().sub(this.#controls.target).multiplyScalar(ratio);
+      this.#camera.position.copy(this.#controls.target).add(offset);
+      this.#framed = { ...this.#framed, distance: this.#framed.distance * ratio };
+      setDepthRange(this.#camera, this.#controls, Math.max(this.#framed.distance, offset.length()));
+      this.#controls.update();
+    }
+    this.#camera.aspect = aspect;
     this.#camera.updateProjectionMatrix();
     this.requestRender();
   }

@@ -83,6 +83,26 @@ for (const viewport of [{ width: 1400, height: 900 }, { width: 390, height: 844 
       assert.deepEqual(intro.steps.map((step) => step.text), ['1 Pick an example', '2 Design', '3 Play / export']);
       assert.ok(intro.steps.every((step) => step.visible), 'the three steps are visible');
       assert.equal(intro.next, 'design', 'a shape: Design is the next step');
+      if (!phone) {
+        // Below 1400 px too (the tagline used to be hidden there): the steps are visible, and the
+        // toolbar fits (nothing cut off at its right end).
+        await page.setViewportSize({ width: 1000, height: 800 });
+        const narrow = await page.evaluate(() => ({
+          steps: [...document.querySelectorAll('#intro .intro-step')].map((step) => step.getBoundingClientRect().toJSON()),
+          toolbar: { scroll: document.querySelector('.toolbar').scrollWidth, client: document.querySelector('.toolbar').clientWidth },
+          status: document.querySelector('.toolbar-status').getBoundingClientRect().right,
+        }));
+        await page.waitForTimeout(200); // the view's ResizeObserver
+        const fill = await framing(page);
+        await screenshot(page, 'first-screen-start-1000');
+        if (fill.distance > 0) {
+          // The narrower view moved the camera back: the shape still fits (it overflowed before).
+          assert.ok(fill.fillWidth > 0.3 && fill.fillWidth < 0.95, `the shape fills ${fill.fillWidth} of the narrower view`);
+        }
+        assert.ok(narrow.steps.every((box) => box.width > 0 && box.bottom < 200), `steps at 1000 px: ${JSON.stringify(narrow.steps)}`);
+        assert.ok(narrow.toolbar.scroll <= narrow.toolbar.client && narrow.status <= 1000, `toolbar at 1000 px: ${JSON.stringify(narrow)}`);
+        await page.setViewportSize(viewport);
+      }
       // Plain toolbar words: no "Test: graphs (DBG)" jargon alone.
       const method = await page.evaluate(() => document.querySelector('#method-select').selectedOptions[0].textContent);
       assert.equal(method, 'blocking graphs (fast)');
