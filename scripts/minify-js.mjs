@@ -47,6 +47,7 @@ function needsSpace(previous, previousToken, next) {
   if (a === '<' && b === '!') return true; // <!-- (an HTML comment in scripts)
   if (a === '-' && b === '>') return true; // -->
   if (previousToken.type.label === 'num' && b === '.') return true; // 1 .toString()
+  if (previousToken.type.label === 'regexp' && IDENTIFIER_PART.test(b)) return true; // /x/ instanceof
   return false;
 }
 
