@@ -17,13 +17,23 @@
 // becomes vendor/three/), always as a RELATIVE URL, so the folder works at any path of any static
 // host (https://example.org/desia/ as well as /). Inline scripts whose text changes get their
 // Content-Security-Policy hash recomputed. The build fails when a file refers to something the
-// site does not contain, or when a listed example is missing. Prints the size on its last line.
+// site does not contain, or when a listed example is missing.
+//
+// For a light first visit, every JavaScript file is then minified (comments and whitespace only,
+// checked to parse to the same syntax tree: scripts/minify-js.mjs; three.js ships no minified
+// build) and every file gets precompressed copies beside it, `x.br` (brotli) and `x.gz` (gzip),
+// which hosts that support them send to browsers that accept them (docs/playground.md; the
+// development server does: node scripts/serve.mjs --root dist/site). `--no-minify` keeps the
+// JavaScript as written. Prints the size on its last line.
 
 import { createHash } from 'node:crypto';
+import { promisify } from 'node:util';
+import zlib from 'node:zlib';
 import { existsSync, readFileSync } from 'node:fs';
 import { cp, mkdir, readdir, readFile, rename, rm, stat, writeFile } from 'node:fs/promises';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
+import { minifyJs } from './minify-js.mjs';
 
 const ROOT = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
 const DEFAULT_OUT = path.join(ROOT, 'dist/site');
@@ -150,17 +160,61 @@ async function listFiles(dir, base = dir) {
 
 function parseArguments(argv) {
   let out = DEFAULT_OUT;
+  let minify = true;
   for (let i = 0; i < argv.length; i += 1) {
     if (argv[i] === '--out') out = argv[++i];
     else if (argv[i].startsWith('--out=')) out = argv[i].slice('--out='.length);
-    else throw new SiteError(`unknown argument ${argv[i]} (usage: node scripts/build-site.mjs [--out DIR])`);
+    else if (argv[i] === '--no-minify') minify = false;
+    else throw new SiteError(`unknown argument ${argv[i]} (usage: node scripts/build-site.mjs [--out DIR] [--no-minify])`);
   }
   if (!out) throw new SiteError('--out needs a folder');
-  return path.resolve(out);
+  return { out: path.resolve(out), minify };
 }
 
-/** Builds the site into `out`; returns { files, bytes }. */
-export async function buildSite(out = DEFAULT_OUT) {
+const brotli = promisify(zlib.brotliCompress);
+const gzip = promisify(zlib.gzip);
+/** The precompressed copies written beside each file: suffix → compressor (best settings). */
+const PRECOMPRESSED = [
+  ['.br', (bytes) => brotli(bytes, {
+    params: { [zlib.constants.BROTLI_PARAM_QUALITY]: zlib.constants.BROTLI_MAX_QUALITY, [zlib.constants.BROTLI_PARAM_SIZE_HINT]: bytes.length },
+  })],
+  ['.gz', (bytes) => gzip(bytes, { level: zlib.constants.Z_BEST_COMPRESSION })],
+];
+
+/**
+ * Minifies the site's JavaScript in place (unless `minify` is false), then writes `x.br` and
+ * `x.gz` beside every file `x` (a copy that would not be smaller is left out, so a host sends
+ * the file itself). Returns the bytes of the files and of each compressed set.
+ */
+async function finishFiles(dir, files, { minify }) {
+  const totals = { bytes: 0, '.br': 0, '.gz': 0, compressedFiles: 0 };
+  for (const file of files) {
+    const full = path.join(dir, file);
+    let bytes = await readFile(full);
+    if (minify && file.endsWith('.js')) {
+      bytes = Buffer.from(minifyJs(bytes.toString('utf8')), 'utf8');
+      await writeFile(full, bytes);
+    }
+    totals.bytes += bytes.length;
+    for (const [suffix, compress] of PRECOMPRESSED) {
+      const packed = await compress(bytes);
+      if (packed.length < bytes.length) {
+        await writeFile(full + suffix, packed);
+        totals[suffix] += packed.length;
+        totals.compressedFiles += 1;
+      } else {
+        totals[suffix] += bytes.length;
+      }
+    }
+  }
+  return totals;
+}
+
+/**
+ * Builds the site into `out`; returns { files, bytes, brotliBytes, gzipBytes } (the files
+ * themselves, without the precompressed copies; their sizes as a browser would receive them).
+ */
+export async function buildSite(out = DEFAULT_OUT, { minify = true } = {}) {
   for (const [file, fix] of [
     ['dist/desia_wasm.js', 'bash scripts/build.sh wasm'], ['dist/desia_wasm.wasm', 'bash scripts/build.sh wasm'],
     ['node_modules/three/package.json', 'bash scripts/setup.sh (installs three from the npm registry)'],
@@ -266,12 +320,11 @@ export async function buildSite(out = DEFAULT_OUT) {
       if (!files.some((file) => file.startsWith(target))) throw new SiteError(`${from}: ${spec} names an empty folder of the site`);
     }
 
+    const totals = await finishFiles(staging, files, { minify });
     await rm(out, { recursive: true, force: true });
     await mkdir(path.dirname(out), { recursive: true });
     await rename(staging, out);
-    let bytes = 0;
-    for (const file of files) bytes += (await stat(path.join(out, file))).size;
-    return { files: files.length, bytes };
+    return { files: files.length, bytes: totals.bytes, brotliBytes: totals['.br'], gzipBytes: totals['.gz'] };
   } catch (error) {
     await rm(staging, { recursive: true, force: true });
     throw error;
@@ -280,10 +333,12 @@ export async function buildSite(out = DEFAULT_OUT) {
 
 async function main() {
   try {
-    const out = parseArguments(process.argv.slice(2));
-    const { files, bytes } = await buildSite(out);
+    const { out, minify } = parseArguments(process.argv.slice(2));
+    const { files, bytes, brotliBytes, gzipBytes } = await buildSite(out, { minify });
     const shown = path.relative(process.cwd(), out) || '.';
-    console.log(`${shown.startsWith('..') ? out : shown}: ${files} files, ${(bytes / 1e6).toFixed(1)} MB (${bytes} bytes)`);
+    const mb = (n) => (n / 1e6).toFixed(2);
+    console.log(`${shown.startsWith('..') ? out : shown}: ${files} files, ${(bytes / 1e6).toFixed(1)} MB (${bytes} bytes; `
+      + `brotli ${mb(brotliBytes)} MB, gzip ${mb(gzipBytes)} MB, precompressed beside each file)`);
   } catch (error) {
     console.error(`build-site: ${error instanceof SiteError ? error.message : error.stack}`);
     process.exit(1);

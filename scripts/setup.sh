@@ -75,8 +75,9 @@ else
   log "Clipper sources present"
 fi
 
-# npm packages (three, playwright-core); package-lock.json pins them.
-if [ ! -d "$root/node_modules/three" ] || [ ! -d "$root/node_modules/playwright-core" ]; then
+# npm packages (three, playwright-core, and manifold-3d for the tests); package-lock.json pins them.
+if [ ! -d "$root/node_modules/three" ] || [ ! -d "$root/node_modules/playwright-core" ] ||
+  [ ! -d "$root/node_modules/manifold-3d" ]; then
   log "installing npm packages"
   if [ -f package-lock.json ]; then npm ci --no-audit --no-fund; else npm install --no-audit --no-fund; fi
 else

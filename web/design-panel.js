@@ -100,6 +100,7 @@ const ui = {
   sessionFinish: byId('session-finish'),
   sessionChildren: byId('session-children'),
   input: byId('design-input'),
+  difficulty: byId('design-difficulty'),
 };
 
 /** How often the elapsed time moves while the core is busy between progress messages. */
@@ -349,6 +350,18 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy, showL
     showLive(snapshot, kind);
   }
 
+  /**
+   * Before Design: how hard the request is (voxels per part, live-design.js), for a voxel shape
+   * and a whole N; the same line the progress shows while it runs. Hidden otherwise.
+   */
+  function renderDifficulty() {
+    const parts = Number(FIELDS.parts.value.trim());
+    const text = kind === 'voxel' && inputVoxels > 0 && Number.isInteger(parts) && parts >= MIN_PARTS
+      ? difficultyText(inputVoxels, parts) : '';
+    ui.difficulty.textContent = text ? `N = ${parts}: ${text}` : '';
+    ui.difficulty.hidden = !text;
+  }
+
   /** The line under the progress with the difficulty and the time left (made here: no markup to change). */
   function progressHint() {
     let hint = document.getElementById('design-progress-difficulty');
@@ -406,7 +419,12 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy, showL
       return { shape, options: readOptions() };
     } catch (error) {
       setOutcome('error', error.message);
-      if (error.field) FIELDS[error.field].focus();
+      if (error.field) {
+        // A phone folds the settings: the field named by the message is shown before it is focused.
+        const settings = FIELDS[error.field].closest('details');
+        if (settings) settings.open = true;
+        FIELDS[error.field].focus();
+      }
       return null;
     }
   }
@@ -564,7 +582,7 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy, showL
     const { partsPlaced, targetParts } = session.snapshot;
     // The child's new part is part partsPlaced; the remainder it leaves is the part after it.
     showSessionAssembly(`${session.base}_step${partsPlaced}of${targetParts}_child${index}`, document_, surfaces, report, answer.elapsedMs,
-      { emphasis: stepEmphasis(partsPlaced + 1, targetParts) });
+      { emphasis: stepEmphasis(partsPlaced + 1, targetParts), progress: { placed: partsPlaced + 1, target: targetParts } });
     thumbnails.markSelected(index);
     setOutcome('', `Preview of child ${index}: choose it to continue from there.`);
   }
@@ -578,7 +596,7 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy, showL
   function showSnapshot(elapsedMs, { keepCamera = true } = {}) {
     const { partsPlaced, targetParts, document: document_, surfaces, report, steps } = session.snapshot;
     showSessionAssembly(`${session.base}_step${partsPlaced}of${targetParts}`, document_, surfaces, report, elapsedMs,
-      { keepCamera, emphasis: steps ? null : stepEmphasis(partsPlaced, targetParts) });
+      { keepCamera, emphasis: steps ? null : stepEmphasis(partsPlaced, targetParts), progress: { placed: partsPlaced, target: targetParts } });
     ui.sessionChild.value = '0';
     refreshControls();
     loadThumbnails();
@@ -595,11 +613,13 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy, showL
   }
 
   /** Session assemblies have no .puz text from the core: the page keeps them as JSON documents. */
-  function showSessionAssembly(name, document_, surfaces, report, elapsedMs, { keepCamera = true, emphasis = null } = {}) {
+  function showSessionAssembly(name, document_, surfaces, report, elapsedMs, { keepCamera = true, emphasis = null, progress = null } = {}) {
     const plain = document_.voxel ? { ...document_, voxel: { ...document_.voxel, labels: Array.from(document_.voxel.labels) } } : document_;
     showAssembly({
       name: `${name}.json`, text: JSON.stringify(plain), document: document_, surfaces, report, elapsedMs, timingLabel: 'Step time', menuLabel: `Step by step: ${name}`,
       keepCamera, emphasis,
+      // A step short of the target is a design in progress, not a failed puzzle (report.js).
+      inProgress: progress && progress.placed < progress.target ? progress : null,
     });
   }
 
@@ -746,7 +766,7 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy, showL
       design();
     });
     ui.cancelButton.addEventListener('click', cancel);
-    FIELDS.parts.addEventListener('input', () => { partsTouched = true; });
+    FIELDS.parts.addEventListener('input', () => { partsTouched = true; renderDifficulty(); });
     for (const key of CHECKED_FIELDS) FIELDS[key].addEventListener('input', () => explain(key));
     FIELDS.joints.addEventListener('change', () => { jointsFromExample = false; });
     ui.form.addEventListener('input', syncUrl);
@@ -783,6 +803,7 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy, showL
       if (FIELDS.candidates.value === DEFAULT_CANDIDATES[kind]) FIELDS.candidates.value = DEFAULT_CANDIDATES[resolved];
       kind = resolved;
       refreshControls();
+      renderDifficulty();
     },
     /**
      * An example that needs its own joints ('milled': the Bookshelf's dovetails; 'planned': the
@@ -811,10 +832,14 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy, showL
     /** A new shape is on screen: N follows its size until the user sets N. */
     shapeLoaded(voxelCount) {
       inputVoxels = voxelCount > 0 ? voxelCount : 0;
-      if (partsTouched || !(voxelCount > 0)) return;
+      if (partsTouched || !(voxelCount > 0)) {
+        renderDifficulty();
+        return;
+      }
       FIELDS.parts.value = String(defaultParts(voxelCount));
       explain('parts');
       syncUrl();
+      renderDifficulty();
     },
     /**
      * The user chose another input (example, file, mesh): the last run's message and progress

@@ -16,6 +16,7 @@
 // #export-voxel-size and #export-clearance (mm; shown for the print-ready formats).
 
 import { byId, element } from './dom.js';
+import { partNoun, unjointedKind } from './report.js';
 
 /** What each format needs from the worker, its file extension and MIME type. */
 const ALL = ['voxel', 'plate', 'contacts', 'frame'];
@@ -40,6 +41,13 @@ const FORMATS = {
   svg: { op: 'cut-sheets', extension: 'svg', type: 'image/svg+xml', perPart: false, kinds: ['plate'], cut: true },
   dxf: { op: 'cut-sheets', extension: 'dxf', type: 'application/dxf', perPart: false, kinds: ['plate'], cut: true },
 };
+/**
+ * The sheet size the panel starts with: a large laser bed (CO2 lasers of 1300 x 900 mm are
+ * common); the field says so and takes any other, or nothing for one sheet as large as needed.
+ */
+export const DEFAULT_SHEET = '1300x900';
+/** Frame formats that need designed, straight joints: the core is asked whether it can write them. */
+const PROBED_FRAME_FORMATS = ['fpuz', 'csv'];
 /** Object URLs of downloads are freed after this; the browser has read the blob by then. */
 const DOWNLOAD_URL_LIFETIME_MS = 60_000;
 
@@ -80,10 +88,19 @@ export function createExportPanel({ core }) {
     preview: byId('export-preview'),
     sheets: byId('sheet-preview'),
     message: byId('export-message'),
+    warning: byId('export-warning'),
+    unavailable: byId('export-unavailable'),
+    sheetNote: byId('export-sheet-note'),
   };
+  // Reset by the page's own value, whatever a browser restored.
+  ui.sheet.value = DEFAULT_SHEET;
 
-  /** { name, text, kind, partIds, milled } of the assembly on screen, or null. */
+  /**
+   * { name, text, kind, partIds, milled, verified, unjointed, reason, refused } of the assembly on
+   * screen, or null. `refused`: format -> the core's reason it cannot write this one (frames).
+   */
   let assembly = null;
+  let probeToken = 0;
   let busy = false; // The worker designs for the Design panel.
   let exporting = false;
 
@@ -93,21 +110,33 @@ export function createExportPanel({ core }) {
     ui.message.hidden = !text;
   }
 
+  const MILLED_REASON = 'SVG and DXF cut sheets are greyed out: milled joints (sliding dovetails) are no 2D cuts; export STL or OBJ for the CNC.';
+
   function refresh() {
     const milled = Boolean(assembly?.milled);
+    const refused = assembly?.refused ?? {};
     for (const option of ui.format.options) {
       const known = FORMATS[option.value];
       // Each format holds the kinds it can (.puz and .xmpuzzle voxels, SVG and DXF plates, .fpuz
-      // and CSV frames); cut sheets cannot hold milled dovetails (the core would say so too).
+      // and CSV frames); cut sheets cannot hold milled dovetails (the core would say so too); a
+      // frame format the core refused for this frame (a curved beam in .fpuz) says why.
       if (!known) continue;
-      option.disabled = assembly !== null && (!known.kinds.includes(assembly.kind) || (known.cut === true && milled));
-      option.title = known.cut && milled ? 'Milled joints (sliding dovetails) are no 2D cuts: export STL or OBJ for the CNC' : '';
+      option.disabled = assembly !== null && (!known.kinds.includes(assembly.kind) || (known.cut === true && milled) || option.value in refused);
+      option.title = known.cut && milled ? MILLED_REASON : (refused[option.value] ?? '');
     }
     if (assembly && ui.format.selectedOptions[0]?.disabled) ui.format.value = assembly.kind === 'plate' ? (milled ? 'stl' : 'svg') : 'json';
     const format = FORMATS[ui.format.value];
     ui.part.disabled = !assembly || !format?.perPart;
     ui.part.hidden = Boolean(format?.cut);
-    ui.sheet.hidden = ui.kerf.hidden = ui.preview.hidden = !format?.cut;
+    for (const field of [ui.sheet, ui.kerf]) field.closest('label').hidden = !format?.cut;
+    ui.preview.hidden = ui.sheetNote.hidden = !format?.cut;
+    // Greyed formats, in words: a tooltip never shows on a touch screen.
+    const reasons = [];
+    if (assembly?.kind === 'plate' && milled) reasons.push(MILLED_REASON);
+    for (const [name, reason] of Object.entries(refused)) reasons.push(`${name === 'fpuz' ? '.fpuz' : name.toUpperCase()} is greyed out: ${reason}`);
+    ui.unavailable.textContent = reasons.join(' ');
+    ui.unavailable.hidden = reasons.length === 0;
+    renderWarning();
     for (const field of [ui.voxelSize, ui.clearance]) field.closest('label').hidden = !format?.print;
     ui.button.disabled = !assembly || busy || exporting || !format || ui.format.selectedOptions[0]?.disabled;
     ui.preview.disabled = ui.button.disabled;
@@ -125,6 +154,62 @@ export function createExportPanel({ core }) {
     ui.part.replaceChildren(all, ...parts);
     // Keep the chosen part while it exists (e.g. part 3 of one design, then of the next).
     if ([...ui.part.options].some((option) => option.value === previous)) ui.part.value = previous;
+  }
+
+  /**
+   * Files of an assembly that is not a verified interlocking result (a plate or frame without
+   * joints, after a failed design too; a voxel assembly that does not interlock) come with a
+   * warning in plain sight: someone may cut wood from them.
+   */
+  function renderWarning() {
+    const text = assembly && (!assembly.verified || assembly.planned) ? warningText(assembly) : '';
+    ui.warning.textContent = text;
+    ui.warning.hidden = !text;
+    ui.panel.dataset.unverified = String(Boolean(text));
+  }
+
+  function warningText({ name, kind, unjointed, reason, parts, planned, verified }) {
+    const noun = partNoun(kind);
+    if (planned && verified) {
+      // The paper's plan alone (Joints: planned): verified as a plan, but no joint is in the plates.
+      return `Joints planned, not cut: ${name} says which joint goes where (the Joints list), but these files are `
+        + 'the bare plates (plain outlines on the cut sheets). Design with Joints auto, cut or milled for plates with their joints.';
+    }
+    if (kind === 'voxel' && parts <= 1) return ''; // a shape to design from: one part, nothing to hold
+    if (kind === 'contacts') return '';
+    if (unjointed) {
+      return `Not jointed, not verified: ${name} has no joints, so these files are its bare ${noun}s `
+        + `(${kind === 'plate' ? 'plain outlines on the cut sheets' : 'beams without joint voxels'}); nothing holds them together. `
+        + 'Design makes the joints and checks them (if Design found no plan, there is none to make).';
+    }
+    return `Not verified: ${name} is not interlocking${reason ? ` (${reason})` : ''}; files made from it will not hold together as a puzzle.`;
+  }
+
+  /** What a saved file's message adds when the assembly is not verified. */
+  function unverifiedSuffix() {
+    if (!assembly || !ui.warning.textContent) return '';
+    return assembly.verified ? ' Joints not cut: see the warning above.' : ' Not jointed or verified: see the warning above.';
+  }
+
+  /**
+   * Frames: asks the core, in the worker, whether it can write the formats that need designed,
+   * straight joints (.fpuz, CSV) for this frame; a refusal greys the format with the core's reason.
+   */
+  async function probeFrameFormats(current) {
+    const token = ++probeToken;
+    const refused = {};
+    for (const format of PROBED_FRAME_FORMATS) {
+      try {
+        await core.run('export', current.text, { format, part: 0, source: current.name });
+      } catch (error) {
+        if (error.cancelled) return;
+        // The core's message names the file first: the reason is what follows it.
+        refused[format] = error.message.startsWith(`${current.name}: `) ? error.message.slice(current.name.length + 2) : error.message;
+      }
+      if (token !== probeToken || assembly !== current) return;
+    }
+    current.refused = refused;
+    refresh();
   }
 
   async function exportCurrent() {
@@ -150,13 +235,20 @@ export function createExportPanel({ core }) {
       // The assembly on screen may have changed meanwhile; the file is still the one asked for.
       saveBlob(fileName, new Blob([value], { type: format.type }));
       const size = typeof value === 'string' ? new TextEncoder().encode(value).length : value.byteLength;
-      setMessage('done', `Saved ${fileName} (${size.toLocaleString('en')} bytes).`);
+      setMessage('done', `Saved ${fileName} (${size.toLocaleString('en')} bytes).${unverifiedSuffix()}`);
     } catch (error) {
-      setMessage('error', error.cancelled ? 'Export cancelled.' : error.message);
+      setMessage('error', error.cancelled ? 'Export cancelled.' : withSheetHint(error.message));
     } finally {
       exporting = false;
       refresh();
     }
+  }
+
+  /** The core's "does not fit on a … sheet" gets the way out: a larger sheet, or none. */
+  function withSheetHint(message) {
+    return /does not fit on a/.test(message)
+      ? `${message}. Type a larger sheet (e.g. 2440x1220, a plywood sheet) or empty the field for one sheet as large as needed.`
+      : message;
   }
 
   /**
@@ -202,9 +294,10 @@ export function createExportPanel({ core }) {
       clearPreview();
       const figures = sheets.map((svg, k) => {
         // Drawn inline so that the page's stylesheet can keep the cuts one pixel wide at any zoom
-        // (the file's own 0.1 mm strokes vanish at this scale); its <style> is dropped, the page's
-        // CSP allows none, and the colours are in the paths' attributes too.
-        const parsed = new DOMParser().parseFromString(svg, 'image/svg+xml').documentElement;
+        // (the file's own 0.1 mm strokes vanish at this scale); its <style> is dropped before
+        // parsing (the page's CSP allows none, and parsing it logged a violation per sheet), the
+        // colours are in the paths' attributes too.
+        const parsed = new DOMParser().parseFromString(svg.replace(/<style[^>]*>[\s\S]*?<\/style>/g, ''), 'image/svg+xml').documentElement;
         if (parsed.nodeName !== 'svg') throw new Error('the core returned a cut sheet that is not SVG');
         for (const style of parsed.querySelectorAll('style, script')) style.remove();
         const drawing = document.importNode(parsed, true);
@@ -223,10 +316,10 @@ export function createExportPanel({ core }) {
       ui.sheets.append(...figures);
       ui.sheets.dataset.sheets = String(sheets.length);
       ui.sheets.hidden = false;
-      setMessage('done', `${sheets.length} ${sheets.length === 1 ? 'sheet' : 'sheets'} shown below.`);
+      setMessage('done', `${sheets.length} ${sheets.length === 1 ? 'sheet' : 'sheets'} shown below.${unverifiedSuffix()}`);
     } catch (error) {
       clearPreview();
-      setMessage('error', error.cancelled ? 'Preview cancelled.' : error.message);
+      setMessage('error', error.cancelled ? 'Preview cancelled.' : withSheetHint(error.message));
     } finally {
       exporting = false;
       refresh();
@@ -239,9 +332,9 @@ export function createExportPanel({ core }) {
     const { value: sheets } = await core.run('cut-sheets', text, options);
     const names = sheets.map((_, k) => exportFileName(name, formatName, 0, sheets.length > 1 ? k + 1 : 0));
     sheets.forEach((sheet, k) => saveBlob(names[k], new Blob([sheet], { type: format.type })));
-    setMessage('done', sheets.length === 1
+    setMessage('done', (sheets.length === 1
       ? `Saved ${names[0]} (1 sheet).`
-      : `Saved ${sheets.length} sheets: ${names[0]} … ${names.at(-1)}.`);
+      : `Saved ${sheets.length} sheets: ${names[0]} … ${names.at(-1)}.`) + unverifiedSuffix());
   }
 
   ui.format.addEventListener('change', refresh);
@@ -260,12 +353,19 @@ export function createExportPanel({ core }) {
         ...current,
         kind: report?.kind ?? null,
         partIds: report?.partIds ?? [],
+        parts: report?.parts ?? report?.partIds?.length ?? 0,
         milled: report?.kind === 'plate' && document_?.jointGeometry === 'milled',
+        planned: report?.kind === 'plate' && document_?.jointGeometry === 'planned',
+        verified: report?.verdict === 'interlocking',
+        unjointed: Boolean(unjointedKind(document_)),
+        reason: report?.reason ?? '',
+        refused: {},
       } : null;
       fillParts(assembly?.partIds ?? [], report?.key ?? null);
       clearPreview();  // the sheets of the assembly that was on screen
       if (ui.panel.dataset.state !== 'working') setMessage('', '');
       refresh();
+      if (assembly?.kind === 'frame') probeFrameFormats(assembly);
     },
     /** While the worker designs, an export would only wait behind the design. */
     setDisabled(disabled) {

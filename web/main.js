@@ -16,7 +16,7 @@
 
 import { byId, element, fitSelectToValue } from './dom.js';
 import { AssemblyView, createPlaybackControls } from './view.js';
-import { highlightMove, highlightRemovalStep, renderPlan, renderReport, resetReport, withPlannedRemoval } from './report.js';
+import { highlightMove, highlightRemovalStep, renderPlan, renderReport, resetReport, unjointedKind, withPlannedRemoval } from './report.js';
 import { CoreWorker, MAX_FAILED_STARTS } from './worker-client.js';
 import { createDesignPanel } from './design-panel.js';
 import { readUrlState, writeUrlState } from './url-state.js';
@@ -73,6 +73,11 @@ const EXAMPLES = [
   { file: 'flower_result.json', label: 'Flower, designed', frame: true },
   { file: 'scaffold_92_result.json', label: 'Scaffold of 92 beams, designed', frame: true },
 ];
+/**
+ * What a first visit opens: a shape Design makes sense on (a finished puzzle would only be split
+ * again), so the three steps of the introduction (pick, design, play / export) follow in order.
+ */
+const DEFAULT_EXAMPLE = 'Cube_4x4x4_origin.puz';
 const EXAMPLES_URL = new URL('../examples/voxel/', import.meta.url);
 const PLATE_EXAMPLES_URL = new URL('../examples/plate/', import.meta.url);
 const FRAME_EXAMPLES_URL = new URL('../examples/frame/', import.meta.url);
@@ -118,6 +123,9 @@ const ui = {
   methodNoteLp: byId('method-note-lp'),
   coreVersion: byId('core-version'),
   dropOverlay: byId('drop-overlay'),
+  intro: byId('intro'),
+  introClose: byId('intro-close'),
+  designSettings: byId('design-settings'),
 };
 
 const STATUS_LABELS = { loading: 'Working…', ready: 'Ready', error: 'Error' };
@@ -260,12 +268,12 @@ function voxelCount(document_) {
  * designed puzzle, a design step). It supersedes any load still in flight. Step by step passes
  * `keepCamera` (the user's camera stays) and `emphasis` ({ highlight, ghost } part ids, view.js).
  */
-function showAssembly({ name, text, document: document_, surfaces, report, elapsedMs, timingLabel, menuLabel: label = `Designed: ${name}`, keepCamera = false, emphasis = null }) {
+function showAssembly({ name, text, document: document_, surfaces, report, elapsedMs, timingLabel, menuLabel: label = `Designed: ${name}`, keepCamera = false, emphasis = null, inProgress = null }) {
   loadGeneration += 1;
   document.body.dataset.source = name;
   hideError();
   selectMenuEntry(RESULT_OPTION, label);
-  present({ name, text, document: document_, surfaces, report, elapsedMs, timingLabel, option: RESULT_OPTION, optionLabel: label, keepCamera, emphasis });
+  present({ name, text, document: document_, surfaces, report, elapsedMs, timingLabel, option: RESULT_OPTION, optionLabel: label, keepCamera, emphasis, inProgress });
   setStatus('ready');
   // Voxel designs are verified with the graph test; another chosen test runs on the result as
   // well (plate plans are verified with both tests already).
@@ -277,7 +285,7 @@ function showAssembly({ name, text, document: document_, surfaces, report, elaps
  * the current one (the 3D view, the report panel, the download and export).
  */
 function present(assembly) {
-  const { name, text, document: document_, surfaces, report, elapsedMs, timingLabel = 'Check time', keepCamera = false, emphasis = null } = assembly;
+  const { name, text, document: document_, surfaces, report, elapsedMs, timingLabel = 'Check time', keepCamera = false, emphasis = null, inProgress = null } = assembly;
   shown = assembly;
   document.body.dataset.shown = name;
   ui.sourceName.textContent = name;
@@ -285,11 +293,18 @@ function present(assembly) {
   setCurrent({ name, text }, report, document_);
   // A plate plan is played along its own planned removal directions.
   const played = withPlannedRemoval(report, document_);
-  renderReport(played, elapsedMs, timingLabel, { voxels: document_.kind === 'voxel' ? voxelCount(document_) : null });
+  renderReport(played, elapsedMs, timingLabel, {
+    voxels: document_.kind === 'voxel' ? voxelCount(document_) : null,
+    // A plate or frame without joints, or a design step short of its target, is an input to
+    // design from: said neutrally, not as a failed puzzle.
+    input: inProgress ? null : unjointedKind(document_),
+    inProgress,
+  });
   renderPlan(document_);
   view.applyReport(played, { keepCamera });
   if (emphasis) view.setEmphasis(emphasis);
   partsPanel.setAssembly(name, document_, played);
+  markNextStep(report);
   // A partial plan of moves (a disassemblyFailure with steps) plays up to where it stops.
   setUpDisassemblySlider(view.available ? (played.disassembly ?? played.disassemblyFailure ?? null) : null);
 }
@@ -579,7 +594,7 @@ function fillExampleSelect() {
 function initialExample() {
   const requested = readUrlState().example;
   const known = EXAMPLES.some((example) => example.file === requested) || meshInput.isExample(requested);
-  return known ? requested : EXAMPLES[0].file;
+  return known ? requested : DEFAULT_EXAMPLE;
 }
 
 function wireDragAndDrop() {
@@ -641,7 +656,41 @@ function wireControls() {
   ui.downloadButton.addEventListener('click', downloadCurrent);
 }
 
+// ---------------------------------------------------------------------------------------------
+// The introduction (the first screen): what desia is and three steps, the next one marked.
+
+const INTRO_HIDDEN_KEY = 'desia.intro.hidden';
+/** Phones (the one-column layout of style.css) fold the Design settings: the verdict comes first. */
+const PHONE_QUERY = '(max-width: 760px)';
+
+/** An interlocking result is played or exported next; anything else (a shape, an input) designed. */
+function markNextStep(report) {
+  ui.intro.dataset.next = report?.verdict === 'interlocking' || report?.interlocking === true ? 'play' : 'design';
+}
+
+function wireIntro() {
+  let hidden = false;
+  try { hidden = localStorage.getItem(INTRO_HIDDEN_KEY) === '1'; } catch { /* storage refused: show it */ }
+  ui.intro.hidden = hidden;
+  ui.introClose.addEventListener('click', () => {
+    ui.intro.hidden = true;
+    try { localStorage.setItem(INTRO_HIDDEN_KEY, '1'); } catch { /* it shows again next time */ }
+  });
+  for (const step of ui.intro.querySelectorAll('.intro-step')) {
+    step.addEventListener('click', () => {
+      let target = byId(step.dataset.target);
+      // Nothing to play yet (a shape, a design input): Design first; Play disabled: Export.
+      if (target.disabled) target = step.dataset.target === 'disassembly-play' ? byId('export-link') : target;
+      target.scrollIntoView({ block: 'center', behavior: 'smooth' });
+      target.focus({ preventScroll: true });
+      if (target.id === 'example-select') target.showPicker?.();
+    });
+  }
+  if (window.matchMedia(PHONE_QUERY).matches) ui.designSettings.open = false;
+}
+
 function main() {
+  wireIntro();
   fillExampleSelect();
   wireControls();
   wireDragAndDrop();

@@ -109,7 +109,7 @@ export function createMeshInput({ core, loadAssembly }) {
         }
         return value.text;
       } catch (error) {
-        if (isNewest() && !error.cancelled) setState('error', 'No shape: see the message above.', { resolution: String(resolution), code: error.code ?? 'error' });
+        if (isNewest() && !error.cancelled) setState('error', 'No shape: the reason is in the red box at the top of the report (right column; under the view on a phone).', { resolution: String(resolution), code: error.code ?? 'error' });
         throw error;
       }
     }, { origin: source.name });

@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Offline support, the page's side: registers the service worker (web/sw.js) and, once the
-// playground has loaded, hands it the list of files to keep: everything this page loaded (its
-// modules, three.js, the style sheet), the worker's files (which the page cannot see load), the
-// core and every bundled example. The service worker fetches them all afresh and keeps them as
-// one snapshot; a small indicator then says whether THIS page works offline: only when it belongs
+// playground has shown its first verdict and the browser is idle, hands it the list of files to
+// keep: everything this page loaded (its modules, three.js, the style sheet), the worker's files
+// (which the page cannot see load), the core and every bundled example. The files the page and
+// its worker loaded are marked as such: the service worker takes them from the browser's HTTP
+// cache instead of downloading them again, and fetches only the rest. It keeps them all as one
+// snapshot; a small indicator then says whether THIS page works offline: only when it belongs
 // to a complete snapshot of its own version (see web/sw.js), never because of an older one.
 //
 // Only on http(s) pages (service workers need one; a file:// page simply runs online only).
@@ -18,6 +20,8 @@ const WORKER_FILES = ['./worker.js', '../wasm/core.js', '../wasm/host.js', '../d
 /** The page under both of its names (a link to web/ and to web/index.html). */
 const PAGE_FILES = ['./', './index.html'];
 const SNAPSHOT_TIMEOUT_MS = 120_000;
+/** The snapshot waits for an idle moment, but no longer than this. */
+const IDLE_WAIT_MS = 3_000;
 
 function setOfflineState(state, text, title = '') {
   const status = byId('offline-status');
@@ -40,6 +44,23 @@ function loadedFiles() {
   return files;
 }
 
+/** The page's own URL when it was loaded as one of `PAGE_FILES` (no query), else nothing. */
+function loadedPage() {
+  const navigation = performance.getEntriesByType('navigation')[0];
+  const url = new URL(navigation?.name ?? location.href);
+  if (url.search) return [];
+  url.hash = '';
+  return PAGE_FILES.map((file) => new URL(file, import.meta.url).href).filter((href) => href === url.href);
+}
+
+/** Resolves when the browser is idle (or after IDLE_WAIT_MS), so the snapshot does not compete. */
+function idle() {
+  return new Promise((resolve) => {
+    if (typeof requestIdleCallback === 'function') requestIdleCallback(() => resolve(), { timeout: IDLE_WAIT_MS });
+    else setTimeout(resolve, 0);
+  });
+}
+
 /** Registers the service worker; resolves with the registration, or null where there is none. */
 export async function registerServiceWorker() {
   if (!/^https?:$/.test(location.protocol) || !('serviceWorker' in navigator)) return null;
@@ -58,12 +79,18 @@ export async function registerServiceWorker() {
 export async function keepForOffline(extraUrls = []) {
   if (!/^https?:$/.test(location.protocol) || !('serviceWorker' in navigator)) return;
   const registration = await navigator.serviceWorker.ready;
+  await idle();
   const worker = registration.active;
   if (!worker) return;
-  const urls = [
-    ...PAGE_FILES.map((file) => new URL(file, import.meta.url).href),
+  // Loaded by this page or its worker, so already in the browser's HTTP cache.
+  const loaded = [
+    ...loadedPage(),
     ...WORKER_FILES.map((file) => new URL(file, import.meta.url).href),
     ...loadedFiles(),
+  ];
+  const urls = [
+    ...PAGE_FILES.map((file) => new URL(file, import.meta.url).href),
+    ...loaded,
     ...extraUrls.map((url) => new URL(url, location.href).href),
   ];
   setOfflineState('saving', 'Saving for offline…');
@@ -75,7 +102,7 @@ export async function keepForOffline(extraUrls = []) {
       resolve(event.data);
     };
   });
-  worker.postMessage({ type: 'snapshot', urls }, [channel.port2]);
+  worker.postMessage({ type: 'snapshot', urls, loaded }, [channel.port2]);
   const result = await answer;
   const kept = result.offline;
   if (kept?.justTaken) {

@@ -61,6 +61,8 @@ const ui = {
   movesDetails: byId('moves-details'),
   movesSummary: byId('moves-summary'),
   moves: byId('moves'),
+  graphsDetails: byId('graphs-details'),
+  graphsSummary: byId('graphs-summary'),
 };
 
 /** Lists of more moves than this show the first MOVES_HEAD and the last MOVES_TAIL until "show all". */
@@ -91,11 +93,28 @@ function formatDisassemblyFailure(failure) {
   return `none: ${removed}parts ${formatList(failure.stuck)} are stuck`;
 }
 
-function formatWitness(witness) {
+function formatWitness(witness, noun = 'part') {
   if (!witness) return 'none';
   const how = witness.direction ? `along ${witness.direction}` : 'in different directions';
-  const noun = witness.parts?.length === 1 ? 'part' : 'parts';
-  return `${noun} ${formatList(witness.parts)} can move ${how}`;
+  return `${witness.parts?.length === 1 ? noun : `${noun}s`} ${formatList(witness.parts)} can move ${how}`;
+}
+
+/**
+ * What a part of this kind of assembly is called, everywhere the report names one (the verdict's
+ * key, the Key line, the witness, the removal paths), as the part list does: plates, beams, parts.
+ */
+export function partNoun(kind) {
+  return kind === 'plate' ? 'plate' : kind === 'frame' ? 'beam' : 'part';
+}
+
+/**
+ * 'plate' or 'frame' when the document is a structure whose joints are not designed yet (a plate
+ * design without joints, a frame without joint voxels), else null.
+ */
+export function unjointedKind(document_) {
+  if (document_?.kind === 'plate') return Array.isArray(document_.joints) && document_.joints.length > 0 ? null : 'plate';
+  if (document_?.kind === 'frame') return Array.isArray(document_.parts) || Array.isArray(document_.jointVoxels) ? null : 'frame';
+  return null;
 }
 
 /** With method 'both' the report carries each test's verdict; show them when they differ or agree. */
@@ -124,16 +143,30 @@ function formatComponents(components) {
  * Shows `report`. `elapsedMs` is how long the core took; `timingLabel` says for what (a designed
  * puzzle reports its design time, which includes the verifying check).
  */
-export function renderReport(report, elapsedMs, timingLabel = 'Check time', { voxels = null } = {}) {
+export function renderReport(report, elapsedMs, timingLabel = 'Check time', { voxels = null, input = null, inProgress = null } = {}) {
   const verdict = report.verdict ?? (report.interlocking ? 'interlocking' : 'not-interlocking');
   const title = VERDICT_TITLES[verdict] ?? verdict;
   const hasKey = report.key !== null && report.key !== undefined;
+  const noun = partNoun(report.kind);
+  const count = report.parts ?? report.partIds?.length ?? 0;
   if (isShape(report)) {
     ui.verdict.textContent = `Shape: ${voxels ?? 'its'} voxels, ready to design`;
     ui.verdict.dataset.verdict = 'shape';
     ui.reason.textContent = 'One part: Design splits it into N interlocking parts.';
+  } else if (inProgress && verdict !== 'interlocking') {
+    // Step by step short of the target: the remainder is still one part, nothing to fail yet.
+    ui.verdict.textContent = `Design in progress: ${inProgress.placed} of ${inProgress.target} ${noun}s placed`;
+    ui.verdict.dataset.verdict = 'in-progress';
+    ui.reason.textContent = `Next part, Choose or Finish automatically place the rest; the puzzle is checked once all ${inProgress.target} are placed.`;
+  } else if (input && verdict !== 'interlocking') {
+    // A plate or frame input has no joints yet: its boards or beams merely touch.
+    const what = input === 'plate' ? 'Plate structure' : 'Frame';
+    ui.verdict.textContent = `${what}: ${count} ${noun}s, ready to design joints`;
+    ui.verdict.dataset.verdict = 'input';
+    ui.reason.textContent = `No joints yet, so nothing holds it together: Design makes the joints so that only ${noun} 1, `
+      + `the key, can move, and checks the result. Without joints: ${report.reason ?? 'not interlocking'}.`;
   } else {
-    ui.verdict.textContent = verdict === 'interlocking' && hasKey ? `${title}, key: part ${report.key}` : title;
+    ui.verdict.textContent = verdict === 'interlocking' && hasKey ? `${title}, key: ${noun} ${report.key}` : title;
     ui.verdict.dataset.verdict = verdict;
     ui.reason.textContent = [report.reason, formatMethods(report.methods), formatShapeRemoval(report.shapeRemoval)]
       .filter(Boolean).join('. ');
@@ -142,20 +175,21 @@ export function renderReport(report, elapsedMs, timingLabel = 'Check time', { vo
   renderMethodNote(report, verdict);
   ui.method.textContent = METHOD_NAMES[report.method] ?? report.method ?? '—';
   ui.partsCount.textContent = String(report.parts ?? report.partIds?.length ?? '—');
-  ui.key.textContent = hasKey ? `part ${report.key}` : 'none';
+  ui.key.textContent = hasKey ? `${noun} ${report.key}` : 'none';
   ui.keyDirections.textContent = formatList(report.keyDirections);
-  ui.baseDirections.textContent = formatDirections(report.baseDirections);
+  renderDirections(ui.baseDirections, report.baseDirections, report.baseDirectionCount);
   ui.order.textContent = report.disassembly
     ? formatOrder(report.disassembly.order)
     : formatDisassemblyFailure(report.disassemblyFailure);
-  ui.witness.textContent = formatWitness(report.witness);
+  ui.witness.textContent = formatWitness(report.witness, noun);
   ui.timingLabel.textContent = timingLabel;
   ui.timing.textContent = Number.isFinite(elapsedMs) ? formatDuration(elapsedMs) : '—';
-  renderPaths(report.disassembly);
+  renderPaths(report.disassembly, noun);
+  foldGraphs(report.graphs);
   renderMoves(report.disassembly, report.disassemblyFailure);
   renderGraphs(report.graphs);
   renderBlockingGraphs(ui.dbgPanel, report);
-  renderCutPoints(report.cutPoints);
+  renderCutPoints(report.cutPoints, report.kind === 'frame' ? 'beam' : 'plate');
 }
 
 /** A voxel assembly of one part: the input of a design, not a puzzle that failed. */
@@ -188,13 +222,16 @@ function formatShapeRemoval(shapeRemoval) {
     : `Removal plan FAILS on the real shapes: ${shapeRemoval.failure}`;
 }
 
-/** A plate whose removal splits the parts-graph: no joints can make the design interlocking. */
-function renderCutPoints(cutPoints) {
+/**
+ * A plate (or beam) whose removal splits the parts-graph: no joints can make the design
+ * interlocking. Frames: shown as soon as the core's check of a frame reports cutPoints.
+ */
+function renderCutPoints(cutPoints, noun = 'plate') {
   const plates = Array.isArray(cutPoints) ? cutPoints : [];
   ui.cutPoints.hidden = plates.length === 0;
   ui.cutPoints.dataset.plates = plates.join(',');
   ui.cutPoints.textContent = plates.length === 0 ? ''
-    : `${plates.length === 1 ? 'Cut point: plate' : 'Cut points: plates'} ${plates.join(', ')} — no joints can make this `
+    : `${plates.length === 1 ? `Cut point: ${noun}` : `Cut points: ${noun}s`} ${plates.join(', ')} — no joints can make this `
       + `interlocking; add a part that bypasses ${plates.length === 1 ? 'it' : 'them'}.`;
 }
 
@@ -227,11 +264,44 @@ export function renderPlan(document_) {
   }));
 }
 
-/** Plates and contact graphs can have many base directions: say how many before listing them. */
-function formatDirections(directions) {
+/** Lists of more base directions than this are folded behind their count and first entries. */
+const DIRECTIONS_SHORT_LIST = 6;
+/** More graphs than this: the Blocking graphs section starts folded, its summary says how many. */
+const GRAPHS_SHORT_LIST = 12;
+
+/**
+ * Plates and contact graphs can have many base directions (the CABINET: 41): a short list is
+ * written out; a long one is folded behind "41 directions: +x, +y, +z, … (show all)".
+ */
+function renderDirections(target, directions, count = directions?.length ?? 0) {
   const labels = directions?.map((direction) => direction.label) ?? [];
-  if (labels.length <= 6) return formatList(labels);
-  return `${labels.length}: ${labels.join(', ')}`;
+  // The core leaves very long lists out of the report (the LIZARD's 1,186): say how many.
+  if (labels.length === 0 && count > 0) {
+    target.textContent = `${count.toLocaleString('en')} directions (too many to list)`;
+    return;
+  }
+  if (labels.length <= DIRECTIONS_SHORT_LIST) {
+    target.textContent = formatList(labels);
+    return;
+  }
+  const fold = element('details');
+  fold.className = 'fold';
+  fold.append(
+    element('summary', `${labels.length} directions: ${labels.slice(0, 3).join(', ')}, … (show all)`),
+    element('span', labels.join(', ')),
+  );
+  target.replaceChildren(fold);
+}
+
+/** The Blocking graphs section: its count in the summary; folded when there are many (41 for the CABINET). */
+let graphsFoldedFor = -1;
+function foldGraphs(graphs) {
+  const count = Array.isArray(graphs) ? graphs.length : 0;
+  ui.graphsSummary.textContent = count > 0 ? `Blocking graphs (${count})` : 'Blocking graphs';
+  // Only when the count changes: a user's open or closed section stays as they left it.
+  if (count === graphsFoldedFor) return;
+  graphsFoldedFor = count;
+  ui.graphsDetails.open = count <= GRAPHS_SHORT_LIST;
 }
 
 /**
@@ -328,7 +398,7 @@ export function formatDuration(ms) {
   return ms < 10_000 ? `${ms.toFixed(1)} ms` : `${(ms / 1000).toFixed(1)} s`;
 }
 
-function renderPaths(disassembly) {
+function renderPaths(disassembly, noun = 'part') {
   // A plan that moves parts together has no single-part paths: its moves are listed instead.
   if (disassembly && disassembly.paths === null) {
     ui.paths.replaceChildren(element('li', `no single-part paths: parts come free in the order ${formatOrder(disassembly.order ?? [])} by moving together (see Moves)`));
@@ -336,7 +406,7 @@ function renderPaths(disassembly) {
   }
   const items = (disassembly?.order ?? []).map((partId, index) => element(
     'li',
-    `part ${partId}: ${formatMoves(disassembly.paths?.[index])}`,
+    `${noun} ${partId}: ${formatMoves(disassembly.paths?.[index])}`,
   ));
   ui.paths.replaceChildren(...(items.length ? items : [element('li', 'no disassembly found')]));
 }

@@ -23,10 +23,15 @@
 // A snapshot stays while a live page or worker belongs to it, or while it is the newest one
 // (which serves pages opened with no network).
 //
-// Snapshots are whole: the page sends the list of its files (`{ type: 'snapshot', urls }` with a
-// MessagePort); all of them are fetched first, then written to a new cache, which is marked
+// Snapshots are whole: the page sends the list of its files (`{ type: 'snapshot', urls, loaded }`
+// with a MessagePort); all of them are fetched first, then written to a new cache, which is marked
 // complete. A failed snapshot changes nothing. The answer tells the page whether it belongs to a
 // complete snapshot, which is what its "Available offline" indicator shows.
+//
+// Nothing is downloaded twice: the files the page (and its worker) just loaded from the network,
+// `loaded`, are read from the browser's HTTP cache, where those requests left them, not fetched
+// again; only the rest (the examples the page has not opened) goes to the network, a few at a time
+// and at low priority, after the page has shown its first verdict and gone idle (web/offline.js).
 //
 // What must survive the browser stopping this worker (which clients belong where, the time until
 // which the network is taken to be down) is kept as one small JSON entry in the Cache API.
@@ -227,31 +232,74 @@ async function collectGarbage(keep) {
   }
 }
 
+/** At most this many of the files the page did not load are fetched at a time. */
+const REST_PARALLEL = 3;
+
+/**
+ * The response for `url` in a snapshot. A file the page reported as loaded (`fromHttpCache`) is
+ * read from the browser's HTTP cache, where the page's own request just left it: the same bytes
+ * the page runs, with no second download (the network answers only if the browser dropped it).
+ * Any other file is revalidated with the server (`no-cache`: a 304 when the browser's copy is
+ * current, else the file), at low priority, so it does not compete with the page.
+ */
+async function fetchForSnapshot(url, fromHttpCache) {
+  const response = await fetch(url, fromHttpCache ? { cache: 'force-cache' } : { cache: 'no-cache', priority: 'low' });
+  if (!response.ok || response.redirected) throw new Error(`${new URL(url).pathname}: HTTP ${response.status}${response.redirected ? ' (redirected)' : ''}`);
+  return response;
+}
+
+/** Calls `work` on each item, at most `limit` at a time; resolves to the results in order. */
+async function inBatches(items, limit, work) {
+  const results = new Array(items.length);
+  let next = 0;
+  const runner = async () => {
+    while (next < items.length) {
+      const index = next;
+      next += 1;
+      results[index] = await work(items[index]);
+    }
+  };
+  await Promise.all(Array.from({ length: Math.min(limit, items.length) }, runner));
+  return results;
+}
+
 /**
  * Fetches every URL, then stores them all as a new complete snapshot, to which every page loaded
  * from the network before the fetches started and not yet in a snapshot now belongs. Returns the
- * snapshot's name and summary.
+ * snapshot's name and summary. `loaded`: URLs the asking page loaded from the network itself
+ * (taken from the HTTP cache, see fetchForSnapshot); the others are fetched afterwards, a few
+ * at a time. A page and its folder (`x/index.html`, `x/`) are fetched once and kept under both.
  */
-async function takeSnapshot(urls) {
+async function takeSnapshot(urls, loaded = []) {
   const scope = self.registration.scope;
   const unique = [...new Set(urls.map((url) => new URL(url, scope).href))]
     .filter((url) => isOwnUrl(url) && url !== COMPLETE_MARKER && url !== STATE_URL);
   if (unique.length === 0) throw new Error('no files to keep');
+  const wanted = new Set(unique);
+  const fromPage = new Set(loaded.map((url) => new URL(url, scope).href).filter((url) => wanted.has(url)));
   const startedAt = Math.max(Date.now(), lastSnapshotStart + 1);
   lastSnapshotStart = startedAt;
-  // `no-cache`: revalidate with the server, so the snapshot is what the server has now.
-  const responses = await Promise.all(unique.map(async (url) => {
-    const response = await fetch(url, { cache: 'no-cache' });
-    if (!response.ok || response.redirected) throw new Error(`${new URL(url).pathname}: HTTP ${response.status}${response.redirected ? ' (redirected)' : ''}`);
-    return [url, response];
-  }));
+  /** `x/index.html` → `x/` when both are wanted: one request for the two names. */
+  const aliasOf = (url) => (url.endsWith('/index.html') && wanted.has(url.slice(0, -'index.html'.length)) ? url.slice(0, -'index.html'.length) : url);
+  const first = unique.filter((url) => aliasOf(url) === url && fromPage.has(url));
+  const rest = unique.filter((url) => aliasOf(url) === url && !fromPage.has(url));
+  const fetched = new Map();
+  for (const [url, response] of await Promise.all(first.map(async (url) => [url, await fetchForSnapshot(url, true)]))) fetched.set(url, response);
+  const later = await inBatches(rest, REST_PARALLEL, async (url) => [url, await fetchForSnapshot(url, false)]);
+  for (const [url, response] of later) fetched.set(url, response);
+  const responses = unique.map((url) => {
+    const source = aliasOf(url);
+    return [url, source === url ? fetched.get(url) : fetched.get(source).clone()];
+  });
   const name = `${SNAPSHOT_PREFIX}${String(startedAt).padStart(16, '0')}`;
   const cache = await caches.open(name);
   let bytes = 0;
   let summary;
   try {
+    // Clones first: a body read by one put() is gone for the other name.
     await Promise.all(responses.map(async ([url, response]) => {
-      bytes += Number(response.headers.get('Content-Length') ?? 0);
+      const body = await response.clone().arrayBuffer();
+      bytes += body.byteLength;
       await cache.put(url, response);
     }));
     summary = { files: unique.length, bytes, startedAt, completedAt: Date.now() };
@@ -279,7 +327,10 @@ self.addEventListener('message', (event) => {
       state.clients[clientId] = { loadedFrom: 'network', loadedAt: Date.now(), snapshot: null };
       await saveState();
     }
-    return takeSnapshot(event.data.urls);
+    // Files the page reports as loaded come from the HTTP cache only for a page that was itself
+    // loaded from the network (a page served from a snapshot ran the snapshot's files).
+    const fromNetwork = clientId && state.clients[clientId]?.loadedFrom === 'network';
+    return takeSnapshot(event.data.urls, fromNetwork && Array.isArray(event.data.loaded) ? event.data.loaded : []);
   });
   snapshotQueue = job.catch(() => {});
   const outcome = job.then(({ name }) => ({ ok: true, name }), (error) => ({ ok: false, message: String(error?.message ?? error) }));

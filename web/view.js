@@ -6,10 +6,13 @@
 // it shows (parts, key, order, paths) comes from the core's report, and the part surfaces from
 // the core's partSurfaces (the triangles of the STL/OBJ export).
 //
-// Exports: AssemblyView (the 3D view inside a container element), DisassemblyPlayer (the
-// play/pause clock of the disassembly), createPlaybackControls (wires a slider, a play button, a
-// speed select and an explode slider to a view), describeDisassemblyStep, partColorCss, and for
-// plate plans formatDirection, planDisassembly and withPlannedRemoval.
+// Exports: AssemblyView (the 3D view inside a container element: the scene, its parts, the
+// disassembly shown; the camera's framing is in view-camera.js, picking in view-picking.js),
+// partColor / partColorCss, and, re-exported so that one import serves the playground and the
+// drop-in viewer, the playback (view-playback.js: DisassemblyPlayer, createPlaybackControls,
+// describeDisassemblyStep) and the motions and their words (view-motions.js: stepsToPlay,
+// formatStep, formatLevel, formatDirection, and for plate plans planDisassembly and
+// withPlannedRemoval).
 //
 // Voxel plans that move several parts together (the report's `steps`, issue 27) play move by
 // move instead (stepsToPlay says which plan plays): the parts of a move slide together by its
@@ -25,6 +28,16 @@
 
 import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
+import { RUN_OUT_VOXELS, layOutTray, pointAlong, removalMotions, stepMotions, stepsToPlay } from './view-motions.js';
+import { fitCamera, fitDistance, reframeCamera, screenFill, setDepthRange } from './view-camera.js';
+import { isClick, pickPart, screenPointOf } from './view-picking.js';
+
+export {
+  formatDirection, formatLevel, formatStep, formatStepMove, planDisassembly, stepsToPlay, withPlannedRemoval,
+} from './view-motions.js';
+export {
+  DisassemblyPlayer, createPlaybackControls, describeDisassemblyStep, formatMoves, formatStuck,
+} from './view-playback.js';
 
 // ---------------------------------------------------------------------------------------------
 // Voxel geometry. The part surfaces come from the core (desia.partSurfaces: the same triangles as
@@ -105,23 +118,6 @@ function surfaceGeometry({ positions, normals }) {
   return geometry;
 }
 
-/**
- * '+y' -> (0, 1, 0); a move's own `vector` (a plate plan's removal direction) first, then the
- * report's base directions, then the axis notation.
- */
-function directionVector(label, baseDirections = [], vector = null) {
-  if (Array.isArray(vector) && vector.length === 3 && vector.every(Number.isFinite)) {
-    const own = new THREE.Vector3(...vector);
-    if (own.lengthSq() > 0) return own.normalize();
-  }
-  const known = baseDirections.find((direction) => direction.label === label);
-  if (known) return new THREE.Vector3(...known.vector);
-  const match = /^([+-])([xyz])$/.exec(String(label).trim());
-  if (!match) return new THREE.Vector3();
-  const axis = new THREE.Vector3();
-  axis[match[2]] = match[1] === '+' ? 1 : -1;
-  return axis;
-}
 
 // ---------------------------------------------------------------------------------------------
 // Colours: the key in a warm gold, every other part a well-separated hue away from it. A part's
@@ -170,8 +166,6 @@ const ARROW_COLOR = 0xfff3c4;
  * flight over the assembly to the part's place in the tray.
  */
 const TRAY_PATH_SHARE = 0.6;
-/** A pointer that moves less than this between press and release is a click, not an orbit. */
-const CLICK_SLOP_PX = 5;
 /** Step by step: the new part's edges and glow, and how see-through the remainder is. */
 const HIGHLIGHT_EDGE_COLOR = 0xffffff;
 const HIGHLIGHT_GLOW = 0.45;
@@ -179,8 +173,6 @@ const GHOST_OPACITY = 0.22;
 const GHOST_EDGE_OPACITY = 0.2;
 /** At explode factor 1 every part sits this many times farther from the centre than assembled. */
 const EXPLODE_SCALE = 1.2;
-/** How far a part keeps going after its last move before it disappears, in voxels. */
-const RUN_OUT_VOXELS = 2;
 /**
  * Documents in their own units (plates in mm) have symbolic removal steps ("along -z"): one step
  * moves a part this fraction of the assembly's largest extent, and the run-out is a fraction too.
@@ -415,6 +407,7 @@ export class AssemblyView {
   /** Frames the assembly again from the usual three-quarter view (double-click on the view). */
   fit() {
     if (!this.available || this.#meshes.size === 0) return;
+    if (this.#step === 0) this.#widened = false; // assembled: the assembly alone again
     this.#fitCamera(this.#framingBox());
     this.requestRender();
   }
@@ -503,35 +496,19 @@ export class AssemblyView {
     this.#scene.add(grid);
   }
 
-  /** Puts the camera in front of `box` from the usual three-quarter view. */
+  /** Puts the camera in front of `box` from the usual three-quarter view (view-camera.js). */
   #fitCamera(box) {
-    const center = box.getCenter(new THREE.Vector3());
-    const distance = this.#fitDistance(box);
-    const viewDirection = new THREE.Vector3(1, 0.85, 1.5).normalize();
-    this.#camera.position.copy(center).addScaledVector(viewDirection, distance);
-    this.#controls.target.copy(center);
-    this.#setDepthRange(distance);
-    this.#controls.update();
-    this.#framed = { center, distance };
+    this.#framed = fitCamera(this.#camera, this.#controls, box);
   }
 
   /** What the camera was last fitted to, so explode changes can keep the same framing. */
   #framed = null;
 
-  #fitDistance(box) {
-    const radius = Math.max(box.getSize(new THREE.Vector3()).length() / 2, 1);
-    // The narrower of the vertical and horizontal fields of view decides what fits.
-    const verticalHalfFov = THREE.MathUtils.degToRad(this.#camera.fov / 2);
-    const horizontalHalfFov = Math.atan(Math.tan(verticalHalfFov) * this.#camera.aspect);
-    return (radius / Math.sin(Math.min(verticalHalfFov, horizontalHalfFov))) * 1.25;
-  }
-
-  #setDepthRange(distance) {
-    this.#camera.near = distance / 100;
-    this.#camera.far = distance * 50;
-    this.#camera.updateProjectionMatrix();
-    this.#controls.maxDistance = distance * 10;
-  }
+  /**
+   * Whether the framing takes in the removal paths and the tray: not until the disassembly is
+   * played (a step past 0), so that a result first fills the view; playing widens it once.
+   */
+  #widened = false;
 
   /**
    * Highlights the key (or, on failure, the cut points of a plate design, else the witness
@@ -539,6 +516,7 @@ export class AssemblyView {
    */
   applyReport(report, { keepCamera = false } = {}) {
     if (!this.available) return;
+    if (!keepCamera) this.#widened = false;
     this.#keyId = report?.key ?? null;
     // A plate design without joints is not interlocking by nature: greying out all but its
     // witness would hide the design. Its cut points (no joints can help) are marked instead.
@@ -546,7 +524,8 @@ export class AssemblyView {
     // The same for a frame without joints: its beams merely touch.
     const structure = plate || report?.kind === 'frame';
     const witnessParts = new Set(structure ? [] : (report?.witness?.parts ?? []));
-    this.#cutPoints = new Set(plate ? (report?.cutPoints ?? []) : []);
+    // Cut points: a plate's from its check; a frame's once the core's frame check reports them.
+    this.#cutPoints = new Set(structure ? (report?.cutPoints ?? []) : []);
     for (const [partId, mesh] of this.#meshes) {
       const isKey = partId === this.#keyId;
       const isCut = this.#cutPoints.has(partId);
@@ -588,6 +567,11 @@ export class AssemblyView {
   setDisassemblyStep(step) {
     this.#step = Number.isFinite(step) ? Math.max(step, 0) : 0;
     this.#updatePositions();
+    // The first step of a played disassembly widens the framing to the paths and the tray.
+    if (this.#step > 0 && !this.#widened && this.#meshes.size > 0) {
+      this.#widened = true;
+      this.#reframe();
+    }
   }
 
   /**
@@ -849,9 +833,13 @@ export class AssemblyView {
     mesh.children[0].material.opacity = (mesh.userData.baseEdgeOpacity ?? 0.55) * fade;
   }
 
-  /** What the camera frames: the parts as exploded, and where their removal paths take them. */
+  /**
+   * What the camera frames: the parts as exploded; once the disassembly is played (#widened), also
+   * where their removal paths take them and the tray.
+   */
   #framingBox() {
     const box = this.#explodedBox();
+    if (!this.#widened) return box.translate(new THREE.Vector3(0, this.#lift.position.y, 0));
     const partBox = new THREE.Box3();
     for (const [partId, mesh] of this.#meshes) {
       const motion = this.#motions.get(partId);
@@ -886,16 +874,7 @@ export class AssemblyView {
   /** Keeps the user's viewing direction and relative zoom while the exploded assembly grows or shrinks. */
   #reframe() {
     if (!this.#framed || this.#meshes.size === 0) return;
-    const box = this.#framingBox();
-    const center = box.getCenter(new THREE.Vector3());
-    const distance = this.#fitDistance(box);
-    const ratio = distance / this.#framed.distance;
-    const offset = this.#camera.position.clone().sub(this.#controls.target).multiplyScalar(ratio);
-    this.#controls.target.copy(center);
-    this.#camera.position.copy(center).add(offset);
-    this.#setDepthRange(Math.max(distance, offset.length()));
-    this.#controls.update();
-    this.#framed = { center, distance };
+    this.#framed = reframeCamera(this.#camera, this.#controls, this.#framingBox(), this.#framed);
     this.requestRender();
   }
 
@@ -910,7 +889,20 @@ export class AssemblyView {
       target: this.available ? this.#controls.target.toArray() : null,
       gridCell: this.#scale.cell,
       removalStep: this.#scale.step,
+      widened: this.#widened,
+      ...this.#screenFill(),
     };
+  }
+
+  /**
+   * The share of the view's width and height the visible parts cover on screen (0..1 each; the
+   * box around their projected bounding-box corners, clipped to the view).
+   */
+  #screenFill() {
+    if (!this.available || this.#meshes.size === 0) return { fillWidth: 0, fillHeight: 0 };
+    this.#camera.updateMatrixWorld();
+    this.#scene.updateMatrixWorld();
+    return screenFill(this.#camera, this.#meshes.values());
   }
 
   /**
@@ -965,28 +957,14 @@ export class AssemblyView {
   /** The part drawn at client coordinates (x, y), or null: what a click there would pick. */
   partAt(clientX, clientY) {
     if (!this.available) return null;
-    const bounds = this.#renderer.domElement.getBoundingClientRect();
-    if (!(bounds.width > 0 && bounds.height > 0)) return null;
-    const pointer = new THREE.Vector2(
-      ((clientX - bounds.left) / bounds.width) * 2 - 1,
-      -((clientY - bounds.top) / bounds.height) * 2 + 1,
-    );
-    this.#raycaster.setFromCamera(pointer, this.#camera);
-    // See-through parts (a witness's others, a session's remainder) let the pointer through.
-    const hit = this.#raycaster
-      .intersectObjects([...this.#meshes.values()], false)
-      .find((candidate) => candidate.object.visible && (candidate.object.userData.baseOpacity ?? 1) === 1);
-    return hit ? hit.object.userData.partId : null;
+    return pickPart(this.#raycaster, this.#camera, this.#renderer.domElement, this.#meshes.values(), clientX, clientY);
   }
 
   /** Where the centre of part `partId`'s bounding box is on the screen, in client coordinates (or null). */
   screenPoint(partId) {
     const mesh = this.#meshes.get(partId);
     if (!this.available || !mesh?.visible) return null;
-    mesh.updateWorldMatrix(true, false);
-    const centre = mesh.geometry.boundingBox.getCenter(new THREE.Vector3()).applyMatrix4(mesh.matrixWorld).project(this.#camera);
-    const bounds = this.#renderer.domElement.getBoundingClientRect();
-    return { x: bounds.left + ((centre.x + 1) / 2) * bounds.width, y: bounds.top + ((1 - centre.y) / 2) * bounds.height };
+    return screenPointOf(mesh, this.#camera, this.#renderer.domElement);
   }
 
   #positions(include) {
@@ -1073,7 +1051,21 @@ export class AssemblyView {
     const width = Math.max(this.#container.clientWidth, 1);
     const height = Math.max(this.#container.clientHeight, 1);
     this.#renderer.setSize(width, height, false);
-    this.#camera.aspect = width / height;
+    const aspect = width / height;
+    if (aspect !== this.#camera.aspect && this.#framed && this.#meshes.size > 0) {
+      // A narrower or wider view: the camera moves in or out along its line of sight so that
+      // what was framed still fits as it did (direction, target and relative zoom kept).
+      const box = this.#framingBox();
+      const before = fitDistance(this.#camera, box);
+      this.#camera.aspect = aspect;
+      const ratio = fitDistance(this.#camera, box) / before;
+      const offset = this.#camera.position.clone().sub(this.#controls.target).multiplyScalar(ratio);
+      this.#camera.position.copy(this.#controls.target).add(offset);
+      this.#framed = { ...this.#framed, distance: this.#framed.distance * ratio };
+      setDepthRange(this.#camera, this.#controls, Math.max(this.#framed.distance, offset.length()));
+      this.#controls.update();
+    }
+    this.#camera.aspect = aspect;
     this.#camera.updateProjectionMatrix();
     this.requestRender();
   }
@@ -1096,8 +1088,7 @@ export class AssemblyView {
   #handleClick(event) {
     const down = this.#pointerDown;
     this.#pointerDown = null;
-    if (!down || !this.#onPartClick || this.#meshes.size === 0) return;
-    if (Math.hypot(event.clientX - down.x, event.clientY - down.y) > CLICK_SLOP_PX) return;
+    if (!this.#onPartClick || this.#meshes.size === 0 || !isClick(down, event)) return;
     this.#onPartClick(this.partAt(event.clientX, event.clientY));
   }
 }
@@ -1111,593 +1102,4 @@ function disposeChildren(group) {
   }
   for (const material of materials) material.dispose();
   group.clear();
-}
-
-/**
- * Places the removed parts (`parts`: { partId, box } in removal order, boxes in the content's
- * frame) on the floor beside the assembly (`assembly`: { min, max } arrays): rows running along
- * +x, starting past where the exploded assembly can reach, the next row behind (+z); the rows
- * are about as long as the tray is deep. Places snap to `cell` (voxels stay on the grid).
- * Returns { slots: Map(partId -> translation of the part), box: the tray's bounds }.
- */
-function layOutTray(parts, assembly, cell) {
-  const snapUp = (value) => Math.ceil(value / cell - 1e-9) * cell;
-  const gap = cell;
-  const sizes = parts.map(({ box }) => box.getSize(new THREE.Vector3()));
-  const area = sizes.reduce((sum, size) => sum + (snapUp(size.x) + gap) * (snapUp(size.z) + gap), 0);
-  const rowLength = Math.max(Math.sqrt(area) * 1.2, ...sizes.map((size) => snapUp(size.x)));
-  const centreX = (assembly.min[0] + assembly.max[0]) / 2;
-  const halfWidth = (assembly.max[0] - assembly.min[0]) / 2;
-  // Just past the assembly (exploding it moves the tray out as well: AssemblyView.#trayShift).
-  const startX = Math.floor(centreX / cell) * cell + snapUp(halfWidth) + 2 * gap;
-  let x = startX;
-  let z = Math.floor(assembly.min[2] / cell) * cell;
-  let rowDepth = 0;
-  const slots = new Map();
-  const box = new THREE.Box3();
-  parts.forEach(({ partId, box: partBox }, index) => {
-    const size = sizes[index];
-    if (x > startX && x + size.x > startX + rowLength) {
-      x = startX;
-      z += snapUp(rowDepth) + gap;
-      rowDepth = 0;
-    }
-    const translation = new THREE.Vector3(x - partBox.min.x, assembly.min[1] - partBox.min.y, z - partBox.min.z);
-    slots.set(partId, translation);
-    box.union(partBox.clone().translate(translation));
-    x += snapUp(size.x) + gap;
-    rowDepth = Math.max(rowDepth, size.z);
-  });
-  return { slots, box };
-}
-
-/**
- * The removal motion of each part, from the report's disassembly: the waypoints of its path
- * (each move translates it by `steps` times `scale.step` along `dir`, or along its own `vector`)
- * plus a run-out of `scale.runOut` along its last move. Returns Map(partId -> { index in the
- * order, waypoints }).
- */
-function removalMotions(report, scale = { step: 1, runOut: RUN_OUT_VOXELS }) {
-  const motions = new Map();
-  const disassembly = report.disassembly;
-  if (!disassembly?.order?.length) return motions;
-  disassembly.order.forEach((partId, index) => {
-    const path = disassembly.paths?.[index] ?? [];
-    const waypoints = [new THREE.Vector3()];
-    for (const move of path) {
-      const step = directionVector(move.dir, report.baseDirections, move.vector).multiplyScalar((Number(move.steps) || 0) * scale.step);
-      waypoints.push(waypoints[waypoints.length - 1].clone().add(step));
-    }
-    const pathEnd = waypoints[waypoints.length - 1].clone();
-    const pathLength = polylineLength(waypoints);
-    let fadeFrom = 1;
-    if (path.length > 0) {
-      const lastMove = path[path.length - 1];
-      const last = directionVector(lastMove.dir, report.baseDirections, lastMove.vector);
-      waypoints.push(pathEnd.clone().addScaledVector(last, scale.runOut));
-      fadeFrom = pathLength / (pathLength + scale.runOut);
-    }
-    motions.set(partId, { index, waypoints, pathEnd, fadeFrom });
-  });
-  return motions;
-}
-
-function polylineLength(waypoints) {
-  let total = 0;
-  for (let i = 1; i < waypoints.length; i += 1) total += waypoints[i].distanceTo(waypoints[i - 1]);
-  return total;
-}
-
-/** The point at `fraction` (0..1) of the polyline's length. */
-function pointAlong(waypoints, fraction) {
-  let remaining = fraction * polylineLength(waypoints);
-  for (let i = 1; i < waypoints.length; i += 1) {
-    const length = waypoints[i].distanceTo(waypoints[i - 1]);
-    if (remaining <= length && length > 0) return waypoints[i - 1].clone().lerp(waypoints[i], remaining / length);
-    remaining -= length;
-  }
-  return waypoints[waypoints.length - 1].clone();
-}
-
-// ---------------------------------------------------------------------------------------------
-// Voxel plans of several parts moved together: the report's `steps` (issue 27).
-
-/**
- * The moves to play for a disassembly (or a disassemblyFailure): its `steps` when the plan needs
- * parts moved together (`paths` null, or no paths at all: a partial plan) or when the steps are
- * fewer than the single-part paths' moves; otherwise null, and the order and paths are played.
- */
-export function stepsToPlay(disassembly) {
-  const steps = disassembly?.steps;
-  if (!Array.isArray(steps) || steps.length === 0) return null;
-  if (Array.isArray(disassembly.paths)) {
-    const segments = disassembly.paths.reduce((sum, path) => sum + (Array.isArray(path) ? path.length : 0), 0);
-    if (steps.length >= segments) return null;
-  }
-  return steps;
-}
-
-/** A step's move as the CLI writes it: '+x 1', '-z 6', '+z out'. */
-export function formatStepMove(step) {
-  const move = Array.isArray(step?.move) ? step.move.map(Number) : [0, 0, 0];
-  const axis = move.findIndex((value) => value !== 0);
-  if (axis < 0) return 'no move';
-  return `${move[axis] > 0 ? '+' : '-'}${'xyz'[axis]} ${step.out ? 'out' : Math.abs(move[axis])}`;
-}
-
-/** 'parts 2, 4  +x 1', 'part 3  +z out'. */
-export function formatStep(step) {
-  const parts = Array.isArray(step?.parts) ? step.parts : [];
-  return `${parts.length === 1 ? 'part' : 'parts'} ${parts.join(', ')}  ${formatStepMove(step)}`;
-}
-
-/** BurrTools' notation: [98, 2, 5] -> '98.2.5'. */
-export function formatLevel(level) {
-  return Array.isArray(level) ? level.join('.') : '';
-}
-
-/**
- * Where every part is before each step of `steps` (the report's moves, in voxels; `boxes`: each
- * part's bounds as assembled, partId -> Box3). A move translates its parts by `move` times
- * `scale.step`. An `out` step moves its parts along its axis just far enough that their bounds
- * clear the rest of their sub-assembly, plus a cell; they then form a sub-assembly of their own.
- * A single part that goes out has left (the tray, or it runs out and fades). Nothing here decides
- * whether a move is possible: that is the core's plan. Returns { steps, before (N + 1 maps
- * partId -> offset), deltas, moving (Set per step), leaves (partId -> the step it leaves in),
- * framing (a Box3 around every position a visible part takes) }.
- */
-function stepMotions(steps, boxes, scale) {
-  const ids = [...boxes.keys()];
-  let offsets = new Map(ids.map((id) => [id, new THREE.Vector3()]));
-  const subAssembly = new Map(ids.map((id) => [id, 0]));
-  let subAssemblies = 1;
-  const before = [];
-  const deltas = [];
-  const moving = [];
-  const leaves = new Map();
-  const framing = new THREE.Box3();
-  const include = (step) => {
-    for (const id of ids) {
-      const left = leaves.get(id);
-      if (left === undefined || left >= step) framing.union(boxes.get(id).clone().translate(offsets.get(id)));
-    }
-  };
-  include(0);
-  steps.forEach((step, index) => {
-    before.push(offsets);
-    const parts = (Array.isArray(step?.parts) ? step.parts : []).filter((id) => boxes.has(id));
-    const move = new THREE.Vector3(...(Array.isArray(step?.move) ? step.move : [0, 0, 0]).map((value) => Number(value) || 0));
-    let delta = move.clone().multiplyScalar(scale.step);
-    if (step?.out && parts.length > 0 && move.lengthSq() > 0) {
-      const unit = move.clone().normalize();
-      const group = new Set(parts);
-      const from = subAssembly.get(parts[0]);
-      const rest = ids.filter((id) => subAssembly.get(id) === from && !group.has(id) && !leaves.has(id));
-      delta = unit.clone().multiplyScalar(clearingDistance(parts, rest, unit, boxes, offsets) + scale.cell);
-      subAssemblies += 1;
-      for (const id of parts) subAssembly.set(id, subAssemblies);
-      if (parts.length === 1) leaves.set(parts[0], index);
-    }
-    deltas.push(delta);
-    moving.push(new Set(parts));
-    offsets = new Map(offsets);
-    for (const id of parts) offsets.set(id, offsets.get(id).clone().add(delta));
-    include(index);
-  });
-  before.push(offsets);
-  return { steps, before, deltas, moving, leaves, framing };
-}
-
-/**
- * How far the parts `group` must move along `unit` (an axis) for their bounds to lie past the
- * bounds of `rest` (their size along it when `rest` is empty).
- */
-function clearingDistance(group, rest, unit, boxes, offsets) {
-  const span = (id) => {
-    const box = boxes.get(id).clone().translate(offsets.get(id));
-    const a = box.min.dot(unit);
-    const b = box.max.dot(unit);
-    return [Math.min(a, b), Math.max(a, b)];
-  };
-  const groupSpans = group.map(span);
-  const low = Math.min(...groupSpans.map(([min]) => min));
-  if (rest.length === 0) return Math.max(...groupSpans.map(([, max]) => max)) - low;
-  const high = Math.max(...rest.map((id) => span(id)[1]));
-  return Math.max(high - low, 0);
-}
-
-// ---------------------------------------------------------------------------------------------
-// Plate plans: their removal directions as the disassembly to play.
-
-/**
- * A direction vector as the report writes it: '-z' for an axis (up to rounding, such as
- * -0.9999999999999999), else '(0.707, 0, -0.707)'.
- */
-export function formatDirection(vector) {
-  if (!Array.isArray(vector) || vector.length !== 3) return 'none';
-  const length = Math.hypot(...vector);
-  if (!(length > 0)) return 'none';
-  const unit = vector.map((value) => value / length);
-  const axis = unit.findIndex((value) => Math.abs(Math.abs(value) - 1) < 1e-9);
-  if (axis >= 0) return `${unit[axis] > 0 ? '+' : '-'}${'xyz'[axis]}`;
-  const rounded = (value) => {
-    const text = value.toFixed(3).replace(/\.?0+$/, '');
-    return text === '-0' ? '0' : text;
-  };
-  return `(${unit.map(rounded).join(', ')})`;
-}
-
-/**
- * A plate plan's removal (document.removal: [{ part, direction }], the key first) as the
- * disassembly the view plays and the report lists: each plate moves along its planned
- * direction, in order; the last one stays. Null for documents without a removal.
- */
-export function planDisassembly(document_) {
-  const planned = document_?.kind === 'plate' || document_?.kind === 'frame';
-  const removal = planned && Array.isArray(document_.removal) ? document_.removal : null;
-  if (!removal?.length) return null;
-  // A frame's beam leaves along an axis ('+y'), as far as the whole frame is wide (two steps),
-  // so that the beam with its joint voxels is clear of the frame before it fades out.
-  const steps = document_.kind === 'frame' ? 2 : 1;
-  const order = removal.map((step) => step.part);
-  const paths = removal.map((step) => {
-    const vector = Array.isArray(step.direction) ? step.direction : axisVector(step.direction);
-    return vector ? [{ dir: formatDirection(vector), vector, steps }] : [];
-  });
-  // A frame's removal lists the beams that leave; the last beam stays where it is.
-  const beams = document_.kind === 'frame' && Array.isArray(document_.beams) ? document_.beams.map((beam) => beam.id) : [];
-  for (const id of beams) {
-    if (!order.includes(id)) {
-      order.push(id);
-      paths.push([]);
-    }
-  }
-  return { order, paths };
-}
-
-/** '+y' -> [0, 1, 0]; anything else null. */
-function axisVector(label) {
-  const match = /^([+-])([xyz])$/.exec(String(label ?? '').trim());
-  if (!match) return null;
-  const vector = [0, 0, 0];
-  vector['xyz'.indexOf(match[2])] = match[1] === '+' ? 1 : -1;
-  return vector;
-}
-
-/** The report to show for `document_`: a plate plan's own removal replaces the check's disassembly. */
-export function withPlannedRemoval(report, document_) {
-  const disassembly = planDisassembly(document_);
-  return disassembly ? { ...report, disassembly, disassemblyFailure: null } : report;
-}
-
-// ---------------------------------------------------------------------------------------------
-// Playback: a clock that moves the disassembly step, and the controls that drive it.
-
-/** Steps per second at speed 1: one part leaves per second... */
-const STEPS_PER_SECOND = 1;
-/** ...unless that would take longer than this: a 100-part bunny plays in 20 s, not 100. */
-const MAX_PLAY_SECONDS = 20;
-/** Previous / next step animate one removal at least this fast (steps per second). */
-const MIN_STEP_RATE = 1.5;
-/** A looping animation rests this long when fully assembled or fully taken apart. */
-const LOOP_PAUSE_SECONDS = 0.9;
-/** A frame after a long stall (hidden tab) does not jump the animation ahead. */
-const MAX_FRAME_SECONDS = 0.1;
-
-/**
- * Plays the disassembly step from 0 (assembled) to `length` (every part but the last removed).
- * Without `loop` it stops at the end; with `loop` it rests, plays back to assembled (the
- * assembly is the disassembly reversed), rests, and starts again. `onStep(step)` on every
- * change, `onPlayingChange(playing)` when it starts or stops.
- */
-export class DisassemblyPlayer {
-  #length = 0;
-  #step = 0;
-  #direction = 1;
-  #restSeconds = 0;
-  #playing = false;
-  #frameRequest = 0;
-  #lastTime = 0;
-  #onStep;
-  #onPlayingChange;
-  /** Previous / next: the whole step to stop at, or null while playing freely. */
-  #target = null;
-  speed = 1;
-  loop = false;
-
-  constructor({ onStep = () => {}, onPlayingChange = () => {} } = {}) {
-    this.#onStep = onStep;
-    this.#onPlayingChange = onPlayingChange;
-  }
-
-  get length() {
-    return this.#length;
-  }
-
-  get step() {
-    return this.#step;
-  }
-
-  get playing() {
-    return this.#playing;
-  }
-
-  /** Steps per second at speed 1: one a second, more for many parts (the whole within MAX_PLAY_SECONDS). */
-  get stepsPerSecond() {
-    return Math.max(STEPS_PER_SECOND, this.#length / MAX_PLAY_SECONDS);
-  }
-
-  /** A new disassembly of `length` steps: back to assembled, stopped. */
-  setLength(length) {
-    this.pause();
-    this.#length = Math.max(Number(length) || 0, 0);
-    this.#direction = 1;
-    this.seek(0);
-  }
-
-  seek(step) {
-    this.#step = Math.min(Math.max(Number(step) || 0, 0), this.#length);
-    this.#onStep(this.#step);
-  }
-
-  /** Animates to the next whole step (one more part removed). */
-  next() {
-    this.stepTo(Math.floor(this.#step + 1e-6) + 1);
-  }
-
-  /** Animates back to the previous whole step (the last removed part put back). */
-  previous() {
-    this.stepTo(Math.ceil(this.#step - 1e-6) - 1);
-  }
-
-  /** Animates to whole step `target` and stops there (at once when motion is to be reduced). */
-  stepTo(target) {
-    const clamped = Math.min(Math.max(Math.round(Number(target) || 0), 0), this.#length);
-    this.pause();
-    if (clamped === this.#step) return;
-    if (globalThis.matchMedia?.('(prefers-reduced-motion: reduce)').matches) {
-      this.seek(clamped);
-      return;
-    }
-    this.#target = clamped;
-    this.#start();
-  }
-
-  play() {
-    if (this.#playing || this.#length <= 0) return;
-    // Play from the end means: start again (or, looping, go back the way it came).
-    if (this.#step >= this.#length) {
-      if (this.loop) this.#direction = -1;
-      else this.seek(0);
-    }
-    if (this.#step <= 0) this.#direction = 1;
-    this.#target = null;
-    this.#start();
-  }
-
-  #start() {
-    this.#playing = true;
-    this.#restSeconds = 0;
-    this.#lastTime = 0;
-    this.#frameRequest = requestAnimationFrame((time) => this.#tick(time));
-    this.#onPlayingChange(true);
-  }
-
-  pause() {
-    if (!this.#playing) return;
-    this.#playing = false;
-    this.#target = null;
-    cancelAnimationFrame(this.#frameRequest);
-    this.#frameRequest = 0;
-    this.#onPlayingChange(false);
-  }
-
-  toggle() {
-    if (this.#playing) this.pause();
-    else this.play();
-  }
-
-  dispose() {
-    this.pause();
-    this.#onStep = () => {};
-    this.#onPlayingChange = () => {};
-  }
-
-  #tick(time) {
-    if (!this.#playing) return;
-    const seconds = this.#lastTime ? Math.min((time - this.#lastTime) / 1000, MAX_FRAME_SECONDS) : 0;
-    this.#lastTime = time;
-    if (this.#target !== null) {
-      const rate = Math.max(this.stepsPerSecond * this.speed, MIN_STEP_RATE);
-      const sign = this.#target > this.#step ? 1 : -1;
-      const next = this.#step + sign * seconds * rate;
-      const reached = sign > 0 ? next >= this.#target : next <= this.#target;
-      this.seek(reached ? this.#target : next);
-      if (reached) {
-        this.pause();
-        return;
-      }
-    } else if (this.#restSeconds > 0) {
-      this.#restSeconds -= seconds;
-    } else {
-      const next = this.#step + this.#direction * seconds * this.stepsPerSecond * this.speed;
-      const atEnd = this.#direction > 0 ? next >= this.#length : next <= 0;
-      this.seek(next);
-      if (atEnd) {
-        if (!this.loop) {
-          this.pause();
-          return;
-        }
-        this.#direction = -this.#direction;
-        this.#restSeconds = LOOP_PAUSE_SECONDS;
-      }
-    }
-    this.#frameRequest = requestAnimationFrame((next) => this.#tick(next));
-  }
-}
-
-/**
- * Where a partial plan (a disassemblyFailure with moves) stopped: 'parts 1, 2, 3 are stuck
- * together', or 'parts 1, 2, 3 are not separated (search limit)' when a search gave up.
- */
-export function formatStuck(failure) {
-  const groups = Array.isArray(failure?.unseparated) && failure.unseparated.length ? failure.unseparated : [failure?.stuck ?? []];
-  const named = groups.map((group) => `${group.length === 1 ? 'part' : 'parts'} ${group.join(', ')}`).join(' and ');
-  const plural = groups.length > 1 || groups[0]?.length > 1;
-  if (failure?.searchLimitReached) return `${named} ${plural ? 'are' : 'is'} not separated (search limit${failure.limit ? `: ${failure.limit}` : ''})`;
-  return `${named} ${plural ? 'are' : 'is'} stuck${groups.some((group) => group.length > 1) ? ' together' : ''}`;
-}
-
-/** '8 s', '1 min 20 s'. */
-function formatSeconds(seconds) {
-  const whole = Math.round(seconds);
-  return whole < 60 ? `${whole} s` : `${Math.floor(whole / 60)} min ${whole % 60} s`;
-}
-
-/** '+z×1, then -x×2'; a plate plan's moves (with their own vector) have no step count: 'along -z'. */
-export function formatMoves(path) {
-  const moves = path ?? [];
-  if (moves.length > 0 && moves.every((move) => Array.isArray(move.vector))) return `along ${moves.map((move) => move.dir).join(', then ')}`;
-  return moves.map((move) => `${move.dir}×${move.steps}`).join(', then ');
-}
-
-/**
- * What the disassembly shows at `step`: `{ text, partId, index, moves }`, e.g. "removing part 3
- * (2 of 8)" with moves "+z×1, then -x×2"; "assembled" at 0 and "part 9 left" at the end.
- * A plan of moves (stepsToPlay) says "move 5 of 27" with moves "parts 2, 4  +x 1" (the move
- * under way, or just made at a whole step) and lists its `parts`; `index` is then the move's.
- * At the end of a partial plan (a disassemblyFailure) the moves text names the stuck parts.
- */
-export function describeDisassemblyStep(disassembly, step) {
-  const steps = stepsToPlay(disassembly);
-  if (steps) {
-    if (step <= 0) return { text: 'assembled', partId: null, index: -1, moves: '', parts: [] };
-    const index = Math.min(Math.ceil(step - 1e-9), steps.length) - 1;
-    let moves = formatStep(steps[index]);
-    if (index === steps.length - 1 && step >= steps.length && Array.isArray(disassembly.unseparated)) {
-      moves += `; then ${formatStuck(disassembly)}`;
-    }
-    return { text: `move ${index + 1} of ${steps.length}`, partId: null, index, moves, parts: [...(steps[index].parts ?? [])] };
-  }
-  const order = disassembly?.order ?? [];
-  if (order.length < 2) return { text: '', partId: null, index: -1, moves: '' };
-  if (step <= 0) return { text: 'assembled', partId: null, index: -1, moves: '' };
-  const index = Math.min(Math.floor(step), order.length - 1);
-  if (index >= order.length - 1) {
-    return { text: `part ${order[order.length - 1]} left`, partId: order[order.length - 1], index, moves: '' };
-  }
-  return {
-    text: `removing part ${order[index]} (${index + 1} of ${order.length - 1})`,
-    partId: order[index],
-    index,
-    moves: formatMoves(disassembly.paths?.[index]),
-  };
-}
-
-/**
- * Wires playback controls to `view`. `elements`: `range` (input[type=range], the step),
- * `label` (where describeDisassemblyStep's text goes), and optional `moves` (the moving part's
- * path), `playButton`, `speedSelect` (values are speed factors), `loopCheckbox`, `explodedRange`
- * (0..1), `previousButton` / `nextButton` (one removal back / on), `root` (gets data-playing).
- * `onStep({ step, index, partId, parts, moves })` is told about every change (e.g. to highlight
- * the current removal in a list; `moves` is true when a plan of moves is played, `index` then
- * being the move's). Returns { setDisassembly, play, pause, seek, setExploded, player, dispose }.
- * setDisassembly takes the report's disassembly, or a disassemblyFailure whose moves are played
- * up to where they stop.
- */
-export function createPlaybackControls(view, elements, { onStep = () => {}, loop = false } = {}) {
-  const { range, label, moves, playButton, speedSelect, loopCheckbox, explodedRange, previousButton, nextButton, root } = elements;
-  let disassembly = null;
-
-  /** Previous at the start and Next at the end have nothing to do. */
-  function updateStepButtons(step) {
-    if (previousButton) previousButton.disabled = !disassembly || step <= 0;
-    if (nextButton) nextButton.disabled = !disassembly || step >= player.length;
-  }
-
-  const player = new DisassemblyPlayer({
-    onStep(step) {
-      view.setDisassemblyStep(step);
-      if (range && Number(range.value) !== step) range.value = String(step);
-      const described = describeDisassemblyStep(disassembly, step);
-      if (label) label.textContent = described.text;
-      if (moves) moves.textContent = described.moves;
-      updateStepButtons(step);
-      onStep({ step, index: described.index, partId: described.partId, parts: described.parts ?? [], moves: Boolean(stepsToPlay(disassembly)) });
-    },
-    onPlayingChange(playing) {
-      if (playButton) {
-        playButton.textContent = playing ? 'Pause' : 'Play';
-        playButton.setAttribute('aria-pressed', String(playing));
-      }
-      if (root) root.dataset.playing = String(playing);
-    },
-  });
-  player.loop = loopCheckbox ? loopCheckbox.checked : loop;
-  if (speedSelect) player.speed = Number(speedSelect.value) || 1;
-
-  const stepTitles = {
-    previous: { removal: previousButton?.getAttribute('title') ?? null, move: 'Previous step: undo the last move' },
-    next: { removal: nextButton?.getAttribute('title') ?? null, move: 'Next step: the next move of the plan' },
-  };
-  const listeners = [];
-  const listen = (target, type, handler) => {
-    if (!target) return;
-    target.addEventListener(type, handler);
-    listeners.push(() => target.removeEventListener(type, handler));
-  };
-  // Dragging the slider takes over from the clock.
-  listen(range, 'input', () => {
-    player.pause();
-    player.seek(Number(range.value));
-  });
-  listen(playButton, 'click', () => player.toggle());
-  listen(previousButton, 'click', () => player.previous());
-  listen(nextButton, 'click', () => player.next());
-  listen(speedSelect, 'change', () => { player.speed = Number(speedSelect.value) || 1; });
-  listen(loopCheckbox, 'change', () => { player.loop = loopCheckbox.checked; });
-  listen(explodedRange, 'input', () => view.setExploded(Number(explodedRange.value)));
-
-  function setDisassembly(next) {
-    // A plan of moves plays move by move; any other part by part (the last part stays).
-    const steps = stepsToPlay(next);
-    const removable = steps ? steps.length : (next?.order?.length ?? 0) - 1;
-    disassembly = removable > 0 && view.available ? next : null;
-    const length = disassembly ? removable : 0;
-    if (range) {
-      range.disabled = !disassembly;
-      range.max = String(Math.max(length, 1));
-    }
-    if (playButton) playButton.disabled = !disassembly;
-    // Previous / Next say what they do: a move, or a removal.
-    for (const [button, titles] of [[previousButton, stepTitles.previous], [nextButton, stepTitles.next]]) {
-      if (button && titles.removal !== null) button.title = steps ? titles.move : titles.removal;
-    }
-    if (explodedRange) {
-      explodedRange.disabled = !view.available;
-      view.setExploded(Number(explodedRange.value));
-    }
-    player.setLength(length);
-    if (range) range.title = disassembly ? `${length} ${steps ? 'moves' : 'removals'}, ${formatSeconds(length / player.stepsPerSecond)} at 1×` : '';
-  }
-
-  return {
-    player,
-    setDisassembly,
-    play: () => player.play(),
-    pause: () => player.pause(),
-    seek: (step) => {
-      player.pause();
-      player.seek(step);
-    },
-    setExploded(factor) {
-      const clamped = Math.min(Math.max(Number(factor) || 0, 0), 1);
-      if (explodedRange) explodedRange.value = String(clamped);
-      view.setExploded(clamped);
-    },
-    dispose() {
-      player.dispose();
-      for (const remove of listeners) remove();
-    },
-  };
 }

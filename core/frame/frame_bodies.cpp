@@ -220,7 +220,54 @@ TriangleMesh beamJointPieceMesh(const FrameLayout& layout, const std::vector<Joi
   return mesh;
 }
 
+namespace {
+
+// The box as an axis-aligned one, when its axes are the coordinate axes (up to sign and rounding).
+bool asAxisAligned(const OrientedBox& box, AxisAlignedBox* out) {
+  for (int k = 0; k < 3; ++k) {
+    out->lo[k] = box.centre[k];
+    out->hi[k] = box.centre[k];
+  }
+  for (int i = 0; i < 3; ++i) {
+    int along = -1;
+    for (int k = 0; k < 3; ++k) {
+      if (std::abs(std::abs(box.axes[i][k]) - 1) < tolerance::kDirection) along = k;
+      else if (std::abs(box.axes[i][k]) >= tolerance::kDirection) return false;
+    }
+    if (along < 0) return false;
+    out->lo[along] -= box.halfExtents[i];
+    out->hi[along] += box.halfExtents[i];
+  }
+  return true;
+}
+
+}  // namespace
+
 TriangleMesh beamPartMesh(const FrameLayout& layout, const std::vector<JointLabels>& labels, int beam) {
+  // Axis-aligned bodies (every beam of a frame on a grid): the body boxes and the beam's joint
+  // voxels as one solid, their exact union (the body reaches half a section into its joint
+  // pieces, and consecutive boxes overlap at bends).
+  std::vector<AxisAlignedBox> boxes;
+  bool aligned = true;
+  for (const OrientedBox& box : beamBodyBoxes(layout, beam)) {
+    AxisAlignedBox axisBox;
+    aligned = aligned && asAxisAligned(box, &axisBox);
+    boxes.push_back(axisBox);
+  }
+  if (aligned) {
+    for (int joint : layout.frame.beams[beam].joints) {
+      for (int v = 0; v < kJointVoxelCount; ++v) {
+        if (labels[joint][v] != beam) continue;
+        AxisAlignedBox voxel;
+        const bool isAxisAligned = asAxisAligned(jointVoxelBox(layout, joint, v), &voxel);
+        (void)isAxisAligned;  // joint voxels always are
+        boxes.push_back(voxel);
+      }
+    }
+    return surfaceOfBoxUnion(boxes, tolerance::kMeshWeldMm);
+  }
+  // A beam with slanted boxes (a curved beam's path): each body box and each voxel group is a
+  // closed shell of its own, and the shells overlap where they meet (no exact union yet).
   TriangleMesh mesh;
   for (const OrientedBox& box : beamBodyBoxes(layout, beam)) appendBox(mesh, box);
   for (int joint : layout.frame.beams[beam].joints) {

@@ -188,7 +188,7 @@ std::vector<uint8_t> exportFrame(const FrameDocument& document, const std::strin
   }
   const std::vector<NamedMesh> meshes = partMeshes(document, part, source);
   const std::string what = part == 0 ? std::to_string(frame.beams.size()) + " beams" : "part " + std::to_string(part);
-  const std::string title = "frame export, " + what + ", one closed shell per body box and voxel group";
+  const std::string title = "frame export, " + what;
   if (format == "stl") return bytesOf(binaryStl(meshes, title));
   if (format == "stl-ascii") return bytesOf(asciiStl(meshes, part == 0 ? "frame" : "part" + std::to_string(part)));
   return bytesOf(wavefrontObj(meshes, title));

@@ -4,10 +4,74 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <numeric>
+#include <utility>
+#include <vector>
 
 #include "desia/error.h"
 
 namespace desia {
+
+void splitPinchedVertices(TriangleMesh& mesh) {
+  const size_t vertexCount = mesh.vertices.size();
+  // Triangles around each vertex (corner k of triangle t as 3t + k), in triangle order.
+  std::vector<size_t> start(vertexCount + 1, 0);
+  for (const auto& t : mesh.triangles) {
+    for (int v : t) ++start[static_cast<size_t>(v) + 1];
+  }
+  for (size_t v = 0; v < vertexCount; ++v) start[v + 1] += start[v];
+  std::vector<size_t> corners(start.back());
+  std::vector<size_t> fill(start.begin(), start.end() - 1);
+  for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+    for (int k = 0; k < 3; ++k) corners[fill[static_cast<size_t>(mesh.triangles[t][k])]++] = 3 * t + static_cast<size_t>(k);
+  }
+  std::vector<size_t> parent;
+  std::vector<std::pair<int, size_t>> byNeighbour;
+  for (size_t v = 0; v < vertexCount; ++v) {
+    const size_t first = start[v], count = start[v + 1] - first;
+    if (count < 2) continue;
+    // Fans: triangles around v joined where they share an edge (v, w).
+    parent.resize(count);
+    std::iota(parent.begin(), parent.end(), size_t{0});
+    auto find = [&](size_t i) {
+      while (parent[i] != i) i = parent[i] = parent[parent[i]];
+      return i;
+    };
+    byNeighbour.clear();
+    for (size_t i = 0; i < count; ++i) {
+      const size_t t = corners[first + i] / 3, k = corners[first + i] % 3;
+      byNeighbour.push_back({mesh.triangles[t][(k + 1) % 3], i});
+      byNeighbour.push_back({mesh.triangles[t][(k + 2) % 3], i});
+    }
+    std::sort(byNeighbour.begin(), byNeighbour.end());
+    for (size_t j = 1; j < byNeighbour.size(); ++j) {
+      if (byNeighbour[j].first == byNeighbour[j - 1].first) {
+        parent[find(byNeighbour[j].second)] = find(byNeighbour[j - 1].second);
+      }
+    }
+    // The fan of the first triangle keeps v; each other fan gets a copy.
+    std::vector<std::pair<size_t, int>> copies;  // fan root -> vertex
+    for (size_t i = 0; i < count; ++i) {
+      const size_t root = find(i);
+      int vertex = -1;
+      for (const auto& [fan, copy] : copies) {
+        if (fan == root) vertex = copy;
+      }
+      if (vertex < 0) {
+        if (copies.empty()) {
+          vertex = static_cast<int>(v);
+        } else {
+          vertex = static_cast<int>(mesh.vertices.size());
+          const std::array<double, 3> position = mesh.vertices[v];
+          mesh.vertices.push_back(position);
+        }
+        copies.push_back({root, vertex});
+      }
+      const size_t t = corners[first + i] / 3, k = corners[first + i] % 3;
+      mesh.triangles[t][k] = vertex;
+    }
+  }
+}
 
 void checkClosedMesh(const TriangleMesh& mesh, const std::string& source) {
   if (mesh.vertices.empty()) throwBadInput(source, "the mesh has no vertices");

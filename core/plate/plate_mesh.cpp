@@ -8,9 +8,13 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <map>
 
 #include "analysis/vec3.h"
 #include "desia/error.h"
+#include "desia/tolerances.h"
+#include "plate/plane_frame.h"
+#include "plate/plate_solid.h"
 
 namespace desia {
 namespace {
@@ -37,8 +41,12 @@ bool onSegment(const Point2& a, const Point2& b, const Point2& p) {
 }
 
 // Do the closed segments ab and cd meet (touching and collinear overlaps count)?
-bool segmentsMeet(const Point2& a, const Point2& b, const Point2& c, const Point2& d) {
-  const double d1 = cross2(c, d, a), d2 = cross2(c, d, b), d3 = cross2(a, b, c), d4 = cross2(a, b, d);
+bool segmentsMeet(const Point2& a, const Point2& b, const Point2& c, const Point2& d, double flat) {
+  // Collinear up to `flat` (the rounding of the face's 2D frame) counts as collinear (a bridge
+  // along a hole's edge meets it).
+  auto side = [flat](double value) { return std::abs(value) <= flat ? 0.0 : value; };
+  const double d1 = side(cross2(c, d, a)), d2 = side(cross2(c, d, b)), d3 = side(cross2(a, b, c)),
+               d4 = side(cross2(a, b, d));
   if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0))) return true;
   return (d1 == 0 && onSegment(c, d, a)) || (d2 == 0 && onSegment(c, d, b)) || (d3 == 0 && onSegment(a, b, c)) ||
          (d4 == 0 && onSegment(a, b, d));
@@ -46,11 +54,16 @@ bool segmentsMeet(const Point2& a, const Point2& b, const Point2& c, const Point
 
 // Does the direction from loop vertex `at` towards b start inside the region, which lies left of
 // the loop's edges (outline counter-clockwise, holes clockwise)?
-bool locallyInside(const std::vector<Point2>& points, const std::vector<int>& loop, size_t at, const Point2& b) {
+// With `strict`, a direction along either edge (up to rounding) does not count: a bridge along an
+// edge would leave a flat corner that no triangle can take.
+bool locallyInside(const std::vector<Point2>& points, const std::vector<int>& loop, size_t at, const Point2& b,
+                   bool strict, double flat) {
   const Point2& p = points[loop[(at + loop.size() - 1) % loop.size()]];
   const Point2& o = points[loop[at]];
   const Point2& n = points[loop[(at + 1) % loop.size()]];
-  const bool leftOfIn = cross2(p, o, b) >= 0, leftOfOut = cross2(o, n, b) >= 0;
+  const double least = strict ? flat : 0;
+  const bool leftOfIn = cross2(p, o, b) > least || (!strict && cross2(p, o, b) == 0);
+  const bool leftOfOut = cross2(o, n, b) > least || (!strict && cross2(o, n, b) == 0);
   return cross2(p, o, n) >= 0 ? leftOfIn && leftOfOut : leftOfIn || leftOfOut;
 }
 
@@ -71,13 +84,13 @@ bool insideLoops(const std::vector<Point2>& points, const std::vector<std::vecto
 // Can a bridge run from `from` to `to` without meeting any edge (other than at its own ends),
 // through the inside of the region?
 bool bridgeClear(const std::vector<Point2>& points, const std::vector<std::vector<int>>& loops, const Point2& from,
-                 const Point2& to) {
+                 const Point2& to, double flat) {
   for (const std::vector<int>& loop : loops) {
     for (size_t e = 0; e < loop.size(); ++e) {
       const Point2& c = points[loop[e]];
       const Point2& d = points[loop[(e + 1) % loop.size()]];
       if (c == from || c == to || d == from || d == to) continue;
-      if (segmentsMeet(from, to, c, d)) return false;
+      if (segmentsMeet(from, to, c, d, flat)) return false;
     }
   }
   return insideLoops(points, loops, {(from[0] + to[0]) / 2, (from[1] + to[1]) / 2});
@@ -87,7 +100,7 @@ bool bridgeClear(const std::vector<Point2>& points, const std::vector<std::vecto
 // hole's rightmost vertex to the nearest outline vertex it can see (no edge in the way, leaving
 // both vertices into the region), giving one simple-in-effect polygon that ear clipping can cut.
 std::vector<int> bridgeHoles(const std::vector<Point2>& points, std::vector<int> outer,
-                             std::vector<std::vector<int>> holes) {
+                             std::vector<std::vector<int>> holes, double flat) {
   std::sort(holes.begin(), holes.end(), [&](const std::vector<int>& a, const std::vector<int>& b) {
     auto rightmost = [&](const std::vector<int>& h) {
       double x = -HUGE_VAL;
@@ -110,15 +123,23 @@ std::vector<int> bridgeHoles(const std::vector<Point2>& points, std::vector<int>
     auto distance = [&](size_t o) { return std::hypot(points[outer[o]][0] - from[0], points[outer[o]][1] - from[1]); };
     std::stable_sort(candidates.begin(), candidates.end(),
                      [&](size_t x, size_t y) { return distance(x) < distance(y); });
+    // The nearest visible vertex whose bridge runs along no edge at its ends (collinear holes'
+    // edges: such a bridge would leave flat corners), else the nearest visible one.
     size_t best = candidates.front();
-    for (size_t o : candidates) {
-      const Point2& to = points[outer[o]];
-      if (to == from) continue;
-      if (locallyInside(points, outer, o, from) && locallyInside(points, hole, m, to) &&
-          bridgeClear(points, loops, from, to)) {
-        best = o;
-        break;
+    bool found = false;
+    for (bool strict : {true, false}) {
+      if (strict && flat <= 0) continue;  // the plain triangulation (swept collisions) as it always was
+      for (size_t o : candidates) {
+        const Point2& to = points[outer[o]];
+        if (to == from) continue;
+        if (locallyInside(points, outer, o, from, strict, flat) && locallyInside(points, hole, m, to, strict, flat) &&
+            bridgeClear(points, loops, from, to, flat)) {
+          best = o;
+          found = true;
+          break;
+        }
       }
+      if (found) break;
     }
     std::vector<int> merged(outer.begin(), outer.begin() + static_cast<long>(best) + 1);
     for (size_t k = 0; k <= hole.size(); ++k) merged.push_back(hole[(m + k) % hole.size()]);
@@ -128,24 +149,27 @@ std::vector<int> bridgeHoles(const std::vector<Point2>& points, std::vector<int>
   return outer;
 }
 
-bool insideTriangle(const Point2& p, const Point2& a, const Point2& b, const Point2& c) {
-  return cross2(a, b, p) >= 0 && cross2(b, c, p) >= 0 && cross2(c, a, p) >= 0;
+// Inside or on the border (up to rounding: a point on an edge, collinear up to the frame's
+// rounding, is on it).
+bool insideTriangle(const Point2& p, const Point2& a, const Point2& b, const Point2& c, double flat) {
+  return cross2(a, b, p) >= -flat && cross2(b, c, p) >= -flat && cross2(c, a, p) >= -flat;
 }
 
 // Ear clipping of a counter-clockwise polygon (bridges allowed: repeated points are skipped in the
 // containment test). Appends triangles as index triples.
-void clipEars(const std::vector<Point2>& points, std::vector<int> polygon, std::vector<std::array<int, 3>>* triangles) {
+void clipEars(const std::vector<Point2>& points, std::vector<int> polygon, std::vector<std::array<int, 3>>* triangles,
+              double flat) {
   while (polygon.size() > 3) {
     const size_t n = polygon.size();
     size_t ear = n;
     for (size_t i = 0; i < n && ear == n; ++i) {
       const int a = polygon[(i + n - 1) % n], b = polygon[i], c = polygon[(i + 1) % n];
-      if (cross2(points[a], points[b], points[c]) <= 0) continue;  // reflex or flat
+      if (cross2(points[a], points[b], points[c]) <= flat) continue;  // reflex or flat
       bool empty = true;
       for (size_t j = 0; j < n && empty; ++j) {
         const int p = polygon[j];
         if (points[p] == points[a] || points[p] == points[b] || points[p] == points[c]) continue;
-        if (insideTriangle(points[p], points[a], points[b], points[c])) empty = false;
+        if (insideTriangle(points[p], points[a], points[b], points[c], flat)) empty = false;
       }
       if (empty) ear = i;
     }
@@ -167,14 +191,15 @@ void clipEars(const std::vector<Point2>& points, std::vector<int> polygon, std::
     triangles->push_back({polygon[(ear + n - 1) % n], polygon[ear], polygon[(ear + 1) % n]});
     polygon.erase(polygon.begin() + static_cast<long>(ear));
   }
-  if (polygon.size() == 3 && cross2(points[polygon[0]], points[polygon[1]], points[polygon[2]]) > 0) {
+  if (polygon.size() == 3 &&
+      cross2(points[polygon[0]], points[polygon[1]], points[polygon[2]]) > flat) {
     triangles->push_back({polygon[0], polygon[1], polygon[2]});
   }
 }
 
 // Triangles of a planar face (loops[0] the outline, the rest holes) wound counter-clockwise about
 // `outward`; the loops' vertices are mesh vertices first, first + 1, ... in loop order.
-void addFace(const std::vector<Loop>& loops, const Vec3& outward, int first, TriangleMesh* mesh) {
+void addFace(const std::vector<Loop>& loops, const Vec3& outward, int first, TriangleMesh* mesh, double flat) {
   const Vec3 axis = std::abs(outward[0]) < 0.6 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
   const Vec3 u = normalized(cross(outward, axis));
   const Vec3 v = cross(outward, u);
@@ -194,16 +219,15 @@ void addFace(const std::vector<Loop>& loops, const Vec3& outward, int first, Tri
     if (signedArea(points, indexLoops[h]) > 0) std::reverse(indexLoops[h].begin(), indexLoops[h].end());
   }
   const std::vector<int> polygon =
-      bridgeHoles(points, indexLoops[0], std::vector<std::vector<int>>(indexLoops.begin() + 1, indexLoops.end()));
+      bridgeHoles(points, indexLoops[0], std::vector<std::vector<int>>(indexLoops.begin() + 1, indexLoops.end()), flat);
   std::vector<std::array<int, 3>> triangles;
-  clipEars(points, polygon, &triangles);
+  clipEars(points, polygon, &triangles, flat);
   for (const auto& t : triangles) mesh->triangles.push_back({first + t[0], first + t[1], first + t[2]});
 }
 
-
-}  // namespace
-
-TriangleMesh plateMesh(const Plate& plate) {
+// A plate without attached solids: its prism, faces and sides on shared vertices, so each edge is
+// used by exactly two triangles.
+TriangleMesh prismMesh(const Plate& plate, double flat) {
   const Vec3 axis = plateThicknessAxis(plate);
   TriangleMesh mesh;
   // Shared vertices: every bottom loop, then every top loop, so the faces and sides meet on
@@ -215,8 +239,8 @@ TriangleMesh plateMesh(const Plate& plate) {
       mesh.vertices.insert(mesh.vertices.end(), loop.begin(), loop.end());
     }
   }
-  addFace(plate.bottom, negated(axis), bottomStart[0], &mesh);
-  addFace(plate.top, axis, topStart[0], &mesh);
+  addFace(plate.bottom, negated(axis), bottomStart[0], &mesh, flat);
+  addFace(plate.top, axis, topStart[0], &mesh, flat);
   // Sides: the quad between bottom edge k and top edge k, wound so that its normal is the side's
   // outward normal.
   for (size_t l = 0; l < plate.bottom.size(); ++l) {
@@ -237,13 +261,358 @@ TriangleMesh plateMesh(const Plate& plate) {
       }
     }
   }
-  // Attached solids (milled joints): closed shells of their own, in the same mesh.
+  return mesh;
+}
+
+// --- A plate with attached solids, as one solid -------------------------------------------------
+//
+// The plate's prism and its attached solids (milled joints) touch but never overlap (plate.h), so
+// their union is bounded by their faces less the regions where two solids touch. Those regions
+// are coplanar: on every plane that holds faces, the union's surface facing +n is (the faces facing
+// +n) minus (the faces facing -n) and the other way round, computed with Clipper in the plane's 2D
+// frame, and faces facing the same way merge (a tenon flush with the plate's side makes one side).
+// No face is cut at a slant, so this is exact up to Clipper's grid (1e-4 mm), on which the
+// vertices are snapped back to the solids' own. Each merged face is then given every vertex of
+// the other faces that lies on its edges (no T-junctions) and triangulated, so every edge of the
+// mesh belongs to exactly two triangles.
+
+struct PlaneFaces {
+  Vec3 normal;  // the first face's outward normal; faces on the plane face it or its opposite
+  Vec3 origin;
+  std::vector<const geometry::SolidFace*> along, against;
+};
+
+// A welded vertex list: points within kMeshWeldMm are one vertex (the first one seen).
+class VertexWelder {
+ public:
+  int add(const Vec3& p) {
+    // Sorted by x: only points within the tolerance in x need comparing.
+    auto it = byX_.lower_bound(p[0] - tolerance::kMeshWeldMm);
+    for (; it != byX_.end() && it->first <= p[0] + tolerance::kMeshWeldMm; ++it) {
+      const Vec3& q = points_[static_cast<size_t>(it->second)];
+      if (std::abs(q[1] - p[1]) <= tolerance::kMeshWeldMm && std::abs(q[2] - p[2]) <= tolerance::kMeshWeldMm)
+        return it->second;
+    }
+    const int index = static_cast<int>(points_.size());
+    points_.push_back(p);
+    byX_.emplace(p[0], index);
+    return index;
+  }
+  const std::vector<Vec3>& points() const { return points_; }
+
+ private:
+  std::vector<Vec3> points_;
+  std::multimap<double, int> byX_;
+};
+
+double loopArea(const Loop& loop) { return norm(loopNormal(loop)) / 2; }
+
+// The faces of the union on one plane, as loops of welded vertex indices (outline first, then
+// its holes), each with its outward normal.
+struct MergedFace {
+  std::vector<std::vector<int>> loops;
+  Vec3 normal;
+};
+
+void addRegions(const PlaneFaces& plane, bool alongNormal, VertexWelder& welder, const std::map<std::pair<ClipperLib::cInt, ClipperLib::cInt>, int>& known,
+                std::vector<MergedFace>* faces) {
+  const PlaneFrame frame(plane.origin, alongNormal ? plane.normal : negated(plane.normal));
+  auto regionOf = [&](const std::vector<const geometry::SolidFace*>& list) {
+    ClipperLib::Paths all;
+    for (const geometry::SolidFace* face : list) {
+      ClipperLib::Clipper one;
+      one.AddPaths(clipperPaths(face->loops, frame), ClipperLib::ptSubject, true);
+      ClipperLib::Paths region;
+      one.Execute(ClipperLib::ctUnion, region, ClipperLib::pftEvenOdd, ClipperLib::pftEvenOdd);
+      all.insert(all.end(), region.begin(), region.end());
+    }
+    return all;
+  };
+  const ClipperLib::Paths subject = regionOf(alongNormal ? plane.along : plane.against);
+  const ClipperLib::Paths clip = regionOf(alongNormal ? plane.against : plane.along);
+  if (subject.empty()) return;
+  ClipperLib::Clipper clipper;
+  clipper.AddPaths(subject, ClipperLib::ptSubject, true);
+  if (!clip.empty()) clipper.AddPaths(clip, ClipperLib::ptClip, true);
+  ClipperLib::PolyTree tree;
+  clipper.Execute(ClipperLib::ctDifference, tree, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+  const Vec3 outward = frame.normal;
+  auto vertexOf = [&](const ClipperLib::IntPoint& p) {
+    // A point of the solids' own (the same grid point) keeps its position; a new one (where a
+    // face's edge crosses another's) is put back on the plane.
+    const auto found = known.find({p.X, p.Y});
+    if (found != known.end()) return found->second;
+    return welder.add(frame.fromClipper(p));
+  };
+  auto indices = [&](const ClipperLib::Path& path) {
+    std::vector<int> loop;
+    for (const ClipperLib::IntPoint& p : path) {
+      const int v = vertexOf(p);
+      if (loop.empty() || (loop.back() != v && loop.front() != v)) loop.push_back(v);
+    }
+    return loop;
+  };
+  // Outlines and their holes, without recursion: an explicit list of outline nodes.
+  std::vector<const ClipperLib::PolyNode*> outlines;
+  for (const ClipperLib::PolyNode* child : tree.Childs) outlines.push_back(child);
+  for (size_t i = 0; i < outlines.size(); ++i) {
+    const ClipperLib::PolyNode* node = outlines[i];
+    const double area = std::abs(ClipperLib::Area(node->Contour)) / (kClipperScale * kClipperScale);
+    MergedFace face;
+    face.normal = outward;
+    face.loops.push_back(indices(node->Contour));
+    for (const ClipperLib::PolyNode* hole : node->Childs) {
+      face.loops.push_back(indices(hole->Contour));
+      for (const ClipperLib::PolyNode* island : hole->Childs) outlines.push_back(island);
+    }
+    // A sliver left by rounding where faces meet is no face.
+    if (area < tolerance::kEmptyAreaMm2 || face.loops[0].size() < 3) continue;
+    std::vector<std::vector<int>> kept{face.loops[0]};
+    for (size_t h = 1; h < face.loops.size(); ++h) {
+      if (face.loops[h].size() >= 3) kept.push_back(face.loops[h]);
+    }
+    face.loops = kept;
+    faces->push_back(face);
+  }
+}
+
+// Every vertex of a face that lies on an edge of a loop (strictly between its ends) inserted
+// there, in order.
+void insertVerticesOnEdges(std::vector<MergedFace>& faces, const std::vector<Vec3>& points) {
+  std::vector<bool> used(points.size(), false);
+  for (const MergedFace& face : faces) {
+    for (const std::vector<int>& loop : face.loops) {
+      for (int v : loop) used[static_cast<size_t>(v)] = true;
+    }
+  }
+  for (MergedFace& face : faces) {
+    for (std::vector<int>& loop : face.loops) {
+      std::vector<int> out;
+      for (size_t k = 0; k < loop.size(); ++k) {
+        const int a = loop[k], b = loop[(k + 1) % loop.size()];
+        out.push_back(a);
+        const Vec3 ab = minus(points[b], points[a]);
+        const double length2 = dot(ab, ab);
+        if (length2 <= 0) continue;
+        std::vector<std::pair<double, int>> between;
+        for (size_t p = 0; p < points.size(); ++p) {
+          const int v = static_cast<int>(p);
+          if (!used[p] || v == a || v == b) continue;
+          const Vec3 ap = minus(points[p], points[a]);
+          const double t = dot(ap, ab) / length2;
+          if (t <= 0 || t >= 1) continue;
+          const Vec3 off = minus(ap, scaled(ab, t));
+          if (dot(off, off) <= tolerance::kMeshWeldMm * tolerance::kMeshWeldMm) between.push_back({t, v});
+        }
+        std::sort(between.begin(), between.end());
+        for (const auto& [t, v] : between) out.push_back(v);
+      }
+      loop = out;
+    }
+  }
+}
+
+// A loop without spikes (a -> b -> a: a slit of no width, where rounding or an inserted vertex
+// folds an edge back on itself) and without repeated consecutive vertices.
+void removeSpikes(std::vector<int>& loop) {
+  bool changed = true;
+  while (changed && loop.size() >= 3) {
+    changed = false;
+    for (size_t i = 0; i < loop.size() && loop.size() >= 3; ++i) {
+      const size_t n = loop.size();
+      const int before = loop[(i + n - 1) % n], after = loop[(i + 1) % n];
+      if (loop[i] == after) {
+        loop.erase(loop.begin() + static_cast<long>(i));
+        changed = true;
+      } else if (before == after) {
+        // Drop loop[i] and the repeated vertex after it.
+        const size_t next = (i + 1) % n;
+        loop.erase(loop.begin() + static_cast<long>(std::max(i, next)));
+        loop.erase(loop.begin() + static_cast<long>(std::min(i, next)));
+        changed = true;
+      }
+    }
+  }
+}
+
+// Triangles of one merged face (loops of mesh vertices) wound counter-clockwise about its normal.
+void triangulateMerged(const MergedFace& face, const std::vector<Vec3>& points, TriangleMesh* mesh, double flat) {
+  std::vector<Loop> loops;
+  std::vector<int> globalIndex;
+  for (const std::vector<int>& loop : face.loops) {
+    Loop positions;
+    for (int v : loop) {
+      positions.push_back(points[static_cast<size_t>(v)]);
+      globalIndex.push_back(v);
+    }
+    loops.push_back(positions);
+  }
+  TriangleMesh local;
+  addFace(loops, face.normal, 0, &local, flat);
+  for (const auto& t : local.triangles) {
+    mesh->triangles.push_back({globalIndex[static_cast<size_t>(t[0])], globalIndex[static_cast<size_t>(t[1])],
+                               globalIndex[static_cast<size_t>(t[2])]});
+  }
+}
+
+TriangleMesh unionMesh(const Plate& plate, double flat) {
+  std::vector<Plate> solids{plate};
+  solids[0].attached.clear();
+  solids.insert(solids.end(), plate.attached.begin(), plate.attached.end());
+  // Every vertex welded first, so that points the solids share are one point (and one grid point).
+  VertexWelder welder;
+  std::vector<geometry::SolidFace> faces;
+  for (const Plate& solid : solids) {
+    for (geometry::SolidFace& face : geometry::solidFaces(solid)) {
+      for (Loop& loop : face.loops) {
+        for (Vec3& p : loop) p = welder.points()[static_cast<size_t>(welder.add(p))];
+      }
+      if (loopArea(face.loops[0]) < tolerance::kEmptyAreaMm2) continue;  // a side of no height
+      faces.push_back(std::move(face));
+    }
+  }
+  // Faces grouped by plane, in order of first appearance.
+  std::vector<PlaneFaces> planes;
+  for (const geometry::SolidFace& face : faces) {
+    PlaneFaces* home = nullptr;
+    for (PlaneFaces& plane : planes) {
+      const double cosine = dot(plane.normal, face.normal);
+      if (std::abs(cosine) < 1 - tolerance::kSquareCosine) continue;
+      bool on = true;
+      for (const Loop& loop : face.loops) {
+        for (const Vec3& p : loop) on = on && std::abs(dot(minus(p, plane.origin), plane.normal)) <= tolerance::kMeshWeldMm;
+      }
+      if (!on) continue;
+      home = &plane;
+      (cosine > 0 ? plane.along : plane.against).push_back(&face);
+      break;
+    }
+    if (home == nullptr) planes.push_back({face.normal, face.loops[0][0], {&face}, {}});
+  }
+  std::vector<MergedFace> merged;
+  for (const PlaneFaces& plane : planes) {
+    for (bool alongNormal : {true, false}) {
+      // The solids' own vertices on this plane by their grid point in this orientation's frame.
+      const PlaneFrame frame(plane.origin, alongNormal ? plane.normal : negated(plane.normal));
+      std::map<std::pair<ClipperLib::cInt, ClipperLib::cInt>, int> known;
+      for (const auto* list : {&plane.along, &plane.against}) {
+        for (const geometry::SolidFace* face : *list) {
+          for (const Loop& loop : face->loops) {
+            for (const Vec3& p : loop) {
+              const ClipperLib::IntPoint q = frame.toClipper(p);
+              known.emplace(std::make_pair(q.X, q.Y), welder.add(p));
+            }
+          }
+        }
+      }
+      addRegions(plane, alongNormal, welder, known, &merged);
+    }
+  }
+  insertVerticesOnEdges(merged, welder.points());
+  for (MergedFace& face : merged) {
+    for (std::vector<int>& loop : face.loops) removeSpikes(loop);
+    face.loops.erase(std::remove_if(face.loops.begin(), face.loops.end(),
+                                    [](const std::vector<int>& loop) { return loop.size() < 3; }),
+                     face.loops.end());
+  }
+  merged.erase(std::remove_if(merged.begin(), merged.end(), [](const MergedFace& face) { return face.loops.empty(); }),
+               merged.end());
+  TriangleMesh mesh;
+  mesh.vertices = welder.points();
+  for (const MergedFace& face : merged) triangulateMerged(face, mesh.vertices, &mesh, flat);
+  // Only the vertices the triangles use, numbered in order of first use.
+  std::vector<int> renumber(mesh.vertices.size(), -1);
+  TriangleMesh used;
+  for (auto& t : mesh.triangles) {
+    for (int& v : t) {
+      if (renumber[static_cast<size_t>(v)] < 0) {
+        renumber[static_cast<size_t>(v)] = static_cast<int>(used.vertices.size());
+        used.vertices.push_back(mesh.vertices[static_cast<size_t>(v)]);
+      }
+      v = renumber[static_cast<size_t>(v)];
+    }
+    used.triangles.push_back(t);
+  }
+  return used;
+}
+
+// Is every directed edge of the mesh used exactly once, and its reverse exactly once?
+bool everyEdgeInTwoOppositeTriangles(const TriangleMesh& mesh) {
+  std::vector<std::pair<int, int>> directed;
+  directed.reserve(mesh.triangles.size() * 3);
+  for (const auto& t : mesh.triangles) {
+    for (int k = 0; k < 3; ++k) directed.push_back({t[k], t[(k + 1) % 3]});
+  }
+  std::sort(directed.begin(), directed.end());
+  for (size_t i = 0; i < directed.size(); ++i) {
+    if (i + 1 < directed.size() && directed[i + 1] == directed[i]) return false;
+    if (!std::binary_search(directed.begin(), directed.end(), std::make_pair(directed[i].second, directed[i].first)))
+      return false;
+  }
+  return true;
+}
+
+// Six times the volume the mesh encloses (divergence theorem).
+double sixVolume(const TriangleMesh& mesh) {
+  double volume = 0;
+  for (const auto& t : mesh.triangles) {
+    const Vec3& a = mesh.vertices[static_cast<size_t>(t[0])];
+    volume += dot(a, cross(mesh.vertices[static_cast<size_t>(t[1])], mesh.vertices[static_cast<size_t>(t[2])]));
+  }
+  return volume;
+}
+
+// The plate and its attached solids as closed shells of their own, in one mesh (they touch).
+TriangleMesh shellsMesh(const Plate& plate, double flat) {
+  Plate body = plate;
+  body.attached.clear();
+  TriangleMesh mesh = prismMesh(body, flat);
   for (const Plate& solid : plate.attached) {
-    const TriangleMesh piece = plateMesh(solid);
+    const TriangleMesh piece = prismMesh(solid, flat);
     const int first = static_cast<int>(mesh.vertices.size());
     mesh.vertices.insert(mesh.vertices.end(), piece.vertices.begin(), piece.vertices.end());
     for (const auto& t : piece.triangles) mesh.triangles.push_back({t[0] + first, t[1] + first, t[2] + first});
   }
+  return mesh;
+}
+
+}  // namespace
+
+TriangleMesh plateMesh(const Plate& plate) {
+  // The sweeps' mesh, as it always was: the plate's prism and each attached solid a closed shell.
+  return shellsMesh(plate, 0);
+}
+
+TriangleMesh plateSolidMesh(const Plate& plate) {
+  // Candidates in order of preference, each checked as built (every edge in two opposite
+  // triangles, and the volume of the solids, which touch but never overlap): the union with the
+  // triangulation that makes no flat triangle, the union with the plain one (where collinear
+  // holes leave it no ear: it may keep a flat triangle), and, where neither passes (a few mitre
+  // joints' wedges on slanted planes, where faces meet along an edge only or rounding leaves a
+  // sliver; see docs/export.md), the plate and its attached solids as the closed shells they are,
+  // touching, triangulated the same two ways. A plate without attached solids is its prism.
+  constexpr double flat = tolerance::kFlatCornerTwiceAreaMm2;
+  const double expected = sixVolume(shellsMesh(plate, 0));
+  const auto passes = [&](const TriangleMesh& mesh) {
+    return everyEdgeInTwoOppositeTriangles(mesh) &&
+           std::abs(sixVolume(mesh) - expected) <= tolerance::kUnionVolumeShare * std::abs(expected);
+  };
+  TriangleMesh mesh;
+  bool found = false;
+  if (!plate.attached.empty()) {
+    for (double corner : {flat, 0.0}) {
+      mesh = unionMesh(plate, corner);
+      if (passes(mesh)) {
+        found = true;
+        break;
+      }
+    }
+  }
+  if (!found) {
+    mesh = shellsMesh(plate, flat);
+    if (!passes(mesh)) mesh = shellsMesh(plate, 0);
+  }
+  splitPinchedVertices(mesh);
   return mesh;
 }
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The closed surface of one part of a voxel assembly (the mesh behind the STL and OBJ exports),
 // as the part is, or inset by a clearance where it touches other parts (print-ready parts).
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <cstdint>
@@ -34,6 +35,32 @@ class VoxelLattice {
   const VoxelGrid& grid_;
   const int partId_;
   const double voxelSize_;
+};
+
+// Cells between the face planes of a set of axis-aligned boxes (line k of an axis at lines[k]);
+// a cell is solid when a box holds it.
+class RectilinearLattice {
+ public:
+  RectilinearLattice(std::array<std::vector<double>, 3> lines, std::vector<uint8_t> solid)
+      : lines_(std::move(lines)), solid_(std::move(solid)) {}
+  Int3 cells() const {
+    return {static_cast<int>(lines_[0].size()) - 1, static_cast<int>(lines_[1].size()) - 1,
+            static_cast<int>(lines_[2].size()) - 1};
+  }
+  bool solid(const Int3& c) const {
+    const Int3 n = cells();
+    if (c.x < 0 || c.y < 0 || c.z < 0 || c.x >= n.x || c.y >= n.y || c.z >= n.z) return false;
+    return solid_[static_cast<size_t>(c.x + int64_t{n.x} * (c.y + int64_t{n.y} * c.z))] != 0;
+  }
+  double coordinate(int axis, int64_t halfUnits) const {
+    const std::vector<double>& lines = lines_[axis];
+    if (halfUnits % 2 == 0) return lines[static_cast<size_t>(halfUnits / 2)];
+    return 0.5 * (lines[static_cast<size_t>(halfUnits / 2)] + lines[static_cast<size_t>(halfUnits / 2 + 1)]);
+  }
+
+ private:
+  const std::array<std::vector<double>, 3> lines_;
+  const std::vector<uint8_t> solid_;
 };
 
 // The part inset by the clearance c where it touches another part. Every voxel is split into
@@ -136,6 +163,8 @@ class PartSurfaceBuilder {
 
   TriangleMesh take() {
     if (mesh_.triangles.empty()) throwBadInput("", "part " + std::to_string(partId_) + " has no voxels");
+    // Two cells of the part that share only a corner: a copy of the corner for each.
+    splitPinchedVertices(mesh_);
     return std::move(mesh_);
   }
 
@@ -312,6 +341,64 @@ std::vector<int64_t> voxelsOfPart(const VoxelGrid& grid, int partId) {
 }
 
 }  // namespace
+
+namespace {
+
+// The first line at or above `value` (within `same`): lines are sorted and apart by more than `same`.
+int lineAt(const std::vector<double>& lines, double value, double same) {
+  return static_cast<int>(std::lower_bound(lines.begin(), lines.end(), value - same) - lines.begin());
+}
+
+}  // namespace
+
+TriangleMesh surfaceOfBoxUnion(const std::vector<AxisAlignedBox>& boxes, double sameCoordinate) {
+  if (boxes.empty()) throwBadInput("", "a union of boxes needs at least one box");
+  // The face planes along each axis, sorted; a value within `sameCoordinate` of the last plane kept
+  // is that plane (the lowest value of a run stands for it, so the result does not depend on order).
+  std::array<std::vector<double>, 3> lines;
+  for (int axis = 0; axis < 3; ++axis) {
+    std::vector<double> values;
+    for (const AxisAlignedBox& box : boxes) {
+      if (!(box.hi[axis] - box.lo[axis] > sameCoordinate)) throwBadInput("", "a box of the union has no volume");
+      values.push_back(box.lo[axis]);
+      values.push_back(box.hi[axis]);
+    }
+    std::sort(values.begin(), values.end());
+    for (double value : values) {
+      if (lines[axis].empty() || value > lines[axis].back() + sameCoordinate) lines[axis].push_back(value);
+    }
+  }
+  const int64_t nx = static_cast<int64_t>(lines[0].size()) - 1, ny = static_cast<int64_t>(lines[1].size()) - 1,
+                nz = static_cast<int64_t>(lines[2].size()) - 1;
+  constexpr int64_t kMaxCells = int64_t{1} << 24;
+  if (nx * ny * nz > kMaxCells) {
+    throw Error(ErrorCode::TooLarge, "a union of " + std::to_string(boxes.size()) + " boxes needs " +
+                                         std::to_string(nx * ny * nz) + " cells, more than 2^24");
+  }
+  std::vector<uint8_t> solid(static_cast<size_t>(nx * ny * nz), 0);
+  for (const AxisAlignedBox& box : boxes) {
+    std::array<int, 3> from{}, to{};
+    for (int axis = 0; axis < 3; ++axis) {
+      from[axis] = lineAt(lines[axis], box.lo[axis], sameCoordinate);
+      to[axis] = lineAt(lines[axis], box.hi[axis], sameCoordinate);
+    }
+    for (int z = from[2]; z < to[2]; ++z) {
+      for (int y = from[1]; y < to[1]; ++y) {
+        for (int x = from[0]; x < to[0]; ++x) solid[static_cast<size_t>(x + nx * (y + ny * z))] = 1;
+      }
+    }
+  }
+  const RectilinearLattice lattice(lines, solid);
+  PartSurfaceBuilder<RectilinearLattice> builder(lattice, 1);
+  for (int z = 0; z < nz; ++z) {
+    for (int y = 0; y < ny; ++y) {
+      for (int x = 0; x < nx; ++x) {
+        if (solid[static_cast<size_t>(x + nx * (y + ny * z))] != 0) builder.addCell({x, y, z});
+      }
+    }
+  }
+  return builder.take();
+}
 
 TriangleMesh partSurfaceMesh(const VoxelGrid& grid, int partId, double voxelSize) {
   return surfaceOfVoxels(grid, partId, voxelsOfPart(grid, partId), voxelSize);

@@ -15,7 +15,7 @@
 import { after, before, describe, it } from 'node:test';
 import assert from 'node:assert/strict';
 import {
-  checkPrerequisites, openBrowser, screenshot, waitForReady,
+  checkPrerequisites, openBrowser, screenshot, showDesignSettings, waitForReady,
 } from './support.mjs';
 
 const BUNNY_SHAPE = 'bunny_origin.puz';
@@ -76,6 +76,7 @@ for (const viewport of [{ width: 1400, height: 900 }, { width: 390, height: 844 
     // too short for the view to show several depths at its at most four snapshots a second.
     it('shows the deepest node growing while the bunny is designed with N = 80', async () => {
       await page.goto(`${server.url}?example=${BUNNY_SHAPE}&parts=80&seed=1`);
+      await showDesignSettings(page); // folded on a phone
       await waitForReady(page, BUNNY_SHAPE);
       await page.fill('#design-workers', '1');
       let shot = false;

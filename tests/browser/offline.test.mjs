@@ -104,7 +104,7 @@ describe('playground offline in headless Chromium', { timeout: 120_000 }, () => 
   });
 
   it('keeps every file of the playground once it has loaded', async () => {
-    await page.goto(server.url);
+    await page.goto(`${server.url}?example=${FIRST_EXAMPLE}`);
     assertInterlockingWithKey(await waitForReady(page, FIRST_EXAMPLE), 1);
     await page.waitForFunction(() => ['ready', 'unavailable'].includes(document.body.dataset.offline), null, { timeout: SAVE_TIMEOUT_MS });
     const indicator = await page.evaluate(() => ({

@@ -19,7 +19,7 @@ import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import path from 'node:path';
 import { loadDesiaModule } from '../../wasm/index.js';
-import { REPO_ROOT, checkPrerequisites, openBrowser, screenshot, waitForReady } from './support.mjs';
+import { REPO_ROOT, checkPrerequisites, openBrowser, screenshot, showDesignSettings, waitForReady } from './support.mjs';
 
 const CUBE = 'Cube_4x4x4_K9.puz';
 const BUNNY = 'bunny_15x14x11_K80.puz';
@@ -212,6 +212,7 @@ for (const viewport of [{ width: 1400, height: 900 }, { width: 390, height: 844 
 
     it('selects, hides, isolates and steps through the 9-part cube', async (t) => {
       await page.goto(`${browser.server.url}?example=${CUBE}`);
+      await showDesignSettings(page); // folded on a phone
       const state = await waitForReady(page, CUBE);
       if (state.webgl !== 'on') return t.skip('no WebGL in this Chromium');
       assert.deepEqual(await page.$eval('#part-list li[data-part="1"] .part-swatch', (swatch) => getComputedStyle(swatch).backgroundColor), 'rgb(255, 194, 26)', 'the key is gold');

@@ -106,8 +106,10 @@ describe('plate structures in the playground (headless Chromium)', { timeout: 12
 
     await page.selectOption('#example-select', TABLE);
     const state = await waitForReady(page, TABLE);
-    assert.equal(state.verdictCode, 'not-interlocking', 'a design without joints is not interlocking');
-    assert.equal(state.verdict, 'Not interlocking');
+    // A design without joints is an input to design from, said neutrally (issue 28, item 5).
+    assert.equal(state.verdictCode, 'input', 'a design without joints is not interlocking');
+    assert.equal(state.verdict, 'Plate structure: 6 plates, ready to design joints');
+    assert.match(await page.textContent('#reason'), /Without joints: the blocking graph along/);
     assert.equal(state.parts, '6');
     assert.equal(await page.isHidden('#cut-points'), true, 'the TABLE has no cut point');
     assert.equal(await page.isHidden('#joints-details'), true, 'a design input has no joints yet');
@@ -193,7 +195,7 @@ describe('plate structures in the playground (headless Chromium)', { timeout: 12
     // Part 2 leaves along (-0.9999999999999999, 0, 0): written as the axis. (Since issue 24 the
     // search takes the plate with the fewest neighbours left first: the last shelf leaves along +x.)
     assert.deepEqual(await page.$$eval('#paths li', (items) => items.map((item) => item.textContent)), [
-      'part 1: along +y', 'part 2: along -x', 'part 3: along -x', 'part 4: along -x', 'part 5: along +x', 'part 6: stays (last part)',
+      'plate 1: along +y', 'plate 2: along -x', 'plate 3: along -x', 'plate 4: along -x', 'plate 5: along +x', 'plate 6: stays (last part)',
     ]);
 
     if (state.webgl === 'on') {
@@ -261,6 +263,9 @@ describe('plate structures in the playground (headless Chromium)', { timeout: 12
 
   it('downloads the designed TABLE as SVG cut sheets at true size', async () => {
     await page.selectOption('#export-format', 'svg');
+    assert.equal(await page.inputValue('#export-sheet'), '1300x900', 'a large laser bed by default (issue 28)');
+    // No sheet size: one sheet as large as needed, as the CLI without --sheet.
+    await page.fill('#export-sheet', '');
     await page.fill('#export-kerf', '0.1');
     const [download] = await Promise.all([page.waitForEvent('download'), page.click('#export-button')]);
     assert.equal(download.suggestedFilename(), 'table_plan_seed1.svg');
@@ -305,7 +310,7 @@ describe('plate structures in the playground (headless Chromium)', { timeout: 12
   it('shows the CHAIR\'s cut point in the check and after Design', async () => {
     await page.selectOption('#example-select', CHAIR);
     const state = await waitForReady(page, CHAIR);
-    assert.equal(state.verdictCode, 'not-interlocking');
+    assert.equal(state.verdictCode, 'input', 'no joints yet: an input, its cut point said below');
     if (state.webgl === 'on') assert.equal(state.meshes, '8');
     assert.equal(await page.isVisible('#cut-points'), true);
     assert.equal(await page.textContent('#cut-points'),

@@ -21,6 +21,7 @@ import { cp, lstat, mkdir, mkdtemp, readFile, readdir, rm, stat } from 'node:fs/
 import { createServer } from 'node:http';
 import os from 'node:os';
 import path from 'node:path';
+import zlib from 'node:zlib';
 import { chromium } from 'playwright-core';
 import { loadDesiaModule } from '../../wasm/index.js';
 import {
@@ -147,7 +148,7 @@ describe('the playground as a static site under a sub-path', { timeout: 180_000 
     const built = path.join(tmp, 'build/site');
     const build = spawnSync(process.execPath, [path.join(REPO_ROOT, 'scripts/build-site.mjs'), '--out', built], { encoding: 'utf8' });
     assert.equal(build.status, 0, `build-site failed:\n${build.stdout}${build.stderr}`);
-    assert.match(build.stdout, /: \d+ files, \d+\.\d MB/);
+    assert.match(build.stdout, /: \d+ files, \d+\.\d MB \(\d+ bytes; brotli \d+\.\d+ MB, gzip \d+\.\d+ MB/);
     // Published somewhere else, under a sub-path: a plain copy of the folder.
     siteDir = path.join(tmp, 'root', SUB_PATH);
     await mkdir(path.dirname(siteDir), { recursive: true });
@@ -196,13 +197,36 @@ describe('the playground as a static site under a sub-path', { timeout: 180_000 
       assert.doesNotMatch(text, /['"]\/(node_modules|web|wasm|dist|examples)\//, `${file} has a root-absolute URL`);
       assert.doesNotMatch(text, /['"](\.\.\/)+(web|node_modules)\//, `${file} refers to the development layout`);
     }
+    // Precompressed copies beside every file (issue 28, item 10), smaller than the file and
+    // decompressing to it; the JavaScript minified (three.js ships none).
+    const served = files.filter((file) => !/\.(br|gz)$/.test(file));
     let bytes = 0;
-    for (const file of files) bytes += (await stat(path.join(siteDir, file))).size;
-    assert.ok(bytes < 8e6, `the site is ${(bytes / 1e6).toFixed(1)} MB`);
+    let brotliBytes = 0;
+    for (const file of served) {
+      const content = await readFile(path.join(siteDir, file));
+      bytes += content.length;
+      for (const [suffix, unpack] of [['.br', zlib.brotliDecompressSync], ['.gz', zlib.gunzipSync]]) {
+        if (!files.includes(file + suffix)) {
+          // Left out only where it would not be smaller (a tiny file).
+          assert.ok(content.length < 100, `${file}${suffix} is missing`);
+          continue;
+        }
+        const packed = await readFile(path.join(siteDir, file + suffix));
+        assert.ok(packed.length < content.length, `${file}${suffix} is not smaller`);
+        assert.deepEqual(unpack(packed), content, `${file}${suffix} is not ${file}`);
+        if (suffix === '.br') brotliBytes += packed.length;
+      }
+    }
+    assert.deepEqual(files.filter((file) => /\.(br|gz)$/.test(file) && !served.includes(file.slice(0, -3))), [], 'no stray copies');
+    const three = await readFile(path.join(siteDir, 'vendor/three/build/three.core.js'), 'utf8');
+    assert.ok(three.length < 0.5 * (await stat(path.join(REPO_ROOT, 'node_modules/three/build/three.core.js'))).size, 'three.js is minified');
+    assert.match(three, /^\/\*\*?\s*\n?\s*\*?\s*@license/, 'three.js keeps its license comment');
+    assert.ok(bytes < 6e6, `the site is ${(bytes / 1e6).toFixed(1)} MB`);
+    assert.ok(brotliBytes < 1.5e6, `the site is ${(brotliBytes / 1e6).toFixed(2)} MB with brotli`);
   });
 
   it('loads at the sub-path and checks the first example', async () => {
-    await page.goto(siteUrl);
+    await page.goto(`${siteUrl}?example=${FIRST_EXAMPLE}`);
     const state = await waitForReady(page, FIRST_EXAMPLE);
     assertInterlockingWithKey(state, 1);
     assert.equal(state.parts, '9');

@@ -13,7 +13,7 @@
 
 import { after, before, describe, it } from 'node:test';
 import assert from 'node:assert/strict';
-import { assertInterlockingWithKey, checkPrerequisites, openBrowser, pageState, screenshot, waitForReady } from './support.mjs';
+import { assertInterlockingWithKey, checkPrerequisites, openBrowser, pageState, screenshot, showDesignSettings, waitForReady } from './support.mjs';
 
 const CUBE_SHAPE = 'Cube_4x4x4_origin.puz';
 
@@ -78,6 +78,7 @@ for (const viewport of [{ width: 1400, height: 900 }, { width: 390, height: 844 
 
     it('keeps the camera, highlights the new part, shows the children side by side and finishes from here', async () => {
       await page.goto(`${browser.server.url}?example=${CUBE_SHAPE}&parts=9&seed=3`);
+      await showDesignSettings(page); // folded on a phone
       await waitForReady(page, CUBE_SHAPE);
       await page.click('#session-details summary');
       let state = await act(page, '#session-start');

@@ -160,6 +160,15 @@ export async function waitForReady(page, source, timeout) {
 
 export function assertInterlockingWithKey(state, key) {
   assert.equal(state.verdictCode, 'interlocking', `verdict: ${state.verdict}`);
-  assert.match(state.verdict, new RegExp(`^Interlocking\\b.*\\bpart ${key}$`));
+  // The key is named as the part list names it: a part, a plate or a beam (issue 28, item 7).
+  assert.match(state.verdict, new RegExp(`^Interlocking\\b.*\\b(part|plate|beam) ${key}$`));
   assert.equal(state.key, String(key));
+}
+
+/**
+ * Opens the Design settings (N, seed, time limit, …): a phone folds them under the verdict
+ * (issue 28, item 1), and a test that fills them opens them as a user taps "Settings".
+ */
+export async function showDesignSettings(page) {
+  await page.evaluate(() => { document.querySelector('#design-settings').open = true; });
 }

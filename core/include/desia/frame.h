@@ -120,8 +120,10 @@ bool sweptBoxesCollide(const OrientedBox& moving, const Vec3& direction, const O
 std::string frameSweepObstacle(const FrameLayout& layout, const std::vector<JointLabels>& labels, int beam,
                                const Vec3& direction, const std::vector<bool>& present);
 
-// Closed meshes (in the frame's units) of one beam: its body boxes and its voxel groups, one
-// closed shell each (every edge in two triangles).
+// The closed mesh (in the frame's units) of one beam: when its body boxes are axis-aligned (every
+// frame on a grid), the exact union of its body boxes and its joint voxels, one solid whose every
+// edge is in exactly two triangles (surfaceOfBoxUnion); a beam with slanted boxes (a curved path)
+// is still one closed shell per body box and voxel group, overlapping where they meet.
 TriangleMesh beamPartMesh(const FrameLayout& layout, const std::vector<JointLabels>& labels, int beam);
 // The joint piece glued to a beam's end at `joint`: the voxels it owns there (face voxel
 // included), one closed shell; empty when it owns none there.

@@ -43,8 +43,18 @@ Vec3 plateThicknessAxis(const Plate& plate);
 // The outward unit normals of the side faces along loop `loopIndex` (side k joins vertices k, k+1).
 std::vector<Vec3> plateSideNormals(const Plate& plate, size_t loopIndex);
 
-// The plate as a closed triangle mesh (outward, counter-clockwise seen from outside), in mm.
+// The plate as closed triangle meshes (outward, counter-clockwise seen from outside), in mm: its
+// prism and each attached solid a closed shell of its own (they touch). What the swept-collision
+// tests run on.
 TriangleMesh plateMesh(const Plate& plate);
+
+// The plate as one solid for export and drawing, in mm: its attached solids unioned with it (the
+// faces where they touch gone, coplanar faces merged), every edge in exactly two triangles in
+// opposite directions, no T-junction, no zero-area triangle, no pinched vertex. Checked as it is
+// built (edges and volume); where the check fails, the union triangulated plainly (rows of
+// collinear mortises: it may keep zero-area triangles), else the touching shells of plateMesh (a
+// few mitre joints' wedges). docs/export.md lists what is left.
+TriangleMesh plateSolidMesh(const Plate& plate);
 
 struct PlateOptions {
   // Two faces closer than this (mm) lie on one another; also the planarity tolerance of a face.

@@ -39,6 +39,14 @@ constexpr double kLeastSharedWidthMm = 1e-3;
 // A top vertex this close to its bottom vertex moved straight across the plate's thickness: the
 // side between them stands square on the faces (a plate of such sides is a prism).
 constexpr double kPrismMm = 1e-6;
+// Coordinates of an exported solid's pieces closer than this are one coordinate: the face planes of
+// a frame beam's boxes, the planes and vertices of a plate's body and its attached solids (a mitre
+// tenon's corners are computed apart from its plate's, some 1e-5 mm off; Clipper's grid is 1e-4 mm).
+constexpr double kMeshWeldMm = 1e-4;
+// A plate's exported union with its attached solids may differ in volume from the sum of the
+// solids' by this share (the welding of their vertices moves faces by up to kMeshWeldMm); more,
+// and the union is not used.
+constexpr double kUnionVolumeShare = 1e-6;
 // A length below this is none: an edge of no length, a crossing at the point it starts from, a
 // part past the usable width of a cut sheet by less.
 constexpr double kZeroLengthMm = 1e-9;
@@ -63,6 +71,9 @@ constexpr double kSheetSliverMm2 = 1e-2;
 constexpr double kSameAreaMm2 = 1e-6;
 // A triangle whose shadow has less than this twice-area is seen edge-on.
 constexpr double kEdgeOnTwiceAreaMm2 = 1e-9;
+// A corner of a face being triangulated whose twice-area (with its two neighbours) is at most this
+// is flat: collinear vertices, up to the rounding of the face's 2D frame, make no triangle.
+constexpr double kFlatCornerTwiceAreaMm2 = 1e-6;
 // A face whose twice-area (the length of its unnormalised normal) is below this has no area.
 constexpr double kNoTwiceAreaMm2 = 1e-12;
 

@@ -19,6 +19,13 @@ struct TriangleMesh {
   std::vector<std::string> groupNames;
 };
 
+// Where a closed mesh pinches at a vertex (its triangles around the vertex form several fans that
+// share no edge there, as around the corner two cubes share and nothing else), gives each fan
+// after the first its own copy of the vertex, appended in order (fans in order of their first
+// triangle, vertices in index order), so that every vertex's triangles form one fan: with every
+// edge in two triangles, the indexed mesh is then a 2-manifold. Positions are unchanged.
+void splitPinchedVertices(TriangleMesh& mesh);
+
 // Throws BadInput unless the mesh has vertices and triangles, finite coordinates, indices in
 // range, no triangle repeating a vertex, and every undirected edge in an even number of triangles
 // (two, or four where solids touch along an edge; the first offending edge in vertex order is

@@ -1,0 +1,197 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Every exported part is one valid solid (issue 28, item 11): every edge in exactly two triangles,
+// in opposite directions; no zero-area triangle; one connected piece; Euler characteristic
+// 2 - 2 genus with a sane genus; the part's own volume. For unions of boxes (frame beams), plates
+// with their milled joints (the golden corpus' designs with fixed seeds) and voxel parts.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <numeric>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "analysis/vec3.h"
+#include "desia/document.h"
+#include "desia/error.h"
+#include "desia/frame.h"
+#include "desia/frame_format.h"
+#include "desia/plate.h"
+#include "desia/voxel_surface.h"
+#include "test_support.h"
+
+namespace desia {
+namespace {
+
+struct SolidFacts {
+  std::string manifold;  // "" or the first edge not in exactly two opposite triangles
+  int zeroArea = 0;
+  int components = 0;
+  int64_t euler = 0;
+  double volume = 0;
+  int genus() const { return static_cast<int>((2 * components - euler) / 2); }
+};
+
+SolidFacts factsOf(const TriangleMesh& mesh) {
+  SolidFacts facts;
+  facts.manifold = testing::manifoldProblem(mesh);
+  facts.volume = testing::enclosedVolume(mesh);
+  std::set<int> used;
+  std::set<std::pair<int, int>> edges;
+  std::vector<int> parent(mesh.triangles.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  auto find = [&](int t) {
+    while (parent[t] != t) t = parent[t] = parent[parent[t]];
+    return t;
+  };
+  std::map<std::pair<int, int>, int> firstTriangle;
+  for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const auto& tri = mesh.triangles[t];
+    const Vec3& a = mesh.vertices[tri[0]];
+    const Vec3 n = cross(minus(mesh.vertices[tri[1]], a), minus(mesh.vertices[tri[2]], a));
+    if (norm(n) / 2 <= 1e-9) ++facts.zeroArea;
+    for (int k = 0; k < 3; ++k) {
+      used.insert(tri[k]);
+      const std::pair<int, int> edge{std::min(tri[k], tri[(k + 1) % 3]), std::max(tri[k], tri[(k + 1) % 3])};
+      edges.insert(edge);
+      const auto [at, fresh] = firstTriangle.emplace(edge, static_cast<int>(t));
+      if (!fresh) parent[find(static_cast<int>(t))] = find(at->second);
+    }
+  }
+  std::set<int> roots;
+  for (size_t t = 0; t < mesh.triangles.size(); ++t) roots.insert(find(static_cast<int>(t)));
+  facts.components = static_cast<int>(roots.size());
+  facts.euler = static_cast<int64_t>(used.size()) - static_cast<int64_t>(edges.size()) +
+                static_cast<int64_t>(mesh.triangles.size());
+  return facts;
+}
+
+void expectSolid(const TriangleMesh& mesh, double volume, int maxGenus, const std::string& what) {
+  const SolidFacts facts = factsOf(mesh);
+  EXPECT_EQ(facts.manifold, "") << what;
+  EXPECT_EQ(facts.zeroArea, 0) << what;
+  EXPECT_EQ(facts.components, 1) << what;
+  EXPECT_EQ(facts.euler % 2, 0) << what;
+  EXPECT_GE(facts.genus(), 0) << what;
+  EXPECT_LE(facts.genus(), maxGenus) << what;
+  EXPECT_NEAR(facts.volume, volume, 1e-9 * std::max(1.0, volume)) << what;
+}
+
+TEST(SolidExport, UnionOfOverlappingBoxesIsOneSolidOfTheUnionsVolume) {
+  // A 4 x 1 x 1 bar through a 2 x 2 x 2 cube, half of it outside: 8 + 2 (outside) = 10.
+  const std::vector<AxisAlignedBox> boxes{{{0, 0, 0}, {2, 2, 2}}, {{-2, 0.5, 0.5}, {2, 1.5, 1.5}}};
+  const TriangleMesh mesh = surfaceOfBoxUnion(boxes, 1e-6);
+  expectSolid(mesh, 10, 0, "bar through cube");
+  EXPECT_EQ(factsOf(mesh).euler, 2);
+  // Boxes that touch face to face: one block, no inner wall.
+  expectSolid(surfaceOfBoxUnion({{{0, 0, 0}, {1, 1, 1}}, {{1, 0, 0}, {3, 1, 1}}}, 1e-6), 3, 0, "touching");
+  // A ring of four bars: genus 1.
+  const std::vector<AxisAlignedBox> ring{
+      {{0, 0, 0}, {3, 1, 1}}, {{0, 2, 0}, {3, 3, 1}}, {{0, 0, 0}, {1, 3, 1}}, {{2, 0, 0}, {3, 3, 1}}};
+  const TriangleMesh ringMesh = surfaceOfBoxUnion(ring, 1e-6);
+  expectSolid(ringMesh, 8, 1, "ring");
+  EXPECT_EQ(factsOf(ringMesh).genus(), 1);
+  // Coordinates equal up to rounding are one plane (no sliver cells).
+  expectSolid(surfaceOfBoxUnion({{{0, 0, 0}, {1, 1, 1}}, {{1 + 1e-12, 0, 0}, {2, 1, 1 - 1e-13}}}, 1e-6), 2, 0,
+              "rounded");
+  EXPECT_THROW(surfaceOfBoxUnion({}, 1e-6), Error);
+}
+
+// Volume of the union of one box and disjoint voxels (each voxel's overlap with the box counted
+// once): |B| + sum |v| - sum |B n v|.
+double boxAndVoxelsVolume(const AxisAlignedBox& body, const std::vector<AxisAlignedBox>& voxels) {
+  auto volume = [](const AxisAlignedBox& b) { return (b.hi[0] - b.lo[0]) * (b.hi[1] - b.lo[1]) * (b.hi[2] - b.lo[2]); };
+  double total = volume(body);
+  for (const AxisAlignedBox& v : voxels) {
+    double overlap = 1;
+    for (int k = 0; k < 3; ++k) overlap *= std::max(0.0, std::min(body.hi[k], v.hi[k]) - std::max(body.lo[k], v.lo[k]));
+    total += volume(v) - overlap;
+  }
+  return total;
+}
+
+AxisAlignedBox bounds(const OrientedBox& box) {
+  AxisAlignedBox out;
+  for (int k = 0; k < 3; ++k) {
+    double reach = 0;
+    for (int i = 0; i < 3; ++i) reach += std::abs(box.axes[i][k]) * box.halfExtents[i];
+    out.lo[k] = box.centre[k] - reach;
+    out.hi[k] = box.centre[k] + reach;
+  }
+  return out;
+}
+
+TEST(SolidExport, EveryStraightFrameBeamIsOneSolidOfBodyAndJointVoxels) {
+  for (const std::string path : {"examples/frame/frame_cube_result.json", "examples/frame/frame_chair_result.json",
+                                 "examples/frame/scaffold_92_result.json"}) {
+    const FrameDocument frame = parseFrameText(testing::readFileText(testing::projectPath(path)), path);
+    for (size_t beam = 0; beam < frame.layout.frame.beams.size(); ++beam) {
+      const std::vector<OrientedBox> body = beamBodyBoxes(frame.layout, static_cast<int>(beam));
+      ASSERT_EQ(body.size(), 1u) << path;
+      std::vector<AxisAlignedBox> voxels;
+      for (int joint : frame.layout.frame.beams[beam].joints) {
+        for (int v = 0; v < kJointVoxelCount; ++v) {
+          if (frame.labels[joint][v] == static_cast<int>(beam)) voxels.push_back(bounds(jointVoxelBox(frame.layout, joint, v)));
+        }
+      }
+      const TriangleMesh mesh = beamPartMesh(frame.layout, frame.labels, static_cast<int>(beam));
+      expectSolid(mesh, boxAndVoxelsVolume(bounds(body[0]), voxels), static_cast<int>(voxels.size()),
+                  path + " beam " + std::to_string(frame.layout.frame.beams[beam].id));
+    }
+  }
+}
+
+// The golden corpus' plate results (designs with fixed seeds), those with milled joints.
+std::vector<std::string> milledResults() {
+  std::vector<std::string> files;
+  for (const auto& entry : std::filesystem::directory_iterator(testing::projectPath("tests/golden/cases/plate"))) {
+    const std::string file = entry.path().string() + "/result.json";
+    if (std::filesystem::exists(file) && entry.path().filename().string().find("milled") != std::string::npos)
+      files.push_back(file);
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+TEST(SolidExport, EveryPlateWithMilledJointsIsOneSolid) {
+  const std::vector<std::string> files = milledResults();
+  ASSERT_GE(files.size(), 10u);
+  int withAttached = 0;
+  for (const std::string& file : files) {
+    const AssemblyDocument document = parseAssemblyText(testing::readFileText(file), file);
+    for (const Plate& plate : document.plates) {
+      // The parts' volumes: the plate's prism and each attached solid's, each on its own (they
+      // touch but never overlap).
+      Plate body = plate;
+      body.attached.clear();
+      double volume = testing::enclosedVolume(plateMesh(body));
+      int holes = static_cast<int>(plate.bottom.size()) - 1;
+      for (const Plate& solid : plate.attached) {
+        volume += testing::enclosedVolume(plateMesh(solid));
+        holes += static_cast<int>(solid.bottom.size());
+      }
+      withAttached += plate.attached.empty() ? 0 : 1;
+      expectSolid(plateSolidMesh(plate), volume, holes, file + " plate " + std::to_string(plate.id));
+    }
+  }
+  EXPECT_GE(withAttached, 20);
+}
+
+TEST(SolidExport, EveryVoxelPartIsOneSolidOfItsVoxels) {
+  for (const std::string name : {"result_puz/Cube_4x4x4_K9.puz", "result_puz/cube_5x5x5_K16.puz",
+                                 "result_puz/cartoon_dog.puz", "result_puz/bunny_15x14x11_K80.puz"}) {
+    const AssemblyDocument document = testing::loadReference(name);
+    const std::vector<std::vector<int64_t>> voxels = voxelsByPart(document.voxels);
+    for (size_t part = 1; part < voxels.size(); ++part) {
+      const TriangleMesh mesh = surfaceOfVoxels(document.voxels, static_cast<int>(part), voxels[part], 2.0);
+      expectSolid(mesh, 8.0 * static_cast<double>(voxels[part].size()), static_cast<int>(voxels[part].size()),
+                  name + " part " + std::to_string(part));
+    }
+  }
+}
+
+}  // namespace
+}  // namespace desia
