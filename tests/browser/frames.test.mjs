@@ -248,9 +248,14 @@ describe('frame structures in the playground (headless Chromium)', { timeout: 18
     assert.equal((await designState(page)).kind, 'frame');
   });
 
-  it('shows the cut-point frame\'s message after Design', async () => {
+  it('flags the cut-point frame\'s beam at once, and shows its message after Design', async () => {
     await page.selectOption('#example-select', CUT_POINT);
     await waitForReady(page, CUT_POINT);
+    // Before Design, from the core's check of the input (cutPoints), as for a plate structure.
+    assert.equal(await page.isVisible('#cut-points'), true);
+    assert.equal(await page.textContent('#cut-points'),
+      'Cut point: beam 9 — no joints can make this interlocking; add a part that bypasses it.');
+    await screenshot(page, 'frames-cut-point-before-design-1400');
     const outcome = await design(page, { seed: 1 });
     assert.equal(outcome.outcome, 'cut-point');
     assert.match(outcome.message, /^beam 9 is a cut point of the parts-graph/);
