@@ -135,6 +135,10 @@ describe('frame structures in the playground (headless Chromium)', { timeout: 18
     assert.equal(await page.locator('#export-format option[value="svg"]').isDisabled(), true);
     await page.waitForFunction(() => document.querySelector('#export-format option[value="fpuz"]').disabled);
     assert.match(await page.textContent('#export-unavailable'), /^\.fpuz is greyed out: this frame has no designed joints yet/);
+    // The kinds come from the core's registry (exportFormats): it writes .xmpuzzle for frames too,
+    // once designed, so an input greys it with the core's reason; SVG is for plates only.
+    await page.waitForFunction(() => document.querySelector('#export-format option[value="xmpuzzle"]').disabled);
+    assert.match(await page.textContent('#export-unavailable'), /\.xmpuzzle is greyed out: this frame has no designed joints yet/);
     assert.equal(await page.locator('#export-format option[value="stl"]').isDisabled(), false);
     await screenshot(page, 'frames-cube-1400');
   });
