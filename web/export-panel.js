@@ -18,36 +18,44 @@
 import { byId, element } from './dom.js';
 import { partNoun, unjointedKind } from './report.js';
 
-/** What each format needs from the worker, its file extension and MIME type. */
-const ALL = ['voxel', 'plate', 'contacts', 'frame'];
-const FORMATS = {
-  puz: { op: 'to-puz', extension: 'puz', type: 'text/plain', perPart: false, kinds: ['voxel'] },
-  json: { op: 'document-json', extension: 'json', type: 'application/json', perPart: false, kinds: ALL },
-  // The core's mesh export writes voxel parts, plates and frames (contact graphs have no shapes).
-  stl: { op: 'export', extension: 'stl', type: 'model/stl', perPart: true, kinds: ['voxel', 'plate', 'frame'] },
-  'stl-ascii': { op: 'export', extension: 'stl', suffix: '-ascii', type: 'model/stl', perPart: true, kinds: ['voxel', 'plate', 'frame'] },
-  obj: { op: 'export', extension: 'obj', type: 'model/obj', perPart: true, kinds: ['voxel', 'plate', 'frame'] },
-  // A designed frame as FrameInterlock's .fpuz and as its cut list (beam lengths, joint voxels).
-  fpuz: { op: 'export', extension: 'fpuz', type: 'text/plain', perPart: false, kinds: ['frame'] },
-  csv: { op: 'export', extension: 'csv', type: 'text/csv', perPart: false, kinds: ['frame'] },
-  // A designed frame as what a maker cuts and glues: every beam body and glued joint piece its own
-  // object (OBJ, in place), and the joint pieces alone laid out on a build plate (STL).
-  'pieces-obj': { op: 'export', extension: 'obj', suffix: '-pieces', type: 'model/obj', perPart: false, kinds: ['frame'] },
-  'joint-pieces-stl': { op: 'export', extension: 'stl', suffix: '-joint-pieces', type: 'model/stl', perPart: false, kinds: ['frame'] },
-  // Print-ready voxel parts: the size and clearance fields apply (print: true).
-  'stl-zip': { op: 'export', extension: 'zip', type: 'application/zip', perPart: false, kinds: ['voxel'], print: true },
-  'build-plate-stl': { op: 'export', extension: 'stl', suffix: '-plate', type: 'model/stl', perPart: false, kinds: ['voxel'], print: true },
-  xmpuzzle: { op: 'export', extension: 'xmpuzzle', type: 'application/octet-stream', perPart: false, kinds: ['voxel'] },
-  svg: { op: 'cut-sheets', extension: 'svg', type: 'image/svg+xml', perPart: false, kinds: ['plate'], cut: true },
-  dxf: { op: 'cut-sheets', extension: 'dxf', type: 'application/dxf', perPart: false, kinds: ['plate'], cut: true },
+/**
+ * How each format is saved: its file extension (and name suffix), MIME type, whether the Part
+ * field applies and whether the print-ready fields (voxel size, clearance) show. Which kinds of
+ * assembly a format takes, and whether it is cut sheets (one file per sheet), the core says: its
+ * export-format registry (exportFormats, asked once through the worker).
+ */
+const FILES = {
+  puz: { extension: 'puz', type: 'text/plain' },
+  json: { extension: 'json', type: 'application/json' },
+  stl: { extension: 'stl', type: 'model/stl', perPart: true },
+  'stl-ascii': { extension: 'stl', suffix: '-ascii', type: 'model/stl', perPart: true },
+  obj: { extension: 'obj', type: 'model/obj', perPart: true },
+  fpuz: { extension: 'fpuz', type: 'text/plain' },
+  csv: { extension: 'csv', type: 'text/csv' },
+  'pieces-obj': { extension: 'obj', suffix: '-pieces', type: 'model/obj' },
+  'joint-pieces-stl': { extension: 'stl', suffix: '-joint-pieces', type: 'model/stl' },
+  'stl-zip': { extension: 'zip', type: 'application/zip', print: true },
+  'build-plate-stl': { extension: 'stl', suffix: '-plate', type: 'model/stl', print: true },
+  xmpuzzle: { extension: 'xmpuzzle', type: 'application/octet-stream' },
+  svg: { extension: 'svg', type: 'image/svg+xml' },
+  dxf: { extension: 'dxf', type: 'application/dxf' },
+};
+/**
+ * The assembly itself rather than an export: a voxel assembly as its .puz text (toPuz), any
+ * assembly as its JSON document. (The registry's own `puz` is a frame on a voxel grid, which the
+ * panel does not offer.)
+ */
+const DOCUMENT_FORMATS = {
+  puz: { op: 'to-puz', kinds: ['voxel'] },
+  json: { op: 'document-json', kinds: null }, // every kind
 };
 /**
  * The sheet size the panel starts with: a large laser bed (CO2 lasers of 1300 x 900 mm are
  * common); the field says so and takes any other, or nothing for one sheet as large as needed.
  */
 export const DEFAULT_SHEET = '1300x900';
-/** Frame formats that need designed, straight joints: the core is asked whether it can write them. */
-const PROBED_FRAME_FORMATS = ['fpuz', 'csv'];
+/** Frame formats that need designed (and, for .fpuz, straight) joints: the core is asked whether it can write them. */
+const PROBED_FRAME_FORMATS = ['fpuz', 'csv', 'xmpuzzle'];
 /** Object URLs of downloads are freed after this; the browser has read the blob by then. */
 const DOWNLOAD_URL_LIFETIME_MS = 60_000;
 
@@ -58,7 +66,7 @@ function baseName(name) {
 
 /** `<name>.ext` for the whole assembly, `<name>-part3.ext` for part 3, `<name>-sheet2.svg` for sheet 2 of several. */
 export function exportFileName(name, format, part, sheet = 0) {
-  const { extension, suffix = '' } = FORMATS[format];
+  const { extension, suffix = '' } = FILES[format];
   return `${baseName(name)}${suffix}${part > 0 ? `-part${part}` : ''}${sheet > 0 ? `-sheet${sheet}` : ''}.${extension}`;
 }
 
@@ -100,9 +108,41 @@ export function createExportPanel({ core }) {
    * screen, or null. `refused`: format -> the core's reason it cannot write this one (frames).
    */
   let assembly = null;
+  /** The core's export-format registry by name ({ name, kinds, options, perSheet, what }), once asked. */
+  let registry = null;
+  let registryAsked = false;
   let probeToken = 0;
   let busy = false; // The worker designs for the Design panel.
   let exporting = false;
+
+  /**
+   * Asks the core, in the worker, for its export formats: once, with the first assembly (the page
+   * starts its worker after wiring the panels), again after a failure.
+   */
+  async function askRegistry() {
+    if (registry || registryAsked) return;
+    registryAsked = true;
+    try {
+      const { value } = await core.run('export-formats');
+      registry = new Map(value.map((info) => [info.name, info]));
+      refresh();
+    } catch {
+      registryAsked = false; // cancelled with the worker, or a broken core: asked at the next assembly
+    }
+  }
+
+  /**
+   * What the panel knows of a format: how it is saved (FILES) with what the core says of it (its
+   * kinds, cut sheets or not), or null while the core has not answered or does not know it.
+   */
+  function formatOf(name) {
+    const file = FILES[name];
+    if (!file) return null;
+    if (name in DOCUMENT_FORMATS) return { ...file, ...DOCUMENT_FORMATS[name], cut: false };
+    const info = registry?.get(name);
+    if (!info) return null;
+    return { ...file, op: info.perSheet ? 'cut-sheets' : 'export', kinds: info.kinds, cut: info.perSheet };
+  }
 
   function setMessage(state, text) {
     ui.panel.dataset.state = state;
@@ -116,16 +156,21 @@ export function createExportPanel({ core }) {
     const milled = Boolean(assembly?.milled);
     const refused = assembly?.refused ?? {};
     for (const option of ui.format.options) {
-      const known = FORMATS[option.value];
-      // Each format holds the kinds it can (.puz and .xmpuzzle voxels, SVG and DXF plates, .fpuz
-      // and CSV frames); cut sheets cannot hold milled dovetails (the core would say so too); a
-      // frame format the core refused for this frame (a curved beam in .fpuz) says why.
-      if (!known) continue;
-      option.disabled = assembly !== null && (!known.kinds.includes(assembly.kind) || (known.cut === true && milled) || option.value in refused);
+      const known = formatOf(option.value);
+      // Each format holds the kinds the core lists for it (SVG and DXF plates, .fpuz and CSV
+      // frames, ...); cut sheets cannot hold milled dovetails (the core would say so too); a frame
+      // format the core refused for this frame (a curved beam in .fpuz) says why. Until the core
+      // has listed its formats, only the document's own (.puz, JSON) are offered.
+      if (!known) {
+        option.disabled = assembly !== null;
+        option.title = '';
+        continue;
+      }
+      option.disabled = assembly !== null && ((known.kinds !== null && !known.kinds.includes(assembly.kind)) || (known.cut === true && milled) || option.value in refused);
       option.title = known.cut && milled ? MILLED_REASON : (refused[option.value] ?? '');
     }
     if (assembly && ui.format.selectedOptions[0]?.disabled) ui.format.value = assembly.kind === 'plate' ? (milled ? 'stl' : 'svg') : 'json';
-    const format = FORMATS[ui.format.value];
+    const format = formatOf(ui.format.value);
     ui.part.disabled = !assembly || !format?.perPart;
     ui.part.hidden = Boolean(format?.cut);
     for (const field of [ui.sheet, ui.kerf]) field.closest('label').hidden = !format?.cut;
@@ -133,11 +178,12 @@ export function createExportPanel({ core }) {
     // Greyed formats, in words: a tooltip never shows on a touch screen.
     const reasons = [];
     if (assembly?.kind === 'plate' && milled) reasons.push(MILLED_REASON);
-    for (const [name, reason] of Object.entries(refused)) reasons.push(`${name === 'fpuz' ? '.fpuz' : name.toUpperCase()} is greyed out: ${reason}`);
+    for (const [name, reason] of Object.entries(refused)) reasons.push(`${name === 'csv' ? 'CSV' : `.${name}`} is greyed out: ${reason}`);
     ui.unavailable.textContent = reasons.join(' ');
     ui.unavailable.hidden = reasons.length === 0;
     renderWarning();
-    for (const field of [ui.voxelSize, ui.clearance]) field.closest('label').hidden = !format?.print;
+    // Voxel size and clearance are for voxel parts (a plate structure's ZIP is in mm already).
+    for (const field of [ui.voxelSize, ui.clearance]) field.closest('label').hidden = !format?.print || (assembly !== null && assembly.kind !== 'voxel');
     ui.button.disabled = !assembly || busy || exporting || !format || ui.format.selectedOptions[0]?.disabled;
     ui.preview.disabled = ui.button.disabled;
   }
@@ -215,7 +261,7 @@ export function createExportPanel({ core }) {
   async function exportCurrent() {
     if (!assembly || exporting) return;
     const formatName = ui.format.value;
-    const format = FORMATS[formatName];
+    const format = formatOf(formatName);
     if (!format) return;
     const part = format.perPart ? Number(ui.part.value) : 0;
     const { name, text } = assembly;
@@ -361,6 +407,7 @@ export function createExportPanel({ core }) {
         reason: report?.reason ?? '',
         refused: {},
       } : null;
+      askRegistry();
       fillParts(assembly?.partIds ?? [], report?.key ?? null);
       clearPreview();  // the sheets of the assembly that was on screen
       if (ui.panel.dataset.state !== 'working') setMessage('', '');

@@ -224,7 +224,7 @@ function formatShapeRemoval(shapeRemoval) {
 
 /**
  * A plate (or beam) whose removal splits the parts-graph: no joints can make the design
- * interlocking. Frames: shown as soon as the core's check of a frame reports cutPoints.
+ * interlocking. Frames: the same, from the core's check of the frame input (beams sharing a joint).
  */
 function renderCutPoints(cutPoints, noun = 'plate') {
   const plates = Array.isArray(cutPoints) ? cutPoints : [];

@@ -524,7 +524,7 @@ export class AssemblyView {
     // The same for a frame without joints: its beams merely touch.
     const structure = plate || report?.kind === 'frame';
     const witnessParts = new Set(structure ? [] : (report?.witness?.parts ?? []));
-    // Cut points: a plate's from its check; a frame's once the core's frame check reports them.
+    // Cut points: a plate's or a frame's, from the core's check of the input.
     this.#cutPoints = new Set(structure ? (report?.cutPoints ?? []) : []);
     for (const [partId, mesh] of this.#meshes) {
       const isKey = partId === this.#keyId;

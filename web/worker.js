@@ -15,6 +15,8 @@
 //          op 'document-json'     text = any assembly; result = its JSON document as text
 //          op 'export'            text = the assembly, options = exportAssembly's { format,
 //                                 part, voxelSize, source }; result = bytes (transferred)
+//          op 'export-formats'    no text; result = the core's export-format registry
+//                                 (exportFormats: [{ name, kinds, options, perSheet, what }])
 //          op 'cut-sheets'        text = a plate structure, options = cutSheets' { format, sheet,
 //                                 kerf, spacing, hairline, source }; result = one text per sheet
 //          op 'design'            text = the voxel shape, options = designVoxel's options (no onProgress)
@@ -98,6 +100,7 @@ const OPERATIONS = {
     }
     return packForTransfer(core.exportAssembly(text, options ?? {}));
   },
+  'export-formats': (core) => [core.exportFormats(), []],
   'cut-sheets': (core, text, options) => [core.cutSheets(text, options ?? {}), []],
   'session-open': (core, text, options) => {
     closeSession();

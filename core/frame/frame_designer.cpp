@@ -14,6 +14,12 @@
 
 namespace desia::frame_design {
 
+std::string keyBeamName(const Frame& frame, int keyIndex) {
+  const FrameBeam& beam = frame.beams[keyIndex];
+  const int inputId = beam.inputId ? beam.inputId : beam.id;  // as frameResultToJson writes it
+  return inputId == 1 ? "beam 1" : "beam 1, input beam " + std::to_string(inputId);
+}
+
 // Said when a search finds nothing and no beam meets its joints along an axis: the joint cubes are
 // square to x, y and z, so a frame turned off them (a design turned in a modelling tool) meets
 // every cube at an angle, where joints rarely interlock.
@@ -228,9 +234,8 @@ FrameDesignResult FrameDesigner::run(const std::vector<Step>& prefix) {
                      " beams)" + offTheAxesNote(frame_);
     return result;
   }
-  result.message = "designed the joints of " + std::to_string(beams) + " beams (key: beam " +
-                   std::to_string(frame_.beams[result.order[0]].id) + ") in " + std::to_string(progress.nodes) +
-                   " nodes";
+  result.message = "designed the joints of " + std::to_string(beams) + " beams (key: " +
+                   keyBeamName(frame_, result.order[0]) + ") in " + std::to_string(progress.nodes) + " nodes";
   return result;
 }
 

@@ -71,6 +71,10 @@ uint64_t attemptSeed(uint64_t seed, int64_t attempt);
 int64_t restartUnit(int beams);
 // Said when a search finds nothing and no beam meets its joints along an axis.
 std::string offTheAxesNote(const Frame& frame);
+// "beam 1 (input beam 12)": the key as the result document names it (its beams renumbered in
+// removal order, so the key is beam 1, as in `desia check` and the part list), with the id it had
+// in this input (its `inputId` when the input was itself a result) when that differs.
+std::string keyBeamName(const Frame& frame, int keyIndex);
 
 // One step of the design: a beam leaves along `direction` with the voxels `taken` (free voxels it
 // takes at its joints[0] and joints[1]; its face voxels it owns from the start).

@@ -95,9 +95,8 @@ void FrameDesignSession::chooseChild(int n) {
       throwBadInput("", "taking beam " + std::to_string(state.layout.frame.beams[preview.beam].id) +
                             " completes a design that fails: " + state.designer.lastRejection() + "; choose another");
     }
-    const int key = state.layout.frame.beams[result.order[0]].id;
     result.message = "designed the joints of " + std::to_string(state.designer.beamCount()) +
-                     " beams step by step (key: beam " + std::to_string(key) + ")";
+                     " beams step by step (key: " + frame_design::keyBeamName(state.layout.frame, result.order[0]) + ")";
     state.result = result;
   } else {
     state.showProgress();

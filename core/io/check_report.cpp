@@ -217,7 +217,8 @@ std::string checkReportToJson(const AssemblyDocument& document, const CheckRepor
   root["graphs"] = graphsJson(assembly, report.graphs);
   // Over kReportedGraphLimit directions the lists stay empty (`desia check --graphs` keeps them).
   root["graphsOmitted"] = report.graphs.size() < report.baseDirectionCount;
-  if (document.kind == AssemblyKind::Plate && !document.plates.empty()) {
+  if ((document.kind == AssemblyKind::Plate && !document.plates.empty()) ||
+      (document.kind == AssemblyKind::Frame && !document.geometryJson.empty())) {
     root["cutPoints"] = idsJson(assembly, document.plateCutPoints);
   }
   if (report.method == CheckMethod::Both) {
@@ -259,7 +260,8 @@ std::string checkReportToText(const AssemblyDocument& document, const CheckRepor
     out << " move " << (result.witness.direction.empty() ? "in different directions" : "along " + result.witness.direction) << "\n";
   }
   if (!document.plateCutPoints.empty()) {
-    out << "cut points of the parts-graph: plate" << (document.plateCutPoints.size() > 1 ? "s" : "");
+    out << "cut points of the parts-graph: " << (document.kind == AssemblyKind::Frame ? "beam" : "plate")
+        << (document.plateCutPoints.size() > 1 ? "s" : "");
     for (int part : document.plateCutPoints) out << ' ' << assembly.parts[part].id;
     out << " (no joints can make this structure interlocking: add a part that bypasses "
         << (document.plateCutPoints.size() > 1 ? "them" : "it") << ", paper Section 5.2)\n";

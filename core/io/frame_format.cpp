@@ -487,6 +487,13 @@ AssemblyDocument assemblyDocumentFromFrame(const FrameDocument& frameDocument) {
   }
   document.geometryJson = frameToJson(frameDocument).dump();
   document.contactsFromGeometry = true;
+  // The beams whose removal splits the parts-graph (beams sharing a joint), as part indices: the
+  // check report names them before any design, as it does a plate structure's (the designer
+  // refuses such a frame: FrameDesigner::refusal).
+  std::vector<int> partOf(frame.beams.size(), -1);
+  for (size_t k = 0; k < frameDocument.order.size(); ++k) partOf[frameDocument.order[k]] = static_cast<int>(k);
+  for (int beam : frameCutBeams(frameDocument.layout)) document.plateCutPoints.push_back(partOf[beam]);
+  std::sort(document.plateCutPoints.begin(), document.plateCutPoints.end());
   return document;
 }
 

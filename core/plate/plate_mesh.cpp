@@ -101,14 +101,22 @@ bool bridgeClear(const std::vector<Point2>& points, const std::vector<std::vecto
 // both vertices into the region), giving one simple-in-effect polygon that ear clipping can cut.
 std::vector<int> bridgeHoles(const std::vector<Point2>& points, std::vector<int> outer,
                              std::vector<std::vector<int>> holes, double flat) {
-  std::sort(holes.begin(), holes.end(), [&](const std::vector<int>& a, const std::vector<int>& b) {
+  const auto rightmostFirst = [&](const std::vector<int>& a, const std::vector<int>& b) {
     auto rightmost = [&](const std::vector<int>& h) {
       double x = -HUGE_VAL;
       for (int i : h) x = std::max(x, points[i][0]);
       return x;
     };
     return rightmost(a) > rightmost(b);
-  });
+  };
+  // The export's triangulation (flat > 0) keeps holes with the same rightmost x in their order:
+  // std::sort may order ties differently in libstdc++ and in Emscripten's libc++. The sweeps'
+  // mesh keeps its order.
+  if (flat > 0) {
+    std::stable_sort(holes.begin(), holes.end(), rightmostFirst);
+  } else {
+    std::sort(holes.begin(), holes.end(), rightmostFirst);
+  }
   for (size_t h = 0; h < holes.size(); ++h) {
     const std::vector<int>& hole = holes[h];
     size_t m = 0;
@@ -120,7 +128,13 @@ std::vector<int> bridgeHoles(const std::vector<Point2>& points, std::vector<int>
     loops.insert(loops.end(), holes.begin() + static_cast<long>(h), holes.end());
     std::vector<size_t> candidates(outer.size());
     for (size_t o = 0; o < outer.size(); ++o) candidates[o] = o;
-    auto distance = [&](size_t o) { return std::hypot(points[outer[o]][0] - from[0], points[outer[o]][1] - from[1]); };
+    // The export's triangulation (flat > 0) orders by squared distance: sums and products only,
+    // the same bits natively and in WebAssembly (std::hypot differs by an ulp between glibc and
+    // musl, which reorders ties). The sweeps' mesh keeps its order.
+    auto distance = [&](size_t o) {
+      const double dx = points[outer[o]][0] - from[0], dy = points[outer[o]][1] - from[1];
+      return flat > 0 ? dx * dx + dy * dy : std::hypot(dx, dy);
+    };
     std::stable_sort(candidates.begin(), candidates.end(),
                      [&](size_t x, size_t y) { return distance(x) < distance(y); });
     // The nearest visible vertex whose bridge runs along no edge at its ends (collinear holes'
@@ -356,15 +370,16 @@ void addRegions(const PlaneFaces& plane, bool alongNormal, VertexWelder& welder,
   std::vector<const ClipperLib::PolyNode*> outlines;
   for (const ClipperLib::PolyNode* child : tree.Childs) outlines.push_back(child);
   for (size_t i = 0; i < outlines.size(); ++i) {
-    const ClipperLib::PolyNode* node = outlines[i];
+    for (const ClipperLib::PolyNode* hole : outlines[i]->Childs) {
+      for (const ClipperLib::PolyNode* island : hole->Childs) outlines.push_back(island);
+    }
+  }
+  for (const ClipperLib::PolyNode* node : outlines) {
     const double area = std::abs(ClipperLib::Area(node->Contour)) / (kClipperScale * kClipperScale);
     MergedFace face;
     face.normal = outward;
     face.loops.push_back(indices(node->Contour));
-    for (const ClipperLib::PolyNode* hole : node->Childs) {
-      face.loops.push_back(indices(hole->Contour));
-      for (const ClipperLib::PolyNode* island : hole->Childs) outlines.push_back(island);
-    }
+    for (const ClipperLib::PolyNode* hole : node->Childs) face.loops.push_back(indices(hole->Contour));
     // A sliver left by rounding where faces meet is no face.
     if (area < tolerance::kEmptyAreaMm2 || face.loops[0].size() < 3) continue;
     std::vector<std::vector<int>> kept{face.loops[0]};

@@ -135,6 +135,10 @@ describe('frame structures in the playground (headless Chromium)', { timeout: 18
     assert.equal(await page.locator('#export-format option[value="svg"]').isDisabled(), true);
     await page.waitForFunction(() => document.querySelector('#export-format option[value="fpuz"]').disabled);
     assert.match(await page.textContent('#export-unavailable'), /^\.fpuz is greyed out: this frame has no designed joints yet/);
+    // The kinds come from the core's registry (exportFormats): it writes .xmpuzzle for frames too,
+    // once designed, so an input greys it with the core's reason; SVG is for plates only.
+    await page.waitForFunction(() => document.querySelector('#export-format option[value="xmpuzzle"]').disabled);
+    assert.match(await page.textContent('#export-unavailable'), /\.xmpuzzle is greyed out: this frame has no designed joints yet/);
     assert.equal(await page.locator('#export-format option[value="stl"]').isDisabled(), false);
     await screenshot(page, 'frames-cube-1400');
   });
@@ -167,7 +171,7 @@ describe('frame structures in the playground (headless Chromium)', { timeout: 18
   it('designs the FRAME CUBE in the worker: interlocking with key 1, the CLI\'s document, the disassembly along each beam\'s axis', async () => {
     const outcome = await design(page, { seed: 1 });
     assert.equal(outcome.outcome, 'success', `design failed: ${outcome.message}`);
-    assert.match(outcome.message, /^designed the joints of 12 beams \(key: beam \d+\) in \d+ nodes$/);
+    assert.match(outcome.message, /^designed the joints of 12 beams \(key: beam 1(, input beam \d+)?\) in \d+ nodes$/);
     assert.ok(outcome.updates >= 1, 'the last progress message arrived');
     assert.match(outcome.progressText, /^12 of 12 beams placed · \d+ nodes visited · depth \d+ · \d+\.\d s$/);
 
@@ -248,9 +252,14 @@ describe('frame structures in the playground (headless Chromium)', { timeout: 18
     assert.equal((await designState(page)).kind, 'frame');
   });
 
-  it('shows the cut-point frame\'s message after Design', async () => {
+  it('flags the cut-point frame\'s beam at once, and shows its message after Design', async () => {
     await page.selectOption('#example-select', CUT_POINT);
     await waitForReady(page, CUT_POINT);
+    // Before Design, from the core's check of the input (cutPoints), as for a plate structure.
+    assert.equal(await page.isVisible('#cut-points'), true);
+    assert.equal(await page.textContent('#cut-points'),
+      'Cut point: beam 9 — no joints can make this interlocking; add a part that bypasses it.');
+    await screenshot(page, 'frames-cut-point-before-design-1400');
     const outcome = await design(page, { seed: 1 });
     assert.equal(outcome.outcome, 'cut-point');
     assert.match(outcome.message, /^beam 9 is a cut point of the parts-graph/);
@@ -289,7 +298,7 @@ describe('frame structures in the playground (headless Chromium)', { timeout: 18
     assert.equal(state.parts, '300');
     const outcome = await design(page, { seed: 1 });
     assert.equal(outcome.outcome, 'success', `design failed: ${outcome.message}`);
-    assert.match(outcome.message, /^designed the joints of 300 beams \(key: beam \d+\) in \d+ nodes$/);
+    assert.match(outcome.message, /^designed the joints of 300 beams \(key: beam 1(, input beam \d+)?\) in \d+ nodes$/);
     const result = await waitForReady(page, 'scaffold_300_frame_seed1.json');
     assertInterlockingWithKey(result, 1);
     assert.equal(result.parts, '300');

@@ -3,6 +3,7 @@
 // joints designed and verified (DBG test with key 1, swept removal in id order), the same bytes
 // for the same seed, result documents that desia check re-verifies, exports that round-trip.
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -445,6 +446,65 @@ TEST(FrameGeometry, SweptBoxesCollideOnlyWhenMovingInto) {
   EXPECT_TRUE(sweptBoxesCollide(a, {1, 0, 0}, b));
   b.centre = {3, 1.0, 0};  // ahead, only touching in y
   EXPECT_FALSE(sweptBoxesCollide(a, {1, 0, 0}, b));
+}
+
+// The designer's message names the key as the result document and `desia check` do (beam 1: the
+// result renumbers the beams in removal order), and the input beam it was when that differs.
+TEST(FrameDesign, MessageNamesTheKeyAsTheResultDoes) {
+  const FrameDocument cube = loadFrameExample("frame_cube.json");
+  const FrameDesignResult result = design(cube);
+  ASSERT_EQ(result.status, DesignStatus::Success) << result.message;
+  const int inputId = cube.layout.frame.beams[result.order[0]].id;
+  ASSERT_NE(inputId, 1) << "seed 1 keys another beam than the input's first; pick a seed that does";
+  EXPECT_NE(result.message.find("(key: beam 1, input beam " + std::to_string(inputId) + ")"), std::string::npos)
+      << result.message;
+  const nlohmann::json written = nlohmann::json::parse(frameResultToJson(cube.layout, result));
+  EXPECT_EQ(written["beams"][0]["id"], 1);
+  EXPECT_EQ(written["beams"][0]["inputId"], inputId);
+  const AssemblyDocument document = parseAssemblyText(written.dump(), "result.json");
+  const CheckReport report = checkAssembly(document);
+  ASSERT_GE(report.result.key, 0);
+  EXPECT_EQ(document.assembly.parts[report.result.key].id, 1);
+  // Designed again from the result, the key is beam 1 of the new result, and the input beam keeps
+  // the id of the first input (the result's inputId), as the part list shows it.
+  const FrameDocument reread = parseFrameText(written.dump(), "result.json");
+  const FrameDesignResult again = design(reread);
+  ASSERT_EQ(again.status, DesignStatus::Success) << again.message;
+  const FrameBeam& key = reread.layout.frame.beams[again.order[0]];
+  const std::string expected = key.inputId == 1 ? "(key: beam 1)" : "(key: beam 1, input beam " + std::to_string(key.inputId) + ")";
+  EXPECT_NE(again.message.find(expected), std::string::npos) << again.message;
+  // Step by step: the same naming.
+  FrameDesignSession session(cube.layout, {});
+  while (!session.complete()) ASSERT_TRUE(session.next()) << session.result().message;
+  const int stepKey = cube.layout.frame.beams[session.result().order[0]].id;
+  EXPECT_EQ(session.result().message,
+            "designed the joints of 12 beams step by step (key: beam 1" +
+                (stepKey == 1 ? std::string() : ", input beam " + std::to_string(stepKey)) + ")");
+}
+
+// A frame input's cut-point beams are in its check report before any design, as a plate
+// structure's are: `cutPoints` (part ids) in the JSON, a line in the text; none for a frame
+// without one, designed or not.
+TEST(FrameCutPoints, TheCheckOfAnInputNamesItsCutPointBeam) {
+  const std::string path = "examples/frame/cut_point.json";
+  const AssemblyDocument cut = parseAssemblyText(testing::readFileText(testing::projectPath(path)), path);
+  ASSERT_EQ(cut.kind, AssemblyKind::Frame);
+  ASSERT_EQ(cut.plateCutPoints.size(), 1u);
+  EXPECT_EQ(cut.assembly.parts[cut.plateCutPoints[0]].id, 9);
+  const CheckReport report = checkAssembly(cut);
+  const nlohmann::json json = nlohmann::json::parse(checkReportToJson(cut, report));
+  EXPECT_EQ(json["kind"], "frame");
+  EXPECT_EQ(json["cutPoints"], nlohmann::json::array({9}));
+  const std::string text = checkReportToText(cut, report);
+  EXPECT_NE(text.find("cut points of the parts-graph: beam 9 (no joints"), std::string::npos) << text;
+
+  const std::string cubePath = "examples/frame/frame_cube.json";
+  const AssemblyDocument cube = parseAssemblyText(testing::readFileText(testing::projectPath(cubePath)), cubePath);
+  EXPECT_EQ(nlohmann::json::parse(checkReportToJson(cube, checkAssembly(cube)))["cutPoints"], nlohmann::json::array());
+  const FrameDocument cubeFrame = loadFrameExample("frame_cube.json");
+  const AssemblyDocument result = parseAssemblyText(frameResultToJson(cubeFrame.layout, design(cubeFrame)), "result.json");
+  EXPECT_EQ(nlohmann::json::parse(checkReportToJson(result, checkAssembly(result)))["cutPoints"], nlohmann::json::array());
+  EXPECT_EQ(checkReportToText(result, checkAssembly(result)).find("cut points"), std::string::npos);
 }
 
 TEST(FrameSession, StepByStepGivesAVerifiedDesignAndGoesBack) {

@@ -54,7 +54,7 @@ test('FrameApi.DesignsTheCliDocumentInTheWorkerWithProgress', async () => {
   const progress = [];
   const result = await desia.designFrame(cube, { seed: 3, onProgress: (p) => { progress.push(p); } });
   assert.equal(result.status, 'success', result.message);
-  assert.match(result.message, /^designed the joints of 12 beams \(key: beam \d+\)/);
+  assert.match(result.message, /^designed the joints of 12 beams \(key: beam 1(, input beam \d+)?\)/);
   assert.equal(result.puz, null);
   assert.deepEqual(Object.keys(result).sort(), ['document', 'message', 'progress', 'puz', 'status', 'verification']);
   // Byte for byte the CLI's file (JSON.stringify of the parsed file: the same keys in the same order

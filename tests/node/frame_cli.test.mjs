@@ -35,6 +35,25 @@ test('design frame: the FRAME CUBE designed (exit 0), same seed same bytes, re-v
   assert.equal(report.verdict, 'interlocking');
   assert.equal(report.key, 1);
   assert.deepEqual(report.keyDirections, ['+y']);
+  assert.deepEqual(report.cutPoints, []);
+  // The message names the key as the result and check do (beam 1), and the input beam it was.
+  const keyInput = document.beams[0].inputId ?? 1;
+  const named = keyInput === 1 ? '(key: beam 1)' : `(key: beam 1, input beam ${keyInput})`;
+  assert.ok(designed.stdout.startsWith(`designed the joints of 12 beams ${named} in `), designed.stdout.split('\n')[0]);
+});
+
+test('check of a frame input names its cut-point beams before any design (cutPoints, as for plates)', () => {
+  const cut = runCli(['check', path.join(examples, 'cut_point.json'), '--json']);
+  assert.equal(cut.status, 1, cut.stderr);
+  const report = JSON.parse(cut.stdout);
+  assert.equal(report.kind, 'frame');
+  assert.deepEqual(report.cutPoints, [9]);
+  const text = runCli(['check', path.join(examples, 'cut_point.json')]);
+  assert.match(text.stdout, /^cut points of the parts-graph: beam 9 \(no joints can make this structure interlocking/m);
+  for (const name of ['frame_cube.json', 'frame_chair.json', 'flower.json']) {
+    const none = runCli(['check', path.join(examples, name), '--json']);
+    assert.deepEqual(JSON.parse(none.stdout).cutPoints, [], name);
+  }
 });
 
 test('export of a frame result: closed STL, OBJ objects per beam, .fpuz that check reads, cut list', () => {

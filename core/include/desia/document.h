@@ -36,7 +36,9 @@ struct AssemblyDocument {
   std::string geometryJson;  // plate / frame geometry sections, kept verbatim for round trips
   std::vector<Plate> plates;          // kind == Plate, read from geometry (then contacts are computed)
   std::vector<Plate> fabricationPlates;  // a design result with a clearance: the plates as they are cut
-  std::vector<int> plateCutPoints;    // plates (internal indices) that are cut points of the parts-graph
+  // Parts (internal indices) that are cut points of the parts-graph: plates (plates in contact), or
+  // a frame's beams (beams sharing a joint). The check report's `cutPoints`.
+  std::vector<int> plateCutPoints;
   // kind == Plate with contactsFromGeometry: the plates' contacts as computed when they were read
   // (the designer and the cut sheets take them from here rather than computing them again).
   std::vector<PlateContact> plateContacts;
