@@ -11,6 +11,7 @@
 
 #include "analysis/vec3.h"
 #include "desia/tolerances.h"
+#include "plate/median_split_tree.h"
 
 namespace desia {
 
@@ -143,25 +144,9 @@ class DirectionTree {
  public:
   explicit DirectionTree(const std::vector<Vec3>& points) : points_(points), order_(points.size()) {
     std::iota(order_.begin(), order_.end(), 0);
-    if (points.empty()) return;
-    std::vector<size_t> pending{add(0, points.size())};
-    while (!pending.empty()) {
-      const size_t at = pending.back();
-      pending.pop_back();
-      const size_t begin = nodes_[at].begin, end = nodes_[at].end;
-      if (end - begin <= 8) continue;
-      int axis = 0;
-      for (int k = 1; k < 3; ++k) {
-        if (nodes_[at].hi[k] - nodes_[at].lo[k] > nodes_[at].hi[axis] - nodes_[at].lo[axis]) axis = k;
-      }
-      const size_t middle = (begin + end) / 2;
-      std::nth_element(order_.begin() + begin, order_.begin() + middle, order_.begin() + end,
-                       [&](int i, int j) { return points_[i][axis] < points_[j][axis]; });
-      const size_t left = add(begin, middle), right = add(middle, end);
-      nodes_[at].children = {left, right};
-      pending.push_back(left);
-      pending.push_back(right);
-    }
+    nodes_ = buildMedianSplitTree(
+        order_, [&](int i) { return std::array<Vec3, 2>{points_[i], points_[i]}; },
+        [&](int i, int axis) { return points_[i][axis]; });
   }
 
   // The indices of the points with |p . d| < angle, in increasing order.
@@ -172,7 +157,7 @@ class DirectionTree {
     const double margin = angle + tolerance::kExactCosine;
     std::vector<size_t> pending{0};
     while (!pending.empty()) {
-      const Node& node = nodes_[pending.back()];
+      const SplitTreeNode& node = nodes_[pending.back()];
       pending.pop_back();
       double low = 0, high = 0;
       for (int k = 0; k < 3; ++k) {
@@ -194,25 +179,9 @@ class DirectionTree {
   }
 
  private:
-  struct Node {
-    size_t begin, end;
-    Vec3 lo, hi;
-    std::array<size_t, 2> children{0, 0};  // none for a leaf (the root is never a child)
-  };
-  size_t add(size_t begin, size_t end) {
-    Node node{begin, end, points_[order_[begin]], points_[order_[begin]]};
-    for (size_t r = begin; r < end; ++r) {
-      for (int k = 0; k < 3; ++k) {
-        node.lo[k] = std::min(node.lo[k], points_[order_[r]][k]);
-        node.hi[k] = std::max(node.hi[k], points_[order_[r]][k]);
-      }
-    }
-    nodes_.push_back(node);
-    return nodes_.size() - 1;
-  }
   const std::vector<Vec3>& points_;
   std::vector<int> order_;
-  std::vector<Node> nodes_;
+  std::vector<SplitTreeNode> nodes_;
 };
 
 // Pairs of directions within the angle of square made square: each pair turned towards square in

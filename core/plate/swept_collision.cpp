@@ -175,37 +175,9 @@ SweptBoxIndex::SweptBoxIndex(const std::vector<TriangleMesh>& meshes) {
   for (size_t k = 0; k < meshes.size(); ++k) {
     if (!meshes[k].vertices.empty()) order_.push_back(static_cast<int>(k));
   }
-  if (order_.empty()) return;
-  std::vector<size_t> pending{add(0, order_.size())};
-  while (!pending.empty()) {
-    const size_t at = pending.back();
-    pending.pop_back();
-    const size_t begin = nodes_[at].begin, end = nodes_[at].end;
-    if (end - begin <= 8) continue;
-    int axis = 0;
-    const Box& b = nodes_[at].bounds;
-    for (int k = 1; k < 3; ++k) axis = b.hi[k] - b.lo[k] > b.hi[axis] - b.lo[axis] ? k : axis;
-    const size_t middle = (begin + end) / 2;
-    std::nth_element(order_.begin() + begin, order_.begin() + middle, order_.begin() + end, [&](int i, int j) {
-      return boxes_[i].lo[axis] + boxes_[i].hi[axis] < boxes_[j].lo[axis] + boxes_[j].hi[axis];
-    });
-    const size_t left = add(begin, middle), right = add(middle, end);
-    nodes_[at].children = {left, right};
-    pending.push_back(left);
-    pending.push_back(right);
-  }
-}
-
-size_t SweptBoxIndex::add(size_t begin, size_t end) {
-  Node node{begin, end, boxes_[order_[begin]]};
-  for (size_t r = begin; r < end; ++r) {
-    for (int k = 0; k < 3; ++k) {
-      node.bounds.lo[k] = std::min(node.bounds.lo[k], boxes_[order_[r]].lo[k]);
-      node.bounds.hi[k] = std::max(node.bounds.hi[k], boxes_[order_[r]].hi[k]);
-    }
-  }
-  nodes_.push_back(node);
-  return nodes_.size() - 1;
+  nodes_ = buildMedianSplitTree(
+      order_, [&](int i) { return std::array<Vec3, 2>{boxes_[i].lo, boxes_[i].hi}; },
+      [&](int i, int axis) { return boxes_[i].lo[axis] + boxes_[i].hi[axis]; });
 }
 
 bool SweptBoxIndex::anyInTheWay(int mover, const Vec3& d, double tolerance,
@@ -215,9 +187,9 @@ bool SweptBoxIndex::anyInTheWay(int mover, const Vec3& d, double tolerance,
   const Box region = sweptRegion(boxes_[static_cast<size_t>(mover)], d);
   std::vector<size_t> pending{0};
   while (!pending.empty()) {
-    const Node& node = nodes_[pending.back()];
+    const SplitTreeNode& node = nodes_[pending.back()];
     pending.pop_back();
-    if (!reachesInto(node.bounds, region, tolerance)) continue;
+    if (!reachesInto(Box{node.lo, node.hi}, region, tolerance)) continue;
     if (node.children[0] == 0) {
       for (size_t r = node.begin; r < node.end; ++r) {
         const int q = order_[r];

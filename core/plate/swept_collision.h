@@ -10,6 +10,7 @@
 
 #include "desia/triangle_mesh.h"
 #include "desia/plate.h"
+#include "plate/median_split_tree.h"
 
 namespace desia {
 
@@ -37,15 +38,9 @@ class SweptBoxIndex {
   bool anyInTheWay(int mover, const Vec3& d, double tolerance, const std::function<bool(int)>& visit) const;
 
  private:
-  struct Node {
-    size_t begin, end;
-    Box bounds;
-    std::array<size_t, 2> children{0, 0};  // none for a leaf (the root is never a child)
-  };
-  size_t add(size_t begin, size_t end);
   std::vector<Box> boxes_;
   std::vector<int> order_;
-  std::vector<Node> nodes_;
+  std::vector<SplitTreeNode> nodes_;
 };
 
 }  // namespace desia
