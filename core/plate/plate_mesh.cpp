@@ -8,7 +8,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <map>
+#include <set>
 
 #include "analysis/vec3.h"
 #include "desia/error.h"
@@ -96,6 +98,38 @@ bool bridgeClear(const std::vector<Point2>& points, const std::vector<std::vecto
   return insideLoops(points, loops, {(from[0] + to[0]) / 2, (from[1] + to[1]) / 2});
 }
 
+// The outline's vertices in order of distance from a point, ties in outline order, sorted only as
+// far as they are asked for (the first is nearly always visible; an outline that has taken
+// thousands of holes is long).
+class NearestFirst {
+ public:
+  NearestFirst(const std::vector<Point2>& points, const std::vector<int>& outer, const Point2& from, double flat) {
+    heap_.reserve(outer.size());
+    for (size_t o = 0; o < outer.size(); ++o) {
+      // The export's triangulation (flat > 0) orders by squared distance: sums and products only,
+      // the same bits natively and in WebAssembly (std::hypot differs by an ulp between glibc and
+      // musl, which reorders ties). The sweeps' mesh keeps its order.
+      const double dx = points[outer[o]][0] - from[0], dy = points[outer[o]][1] - from[1];
+      heap_.push_back({flat > 0 ? dx * dx + dy * dy : std::hypot(dx, dy), o});
+    }
+    std::make_heap(heap_.begin(), heap_.end(), std::greater<>());
+  }
+
+  // The k-th nearest (k below the outline's size).
+  size_t at(size_t k) {
+    while (sorted_.size() <= k) {
+      std::pop_heap(heap_.begin(), heap_.end(), std::greater<>());
+      sorted_.push_back(heap_.back().second);
+      heap_.pop_back();
+    }
+    return sorted_[k];
+  }
+
+ private:
+  std::vector<std::pair<double, size_t>> heap_;  // (distance, position): ties by position
+  std::vector<size_t> sorted_;
+};
+
 // Joins each hole (clockwise) to the outline (counter-clockwise) by a two-way bridge from the
 // hole's rightmost vertex to the nearest outline vertex it can see (no edge in the way, leaving
 // both vertices into the region), giving one simple-in-effect polygon that ear clipping can cut.
@@ -126,24 +160,15 @@ std::vector<int> bridgeHoles(const std::vector<Point2>& points, std::vector<int>
     const Point2& from = points[hole[m]];
     std::vector<std::vector<int>> loops{outer};
     loops.insert(loops.end(), holes.begin() + static_cast<long>(h), holes.end());
-    std::vector<size_t> candidates(outer.size());
-    for (size_t o = 0; o < outer.size(); ++o) candidates[o] = o;
-    // The export's triangulation (flat > 0) orders by squared distance: sums and products only,
-    // the same bits natively and in WebAssembly (std::hypot differs by an ulp between glibc and
-    // musl, which reorders ties). The sweeps' mesh keeps its order.
-    auto distance = [&](size_t o) {
-      const double dx = points[outer[o]][0] - from[0], dy = points[outer[o]][1] - from[1];
-      return flat > 0 ? dx * dx + dy * dy : std::hypot(dx, dy);
-    };
-    std::stable_sort(candidates.begin(), candidates.end(),
-                     [&](size_t x, size_t y) { return distance(x) < distance(y); });
+    NearestFirst candidates(points, outer, from, flat);
     // The nearest visible vertex whose bridge runs along no edge at its ends (collinear holes'
     // edges: such a bridge would leave flat corners), else the nearest visible one.
-    size_t best = candidates.front();
+    size_t best = candidates.at(0);
     bool found = false;
     for (bool strict : {true, false}) {
       if (strict && flat <= 0) continue;  // the plain triangulation (swept collisions) as it always was
-      for (size_t o : candidates) {
+      for (size_t k = 0; k < outer.size(); ++k) {
+        const size_t o = candidates.at(k);
         const Point2& to = points[outer[o]];
         if (to == from) continue;
         if (locallyInside(points, outer, o, from, strict, flat) && locallyInside(points, hole, m, to, strict, flat) &&
@@ -170,45 +195,133 @@ bool insideTriangle(const Point2& p, const Point2& a, const Point2& b, const Poi
 }
 
 // Ear clipping of a counter-clockwise polygon (bridges allowed: repeated points are skipped in the
-// containment test). Appends triangles as index triples.
-void clipEars(const std::vector<Point2>& points, std::vector<int> polygon, std::vector<std::array<int, 3>>* triangles,
-              double flat) {
-  while (polygon.size() > 3) {
+// containment test). Appends triangles as index triples. The ear cut is always the first one in
+// the polygon's order; what makes this near-quadratic instead of cubic is that a corner found not
+// to be an ear keeps that verdict until it can change: a reflex or flat corner until a neighbour
+// is cut away, a corner with a point inside until that point's corner is cut away. Only corners
+// whose verdict may have changed are tested again (faces of a long table's top have a mortise per
+// panel: thousands of corners).
+class EarClipper {
+ public:
+  EarClipper(const std::vector<Point2>& points, const std::vector<int>& polygon, double flat)
+      : points_(points), polygon_(polygon), flat_(flat), next_(polygon.size()), previous_(polygon.size()),
+        blocker_(polygon.size(), kUntested), blocks_(polygon.size()) {
     const size_t n = polygon.size();
-    size_t ear = n;
-    for (size_t i = 0; i < n && ear == n; ++i) {
-      const int a = polygon[(i + n - 1) % n], b = polygon[i], c = polygon[(i + 1) % n];
-      if (cross2(points[a], points[b], points[c]) <= flat) continue;  // reflex or flat
-      bool empty = true;
-      for (size_t j = 0; j < n && empty; ++j) {
-        const int p = polygon[j];
-        if (points[p] == points[a] || points[p] == points[b] || points[p] == points[c]) continue;
-        if (insideTriangle(points[p], points[a], points[b], points[c], flat)) empty = false;
-      }
-      if (empty) ear = i;
+    for (size_t i = 0; i < n; ++i) {
+      next_[i] = (i + 1) % n;
+      previous_[i] = (i + n - 1) % n;
+      untested_.insert(i);
     }
-    if (ear == n) {
-      // Only flat or degenerate corners left (rounding): drop the flattest one without a triangle.
-      size_t flattest = 0;
-      double smallest = HUGE_VAL;
-      for (size_t i = 0; i < n; ++i) {
-        const double area =
-            std::abs(cross2(points[polygon[(i + n - 1) % n]], points[polygon[i]], points[polygon[(i + 1) % n]]));
-        if (area < smallest) {
-          smallest = area;
-          flattest = i;
-        }
+    size_ = n;
+  }
+
+  void clip(std::vector<std::array<int, 3>>* triangles) {
+    while (size_ > 3) {
+      const size_t ear = firstEar();
+      if (ear == kNone) {
+        // Only flat or degenerate corners left (rounding): drop the flattest one without a triangle.
+        remove(flattestCorner());
+        continue;
       }
-      polygon.erase(polygon.begin() + static_cast<long>(flattest));
-      continue;
+      triangles->push_back({point(previous_[ear]), point(ear), point(next_[ear])});
+      remove(ear);
     }
-    triangles->push_back({polygon[(ear + n - 1) % n], polygon[ear], polygon[(ear + 1) % n]});
-    polygon.erase(polygon.begin() + static_cast<long>(ear));
+    const size_t second = next_[head_], third = next_[second];
+    if (size_ == 3 && cross2(at(head_), at(second), at(third)) > flat_) {
+      triangles->push_back({point(head_), point(second), point(third)});
+    }
   }
-  if (polygon.size() == 3 &&
-      cross2(points[polygon[0]], points[polygon[1]], points[polygon[2]]) > flat) {
-    triangles->push_back({polygon[0], polygon[1], polygon[2]});
+
+ private:
+  static constexpr size_t kNone = static_cast<size_t>(-1);
+  static constexpr size_t kUntested = static_cast<size_t>(-2);
+  static constexpr size_t kNotConvex = static_cast<size_t>(-3);
+
+  int point(size_t corner) const { return polygon_[corner]; }
+  const Point2& at(size_t corner) const { return points_[static_cast<size_t>(polygon_[corner])]; }
+
+  // The first corner in polygon order that is an ear; corners tested and found not to be are
+  // remembered with the reason.
+  size_t firstEar() {
+    while (!untested_.empty()) {
+      const size_t corner = *untested_.begin();
+      untested_.erase(untested_.begin());
+      const size_t reason = whyNotAnEar(corner);
+      if (reason == kNone) {
+        untested_.insert(corner);  // tested again if it is ever needed
+        return corner;
+      }
+      blocker_[corner] = reason;
+      if (reason != kNotConvex) blocks_[reason].push_back(corner);
+    }
+    return kNone;
   }
+
+  // kNone for an ear, kNotConvex for a reflex or flat corner, else a corner whose point lies in
+  // the triangle.
+  size_t whyNotAnEar(size_t corner) const {
+    const Point2& a = at(previous_[corner]);
+    const Point2& b = at(corner);
+    const Point2& c = at(next_[corner]);
+    if (cross2(a, b, c) <= flat_) return kNotConvex;
+    size_t other = head_;
+    for (size_t k = 0; k < size_; ++k, other = next_[other]) {
+      const Point2& p = at(other);
+      if (p == a || p == b || p == c) continue;
+      if (insideTriangle(p, a, b, c, flat_)) return other;
+    }
+    return kNone;
+  }
+
+  size_t flattestCorner() const {
+    size_t flattest = head_;
+    double smallest = HUGE_VAL;
+    size_t corner = head_;
+    for (size_t k = 0; k < size_; ++k, corner = next_[corner]) {
+      const double area = std::abs(cross2(at(previous_[corner]), at(corner), at(next_[corner])));
+      if (area < smallest) {
+        smallest = area;
+        flattest = corner;
+      }
+    }
+    return flattest;
+  }
+
+  void retest(size_t corner) {
+    blocker_[corner] = kUntested;
+    untested_.insert(corner);
+  }
+
+  // Takes a corner out: its neighbours and the corners it blocked are tested again.
+  void remove(size_t corner) {
+    const size_t before = previous_[corner], after = next_[corner];
+    next_[before] = after;
+    previous_[after] = before;
+    if (head_ == corner) head_ = after;
+    --size_;
+    untested_.erase(corner);
+    retest(before);
+    retest(after);
+    for (size_t blocked : blocks_[corner]) {
+      if (blocker_[blocked] == corner) retest(blocked);
+    }
+    blocks_[corner].clear();
+  }
+
+  const std::vector<Point2>& points_;
+  const std::vector<int>& polygon_;
+  const double flat_;
+  std::vector<size_t> next_, previous_;
+  std::vector<size_t> blocker_;              // why a corner is not an ear, while that holds
+  std::vector<std::vector<size_t>> blocks_;  // the corners each corner's point was found in
+  std::set<size_t> untested_;                // in polygon order, which is the order of the ears cut
+  size_t head_ = 0;                          // the first corner left, in polygon order
+  size_t size_ = 0;
+};
+
+void clipEars(const std::vector<Point2>& points, const std::vector<int>& polygon,
+              std::vector<std::array<int, 3>>* triangles, double flat) {
+  EarClipper(points, polygon, flat).clip(triangles);
 }
 
 // Triangles of a planar face (loops[0] the outline, the rest holes) wound counter-clockwise about

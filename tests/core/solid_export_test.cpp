@@ -180,6 +180,47 @@ TEST(SolidExport, EveryPlateWithMilledJointsIsOneSolid) {
   EXPECT_GE(withAttached, 20);
 }
 
+// A long table's top holds a mortise per panel: a face with a thousand holes, all with the same
+// few x coordinates in rows (ties for the bridges) and diamonds between them (slanted edges). The
+// triangulation must still close the plate exactly: one solid, its genus the number of holes, the
+// board's volume less the holes'.
+TEST(SolidExport, APlateWithAThousandHolesIsOneSolid) {
+  constexpr double kThickness = 20;
+  constexpr int kColumns = 112, kRows = 5;
+  const double length = kColumns * 30.0 + 30, width = kRows * 40.0 + 40;
+  auto flat = [](double x, double y, double z) { return Vec3{x, y, z}; };
+  Plate plate;
+  plate.id = 1;
+  std::vector<Loop> face{{flat(0, 0, 0), flat(length, 0, 0), flat(length, width, 0), flat(0, width, 0)}};
+  double holesArea = 0;
+  for (int i = 0; i < kColumns; ++i) {
+    for (int j = 0; j < kRows; ++j) {
+      const double x = 30 + 30.0 * i, y = 40 + 40.0 * j;
+      // Holes run clockwise seen from +z, as a plate's holes in its files do.
+      face.push_back({flat(x, y, 0), flat(x, y + 12, 0), flat(x + 10, y + 12, 0), flat(x + 10, y, 0)});
+      holesArea += 120;
+      if (j + 1 < kRows) {
+        const double cx = x + 5, cy = y + 26;
+        face.push_back({flat(cx - 4, cy, 0), flat(cx, cy + 4, 0), flat(cx + 4, cy, 0), flat(cx, cy - 4, 0)});
+        holesArea += 32;
+      }
+    }
+  }
+  plate.bottom = face;
+  for (Loop& loop : face) {
+    for (Vec3& p : loop) p[2] = kThickness;
+  }
+  plate.top = face;
+  const int holes = static_cast<int>(plate.bottom.size()) - 1;
+  ASSERT_EQ(holes, 1008);
+  const double volume = (length * width - holesArea) * kThickness;
+  expectSolid(plateSolidMesh(plate), volume, holes, "a board with 1,008 holes (export)");
+  const SolidFacts sweptMesh = factsOf(plateMesh(plate));
+  EXPECT_EQ(sweptMesh.manifold, "");
+  EXPECT_EQ(sweptMesh.genus(), holes);
+  EXPECT_NEAR(sweptMesh.volume, volume, 1e-9 * volume);
+}
+
 TEST(SolidExport, EveryVoxelPartIsOneSolidOfItsVoxels) {
   for (const std::string name : {"result_puz/Cube_4x4x4_K9.puz", "result_puz/cube_5x5x5_K16.puz",
                                  "result_puz/cartoon_dog.puz", "result_puz/bunny_15x14x11_K80.puz"}) {
