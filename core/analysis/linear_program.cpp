@@ -3,6 +3,7 @@
 
 #include <glpk.h>
 
+#include <algorithm>
 #include <csetjmp>
 
 namespace desia {
@@ -119,9 +120,7 @@ const char* returnCodeName(int code) {
   }
 }
 
-}  // namespace
-
-LinearProgramSolution solveLinearProgram(const LinearProgramSpec& spec, SimplexMethod method) {
+LinearProgramSolution solveWhole(const LinearProgramSpec& spec, SimplexMethod method) {
   LinearProgramSolution solution;
   solution.columnValues.assign(spec.columnCount(), 0.0);
   solution.rowDuals.assign(spec.rowCount(), 0.0);
@@ -161,6 +160,123 @@ LinearProgramSolution solveLinearProgram(const LinearProgramSpec& spec, SimplexM
   solution.optimal = true;
   solution.objectiveValue = run.objectiveValue;
   return solution;
+}
+
+// --- Independent blocks ------------------------------------------------------------------------
+//
+// A program whose rows fall into groups sharing no column is block diagonal: each block is a
+// program of its own, the optimum is the sum of theirs, and the optimal columns and row duals of
+// the blocks together are optimal for the whole. Motion programs of assemblies whose contact
+// normals lie along the axes split this way into one block per axis (a row is one contact's
+// normal component), and GLPK's working memory, which dominates desia check of a 4,000-plate
+// design, is that of the largest block instead of the whole. Blocks are only formed from groups
+// of at least kBlockRows rows, so small programs are solved whole, as before.
+constexpr int kBlockRows = 4096;
+
+struct Block {
+  std::vector<int> rows, columns;  // of the whole program, in increasing order
+};
+
+// Union-find root of a column, with path halving (no recursion).
+int rootOf(std::vector<int>& parent, int column) {
+  while (parent[column] != column) {
+    parent[column] = parent[parent[column]];
+    column = parent[column];
+  }
+  return column;
+}
+
+// The program's independent groups of rows and columns (in order of their first column), merged
+// in that order into blocks of at least kBlockRows rows. Rows without entries belong to no block.
+std::vector<Block> independentBlocks(const LinearProgramSpec& spec) {
+  const int columns = spec.columnCount();
+  std::vector<int> parent(columns);
+  for (int j = 0; j < columns; ++j) parent[j] = j;
+  std::vector<int> firstColumnOfRow(spec.rowCount(), -1);
+  for (size_t k = 0; k < spec.entryValue.size(); ++k) {
+    int& first = firstColumnOfRow[spec.entryRow[k]];
+    if (first < 0) {
+      first = spec.entryColumn[k];
+    } else {
+      const int a = rootOf(parent, first), b = rootOf(parent, spec.entryColumn[k]);
+      if (a != b) parent[std::max(a, b)] = std::min(a, b);  // the root is the group's first column
+    }
+  }
+  std::vector<int> rowsOfGroup(columns, 0);
+  for (int r = 0; r < spec.rowCount(); ++r) {
+    if (firstColumnOfRow[r] >= 0) ++rowsOfGroup[rootOf(parent, firstColumnOfRow[r])];
+  }
+  // Groups in order of their first column, each assigned to the block open when it is met.
+  std::vector<int> blockOfGroup(columns, -1);
+  std::vector<Block> blocks;
+  int openRows = kBlockRows;  // a new block opens at the first group
+  for (int j = 0; j < columns; ++j) {
+    const int root = rootOf(parent, j);
+    if (root != j) continue;
+    if (openRows >= kBlockRows) {
+      blocks.emplace_back();
+      openRows = 0;
+    }
+    blockOfGroup[j] = static_cast<int>(blocks.size()) - 1;
+    openRows += rowsOfGroup[j];
+  }
+  // A last block short of kBlockRows (it may have no row at all, which glp_exact refuses) joins
+  // the one before it.
+  if (blocks.size() > 1 && openRows < kBlockRows) {
+    const int last = static_cast<int>(blocks.size()) - 1;
+    for (int& block : blockOfGroup) {
+      if (block == last) block = last - 1;
+    }
+    blocks.pop_back();
+  }
+  if (blocks.size() <= 1) return blocks;
+  for (int j = 0; j < columns; ++j) blocks[blockOfGroup[rootOf(parent, j)]].columns.push_back(j);
+  for (int r = 0; r < spec.rowCount(); ++r) {
+    if (firstColumnOfRow[r] >= 0) blocks[blockOfGroup[rootOf(parent, firstColumnOfRow[r])]].rows.push_back(r);
+  }
+  return blocks;
+}
+
+// The block as a program of its own (its rows and columns renumbered in order).
+LinearProgramSpec blockProgram(const LinearProgramSpec& spec, const Block& block,
+                               const std::vector<std::vector<int>>& entriesOfRow, std::vector<int>* localColumn) {
+  LinearProgramSpec part;
+  for (size_t c = 0; c < block.columns.size(); ++c) {
+    const int j = block.columns[c];
+    (*localColumn)[j] = static_cast<int>(c);
+    part.addColumn(spec.columnLower[j], spec.columnUpper[j], spec.objective[j]);
+  }
+  for (size_t local = 0; local < block.rows.size(); ++local) {
+    const int r = block.rows[local];
+    part.rowLower.push_back(spec.rowLower[r]);
+    for (int k : entriesOfRow[r]) part.addEntry(static_cast<int>(local), (*localColumn)[spec.entryColumn[k]], spec.entryValue[k]);
+  }
+  return part;
+}
+
+}  // namespace
+
+LinearProgramSolution solveLinearProgram(const LinearProgramSpec& spec, SimplexMethod method) {
+  const std::vector<Block> blocks = independentBlocks(spec);
+  if (blocks.size() <= 1) return solveWhole(spec, method);
+  std::vector<std::vector<int>> entriesOfRow(spec.rowCount());
+  for (size_t k = 0; k < spec.entryValue.size(); ++k) entriesOfRow[spec.entryRow[k]].push_back(static_cast<int>(k));
+  LinearProgramSolution whole;
+  whole.columnValues.assign(spec.columnCount(), 0.0);
+  whole.rowDuals.assign(spec.rowCount(), 0.0);
+  std::vector<int> localColumn(spec.columnCount(), -1);
+  for (const Block& block : blocks) {
+    const LinearProgramSolution part = solveWhole(blockProgram(spec, block, entriesOfRow, &localColumn), method);
+    if (!part.optimal) {
+      whole.failure = part.failure;
+      return whole;
+    }
+    whole.objectiveValue += part.objectiveValue;
+    for (size_t c = 0; c < block.columns.size(); ++c) whole.columnValues[block.columns[c]] = part.columnValues[c];
+    for (size_t r = 0; r < block.rows.size(); ++r) whole.rowDuals[block.rows[r]] = part.rowDuals[r];
+  }
+  whole.optimal = true;
+  return whole;
 }
 
 }  // namespace desia

@@ -404,5 +404,55 @@ TEST(LinearProgramGuard, ExactSimplexSolvesTheRelaxedRowsExactly) {
   EXPECT_EQ(exact.objectiveValue, 0.25);
 }
 
+// Three independent groups of 4,500 rows each (rows interleaved), as axis-aligned contacts make
+// them, and a few columns in no row: the solver splits such programs into blocks. Whatever it
+// does, its answer must be optimal for the whole program, which is checked here independently of
+// GLPK: the columns satisfy every row and bound and reach the objective value, and the row duals
+// bound the objective from above by the same value (weak duality: c·x <= Σ|c + Aᵀy| for y >= 0).
+TEST(LinearProgramGuard, AProgramOfIndependentBlocksIsSolvedOptimallyAsAWhole) {
+  constexpr int kGroups = 3, kColumnsPerGroup = 1500, kRowsPerGroup = 4500, kLooseColumns = 7;
+  std::mt19937 random(2024);
+  std::uniform_real_distribution<double> weight(-1.0, 1.0);
+  std::uniform_int_distribution<int> pick(0, kColumnsPerGroup - 1);
+  LinearProgramSpec spec;
+  for (int j = 0; j < kGroups * kColumnsPerGroup + kLooseColumns; ++j) spec.addColumn(-1, 1, weight(random));
+  for (int r = 0; r < kGroups * kRowsPerGroup; ++r) {
+    const int group = r % kGroups;
+    const int a = group * kColumnsPerGroup + pick(random);
+    int b = group * kColumnsPerGroup + pick(random);
+    if (b == a) b = group * kColumnsPerGroup + (pick(random) + 1) % kColumnsPerGroup;
+    if (b == a) continue;
+    spec.rowLower.push_back(0.0);
+    const int row = spec.rowCount() - 1;
+    spec.addEntry(row, a, 1.0);
+    spec.addEntry(row, b, r % 5 == 0 ? -0.5 : -1.0);  // not only difference constraints
+  }
+  for (SimplexMethod method : {SimplexMethod::Dual, SimplexMethod::Primal}) {
+    LinearProgramSolution solution = solveLinearProgram(spec, method);
+    ASSERT_TRUE(solution.optimal) << solution.failure;
+    std::vector<double> rowValue(spec.rowCount(), 0.0);
+    for (size_t k = 0; k < spec.entryValue.size(); ++k)
+      rowValue[spec.entryRow[k]] += spec.entryValue[k] * solution.columnValues[spec.entryColumn[k]];
+    for (int r = 0; r < spec.rowCount(); ++r) ASSERT_GE(rowValue[r], spec.rowLower[r] - 1e-9) << "row " << r;
+    double value = 0;
+    for (int j = 0; j < spec.columnCount(); ++j) {
+      ASSERT_LE(std::abs(solution.columnValues[j]), 1.0 + 1e-12);
+      value += spec.objective[j] * solution.columnValues[j];
+    }
+    EXPECT_NEAR(value, solution.objectiveValue, 1e-6);
+    double bestBound = HUGE_VAL;
+    for (double sign : {1.0, -1.0}) {
+      std::vector<double> reduced = spec.objective;
+      for (size_t k = 0; k < spec.entryValue.size(); ++k)
+        reduced[spec.entryColumn[k]] += spec.entryValue[k] * std::max(0.0, sign * solution.rowDuals[spec.entryRow[k]]);
+      double bound = 0;
+      for (double c : reduced) bound += std::abs(c);
+      bestBound = std::min(bestBound, bound);
+    }
+    EXPECT_NEAR(bestBound, value, 1e-6) << "the row duals do not prove the columns optimal";
+    EXPECT_GT(value, 1.0);  // the loose columns alone reach their weights
+  }
+}
+
 }  // namespace
 }  // namespace desia
