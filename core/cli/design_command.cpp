@@ -72,7 +72,7 @@ std::string seedsText(const DesignArguments& parsed) {
 }  // namespace
 
 int runDesignCommand(const std::vector<std::string>& args) {
-  const desia::cli::CommandClock clock;
+  desia::cli::CommandClock clock;
   if (!args.empty() && args[0] == "plate") return runPlateDesignCommand(args);
   if (!args.empty() && args[0] == "frame") return runFrameDesignCommand(args);
   DesignArguments parsed = parseArguments(args);

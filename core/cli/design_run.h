@@ -25,17 +25,22 @@ struct SearchFlags {
 bool parseSearchFlag(const std::string& flag, const std::string& value, const SearchFlags& into);
 
 // --time-limit bounds the whole command, not the search alone: reading and checking the input
-// count (a design of 9,998 plates takes seconds to read), and the search gets what is left.
+// count (a design of 9,998 plates takes seconds to read), the search gets most of what is left,
+// and the check of the result as it will be written must end within the limit too.
 class CommandClock {
  public:
   CommandClock() : start_(std::chrono::steady_clock::now()) {}
   double seconds() const;
-  // The search's time limit made the limit less the time spent so far (at least a moment: the
-  // search then stops after its first node, with what it has). No limit stays no limit.
-  void leaveRestToSearch(DesignLimits* limits) const;
+  // Remembers the command's limit, and makes the search's limit kSearchShareOfRest of what is
+  // left of it (at least a moment: the search then stops after its first node, with what it has).
+  // No limit stays no limit.
+  void leaveRestToSearch(DesignLimits* limits);
+  // Seconds left of the command's limit (infinite without one).
+  double secondsLeft() const;
 
  private:
   std::chrono::steady_clock::time_point start_;
+  double commandLimitSeconds_ = 0;  // 0: none
 };
 
 // While it lives: Ctrl-C stops the search (it keeps what it has), and a terminal sees one line of
@@ -59,9 +64,11 @@ class LiveProgress {
 
 // Writes `text` (a result of `input`) to `output` after checkDocument passed on it as read back
 // from that text, printing the designer's message, the time and the check; else says why and
-// writes nothing. Returns the exit status (0 written, 1 not).
+// writes nothing. Returns the exit status (0 written, 1 not). When the command's time limit runs
+// out before that check ends, the command ends there: a message, nothing written, exit 1.
 // `what` names the result in that message ("plan", "design").
 int writeVerifiedResult(const std::string& input, const std::string& output, const std::string& text,
-                        const CheckOptions& check, const std::string& message, double seconds, const char* what);
+                        const CheckOptions& check, const std::string& message, double seconds, const char* what,
+                        const CommandClock& clock);
 
 }  // namespace desia::cli

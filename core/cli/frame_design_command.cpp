@@ -32,7 +32,7 @@ double positiveNumber(const std::string& flag, const std::string& text, double l
 }  // namespace
 
 int runFrameDesignCommand(const std::vector<std::string>& args) {
-  const desia::cli::CommandClock clock;
+  desia::cli::CommandClock clock;
   std::string input, output;
   desia::FrameDesignOptions options;
   double jointSize = 0;
@@ -73,5 +73,5 @@ int runFrameDesignCommand(const std::vector<std::string>& args) {
   // What the user gets is checked as it will be written, before anything is written: the DBG test
   // on its voxel contacts, and the swept removal of every beam in order.
   const std::string text = desia::frameResultToJson(frame.layout, result, frame.name) + "\n";
-  return desia::cli::writeVerifiedResult(input, output, text, {}, result.message, result.progress.seconds, "design");
+  return desia::cli::writeVerifiedResult(input, output, text, {}, result.message, result.progress.seconds, "design", clock);
 }

@@ -42,7 +42,7 @@ int reportCutPoint(const desia::AssemblyDocument& document, const std::string& i
 }  // namespace
 
 int runPlateDesignCommand(const std::vector<std::string>& args) {
-  const desia::cli::CommandClock clock;
+  desia::cli::CommandClock clock;
   std::string input, output, repairOutput;
   desia::PlateDesignOptions options;
   options.realization = desia::JointRealization::Auto;  // cut if possible, else milled, else planned
@@ -105,5 +105,5 @@ int runPlateDesignCommand(const std::vector<std::string>& args) {
   desia::CheckOptions check;
   check.method = desia::CheckMethod::Both;
   return desia::cli::writeVerifiedResult(input, output, desia::plateDesignToJson(document, result) + "\n", check,
-                                         result.message, result.progress.seconds, "plan");
+                                         result.message, result.progress.seconds, "plan", clock);
 }
