@@ -4,13 +4,90 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <map>
 #include <numeric>
 #include <utility>
 #include <vector>
 
 #include "desia/error.h"
+#include "desia/tolerances.h"
 
 namespace desia {
+
+namespace {
+
+using Point = std::array<double, 3>;
+
+double twiceArea(const Point& a, const Point& b, const Point& c) {
+  const Point u{b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v{c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+  const Point n{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+  return std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+}
+
+double squaredLength(const Point& a, const Point& b) {
+  double sum = 0;
+  for (int k = 0; k < 3; ++k) sum += (b[k] - a[k]) * (b[k] - a[k]);
+  return sum;
+}
+
+}  // namespace
+
+int flipZeroAreaTriangles(TriangleMesh& mesh) {
+  std::map<std::pair<int, int>, size_t> triangleOfEdge;  // directed edge -> the triangle using it
+  const auto link = [&](size_t t, bool add) {
+    const auto& tri = mesh.triangles[t];
+    for (int k = 0; k < 3; ++k) {
+      const std::pair<int, int> edge{tri[k], tri[(k + 1) % 3]};
+      if (add) {
+        triangleOfEdge[edge] = t;
+      } else {
+        triangleOfEdge.erase(edge);
+      }
+    }
+  };
+  for (size_t t = 0; t < mesh.triangles.size(); ++t) link(t, true);
+  const auto point = [&](int v) -> const Point& { return mesh.vertices[static_cast<size_t>(v)]; };
+  const auto degenerate = [&](size_t t) {
+    const auto& tri = mesh.triangles[t];
+    return twiceArea(point(tri[0]), point(tri[1]), point(tri[2])) <= tolerance::kDegenerateTriangleTwiceAreaMm2;
+  };
+  // Passes until nothing changes; a flip can leave a new flat triangle (d on the line too), so the
+  // number of flips is bounded as well.
+  size_t flipsLeft = 3 * mesh.triangles.size();
+  for (bool changed = true; changed && flipsLeft > 0;) {
+    changed = false;
+    for (size_t t = 0; t < mesh.triangles.size() && flipsLeft > 0; ++t) {
+      if (!degenerate(t)) continue;
+      const auto tri = mesh.triangles[t];
+      int longest = 0;
+      for (int k = 1; k < 3; ++k) {
+        if (squaredLength(point(tri[k]), point(tri[(k + 1) % 3])) >
+            squaredLength(point(tri[longest]), point(tri[(longest + 1) % 3])))
+          longest = k;
+      }
+      const int a = tri[longest], c = tri[(longest + 1) % 3], b = tri[(longest + 2) % 3];
+      const auto across = triangleOfEdge.find({c, a});
+      if (across == triangleOfEdge.end()) continue;
+      const size_t n = across->second;
+      int d = -1;
+      for (int v : mesh.triangles[n]) {
+        if (v != a && v != c) d = v;
+      }
+      if (d < 0 || d == b || triangleOfEdge.count({b, d}) || triangleOfEdge.count({d, b})) continue;
+      link(t, false);
+      link(n, false);
+      mesh.triangles[t] = {c, b, d};
+      mesh.triangles[n] = {b, a, d};
+      link(t, true);
+      link(n, true);
+      changed = true;
+      --flipsLeft;
+    }
+  }
+  int left = 0;
+  for (size_t t = 0; t < mesh.triangles.size(); ++t) left += degenerate(t) ? 1 : 0;
+  return left;
+}
 
 void splitPinchedVertices(TriangleMesh& mesh) {
   const size_t vertexCount = mesh.vertices.size();

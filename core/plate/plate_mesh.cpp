@@ -740,6 +740,11 @@ TriangleMesh plateSolidMesh(const Plate& plate) {
     mesh = shellsMesh(plate, flat);
     if (!passes(mesh)) mesh = shellsMesh(plate, 0);
   }
+  // The plain triangulation may leave triangles of no area where holes line up: flipped away, and
+  // kept only if the mesh still passes.
+  TriangleMesh flipped = mesh;
+  flipZeroAreaTriangles(flipped);
+  if (flipped.triangles != mesh.triangles && passes(flipped)) mesh = std::move(flipped);
   splitPinchedVertices(mesh);
   return mesh;
 }

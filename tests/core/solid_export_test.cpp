@@ -20,6 +20,7 @@
 #include "desia/frame.h"
 #include "desia/frame_format.h"
 #include "desia/plate.h"
+#include "desia/triangle_mesh.h"
 #include "desia/voxel_surface.h"
 #include "test_support.h"
 
@@ -219,6 +220,23 @@ TEST(SolidExport, APlateWithAThousandHolesIsOneSolid) {
   EXPECT_EQ(sweptMesh.manifold, "");
   EXPECT_EQ(sweptMesh.genus(), holes);
   EXPECT_NEAR(sweptMesh.volume, volume, 1e-9 * volume);
+}
+
+// A unit cube whose top face holds a triangle of no area (the midpoint m of its diagonal between
+// the diagonal's ends), as ear clipping leaves where holes line up: flipped away, the same solid.
+TEST(SolidExport, ATriangleOfNoAreaIsFlippedAwayLeavingTheSameSolid) {
+  TriangleMesh cube;
+  cube.vertices = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}, {0.5, 0.5, 1}};
+  const int m = 8;
+  cube.triangles = {{0, 2, 1}, {0, 3, 2},                      // bottom, seen from below
+                    {0, 1, 5}, {0, 5, 4}, {1, 2, 6}, {1, 6, 5},  // sides
+                    {2, 3, 7}, {2, 7, 6}, {3, 0, 4}, {3, 4, 7},
+                    {4, 5, 6}, {6, m, 4}, {4, m, 7}, {m, 6, 7}};  // top: {6, m, 4} has no area
+  ASSERT_EQ(testing::manifoldProblem(cube), "");
+  ASSERT_EQ(factsOf(cube).zeroArea, 1);
+  EXPECT_EQ(flipZeroAreaTriangles(cube), 0);
+  expectSolid(cube, 1.0, 0, "the cube after the flip");
+  EXPECT_EQ(cube.triangles.size(), 14u);
 }
 
 TEST(SolidExport, EveryVoxelPartIsOneSolidOfItsVoxels) {

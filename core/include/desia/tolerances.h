@@ -76,6 +76,9 @@ constexpr double kEdgeOnTwiceAreaMm2 = 1e-9;
 constexpr double kFlatCornerTwiceAreaMm2 = 1e-6;
 // A face whose twice-area (the length of its unnormalised normal) is below this has no area.
 constexpr double kNoTwiceAreaMm2 = 1e-12;
+// A triangle of a written mesh whose twice-area is at most this has no area: robust mesh tools
+// call it degenerate (the tests count areas up to 1e-9 mm²).
+constexpr double kDegenerateTriangleTwiceAreaMm2 = 2e-9;
 
 // --- Directions: unit vectors (cosine, sine, component) and angles ------------------------------
 

@@ -26,6 +26,14 @@ struct TriangleMesh {
 // edge in two triangles, the indexed mesh is then a 2-manifold. Positions are unchanged.
 void splitPinchedVertices(TriangleMesh& mesh);
 
+// Takes the triangles of a closed mesh that have no area (twice-area at most
+// tolerance::kDegenerateTriangleTwiceAreaMm2: a vertex on the opposite edge, as ear clipping
+// leaves where holes line up) out by edge flips: such a triangle (a, c, b) with b on its longest
+// edge ac and the triangle (c, a, d) across that edge become (c, b, d) and (b, a, d), the same
+// surface, every edge still in two opposite triangles. A flip that would repeat an edge is not
+// made. Returns the number of such triangles left.
+int flipZeroAreaTriangles(TriangleMesh& mesh);
+
 // Throws BadInput unless the mesh has vertices and triangles, finite coordinates, indices in
 // range, no triangle repeating a vertex, and every undirected edge in an even number of triangles
 // (two, or four where solids touch along an edge; the first offending edge in vertex order is
