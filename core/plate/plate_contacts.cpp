@@ -170,6 +170,7 @@ std::vector<PlateContact> contactsOfSolids(const std::vector<Plate>& plates, con
       if (std::optional<PlateContact> crossing =
               plateCrossing(plates, static_cast<int>(p), static_cast<int>(q), tolerance)) {
         contacts.push_back(*crossing);
+        continue;  // plates crossing at any angle share the volume of their crossing, and only that
       }
       requireNoSlantedOverlap(plates[p], plates[q], tolerance);
       requireMitredPerpendicularApart(plates[p], plates[q], tolerance);

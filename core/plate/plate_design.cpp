@@ -9,6 +9,7 @@
 #include <string>
 
 #include "desia/error.h"
+#include "plate/joints/missing_joints.h"
 #include "plate/plate_planner.h"
 #include "plate/plate_verification.h"
 
@@ -204,6 +205,8 @@ PlateDesignResult designWithChosenJoints(const std::vector<Plate>& plates, const
       std::string said = std::string("joints: ") + jointRealizationName(realization);
       if (realization == JointRealization::Planned) {
         said += ", nothing is cut: the paper's plan of which joint each pair needs (" + why + ")";
+        const std::string lacking = jointsNothingMakesSentence(plates, contacts, result.joints, options.joints);
+        if (!lacking.empty()) said += "\n" + lacking;
       } else if (!why.empty()) {
         said += " (" + why + ")";
       }

@@ -81,6 +81,52 @@ std::vector<std::pair<double, double>> commonStretches(const std::vector<std::pa
   return common;
 }
 
+
+// How a plate's first-face plane meets another plate's slab where they cross at any angle: the
+// slab is a strip along the crossing line, offsets along `across` (unit, in the plate's plane,
+// square to the line, the other plate's axis rising along it by `rise` = the sine of the angle
+// between the planes) from the crossing point. At the plate's mid-plane the strip is [midFrom,
+// midTo]; anywhere across the plate's thickness, seen along its axis, [from, to] (paper Fig. 16c:
+// the walls of a halved joint's notch follow the other plate's faces, slanted to this one's).
+struct SlabTrace {
+  Vec3 across;
+  double rise = 1, midFrom = 0, midTo = 0, from = 0, to = 0;
+};
+
+SlabTrace slabTrace(const Vec3& axis, double thickness, const Vec3& otherAxis, double otherThickness) {
+  double cosine = dot(axis, otherAxis);
+  SlabTrace trace;
+  if (std::abs(cosine) < tolerance::kSquareCosine) {
+    cosine = 0;
+    trace.across = otherAxis;
+  } else {
+    trace.across = normalized(minus(otherAxis, scaled(axis, cosine)));
+    trace.rise = dot(trace.across, otherAxis);
+  }
+  // A point `s` along `across` at height h across the plate is at h * cosine + s * rise into the slab.
+  const double shift = thickness * cosine / trace.rise, width = otherThickness / trace.rise;
+  trace.midFrom = -shift / 2;
+  trace.midTo = width - shift / 2;
+  trace.from = std::min(0.0, -shift);
+  trace.to = std::max(width, width - shift);
+  return trace;
+}
+
+// The loops' region within the strip [from, to] along `across` (from `point`, `reach` each way
+// along `line`), as Clipper paths in `frame`.
+ClipperLib::Paths regionInStrip(const std::vector<Loop>& loops, const PlaneFrame& frame, const Vec3& point,
+                                const Vec3& line, const Vec3& across, double from, double to, double reach) {
+  const Vec3 low = plus(point, scaled(across, from)), high = plus(point, scaled(across, to));
+  const Loop strip{plus(low, scaled(line, -reach)), plus(low, scaled(line, reach)), plus(high, scaled(line, reach)),
+                   plus(high, scaled(line, -reach))};
+  ClipperLib::Clipper clipper;
+  clipper.AddPaths(clipperPaths(loops, frame), ClipperLib::ptSubject, true);
+  clipper.AddPaths(clipperPaths({strip}, frame), ClipperLib::ptClip, true);
+  ClipperLib::Paths inside;
+  clipper.Execute(ClipperLib::ctIntersection, inside, ClipperLib::pftEvenOdd, ClipperLib::pftNonZero);
+  return inside;
+}
+
 }  // namespace
 
 namespace geometry {
@@ -103,9 +149,71 @@ void requireMitredPerpendicularApart(const Plate& a, const Plate& b, double tole
   }
   if (overlap) {
     throwBadInput("", plateName(a) + " and " + plateName(b) +
-                          " overlap where no contact explains it (perpendicular plates with mitred sides cannot "
-                          "cross through each other): move them apart until they touch");
+                          " overlap where no contact explains it (perpendicular plates with mitred sides must touch "
+                          "or pass right through each other): move them apart until they touch");
   }
+}
+
+// Plates crossing at any angle, prisms or with mitred sides (judged by their core prisms, where
+// they have their whole thickness): over a stretch of the line where their planes meet, each has
+// material across the other's whole slab (the parallelogram where the slabs meet, seen along its
+// own axis), and nowhere else do their shadows on that line meet. Anything less is no crossing
+// here: the callers' overlap checks judge it and refuse a real overlap naming both plates.
+std::optional<PlateContact> slantedCrossing(const std::vector<Plate>& plates, int p, int q, double tolerance) {
+  const Plate a = isPrism(plates[p]) ? plates[p] : corePrism(plates[p]);
+  const Plate b = isPrism(plates[q]) ? plates[q] : corePrism(plates[q]);
+  if (a.bottom.empty() || b.bottom.empty()) return std::nullopt;
+  const Vec3 ta = plateThicknessAxis(plates[p]), tb = plateThicknessAxis(plates[q]);
+  if (norm(cross(ta, tb)) < tolerance::kParallelSine) return std::nullopt;
+  const double ha = plateThickness(plates[p]), hb = plateThickness(plates[q]);
+  const Vec3 line = canonicalSign(normalized(cross(ta, tb)));
+  // On both first faces: the point of the planes' common line nearest the origin's projection.
+  const double cosine = dot(ta, tb), sineSquared = 1 - cosine * cosine;
+  const double ca = dot(a.bottom[0][0], ta), cb = dot(b.bottom[0][0], tb);
+  const Vec3 point = plus(scaled(ta, (ca - cosine * cb) / sineSquared), scaled(tb, (cb - cosine * ca) / sineSquared));
+  const SlabTrace inA = slabTrace(ta, ha, tb, hb), inB = slabTrace(tb, hb, ta, ha);  // b's slab on a's plane, ...
+  const Box boxA = boxOf(a), boxB = boxOf(b);
+  double reach = 0;
+  for (int k = 0; k < 3; ++k)
+    reach += std::max(boxA.hi[k], boxB.hi[k]) - std::min(boxA.lo[k], boxB.lo[k]) + std::abs(point[k]);
+  const PlaneFrame frameA(a.bottom[0][0], ta), frameB(b.bottom[0][0], tb);
+  // Each plate's material in the other's slab at its mid-plane, a tolerance in from the slab's faces.
+  const ClipperLib::Paths materialA = regionInStrip(a.bottom, frameA, point, line, inA.across,
+                                                    inA.midFrom + tolerance / inA.rise, inA.midTo - tolerance / inA.rise, reach);
+  const ClipperLib::Paths materialB = regionInStrip(b.bottom, frameB, point, line, inB.across,
+                                                    inB.midFrom + tolerance / inB.rise, inB.midTo - tolerance / inB.rise, reach);
+  if (pathsArea(materialA) <= tolerance * tolerance || pathsArea(materialB) <= tolerance * tolerance) return std::nullopt;
+  const std::vector<std::pair<double, double>> shadowA = shadowOnLine(materialA, frameA, point, line);
+  const std::vector<std::pair<double, double>> shadowB = shadowOnLine(materialB, frameB, point, line);
+  const std::vector<std::pair<double, double>> common = commonStretches(shadowA, shadowB, tolerance);
+  if (common.size() != 1) return std::nullopt;
+  const double from = common[0].first, to = common[0].second;
+  // Through: each plate has material across the other's whole slab over the crossing, but for as
+  // much at each end as the slabs' traces are wide (a plate may end across the line at a slant:
+  // its mid-plane shadow reaches that much further than its whole thickness does). Its slot runs
+  // out past the end all the same. A plate stopping inside the other's slab fills it nowhere.
+  const double slant = std::max(inA.to - inA.from, inB.to - inB.from);
+  const double inset = to - from > 4 * slant ? slant : 0;
+  auto fills = [&](const Plate& plate, const PlaneFrame& frame, const SlabTrace& trace) {
+    const double low = trace.from + tolerance / trace.rise, high = trace.to - tolerance / trace.rise;
+    const double length = to - from - 2 * inset;
+    const ClipperLib::Paths inside = regionInStrip(plate.bottom, frame, plus(point, scaled(line, (from + to) / 2)), line,
+                                                   trace.across, low, high, length / 2);
+    return std::abs(pathsArea(inside) - (high - low) * length) <= tolerance * (length + high - low);
+  };
+  if (!fills(a, frameA, inA) || !fills(b, frameB, inB)) return std::nullopt;
+  PlateContact crossing;
+  crossing.a = p;
+  crossing.b = q;
+  crossing.crossing = true;
+  crossing.edgeDirection = line;
+  crossing.crossingPoint = point;
+  crossing.crossingFrom = from;
+  crossing.crossingTo = to;
+  crossing.area = (to - from) * std::max(inA.to - inA.from, inB.to - inB.from);
+  crossing.aOpens = {shadowA.front().first >= from - tolerance, shadowA.back().second <= to + tolerance};
+  crossing.bOpens = {shadowB.front().first >= from - tolerance, shadowB.back().second <= to + tolerance};
+  return crossing;
 }
 
 // Plates p and q crossing through each other: perpendicular prisms whose faces each fill the other's
@@ -114,9 +222,9 @@ std::optional<PlateContact> plateCrossing(const std::vector<Plate>& plates, int 
   const Plate& a = plates[p];
   const Plate& b = plates[q];
   const Vec3 ta = plateThicknessAxis(a), tb = plateThicknessAxis(b);
-  if (std::abs(dot(ta, tb)) > tolerance::kSquareCosine) return std::nullopt;
+  if (std::abs(dot(ta, tb)) > tolerance::kSquareCosine || !isPrism(a) || !isPrism(b))
+    return slantedCrossing(plates, p, q, tolerance);
   const double ha = plateThickness(a), hb = plateThickness(b);
-  if (!isPrism(a) || !isPrism(b)) return std::nullopt;  // requireMitredPerpendicularApart judges them
   const Vec3 line = canonicalSign(normalized(cross(ta, tb)));
   // On both first faces: the planes' common line, with (ta, tb, line) orthonormal.
   const Vec3 point = plus(scaled(ta, dot(a.bottom[0][0], ta)), scaled(tb, dot(b.bottom[0][0], tb)));
@@ -160,6 +268,9 @@ std::optional<PlateContact> plateCrossing(const std::vector<Plate>& plates, int 
     return std::abs(pathsArea(inside) - (width - 2 * tolerance) * (to - from)) <= tolerance * (to - from + width);
   };
   if (!filled(a, frameA, bandA, hb) || !filled(b, frameB, bandB, ha)) {
+    // A plate ending across the line at a slant fills the other's slab short of its mid-plane
+    // shadow's end: slantedCrossing allows for that.
+    if (std::optional<PlateContact> slanted = slantedCrossing(plates, p, q, tolerance)) return slanted;
     throwBadInput("", plateName(a) + " and " + plateName(b) +
                           " overlap without passing through each other: make them cross "
                           "through (each filling the other's thickness) or meet face to face");

@@ -590,7 +590,17 @@ TEST(PlateOverlaps, SolidsThatShareVolumeAreRefusedAndTouchingOnesAreNot) {
   tilted.bottom = {{{50, -50, -50}, {150, -50, -50}, {150, 50, 50}, {50, 50, 50}}};
   tilted.top = {{{50, -50 + s, -50 - s}, {150, -50 + s, -50 - s}, {150, 50 + s, 50 - s}, {50, 50 + s, 50 - s}}};
   validatePlates({tilted}, {}, "tilted");
-  expectRefused({board(1, {0, -100, 0}, {200, 100, 18}), tilted}, "a slanted board through another");
+  // Right through the middle, it crosses the other (issue 26: crossings at any angle) ...
+  int crossings = 0;
+  for (const PlateContact& contact : computePlateContacts({board(1, {0, -100, 0}, {200, 100, 18}), tilted}, {}))
+    crossings += contact.crossing ? 1 : 0;
+  EXPECT_EQ(crossings, 1);
+  // ... and lifted until its lower end stops inside it, it overlaps it.
+  Plate stopping = tilted;
+  for (auto* face : {&stopping.bottom, &stopping.top}) {
+    for (Vec3& p : (*face)[0]) p[2] += 58;  // its lowest edge at z = 0.9 (second face) to 8 (first)
+  }
+  expectRefused({board(1, {0, -100, 0}, {200, 100, 18}), stopping}, "a slanted board stopping inside another");
   // Face on face, and the slanted board lifted just clear: no overlap.
   EXPECT_NO_THROW(computePlateContacts({board(1, {0, 0, 0}, {200, 200, 18}), board(2, {50, 50, 18}, {150, 150, 36})}, {}));
   Plate leaning = tilted;

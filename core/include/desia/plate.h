@@ -108,8 +108,8 @@ enum class PlateOrigin { Drawn, Computed };
 std::vector<Plate> regularizedPlates(const std::vector<Plate>& plates, const PlateOptions& options, PlateOrigin origin);
 
 // All contacts between the plates, in a fixed order (by plate pair, then faces), and the crossings
-// of perpendicular prism plates that pass through each other (each plate's material fills the
-// other's thickness over the crossing). Throws BadInput naming both plates when such plates
+// of plates that pass through each other at any angle (each plate's material fills the other's
+// thickness over the crossing). Throws BadInput naming both plates when such plates
 // overlap only in part (neither a contact nor a crossing explains it).
 std::vector<PlateContact> computePlateContacts(const std::vector<Plate>& plates, const PlateOptions& options);
 

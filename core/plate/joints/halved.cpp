@@ -1,7 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "plate/joints/halved.h"
 
+#include <cmath>
+
 #include "analysis/vec3.h"
+#include "desia/tolerances.h"
 #include "plate/joints/joint_geometry.h"
 #include "plate/plate_shape.h"
 
@@ -12,12 +15,39 @@ class SlotJointCut final : public JointCut {
  public:
   explicit SlotJointCut(const SlotCut& slot) : slot_(slot) {}
   void addTo(const std::vector<Plate>&, const JointCutOptions&, PlateCuts& cuts) const override {
-    cuts.removed[slot_.plate].push_back(slot_.rectangle);
+    if (slot_.secondFace.empty())
+      cuts.removed[slot_.plate].push_back(slot_.rectangle);
+    else
+      cuts.slanted[slot_.plate].push_back({slot_.rectangle, slot_.secondFace});
   }
 
  private:
   SlotCut slot_;
 };
+
+// The slot through `plate` where `across` passes through it at an angle, from `start` to `end`
+// along the crossing line: at height h across the plate (0 on its first face, which holds the
+// crossing point), a point s along `across` (in the plate, square to the line) lies
+// h * cosine + s * rise into the other plate's slab; the slot keeps that within the slab widened
+// by half the clearance on each side, so its walls lie in the other plate's face planes.
+SlotCut slantedSlot(const std::vector<Plate>& plates, const PlateContact& crossing, int plate, int across,
+                    double start, double end, double clearance) {
+  const Vec3 axis = plateThicknessAxis(plates[plate]), otherAxis = plateThicknessAxis(plates[across]);
+  const double thickness = plateThickness(plates[plate]), width = plateThickness(plates[across]);
+  const double cosine = dot(axis, otherAxis);
+  const Vec3 towards = normalized(minus(otherAxis, scaled(axis, cosine)));
+  const double rise = dot(towards, otherAxis);
+  auto at = [&](double h, double t, double depth) {
+    const double s = (depth - h * cosine) / rise;
+    return plus(crossing.crossingPoint,
+                plus(scaled(axis, h), plus(scaled(crossing.edgeDirection, t), scaled(towards, s))));
+  };
+  auto face = [&](double h) {
+    return Loop{at(h, start, -clearance / 2), at(h, end, -clearance / 2), at(h, end, width + clearance / 2),
+                at(h, start, width + clearance / 2)};
+  };
+  return SlotCut{plate, face(0), face(thickness)};
+}
 
 }  // namespace
 
@@ -33,6 +63,12 @@ std::vector<SlotCut> halvedSlots(const std::vector<Plate>& plates, const PlateCo
   auto slot = [&](int plate, int across, double towards) {
     const Vec3 axis = plateThicknessAxis(plates[across]);
     const double width = plateThickness(plates[across]);
+    const double cosine = dot(plateThicknessAxis(plates[plate]), axis);
+    if (std::abs(cosine) >= tolerance::kSquareCosine) {
+      return slantedSlot(plates, crossing, plate, across, middle, towards > 0 ? crossing.crossingTo + out
+                                                                             : crossing.crossingFrom - out,
+                         clearance);
+    }
     // From the middle of the crossing out past its end `towards` (+1: +line), across the other
     // plate's thickness (its first face is on crossingPoint's plane) plus the clearance.
     const double start = middle, end = towards > 0 ? crossing.crossingTo + out : crossing.crossingFrom - out;
@@ -45,7 +81,20 @@ std::vector<SlotCut> halvedSlots(const std::vector<Plate>& plates, const PlateCo
   return {slot(mover, other, -sign), slot(other, mover, sign)};
 }
 
-CutFootprint slotFootprint(const SlotCut& slot) { return {slot.plate, 3, slot.rectangle}; }
+CutFootprint slotFootprint(const SlotCut& slot) {
+  if (slot.secondFace.empty()) return {slot.plate, 3, slot.rectangle};
+  // The second face's parallelogram seen along the axis is the first's shifted across the line
+  // (vertices 0-1 and 2-3 are its sides along the line, at the other plate's two faces): the
+  // union spans from the lower of the two first sides to the higher of the two second sides.
+  const Loop& first = slot.rectangle;
+  const Vec3 across = minus(first[3], first[0]);
+  const Vec3 axis = normalized(cross(minus(first[1], first[0]), across));
+  const Vec3 lift = minus(slot.secondFace[0], first[0]);
+  const Vec3 shift = minus(lift, scaled(axis, dot(lift, axis)));
+  const bool higher = dot(shift, across) > 0;
+  const Vec3 low = higher ? Vec3{0, 0, 0} : shift, high = higher ? shift : Vec3{0, 0, 0};
+  return {slot.plate, 3, {plus(first[0], low), plus(first[1], low), plus(first[2], high), plus(first[3], high)}};
+}
 
 std::shared_ptr<const JointCut> jointCut(const SlotCut& slot) { return std::make_shared<SlotJointCut>(slot); }
 

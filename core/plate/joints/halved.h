@@ -15,18 +15,25 @@
 namespace desia {
 
 // A slot to cut out of a plate (a halved joint's half): a rectangle in its plane, through it.
+// Where the plates cross at an angle other than square, its walls follow the other plate's
+// faces (paper Fig. 16c at any angle): `secondFace` is then its outline on the plate's second
+// face, vertex for vertex (a parallelogram's trace shifted across the line), else empty.
 struct SlotCut {
   int plate = 0;
   Loop rectangle;
+  Loop secondFace;
 };
 
 // The two slots of a halved joint at a crossing: `mover` leaves along d (along the crossing
 // line), so its slot runs from the middle of the crossing back out of its outline behind it, and
 // the other plate's from the middle out of its outline ahead; each as wide as the other plate is
-// thick plus options.clearance, and run on options.woodMargin past the crossing's end.
+// thick plus options.clearance (at an angle: the other plate's slab, widened by half the
+// clearance on each side, where it meets this one), and run on options.woodMargin past the
+// crossing's end.
 std::vector<SlotCut> halvedSlots(const std::vector<Plate>& plates, const PlateContact& crossing, int mover,
                                  const Vec3& d, const JointCutOptions& options);
 
+// Where the slot lies, seen along the plate's axis (a slanted slot: both its faces' outlines).
 CutFootprint slotFootprint(const SlotCut& slot);
 
 // The slot to cut (its clearance is in its rectangle).

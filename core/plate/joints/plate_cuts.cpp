@@ -162,22 +162,59 @@ std::unique_ptr<Vec3> cutWallAt(const Plate& plate, const Loop& loop, size_t i) 
   return nullptr;
 }
 
+// The partner on the second face of a cut face's vertex that a slanted cut made: its own
+// vertex's partner, or where its wall (the plane of its first- and second-face edges) meets the
+// second-face edge of the plate's side the vertex lies on; none for other vertices.
+std::optional<Vec3> slantedPartner(const Plate& plate, const std::vector<std::array<Loop, 2>>& slanted,
+                                   const Vec3& point) {
+  for (const std::array<Loop, 2>& cut : slanted) {
+    const Loop& first = cut[0];
+    for (size_t k = 0; k < first.size(); ++k) {
+      if (norm(minus(first[k], point)) < tolerance::kSamePointMm) return cut[1][k];
+    }
+  }
+  const std::optional<std::pair<size_t, size_t>> side = sideHolding(plate, point);
+  if (!side) return std::nullopt;
+  const Vec3& top0 = plate.top[side->first][side->second];
+  const Vec3& top1 = plate.top[side->first][(side->second + 1) % plate.top[side->first].size()];
+  for (const std::array<Loop, 2>& cut : slanted) {
+    const Loop& first = cut[0];
+    for (size_t k = 0; k < first.size(); ++k) {
+      const size_t next = (k + 1) % first.size();
+      const Vec3 edge = minus(first[next], first[k]);
+      const double length = norm(edge);
+      if (length < tolerance::kZeroLengthMm) continue;
+      const double t = dot(minus(point, first[k]), edge) / (length * length);
+      if (t < -tolerance::kSegmentParameter || t > 1 + tolerance::kSegmentParameter) continue;
+      if (norm(minus(point, plus(first[k], scaled(edge, t)))) > tolerance::kSamePointMm) continue;
+      const Vec3 wallNormal = cross(edge, minus(cut[1][k], first[k]));
+      const double rate = dot(minus(top1, top0), wallNormal);
+      if (std::abs(rate) < tolerance::kSquareCosine * norm(wallNormal) * norm(minus(top1, top0))) continue;
+      return plus(top0, scaled(minus(top1, top0), dot(minus(first[k], top0), wallNormal) / rate));
+    }
+  }
+  return std::nullopt;
+}
+
 // The plate's solid between levels [from, to] along its thickness axis (0 = its first face), its
-// face cut by `added` and `removed`: a prism.
+// face cut by `added`, `removed` and `slanted` (whose first-face outlines are among `removed`;
+// only through the whole plate): a prism where nothing is slanted.
 Plate layerOf(const Plate& plate, const std::vector<Loop>& added, const std::vector<Loop>& removed, double from,
-              double to) {
+              double to, const std::vector<std::array<Loop, 2>>& slanted = {}) {
   const Vec3 axis = plateThicknessAxis(plate);
   Plate layer;
   layer.id = plate.id;
   layer.name = plate.name;
-  const bool prism = isPrism(plate);
+  const bool prism = isPrism(plate) && slanted.empty();
   for (const Loop& loop : cutFace(plate, added, removed)) {
     Loop bottom, top;
     for (size_t i = 0; i < loop.size(); ++i) {
       const Vec3& point = loop[i];
       bottom.push_back(plus(point, scaled(axis, from)));
       top.push_back(plus(point, scaled(axis, to)));
-      if (!prism) top.back() = secondFacePartner(plate, point, cutWallAt(plate, loop, i).get());
+      if (prism) continue;
+      const std::optional<Vec3> slantedTop = slanted.empty() ? std::nullopt : slantedPartner(plate, slanted, point);
+      top.back() = slantedTop ? *slantedTop : secondFacePartner(plate, point, cutWallAt(plate, loop, i).get());
     }
     layer.bottom.push_back(bottom);
     layer.top.push_back(top);
@@ -191,18 +228,23 @@ Plate layerOf(const Plate& plate, const std::vector<Loop>& added, const std::vec
 // layer), then the joints' solids.
 Plate cutPlate(const Plate& plate, size_t p, PlateCuts& cuts) {
   const bool housed = !cuts.housings[p][0].empty() || !cuts.housings[p][1].empty();
-  if (cuts.added[p].empty() && cuts.removed[p].empty() && !housed) {
+  const std::vector<std::array<Loop, 2>>& slanted = cuts.slanted[p];
+  if (cuts.added[p].empty() && cuts.removed[p].empty() && slanted.empty() && !housed) {
     Plate same = plate;
     same.attached = std::move(cuts.attached[p]);
     return same;
   }
+  if (housed && !slanted.empty()) {
+    throwBadInput("", "the joints would house " + geometry::plateName(plate) + " where a slanted slot runs through it");
+  }
   const std::vector<Loop>& added = cuts.added[p];
-  const std::vector<Loop>& removed = cuts.removed[p];
+  std::vector<Loop> removed = cuts.removed[p];
+  for (const std::array<Loop, 2>& cut : slanted) removed.push_back(cut[0]);
   const PlaneFrame frame(plate.bottom[0][0], plateThicknessAxis(plate));
   requireApart(plate, removed, frame);
   const double thickness = plateThickness(plate);
   const double first = cuts.housingDepth[p][0], second = thickness - cuts.housingDepth[p][1];
-  Plate jointed = layerOf(plate, added, removed, first, second);
+  Plate jointed = layerOf(plate, added, removed, first, second, slanted);
   for (int face = 0; face < 2; ++face) {
     if (cuts.housings[p][face].empty()) continue;
     std::vector<Loop> through = removed;
@@ -224,7 +266,7 @@ bool footprintsOverlap(const std::vector<Plate>& plates, const CutFootprint& a, 
 }
 
 PlateCuts::PlateCuts(size_t plateCount)
-    : added(plateCount), removed(plateCount), housings(plateCount), housingDepth(plateCount, {0.0, 0.0}),
+    : added(plateCount), removed(plateCount), slanted(plateCount), housings(plateCount), housingDepth(plateCount, {0.0, 0.0}),
       attached(plateCount) {}
 
 std::vector<Plate> cutJoints(const std::vector<Plate>& plates, const JointCutList& joints,

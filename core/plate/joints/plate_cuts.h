@@ -3,9 +3,10 @@
 // to the plates it joins, gathered per plate and then cut, and where a joint's cut lies, so that
 // the designer can drop a step whose cuts would run into those of an earlier one.
 //
-// The plates are prisms (every side square to the faces), so a cut is a 2D boolean on the face,
-// done by Clipper, and the second face is the first moved by the thickness: a jointed plate is
-// again a Plate that the contact computation, the meshes and the exports take as it is.
+// A cut is a 2D boolean on the first face, done by Clipper; each vertex of the result has its
+// partner on the second face (straight across, or where a slanted cut's wall or a mitred side
+// meets it): a jointed plate is again a Plate that the contact computation, the meshes and the
+// exports take as it is.
 #pragma once
 
 #include <array>
@@ -33,11 +34,16 @@ bool footprintsOverlap(const std::vector<Plate>& plates, const CutFootprint& a, 
 
 // What the joints do to each plate (indexed as the plates): outlines added to its faces (tenons),
 // regions cut through it (mortises, slots, notches), housings cut into it from its first [0] or
-// second [1] face as deep as housingDepth says (dovetail housings, blind mortises), and solids
+// second [1] face as deep as housingDepth says (dovetail housings, blind mortises), regions cut
+// through it with slanted walls, and solids
 // attached to it (milled pieces: Plate::attached).
 struct PlateCuts {
   explicit PlateCuts(size_t plateCount);
   std::vector<std::vector<Loop>> added, removed;
+  // Regions cut through it whose walls are slanted to its faces (halved joints of plates crossing
+  // at an angle): each its outline on the first face's plane [0] and on the second's [1], vertex
+  // for vertex.
+  std::vector<std::vector<std::array<Loop, 2>>> slanted;
   std::vector<std::array<std::vector<Loop>, 2>> housings;
   std::vector<std::array<double, 2>> housingDepth;
   std::vector<std::vector<Plate>> attached;

@@ -1,0 +1,373 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Plates crossing at any angle (issue 26; paper Fig. 16c at any angle): found as crossings of the
+// parts-graph, not overlaps, halved with notch walls slanted to the other plate's faces, cut,
+// verified on the jointed plates, and the sweep agreeing with an independent stepping check.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <string>
+
+#include "analysis/vec3.h"
+#include "desia/check.h"
+#include "desia/error.h"
+#include "desia/mesh.h"
+#include "desia/plate.h"
+#include "desia/plate_design.h"
+#include "desia/plate_design_io.h"
+#include "plate/joints/halved.h"
+#include "plate/joints/plate_cuts.h"
+#include "plate/swept_collision.h"
+#include "test_support.h"
+
+namespace desia {
+namespace {
+
+constexpr double kThickness = 18, kLength = 400, kHeight = 300, kHalf = 260;
+
+// A board by its first face's corners (counter-clockwise about its axis) and its thickness.
+Plate slab(int id, const Loop& bottom, double thickness) {
+  Plate plate;
+  plate.id = id;
+  plate.bottom = {bottom};
+  const Vec3 axis = normalized(loopNormal(bottom));
+  Loop top;
+  for (const Vec3& p : bottom) top.push_back(plus(p, scaled(axis, thickness)));
+  plate.top = {top};
+  return plate;
+}
+
+// A vertical leg through the z axis, its plane at `degrees` in plan from +x, its ends `mitre` mm
+// longer on its second face (an X of two legs: their crossing runs their whole height).
+Plate leg(int id, double degrees, double mitre = 0) {
+  const double a = degrees * M_PI / 180;
+  const Vec3 u{std::cos(a), std::sin(a), 0}, n{-std::sin(a), std::cos(a), 0};
+  auto at = [&](double s, double z, double h) {
+    return plus(plus(scaled(u, s), scaled(n, h - kThickness / 2)), Vec3{0, 0, z});
+  };
+  Plate plate;
+  plate.id = id;
+  plate.bottom = {{at(-kLength / 2, 0, 0), at(-kLength / 2, kHeight, 0), at(kLength / 2, kHeight, 0),
+                   at(kLength / 2, 0, 0)}};
+  const double end = kLength / 2 + mitre;
+  plate.top = {{at(-end, 0, kThickness), at(-end, kHeight, kThickness), at(end, kHeight, kThickness),
+                at(end, 0, kThickness)}};
+  return plate;
+}
+
+std::vector<Plate> xStand(double degrees) {
+  return {slab(1, {{-kHalf, -kHalf, kHeight}, {kHalf, -kHalf, kHeight}, {kHalf, kHalf, kHeight}, {-kHalf, kHalf, kHeight}},
+               kThickness),
+          leg(2, 0), leg(3, degrees),
+          slab(4, {{-kHalf, -kHalf, -kThickness}, {kHalf, -kHalf, -kThickness}, {kHalf, kHalf, -kThickness},
+                   {-kHalf, kHalf, -kThickness}},
+               kThickness)};
+}
+
+double meshVolume(const TriangleMesh& mesh) {
+  double volume = 0;
+  for (const auto& t : mesh.triangles)
+    volume += dot(mesh.vertices[t[0]], cross(mesh.vertices[t[1]], mesh.vertices[t[2]])) / 6.0;
+  return volume;
+}
+
+double totalVolume(const std::vector<Plate>& plates) {
+  double volume = 0;
+  for (const Plate& plate : plates) volume += meshVolume(plateMesh(plate));
+  return volume;
+}
+
+int crossingCount(const std::vector<PlateContact>& contacts) {
+  int crossings = 0;
+  for (const PlateContact& contact : contacts) crossings += contact.crossing ? 1 : 0;
+  return crossings;
+}
+
+PlateDesignResult designCut(const std::vector<Plate>& plates) {
+  PlateDesignOptions options;
+  options.realization = JointRealization::Cut;
+  return designPlateJoints(plates, computePlateContacts(plates, {}), options);
+}
+
+// The legs' notch: half the crossing (kHeight / 2 along the line) of the parallelogram where
+// their 18 mm slabs meet, 18 x 18 / sin(angle) mm^2.
+double notchVolume(double degrees) {
+  return kThickness * kThickness / std::sin(degrees * M_PI / 180) * kHeight / 2;
+}
+
+class CrossingAtAngle : public ::testing::TestWithParam<double> {};
+
+TEST_P(CrossingAtAngle, TheLegsCrossTheyAreNotAnOverlap) {
+  const std::vector<PlateContact> contacts = computePlateContacts(xStand(GetParam()), {});
+  ASSERT_EQ(crossingCount(contacts), 1);
+  for (const PlateContact& contact : contacts) {
+    if (!contact.crossing) continue;
+    EXPECT_EQ(contact.a, 1);
+    EXPECT_EQ(contact.b, 2);
+    EXPECT_NEAR(std::abs(contact.edgeDirection[2]), 1, 1e-12) << "the line where the legs' planes meet";
+    EXPECT_NEAR(contact.crossingTo - contact.crossingFrom, kHeight, 2 * tolerance::kContactMm);
+    EXPECT_TRUE(contact.aOpens[0] && contact.aOpens[1] && contact.bOpens[0] && contact.bOpens[1]);
+  }
+}
+
+TEST_P(CrossingAtAngle, EachNotchedLegLosesExactlyItsNotch) {
+  const std::vector<Plate> plates = xStand(GetParam());
+  const std::vector<PlateContact> contacts = computePlateContacts(plates, {});
+  const PlateContact* crossing = nullptr;
+  for (const PlateContact& contact : contacts) crossing = contact.crossing ? &contact : crossing;
+  ASSERT_NE(crossing, nullptr);
+  JointCutList cuts;
+  for (const SlotCut& slot : halvedSlots(plates, *crossing, 1, crossing->edgeDirection, JointCutOptions{}))
+    cuts.push_back(jointCut(slot));
+  const std::vector<Plate> notched = cutJoints(plates, cuts, JointCutOptions{});
+  for (int p : {1, 2}) {
+    EXPECT_NEAR(meshVolume(plateMesh(notched[p])), meshVolume(plateMesh(plates[p])) - notchVolume(GetParam()), 1e-3)
+        << "leg " << p;
+    // As exported and drawn: one closed solid of the same volume.
+    EXPECT_NEAR(meshVolume(plateSolidMesh(notched[p])), meshVolume(plateMesh(notched[p])), 1e-3) << "leg " << p;
+  }
+  // The notched legs touch along the notches' walls and floors, and cross no more.
+  const std::vector<PlateContact> after = computePlateContacts(notched, {});
+  EXPECT_EQ(crossingCount(after), 0);
+  int between = 0;
+  for (const PlateContact& contact : after) between += contact.a == 1 && contact.b == 2 ? 1 : 0;
+  EXPECT_GE(between, 3) << "two walls and the floors";
+}
+
+INSTANTIATE_TEST_SUITE_P(Angles, CrossingAtAngle, ::testing::Values(60.0, 75.0, 90.0));
+
+AssemblyDocument loadExample(const std::string& name) {
+  const std::string path = "examples/plate/" + name;
+  return parseAssemblyText(testing::readFileText(testing::projectPath(path)), path);
+}
+
+// The TABLE (examples/plate/table.json) with its shelf tilted about x and a divider turned in plan,
+// crossing at `degrees` (as examples/plate/make_crossing_examples.py writes them).
+std::vector<Plate> tableWithSlantedCrossing(double degrees) {
+  std::vector<Plate> plates = loadExample("table.json").plates;
+  plates.pop_back();  // the shelf
+  const double tilt = degrees >= 90 ? 0 : std::asin(std::sqrt(std::cos(degrees * M_PI / 180)));
+  const double turn = degrees >= 90 ? M_PI / 6 : tilt, half = 220;
+  const Vec3 centre{500, 250, 300};
+  const Vec3 shelfNormal{0, -std::cos(tilt), std::sin(tilt)}, shelfDepth{0, std::sin(tilt), std::cos(tilt)};
+  auto onShelf = [&](double x, double s) {
+    Vec3 p = minus(plus(centre, scaled(shelfDepth, s)), scaled(shelfNormal, kThickness / 2));
+    p[0] = x;
+    return p;
+  };
+  Plate shelf = slab(6, {onShelf(18, -half), onShelf(982, -half), onShelf(982, half), onShelf(18, half)}, kThickness);
+  const Vec3 dividerNormal{std::cos(turn), 0, std::sin(turn)}, along{-std::sin(turn), 0, std::cos(turn)};
+  auto onDivider = [&](double s, double y) {
+    Vec3 p = minus(plus(centre, scaled(along, s)), scaled(dividerNormal, kThickness / 2));
+    p[1] = y;
+    return p;
+  };
+  const Vec3 line = cross(dividerNormal, shelfNormal);
+  double back = std::abs(half / dot(line, shelfDepth) * dot(line, along)) - 5, front = -(back + 5 + 2 * kThickness);
+  if (dot(line, shelfDepth) * dot(line, along) < 0) std::swap(back, front), back = -back, front = -front;
+  const double low = std::min(onShelf(18, -half)[1], onShelf(18, half)[1]) - 2 * kThickness;
+  Plate divider = slab(7, {onDivider(front, low), onDivider(front, 700), onDivider(back, 700), onDivider(back, low)},
+                       kThickness);
+  plates.push_back(shelf);
+  plates.push_back(divider);
+  return plates;
+}
+
+class SlantedTable : public ::testing::TestWithParam<double> {};
+
+TEST_P(SlantedTable, IsDesignedWithAHalvedJointVerifiedOnItsCutPlates) {
+  const double degrees = GetParam();
+  const std::vector<Plate> plates = tableWithSlantedCrossing(degrees);
+  const std::vector<PlateContact> contacts = computePlateContacts(plates, {});
+  ASSERT_EQ(crossingCount(contacts), 1);
+  const double cosine = std::abs(dot(plateThicknessAxis(plates[5]), plateThicknessAxis(plates[6])));
+  EXPECT_NEAR(std::acos(cosine) * 180 / M_PI, degrees, 1e-9);
+  const PlateDesignResult result = designCut(plates);
+  ASSERT_EQ(result.status, DesignStatus::Success) << result.message;
+  int halved = 0;
+  for (const PlateJoint& joint : result.joints) halved += joint.type == JointType::Halved ? 1 : 0;
+  EXPECT_EQ(halved, 1);
+  // The tenons fill their mortises; the notches take the parallelogram where the slabs meet out
+  // once, over the crossing's length: 18 x 18 / sin(angle) mm^2 each half of it.
+  double crossingLength = 0;
+  for (const PlateContact& contact : contacts)
+    if (contact.crossing) crossingLength = contact.crossingTo - contact.crossingFrom;
+  EXPECT_GT(crossingLength, 400);
+  // Where a plate ends across the line at a slant, the overlap runs on by up to the slabs' width.
+  const double area = kThickness * kThickness / std::sin(degrees * M_PI / 180);
+  const double removed = totalVolume(plates) - totalVolume(result.jointedPlates), slant = 2 * kThickness / std::sin(degrees * M_PI / 180);
+  EXPECT_GT(removed, area * (crossingLength - 2 * slant));
+  EXPECT_LT(removed, area * (crossingLength + 2 * slant));
+  EXPECT_EQ(crossingCount(computePlateContacts(result.jointedPlates, {})), 0);
+  std::vector<Plate> inOrder;
+  for (int index : result.order) inOrder.push_back(result.jointedPlates[static_cast<size_t>(index)]);
+  EXPECT_EQ(verifyJointedPlates(inOrder, result.directions).failure, "");
+  // Tampered: the shelf or the divider as given (its notch filled back) no longer verifies.
+  for (size_t k = 0; k < inOrder.size(); ++k) {
+    if (inOrder[k].id != 6) continue;
+    std::vector<Plate> tampered = inOrder;
+    tampered[k] = plates[5];
+    std::string failure;
+    try {
+      failure = verifyJointedPlates(tampered, result.directions).failure;
+    } catch (const Error& e) {
+      failure = e.what();
+    }
+    EXPECT_NE(failure, "") << "the shelf without its notch";
+  }
+}
+
+TEST_P(SlantedTable, TheClearanceWidensTheNotchesAndTheFabricationPlatesCheck) {
+  PlateDesignOptions options;
+  options.realization = JointRealization::Cut;
+  options.joints.clearance = 0.2;
+  const std::vector<Plate> plates = tableWithSlantedCrossing(GetParam());
+  const PlateDesignResult result = designPlateJoints(plates, computePlateContacts(plates, {}), options);
+  ASSERT_EQ(result.status, DesignStatus::Success) << result.message;
+  EXPECT_EQ(fabricationPlatesFailure(result.jointedPlates, result.fabricationPlates, 0.2, {}), "");
+  // The shelf and the divider lose more wood to their widened notches than to the tight ones.
+  for (size_t p : {5u, 6u}) {
+    EXPECT_LT(meshVolume(plateMesh(result.fabricationPlates[p])), meshVolume(plateMesh(result.jointedPlates[p])) - 1)
+        << plates[p].id;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Angles, SlantedTable, ::testing::Values(60.0, 75.0, 90.0));
+
+TEST(PlateCrossingAtAngle, TheExampleIsTheTableAtSixtyDegrees) {
+  const AssemblyDocument table = loadExample("table_slanted_crossing.json");
+  ASSERT_EQ(table.plates.size(), 7u);
+  EXPECT_NEAR(totalVolume(table.plates), totalVolume(tableWithSlantedCrossing(60)), 1e-3);
+  const PlateDesignResult result = designCut(table.plates);
+  ASSERT_EQ(result.status, DesignStatus::Success) << result.message;
+  // Written and read back, the jointed plates have no crossing left and check on their own.
+  const AssemblyDocument written = parseJsonDocument(plateDesignToJson(table, result), "slanted table plan");
+  EXPECT_EQ(crossingCount(computePlateContacts(written.plates, {})), 0);
+  for (CheckMethod method : {CheckMethod::Graphs, CheckMethod::Inequalities}) {
+    CheckOptions options;
+    options.method = method;
+    EXPECT_EQ(checkAssembly(written, options).result.verdict, Verdict::Interlocking);
+  }
+}
+
+// The independent check: any plate's inside as a point test (between its face planes, inside the
+// section there: each side is planar, so the section is its loops' vertices interpolated from the
+// first face to the second), and a move step by step, sampling the mover against the obstacle.
+struct SolidInside {
+  explicit SolidInside(const Plate& plate)
+      : plate(plate),
+        axis(plateThicknessAxis(plate)),
+        base(plate.bottom[0][0]),
+        u(normalized(cross(axis, std::abs(axis[0]) < 0.6 ? Vec3{1, 0, 0} : Vec3{0, 1, 0}))),
+        v(cross(axis, u)),
+        thickness(dot(minus(plate.top[0][0], base), axis)) {}
+  bool contains(const Vec3& point) const {
+    const Vec3 d = minus(point, base);
+    const double height = dot(d, axis);
+    if (height <= 0 || height >= thickness) return false;
+    const double f = height / thickness, px = dot(d, u), py = dot(d, v);
+    bool inside = false;
+    for (size_t l = 0; l < plate.bottom.size(); ++l) {
+      std::vector<std::array<double, 2>> loop;
+      for (size_t i = 0; i < plate.bottom[l].size(); ++i) {
+        const Vec3 q = minus(plus(plate.bottom[l][i], scaled(minus(plate.top[l][i], plate.bottom[l][i]), f)), base);
+        loop.push_back({dot(q, u), dot(q, v)});
+      }
+      for (size_t i = 0, j = loop.size() - 1; i < loop.size(); j = i++) {
+        const auto& a = loop[i];
+        const auto& b = loop[j];
+        if ((a[1] > py) != (b[1] > py) && px < (b[0] - a[0]) * (py - a[1]) / (b[1] - a[1]) + a[0]) inside = !inside;
+      }
+    }
+    return inside;
+  }
+  const Plate& plate;
+  Vec3 axis, base, u, v;
+  double thickness;
+};
+
+bool steppedCollision(const Plate& mover, const Plate& obstacle, const Vec3& d) {
+  const SolidInside moving(mover), standing(obstacle);
+  constexpr double kStep = 2.3;  // mm, finer than the 18 mm legs
+  std::vector<Vec3> samples;
+  for (double x = -kLength / 2 + 0.37; x < kLength / 2; x += kStep) {
+    for (double y = -kLength / 2 + 0.41; y < kLength / 2; y += kStep) {
+      for (double z = 0.43; z < kHeight; z += 7 * kStep) {
+        if (moving.contains({x, y, z})) samples.push_back({x, y, z});
+      }
+    }
+  }
+  for (double t = 0.5; t < 2 * kLength; t += kStep) {
+    for (const Vec3& p : samples) {
+      if (standing.contains(plus(p, scaled(d, t)))) return true;
+    }
+  }
+  return false;
+}
+
+TEST(PlateCrossingAtAngle, TheSweepOfTheNotchedLegsAgreesWithSteppingThemThrough) {
+  const std::vector<Plate> plates = xStand(60);
+  const std::vector<PlateContact> contacts = computePlateContacts(plates, {});
+  const PlateContact* crossing = nullptr;
+  for (const PlateContact& contact : contacts) crossing = contact.crossing ? &contact : crossing;
+  ASSERT_NE(crossing, nullptr);
+  const Vec3 up{0, 0, 1};
+  JointCutList cuts;
+  for (const SlotCut& slot : halvedSlots(plates, *crossing, 1, up, JointCutOptions{})) cuts.push_back(jointCut(slot));
+  const std::vector<Plate> notched = cutJoints(plates, cuts, JointCutOptions{});
+  int collisions = 0;
+  const double s = std::sqrt(0.5);
+  for (const Vec3& d : {up, Vec3{0, 0, -1}, Vec3{1, 0, 0}, Vec3{0, 1, 0}, Vec3{-s, s, 0}, Vec3{s, 0, s}}) {
+    const bool swept = plateCollidesAlong(notched[1], notched[2], d, tolerance::kContactMm);
+    EXPECT_EQ(swept, steppedCollision(notched[1], notched[2], d)) << d[0] << "," << d[1] << "," << d[2];
+    collisions += swept ? 1 : 0;
+  }
+  EXPECT_EQ(collisions, 5) << "only straight up along the crossing line is free";
+  // The legs as given (not notched) run into each other every way.
+  EXPECT_TRUE(steppedCollision(plates[1], plates[2], up));
+}
+
+TEST(PlateCrossingAtAngle, LegsWithMitredEndsCrossToo) {
+  for (double degrees : {75.0, 90.0}) {
+    std::vector<Plate> plates = xStand(degrees);
+    plates[1] = leg(2, 0, 12);  // its ends slanted by 12 mm across its 18 mm
+    plates[2] = leg(3, degrees, -9);
+    const std::vector<PlateContact> contacts = computePlateContacts(plates, {});
+    EXPECT_EQ(crossingCount(contacts), 1) << degrees;
+    const PlateContact* crossing = nullptr;
+    for (const PlateContact& contact : contacts) crossing = contact.crossing ? &contact : crossing;
+    ASSERT_NE(crossing, nullptr);
+    JointCutList cuts;
+    for (const SlotCut& slot : halvedSlots(plates, *crossing, 2, Vec3{0, 0, 1}, JointCutOptions{}))
+      cuts.push_back(jointCut(slot));
+    const std::vector<Plate> notched = cutJoints(plates, cuts, JointCutOptions{});
+    for (int p : {1, 2}) {
+      EXPECT_NEAR(meshVolume(plateMesh(notched[p])), meshVolume(plateMesh(plates[p])) - notchVolume(degrees), 1e-3)
+          << degrees << " leg " << p;
+    }
+    EXPECT_EQ(crossingCount(computePlateContacts(notched, {})), 0);
+  }
+}
+
+TEST(PlateCrossingAtAngle, AnOverlapThatIsNoCrossingIsRefusedWithBothPlatesNamed) {
+  // Leg B stops inside leg A's slab: it pokes into A without passing through.
+  std::vector<Plate> plates = xStand(60);
+  Plate poking = leg(3, 60);
+  const Vec3 u{std::cos(M_PI / 3), std::sin(M_PI / 3), 0};
+  for (std::vector<Loop>* face : {&poking.bottom, &poking.top}) {
+    for (Vec3& p : (*face)[0]) {
+      if (dot(p, u) < 0) p = plus(p, scaled(u, kLength / 2 - 3));
+    }
+  }
+  plates[2] = poking;
+  try {
+    computePlateContacts(plates, {});
+    ADD_FAILURE() << "an overlap that is no crossing was accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("plate 2 and plate 3 overlap"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace desia

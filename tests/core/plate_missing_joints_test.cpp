@@ -1,0 +1,61 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// When 'auto' falls back to the paper's plan (nothing cut), the plates and edges that got no made
+// joint are named with how they meet (issue 26, item 2).
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "desia/plate.h"
+#include "desia/plate_design.h"
+#include "plate/joints/missing_joints.h"
+#include "test_support.h"
+
+namespace desia {
+namespace {
+
+AssemblyDocument loadPlateExample(const std::string& name) {
+  const std::string path = "examples/plate/" + name;
+  return parseAssemblyText(testing::readFileText(testing::projectPath(path)), path);
+}
+
+TEST(PlateMissingJoints, TheIcosahedronsPlanNamesTheEdgesNoMadeJointFits) {
+  const AssemblyDocument icosahedron = loadPlateExample("icosahedron.json");
+  const std::vector<PlateContact> contacts = computePlateContacts(icosahedron.plates, {});
+  PlateDesignOptions options;
+  options.realization = JointRealization::Auto;
+  const PlateDesignResult result = designPlateJoints(icosahedron.plates, contacts, options);
+  ASSERT_EQ(result.status, DesignStatus::Success) << result.message;
+  ASSERT_EQ(result.realization, JointRealization::Planned) << "no laser-cut or milled plan exists";
+  const std::vector<std::string> missing = jointsNothingMakes(icosahedron.plates, contacts, result.joints, {});
+  ASSERT_FALSE(missing.empty());
+  EXPECT_LT(missing.size(), result.joints.size()) << "tenons across mitres fit some of the plan's joints";
+  // Every face of the icosahedron meets its neighbours edge to edge, their planes 41.8 degrees apart
+  // (a dihedral angle of 138.2 degrees).
+  for (const std::string& said : missing) {
+    EXPECT_NE(said.find(": edge to edge, their planes 41.8 degrees apart, plate "), std::string::npos) << said;
+  }
+  EXPECT_NE(result.message.find("no joint that can be cut or milled for " + std::to_string(missing.size()) +
+                                " of the plan's " + std::to_string(result.joints.size()) + " joints: " + missing[0]),
+            std::string::npos)
+      << result.message;
+}
+
+TEST(PlateMissingJoints, ACutPlanHasAMadeJointForEachOfItsJoints) {
+  // The slanted TABLE's cut plan: mortise-and-tenon joints and a halved joint at 60 degrees, each
+  // one a family makes; its planned plan has joints no made one fits (a side leaving across the top).
+  const AssemblyDocument table = loadPlateExample("table_slanted_crossing.json");
+  const std::vector<PlateContact> contacts = computePlateContacts(table.plates, {});
+  PlateDesignOptions options;
+  options.realization = JointRealization::Cut;
+  const PlateDesignResult cut = designPlateJoints(table.plates, contacts, options);
+  ASSERT_EQ(cut.status, DesignStatus::Success) << cut.message;
+  EXPECT_EQ(jointsNothingMakesSentence(table.plates, contacts, cut.joints, {}), "");
+  options.realization = JointRealization::Planned;
+  const PlateDesignResult planned = designPlateJoints(table.plates, contacts, options);
+  ASSERT_EQ(planned.status, DesignStatus::Success) << planned.message;
+  for (const std::string& said : jointsNothingMakes(table.plates, contacts, planned.joints, {}))
+    EXPECT_EQ(said.find("edge to edge"), std::string::npos) << "the TABLE's plates meet edge on face: " << said;
+}
+
+}  // namespace
+}  // namespace desia
