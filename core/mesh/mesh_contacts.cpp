@@ -127,9 +127,10 @@ ClipperLib::Paths flatTriangles(const Face& face, const std::vector<Triangle>& t
   return paths;
 }
 
-// The overlap of two faces on one plane, in mm² (triangles of one face never overlap each other,
+// The overlap of two faces on one plane, in mm², and the diagonal of its bounding box (triangles of one face never overlap each other,
 // so the non-zero rule unites them whichever way each is turned in the frame).
-double overlapArea(const Face& f, const Face& g, const std::vector<PartGeometry>& geometry, double scale) {
+double overlapArea(const Face& f, const Face& g, const std::vector<PartGeometry>& geometry, double scale,
+                   double* extent) {
   const FlatFrame frame(f.point, f.normal, scale);
   ClipperLib::Clipper clipper;
   clipper.AddPaths(flatTriangles(f, geometry[static_cast<size_t>(f.part)].triangles, frame), ClipperLib::ptSubject, true);
@@ -137,7 +138,17 @@ double overlapArea(const Face& f, const Face& g, const std::vector<PartGeometry>
   ClipperLib::Paths overlap;
   clipper.Execute(ClipperLib::ctIntersection, overlap, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
   double area = 0;
-  for (const ClipperLib::Path& path : overlap) area += ClipperLib::Area(path);
+  ClipperLib::cInt lo[2] = {0, 0}, hi[2] = {0, 0};
+  bool first = true;
+  for (const ClipperLib::Path& path : overlap) {
+    area += ClipperLib::Area(path);
+    for (const ClipperLib::IntPoint& p : path) {
+      lo[0] = first ? p.X : std::min(lo[0], p.X), hi[0] = first ? p.X : std::max(hi[0], p.X);
+      lo[1] = first ? p.Y : std::min(lo[1], p.Y), hi[1] = first ? p.Y : std::max(hi[1], p.Y);
+      first = false;
+    }
+  }
+  *extent = std::hypot(static_cast<double>(hi[0] - lo[0]), static_cast<double>(hi[1] - lo[1])) / scale;
   return std::abs(area) / (scale * scale);
 }
 
@@ -154,13 +165,14 @@ bool onOneAnother(const Face& f, const Face& g, const std::vector<PartGeometry>&
 }
 
 // Normals meant to be one (a rotated or rescaled model, floats of a binary STL) are made one: each
-// takes the first earlier normal within tolerance::kParallelSine of it or of its opposite.
+// takes the first earlier normal within tolerance::kDrawnDirectionRad of it or of its opposite (a
+// file written to 6 decimals turns a face by up to some 1e-5 rad).
 void unifyNormals(std::vector<Contact>* contacts) {
   std::vector<Vec3> seen;
   for (Contact& contact : *contacts) {
     bool matched = false;
     for (const Vec3& s : seen) {
-      if (norm(cross(s, contact.normal)) <= tolerance::kParallelSine) {
+      if (norm(cross(s, contact.normal)) <= tolerance::kDrawnDirectionRad) {
         contact.normal = dot(s, contact.normal) > 0 ? s : negated(s);
         matched = true;
         break;
@@ -195,8 +207,9 @@ std::vector<Contact> meshContacts(const std::vector<MeshPart>& parts, const std:
         if (!f.box.overlaps(geometry[b].box, tolerance)) continue;
         for (const Face& g : faces[b]) {
           if (!onOneAnother(f, g, geometry, tolerance)) continue;
-          const double area = overlapArea(f, g, geometry, scale);
-          if (area <= emptyArea) continue;
+          double extent = 0;
+          const double area = overlapArea(f, g, geometry, scale, &extent);
+          if (area <= std::max(emptyArea, tolerance * extent)) continue;  // none, or a sliver along an edge
           contacts.push_back({static_cast<int>(a), static_cast<int>(b), normalized(minus(f.normal, g.normal)), area});
         }
       }

@@ -8,6 +8,9 @@
 // in that overlap b's depth reaches a's (within the tolerance: a contact face against the
 // direction of motion blocks it). Depths are linear on the overlap, a convex polygon, so its
 // corners decide. The triangle swept along d is the prism tested; box trees prune the pairs.
+// Triangles within tolerance::kDrawnDirectionRad of parallel to d slide along d: drawn to a few
+// decimals, a face the motion slides along is tilted that much, and its sliver of shadow would
+// read as a wall.
 #include <algorithm>
 #include <cmath>
 
@@ -71,6 +74,17 @@ double areaOf(const Polygon2& polygon) {
   return twice / 2;
 }
 
+// The diagonal of the polygon's bounding box: a region of area at most tolerance × this is a sliver
+// no wider than the tolerance (two faces meeting along an edge, seen along a direction in their
+// contact plane up to rounding), not an overlap.
+double extentOf(const Polygon2& polygon) {
+  double lo[2] = {polygon[0][0], polygon[0][1]}, hi[2] = {polygon[0][0], polygon[0][1]};
+  for (const Point2& p : polygon) {
+    for (int i = 0; i < 2; ++i) lo[i] = std::min(lo[i], p[static_cast<size_t>(i)]), hi[i] = std::max(hi[i], p[static_cast<size_t>(i)]);
+  }
+  return std::hypot(hi[0] - lo[0], hi[1] - lo[1]);
+}
+
 // How far `front`'s part can travel along d before `back`'s part stops it: infinity when the
 // shadows do not overlap with positive area or b lies behind a (by more than the tolerance);
 // else the least depth gap over the overlap, at least 0 (touching already).
@@ -81,14 +95,25 @@ double pairTravel(const Triangle& front, const Triangle& back, const Shadow& sha
   for (const Vec3& p : front.p) a.push_back(shadow.flat(p));
   for (const Vec3& p : back.p) b.push_back(shadow.flat(p));
   const Polygon2 overlap = clipByTriangle(counterClockwise(a), counterClockwise(b));
-  if (overlap.size() < 3 || areaOf(overlap) <= emptyArea) return kClear;
-  double least = kClear, most = -kClear;
-  for (const Point2& q : overlap) {
-    const double gap = shadow.depth(back, q) - shadow.depth(front, q);
-    least = std::min(least, gap);
-    most = std::max(most, gap);
+  if (overlap.size() < 3 || areaOf(overlap) <= std::max(emptyArea, tolerance * extentOf(overlap))) return kClear;
+  // Keep the part of the overlap where b is not behind a (gap >= -tolerance): the gap is linear,
+  // so that part is the overlap clipped by a line. Where it is a sliver, b is behind a except
+  // along an edge where both solids thin out to nothing (their silhouettes), which blocks nothing.
+  std::vector<double> gaps;
+  for (const Point2& q : overlap) gaps.push_back(shadow.depth(back, q) - shadow.depth(front, q) + tolerance);
+  Polygon2 ahead;
+  std::vector<double> aheadGaps;
+  for (size_t k = 0; k < overlap.size(); ++k) {
+    const size_t m = (k + 1) % overlap.size();
+    if (gaps[k] >= 0) ahead.push_back(overlap[k]), aheadGaps.push_back(gaps[k]);
+    if ((gaps[k] >= 0) != (gaps[m] >= 0)) {
+      const double s = gaps[k] / (gaps[k] - gaps[m]);
+      ahead.push_back({overlap[k][0] + (overlap[m][0] - overlap[k][0]) * s, overlap[k][1] + (overlap[m][1] - overlap[k][1]) * s});
+      aheadGaps.push_back(0);
+    }
   }
-  if (most < -tolerance) return kClear;
+  if (ahead.size() < 3 || areaOf(ahead) <= std::max(emptyArea, tolerance * extentOf(ahead))) return kClear;
+  const double least = *std::min_element(aheadGaps.begin(), aheadGaps.end()) - tolerance;
   return std::max(least, 0.0);
 }
 
@@ -99,13 +124,13 @@ double partTravel(const PartGeometry& mover, const PartGeometry& obstacle, const
   double travel = std::numeric_limits<double>::infinity();
   if (!sweptBoxMeets(mover.box, d, obstacle.box, tolerance)) return travel;
   for (const Triangle& front : mover.triangles) {
-    if (dot(front.normal, d) <= tolerance::kDirection) continue;
+    if (dot(front.normal, d) <= tolerance::kDrawnDirectionRad) continue;
     const Box box = front.box();
     if (!sweptBoxMeets(box, d, obstacle.box, tolerance)) continue;
     obstacle.tree.query([&](const Box& other) { return sweptBoxMeets(box, d, other, tolerance); },
                         [&](int index) {
                           const Triangle& back = obstacle.triangles[static_cast<size_t>(index)];
-                          if (dot(back.normal, d) < -tolerance::kDirection) {
+                          if (dot(back.normal, d) < -tolerance::kDrawnDirectionRad) {
                             travel = std::min(travel, pairTravel(front, back, shadow, tolerance, emptyArea));
                           }
                           return travel >= stopBelow;

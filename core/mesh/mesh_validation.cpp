@@ -76,16 +76,17 @@ void requireClosedOrientedPart(MeshPart& part, double emptyVolume) {
     int forward = 0;
     for (size_t m = k; m < end; ++m) forward += edges[m].from == low ? 1 : 0;
     const int backward = static_cast<int>(end - k) - forward;
-    const std::string edge = "the edge from vertex " + std::to_string(low + 1) + " " +
-                             pointText(mesh.vertices[static_cast<size_t>(low)]) + " to vertex " + std::to_string(high + 1) +
-                             " " + pointText(mesh.vertices[static_cast<size_t>(high)]);
+    const auto edge = [&] {
+      return "the edge from vertex " + std::to_string(low + 1) + " " + pointText(mesh.vertices[static_cast<size_t>(low)]) +
+             " to vertex " + std::to_string(high + 1) + " " + pointText(mesh.vertices[static_cast<size_t>(high)]);
+    };
     if ((end - k) % 2 == 1) {
-      throwBadInput(partLabel(part), "is not closed: " + edge + " belongs to " + std::to_string(end - k) +
+      throwBadInput(partLabel(part), "is not closed: " + edge() + " belongs to " + std::to_string(end - k) +
                                          " triangle" + (end - k == 1 ? "" : "s") + " (triangle " +
                                          std::to_string(edges[k].triangle + 1) + ")");
     }
     if (forward != backward) {
-      throwBadInput(partLabel(part), "is not consistently oriented: " + edge + " is used " + std::to_string(forward) +
+      throwBadInput(partLabel(part), "is not consistently oriented: " + edge() + " is used " + std::to_string(forward) +
                                          " times in one direction and " + std::to_string(backward) +
                                          " in the other (triangle " + std::to_string(edges[k].triangle + 1) +
                                          " is flipped, or a neighbour is)");
