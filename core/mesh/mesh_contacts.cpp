@@ -152,9 +152,20 @@ double overlapArea(const Face& f, const Face& g, const std::vector<PartGeometry>
   return std::abs(area) / (scale * scale);
 }
 
+// Faces whose boxes share only a thin tube (thinner than half the tolerance across two axes) meet at
+// most along an edge: their overlap would be a sliver, no contact (the faces of parts that touch
+// along an edge or at a corner, most candidate pairs of a grid of parts).
+bool meetOnlyAlongALine(const Box& a, const Box& b, double tolerance) {
+  int thin = 0;
+  for (int i = 0; i < 3; ++i) {
+    if (std::min(a.hi[i], b.hi[i]) - std::max(a.lo[i], b.lo[i]) <= tolerance / 2) ++thin;
+  }
+  return thin >= 2;
+}
+
 bool onOneAnother(const Face& f, const Face& g, const std::vector<PartGeometry>& geometry, double tolerance) {
   if (dot(f.normal, g.normal) > -(1 - tolerance::kFacingCosine)) return false;
-  if (!f.box.overlaps(g.box, tolerance)) return false;
+  if (!f.box.overlaps(g.box, tolerance) || meetOnlyAlongALine(f.box, g.box, tolerance)) return false;
   const double offset = dot(f.normal, f.point);
   for (int t : g.triangles) {
     for (const Vec3& p : geometry[static_cast<size_t>(g.part)].triangles[static_cast<size_t>(t)].p) {
