@@ -121,7 +121,7 @@ double pointTriangleDistance(const Vec3& p, const Triangle& t) {
 bool pointInside(const Vec3& p, const PartGeometry& part) {
   // An irrational-looking direction: no face of a drawn model is parallel to it, and a ray along
   // it meets an edge or a vertex only by accident of measure zero.
-  const Vec3 ray = normalized(Vec3{0.5773502691896258, 0.4082482904638631, 0.7071067811865476 + 0.0137});
+  const Vec3 ray = normalized(Vec3{0.5773502691896258, 0.4082482904638631, 0.7071067811865476});
   int crossings = 0;
   for (const Triangle& t : part.triangles) {
     // Möller–Trumbore: p + s·ray = a + u·e1 + v·e2 with s > 0, u, v >= 0, u + v <= 1.
