@@ -8,7 +8,7 @@
 #include <cmath>
 #include <set>
 
-#include "analysis/part_motion.h"
+#include "analysis/vec3.h"
 #include "desia/blocking_graph.h"
 #include "desia/tolerances.h"
 #include "mesh/mesh_geometry.h"
@@ -25,6 +25,18 @@ struct Slide {
   Vec3 d;
   double travel;  // mm it can move along d
 };
+
+// Can `part` move along d by its contacts? As isPartFreeAlong, but a motion within
+// tolerance::kDrawnDirectionRad of a contact's plane slides along it: contact normals of drawn
+// meshes, and the base directions crossed from them, are off by that much (the sweep that follows
+// is what decides).
+bool freeAlong(const Assembly& local, int part, const Vec3& d) {
+  for (const Contact& contact : local.contacts) {
+    if (contact.a == part && dot(d, contact.normal) > tolerance::kDrawnDirectionRad) return false;
+    if (contact.b == part && dot(d, contact.normal) < -tolerance::kDrawnDirectionRad) return false;
+  }
+  return true;
+}
 
 class Planner {
  public:
@@ -124,7 +136,7 @@ class Planner {
       obstacles[static_cast<size_t>(part)] = false;
       for (const BaseDirection& base : computeBaseDirections(local)) {
         for (const Vec3& d : {base.vector, negated(base.vector)}) {
-          if (!isPartFreeAlong(local, nullptr, part, d)) continue;
+          if (!freeAlong(local, part, d)) continue;
           const double travel = travelDistance(meshes_, geometry_, {&geometry_[static_cast<size_t>(part)]}, obstacles, d,
                                                meshes_.tolerance, nullptr);
           if (std::isinf(travel)) {
@@ -216,8 +228,8 @@ class Planner {
         const Contact& contact = meshes_.assembly.contacts[static_cast<size_t>(c)];
         const double along = dot(d, contact.normal);
         int j = -1;
-        if (contact.a == i && along > tolerance::kDirection) j = contact.b;
-        if (contact.b == i && along < -tolerance::kDirection) j = contact.a;
+        if (contact.a == i && along > tolerance::kDrawnDirectionRad) j = contact.b;
+        if (contact.b == i && along < -tolerance::kDrawnDirectionRad) j = contact.a;
         if (j < 0 || !present[static_cast<size_t>(j)] || in[static_cast<size_t>(j)]) continue;
         in[static_cast<size_t>(j)] = true;
         stack.push_back(j);

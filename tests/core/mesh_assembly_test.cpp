@@ -260,6 +260,20 @@ TEST(MeshAssembly, PlateDesignsAndFrameResultsAsObjGetTheirOwnVerdictAndAPlan) {
   }
 }
 
+// Plate results with their joints cut or milled into the plates (the golden corpus's designs of the
+// examples): interlocking with the designer's key, and a plan through tenons, dovetails and mitre
+// slides, some along diagonals.
+TEST(MeshAssembly, JointedPlateResultsAsObjGetTheirOwnVerdictKeyAndAPlan) {
+  for (const char* name : {"bench_2_bays-cut-s1", "table-cut-s1", "table_divider-cut-s1", "cube-milled-s1",
+                           "mitred_box-milled-s1", "bookshelf-milled-s1", "cabinet-milled-s1",
+                           "chair_repaired-milled-s1"}) {
+    const AssemblyDocument document = readDocument(std::string("tests/golden/cases/plate/") + name + "/result.json");
+    const MeshAssembly meshes = meshesOf({{"result.obj", exported(document, "obj")}});
+    expectSameAsOwnKind(document, meshes, name, std::string(name) == "table-cut-s1" || std::string(name) == "cube-milled-s1");
+    EXPECT_EQ(checkMeshAssembly(meshes, bothTests()).result.verdict, Verdict::Interlocking) << name;
+  }
+}
+
 TEST(MeshAssembly, RotatedAndInOtherUnitsTheVerdictKeyAndPlanStay) {
   std::mt19937 random(29);
   const struct {
@@ -267,7 +281,9 @@ TEST(MeshAssembly, RotatedAndInOtherUnitsTheVerdictKeyAndPlanStay) {
     double mm;
   } units[] = {{LengthUnit::Millimetre, 1}, {LengthUnit::Metre, 1000}, {LengthUnit::Inch, 25.4}};
   for (const char* path : {"examples/voxel/Cube_4x4x4_K9.puz", "examples/voxel/Cube_Hollow_4x4x4_K7.puz",
-                           "examples/voxel/Cube_4x4x4_origin.puz", "examples/frame/frame_cube_result.json"}) {
+                           "examples/voxel/Cube_4x4x4_origin.puz", "examples/frame/frame_cube_result.json",
+                           "tests/golden/cases/plate/cube-milled-s1/result.json",
+                           "tests/golden/cases/plate/table-cut-s1/result.json"}) {
     const AssemblyDocument document = readDocument(path);
     const std::string obj = exported(document, "obj");
     for (const auto& unit : units) {
