@@ -122,7 +122,8 @@ double pointTriangleDistance(const Vec3& p, const Triangle& t);
 // that no axis-aligned face contains; p must lie farther than the tolerance from the surface.
 bool pointInside(const Vec3& p, const PartGeometry& part);
 
-// Throws BadInput for parts overlapping by more than `tolerance` (named, with a point where they cross).
+// Throws BadInput for a part that intersects itself or parts overlapping by more than `tolerance`
+// (named, with a point where they cross).
 void requireNoOverlaps(const std::vector<MeshPart>& parts, const std::vector<PartGeometry>& geometry,
                        double tolerance);
 

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Parts that overlap: two triangles of different parts that cross each other by more than the
+// A part that intersects itself (two of its triangles that share no vertex cross), and parts that
+// overlap: two triangles of different parts that cross each other by more than the
 // tolerance (each pierces the other's plane beyond it, and the two pieces of the crossing line
 // overlap along it by more than it), or a part wholly inside another (no crossing; a vertex
 // farther than the tolerance from the other's surface is inside it). Faces lying on one another,
@@ -96,10 +97,67 @@ bool insideWithoutCrossing(const PartGeometry& inner, const PartGeometry& outer,
   return false;
 }
 
+bool sharesAVertex(const std::array<int, 3>& a, const std::array<int, 3>& b) {
+  for (int u : a) {
+    for (int v : b) {
+      if (u == v) return true;
+    }
+  }
+  return false;
+}
+
+// The shell of each triangle: triangles joined through shared vertices (union-find, iterative).
+std::vector<int> shellOfTriangles(const TriangleMesh& mesh) {
+  std::vector<int> parent(mesh.vertices.size());
+  for (size_t v = 0; v < parent.size(); ++v) parent[v] = static_cast<int>(v);
+  const auto root = [&](int v) {
+    while (parent[static_cast<size_t>(v)] != v) {
+      parent[static_cast<size_t>(v)] = parent[static_cast<size_t>(parent[static_cast<size_t>(v)])];
+      v = parent[static_cast<size_t>(v)];
+    }
+    return v;
+  };
+  for (const auto& t : mesh.triangles) {
+    parent[static_cast<size_t>(root(t[1]))] = root(t[0]);
+    parent[static_cast<size_t>(root(t[2]))] = root(t[0]);
+  }
+  std::vector<int> shell;
+  shell.reserve(mesh.triangles.size());
+  for (const auto& t : mesh.triangles) shell.push_back(root(t[0]));
+  return shell;
+}
+
+// A point where two triangles of one shell of the part that share no vertex cross by more than the
+// tolerance. Shells of one part may cross each other: the part is their union (desia's own frame
+// exports write a beam's body and its joint voxels as overlapping closed boxes).
+bool selfCrossing(const TriangleMesh& mesh, const PartGeometry& part, double tolerance, Vec3* where) {
+  const std::vector<int> shell = shellOfTriangles(mesh);
+  bool found = false;
+  for (size_t t = 0; t < part.triangles.size() && !found; ++t) {
+    const Box box = part.triangles[t].box();
+    part.tree.query([&](const Box& other) { return box.overlaps(other, -tolerance); },
+                    [&](int index) {
+                      if (static_cast<size_t>(index) <= t || shell[t] != shell[static_cast<size_t>(index)] ||
+                          sharesAVertex(mesh.triangles[t], mesh.triangles[static_cast<size_t>(index)])) {
+                        return true;
+                      }
+                      found = trianglesCross(part.triangles[t], part.triangles[static_cast<size_t>(index)], tolerance, where);
+                      return !found;
+                    });
+  }
+  return found;
+}
+
 }  // namespace
 
 void requireNoOverlaps(const std::vector<MeshPart>& parts, const std::vector<PartGeometry>& geometry,
                        double tolerance) {
+  for (size_t a = 0; a < parts.size(); ++a) {
+    Vec3 where{};
+    if (selfCrossing(parts[a].mesh, geometry[a], tolerance, &where)) {
+      throwBadInput(partLabel(parts[a]), "intersects itself: two of its triangles cross near " + pointText(where));
+    }
+  }
   for (size_t a = 0; a < parts.size(); ++a) {
     for (size_t b = a + 1; b < parts.size(); ++b) {
       if (!geometry[a].box.overlaps(geometry[b].box, -tolerance)) continue;

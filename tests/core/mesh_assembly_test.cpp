@@ -368,6 +368,14 @@ TEST(MeshAssembly, BadPartsAreNamedWithWhatIsWrong) {
   EXPECT_NE(errorOf({{"overlap.obj", cubeObj("a", 0, 0, 0, 10) + cubeObj("b", 5, 5, 5, 10, 9)}})
                 .find("part 1 ('a'): overlaps part 2"),
             std::string::npos);
+  // A box whose top corner is pulled through its bottom: closed and oriented, but it crosses itself.
+  std::string pulled = cubeObj("pulled", 0, 0, 0, 10);
+  pulled.replace(pulled.find("v 10 10 10"), 10, "v 5 5 -5");
+  EXPECT_NE(errorOf({{"self.obj", pulled}}).find("part 1 ('pulled'): intersects itself"), std::string::npos);
+  // Two boxes that overlap in one object are one part, their union (as a slicer takes them).
+  std::string twoBoxes = cubeObj("twice", 0, 0, 0, 10) + cubeObj("x", 5, 5, 5, 10, 9);
+  twoBoxes.erase(twoBoxes.find("o x\n"), 4);
+  EXPECT_EQ(errorOf({{"union.obj", twoBoxes}}), "");
   EXPECT_NE(errorOf({{"nested.obj", cubeObj("outer", 0, 0, 0, 10) + cubeObj("inner", 3, 3, 3, 2, 9)}})
                 .find("part 2 ('inner'): lies inside part 1"),
             std::string::npos);
