@@ -155,6 +155,7 @@ AssemblyDocument meshReportDocument(const MeshAssembly& meshes) {
 
 std::string meshCheckReportToJson(const MeshAssembly& meshes, const CheckReport& report, int indent) {
   nlohmann::json root = nlohmann::json::parse(checkReportToJson(meshReportDocument(meshes), report, -1));
+  root["kind"] = "mesh";
   size_t triangles = 0;
   for (const MeshPart& part : meshes.parts) triangles += part.mesh.triangles.size();
   root["mesh"] = {{"tolerance", meshes.tolerance},
@@ -179,7 +180,11 @@ std::string meshCheckReportToText(const MeshAssembly& meshes, const CheckReport&
   std::ostringstream out;
   out << "meshes: " << meshes.parts.size() << " parts, " << triangles << " triangles, " << meshes.faceCount
       << " planar faces, " << meshes.assembly.contacts.size() << " contacts (tolerance " << meshes.tolerance << " mm)\n";
-  return out.str() + checkReportToText(meshReportDocument(meshes), report);
+  std::string text = checkReportToText(meshReportDocument(meshes), report);
+  const std::string contactsKind = " (contacts)\n";  // the first line names the parts' kind
+  const size_t kind = text.find(contactsKind);
+  if (kind != std::string::npos && kind < text.find('\n')) text.replace(kind, contactsKind.size(), " (mesh)\n");
+  return out.str() + text;
 }
 
 }  // namespace desia

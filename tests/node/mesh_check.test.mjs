@@ -25,11 +25,13 @@ test('an exported voxel puzzle read back as one OBJ: interlocking, key 1, every 
   const text = runCli(['check', obj]);
   assert.equal(text.status, 0, text.stderr);
   assert.match(text.stdout, /^meshes: 9 parts, \d+ triangles, \d+ planar faces, 60 contacts/m);
+  assert.match(text.stdout, /^parts: 9 \(mesh\)$/m);
   assert.match(text.stdout, /^key: part 1, free along -z$/m);
   assert.match(text.stdout, /^ {2}part 3: \+z 1 mm, -x 1$/m);
   const json = runCli(['check', obj, '--json', '--method', 'both']);
   assert.equal(json.status, 0, json.stderr);
   const report = JSON.parse(json.stdout);
+  assert.equal(report.kind, 'mesh');
   assert.equal(report.verdict, 'interlocking');
   assert.equal(report.key, 1);
   assert.equal(report.mesh.contacts, 60);
@@ -48,6 +50,20 @@ test('one binary STL per part, in metres: the same verdict', () => {
   assert.equal(report.parts, 9);
   assert.equal(report.key, 1);
   assert.ok(Math.abs(report.mesh.diagonal - Math.sqrt(48)) < 1e-6);
+});
+
+test('--tolerance: faces 0.01 mm apart touch with 0.02, not with the default', () => {
+  const gap = path.join(tmp, 'gap.obj');
+  const box = (name, z, first) => [`o ${name}`,
+    ...[0, 1, 2, 3, 4, 5, 6, 7].map((k) => `v ${10 * (k & 1)} ${10 * ((k >> 1) & 1)} ${z + 10 * ((k >> 2) & 1)}`),
+    ...[[0, 2, 3, 1], [4, 5, 7, 6], [0, 1, 5, 4], [2, 6, 7, 3], [0, 4, 6, 2], [1, 3, 7, 5]]
+      .map((f) => `f ${f.map((v) => v + first).join(' ')}`)].join('\n');
+  fs.writeFileSync(gap, `${box('low', 0, 1)}\n${box('high', 10.01, 9)}\n`);
+  let report = JSON.parse(runCli(['check', gap, '--json']).stdout);
+  assert.equal(report.mesh.contacts, 0);
+  report = JSON.parse(runCli(['check', gap, '--json', '--tolerance', '0.02']).stdout);
+  assert.equal(report.mesh.contacts, 1);
+  assert.equal(report.mesh.tolerance, 0.02);
 });
 
 test('bad input exits 2 and names the file and line, or the part', () => {

@@ -35,10 +35,11 @@ std::vector<MeshPart> readMeshParts(const std::vector<MeshFile>& files, LengthUn
 // contacts document (the parts and computed contacts) named after the first file.
 AssemblyDocument meshReportDocument(const MeshAssembly& meshes);
 
-// checkReportToJson of a mesh assembly, with what only meshes have: "mesh" (tolerance, faces,
+// checkReportToJson of a mesh assembly with "kind": "mesh", and what only meshes have: "mesh" (tolerance, faces,
 // contacts, triangles) and each step's direction as a label and a unit vector (directions of
 // drawn models need not lie on axes).
 std::string meshCheckReportToJson(const MeshAssembly& meshes, const CheckReport& report, int indent = 2);
+// checkReportToText after a "meshes:" line (parts, triangles, planar faces, contacts, tolerance).
 std::string meshCheckReportToText(const MeshAssembly& meshes, const CheckReport& report);
 
 }  // namespace desia
