@@ -2,6 +2,7 @@
 // A mesh assembly built and checked: parts validated, contacts computed, the check of every kind
 // with the plan that sweeps the real shapes.
 #include <cmath>
+#include <memory>
 
 #include "desia/error.h"
 #include "desia/tolerances.h"
@@ -29,16 +30,17 @@ MeshAssembly buildMeshAssembly(std::vector<MeshPart> parts, const MeshAssemblyOp
       options.contactTolerance > 0 ? options.contactTolerance : tolerance::kMeshContactShare * meshes.diagonal;
   const double emptyArea = tolerance::kMeshEmptyAreaShare * meshes.diagonal * meshes.diagonal;
   for (MeshPart& part : parts) mesh::requireClosedOrientedPart(part, emptyArea * meshes.tolerance);
-  const std::vector<mesh::PartGeometry> geometry = mesh::partGeometries(parts);
-  mesh::requireNoOverlaps(parts, geometry, meshes.tolerance);
-  meshes.assembly.contacts = mesh::meshContacts(parts, geometry, meshes.tolerance, emptyArea, &meshes.faceCount);
+  auto geometry = std::make_shared<const std::vector<mesh::PartGeometry>>(mesh::partGeometries(parts));
+  mesh::requireNoOverlaps(parts, *geometry, meshes.tolerance);
+  meshes.assembly.contacts = mesh::meshContacts(parts, *geometry, meshes.tolerance, emptyArea, &meshes.faceCount);
+  meshes.geometry = std::move(geometry);
   for (const MeshPart& part : parts) meshes.assembly.parts.push_back({part.id, part.name});
   meshes.parts = std::move(parts);
   return meshes;
 }
 
 CheckReport checkMeshAssembly(const MeshAssembly& meshes, const CheckOptions& options) {
-  const std::vector<mesh::PartGeometry> geometry = mesh::partGeometries(meshes.parts);
+  const std::vector<mesh::PartGeometry>& geometry = mesh::geometryOf(meshes);
   CheckReport report = checkContacts(meshes.assembly, options,
                                      [&](const Assembly&) { return mesh::planWithGeometry(meshes, geometry); });
   ShapeRemovalCheck check;

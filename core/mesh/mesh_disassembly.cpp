@@ -274,7 +274,7 @@ DisassemblyPlan planWithGeometry(const MeshAssembly& meshes, const std::vector<P
 namespace desia {
 
 DisassemblyPlan planMeshDisassembly(const MeshAssembly& meshes) {
-  return mesh::planWithGeometry(meshes, mesh::partGeometries(meshes.parts));
+  return mesh::planWithGeometry(meshes, mesh::geometryOf(meshes));
 }
 
 }  // namespace desia

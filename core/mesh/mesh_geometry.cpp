@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numeric>
 
+#include "desia/error.h"
 #include "mesh/mesh_geometry.h"
 
 namespace desia::mesh {
@@ -92,6 +93,13 @@ std::vector<PartGeometry> partGeometries(const std::vector<MeshPart>& parts) {
   geometry.reserve(parts.size());
   for (const MeshPart& part : parts) geometry.emplace_back(part.mesh);
   return geometry;
+}
+
+const std::vector<PartGeometry>& geometryOf(const MeshAssembly& meshes) {
+  if (!meshes.geometry || meshes.geometry->size() != meshes.parts.size()) {
+    throw Error(ErrorCode::Internal, "a mesh assembly not made by buildMeshAssembly");
+  }
+  return *meshes.geometry;
 }
 
 double pointTriangleDistance(const Vec3& p, const Triangle& t) {

@@ -114,6 +114,9 @@ struct PartGeometry {
 
 std::vector<PartGeometry> partGeometries(const std::vector<MeshPart>& parts);
 
+// The geometry buildMeshAssembly computed; throws Internal for an assembly not built by it.
+const std::vector<PartGeometry>& geometryOf(const MeshAssembly& meshes);
+
 // Closest distance from p to the triangle (Section 5.1.5 of Ericson's Real-Time Collision
 // Detection, by regions of the triangle's plane).
 double pointTriangleDistance(const Vec3& p, const Triangle& t);

@@ -182,7 +182,7 @@ namespace desia {
 
 std::string meshSweepObstacle(const MeshAssembly& meshes, const std::vector<int>& moving,
                               const std::vector<bool>& present, const Vec3& d) {
-  return mesh::sweepObstacle(meshes, mesh::partGeometries(meshes.parts), moving, present, d);
+  return mesh::sweepObstacle(meshes, mesh::geometryOf(meshes), moving, present, d);
 }
 
 }  // namespace desia

@@ -6,6 +6,7 @@
 // parts in place (Section 3.3). Reading the files is io's (desia/mesh_input.h).
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,10 @@
 #include "desia/triangle_mesh.h"
 
 namespace desia {
+
+namespace mesh {
+struct PartGeometry;  // a part's triangles, their boxes and box tree (core/mesh/mesh_geometry.h)
+}
 
 struct MeshPart {
   int id = 0;           // the id the user sees (1, 2, ... in reading order)
@@ -35,6 +40,8 @@ struct MeshAssembly {
   double diagonal = 0;          // mm, of the bounding box of every part
   Assembly assembly;            // parts (same order) and the contacts computed from the faces
   int faceCount = 0;            // planar faces found (coplanar connected triangles), all parts
+  // Each part's triangles, boxes and box tree, computed once when built and shared by copies.
+  std::shared_ptr<const std::vector<mesh::PartGeometry>> geometry;
 };
 
 // Validates the parts (BadInput naming the part and an open edge, a flipped triangle, or the two
