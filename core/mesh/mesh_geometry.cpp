@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <sstream>
 
 #include "desia/error.h"
 #include "mesh/mesh_geometry.h"
@@ -93,6 +94,12 @@ std::vector<PartGeometry> partGeometries(const std::vector<MeshPart>& parts) {
   geometry.reserve(parts.size());
   for (const MeshPart& part : parts) geometry.emplace_back(part.mesh);
   return geometry;
+}
+
+std::string pointText(const Vec3& p) {
+  std::ostringstream out;
+  out << '(' << p[0] << ", " << p[1] << ", " << p[2] << ')';
+  return out.str();
 }
 
 const std::vector<PartGeometry>& geometryOf(const MeshAssembly& meshes) {

@@ -136,6 +136,9 @@ void requireNoOverlaps(const std::vector<MeshPart>& parts, const std::vector<Par
 std::vector<Contact> meshContacts(const std::vector<MeshPart>& parts, const std::vector<PartGeometry>& geometry,
                                   double tolerance, double emptyArea, int* faceCount);
 
+// "(x, y, z)" for messages.
+std::string pointText(const Vec3& p);
+
 // "FILE: part ID ('NAME')", how messages name a part.
 std::string partLabel(const MeshPart& part);
 

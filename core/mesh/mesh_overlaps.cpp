@@ -57,12 +57,6 @@ bool trianglesCross(const Triangle& a, const Triangle& b, double tolerance, Vec3
   return true;
 }
 
-std::string pointText(const Vec3& p) {
-  std::ostringstream out;
-  out << '(' << p[0] << ", " << p[1] << ", " << p[2] << ')';
-  return out.str();
-}
-
 bool crossingPoint(const PartGeometry& a, const PartGeometry& b, double tolerance, Vec3* where) {
   bool found = false;
   for (const Triangle& t : a.triangles) {

@@ -13,12 +13,6 @@
 namespace desia::mesh {
 namespace {
 
-std::string pointText(const Vec3& p) {
-  std::ostringstream out;
-  out << '(' << p[0] << ", " << p[1] << ", " << p[2] << ')';
-  return out.str();
-}
-
 struct DirectedEdge {
   int from, to, triangle;
   bool operator<(const DirectedEdge& other) const {
