@@ -104,7 +104,7 @@ class Planner {
     std::vector<bool> inside(meshes_.parts.size(), false);
     for (int p : together) inside[static_cast<size_t>(p)] = true;
     Assembly local;
-    local.parts = meshes_.assembly.parts;
+    // No parts: base directions and freedom read the contacts alone (a copy per try was quadratic).
     const auto& contacts = meshes_.assembly.contacts;
     auto keep = [&](int c) {
       const Contact& contact = contacts[static_cast<size_t>(c)];
