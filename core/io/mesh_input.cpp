@@ -163,8 +163,11 @@ std::string meshCheckReportToJson(const MeshAssembly& meshes, const CheckReport&
                   {"planarFaces", meshes.faceCount},
                   {"contacts", meshes.assembly.contacts.size()},
                   {"triangles", triangles}};
-  if (report.disassembly && root["disassembly"].is_object() && root["disassembly"].contains("steps")) {
-    auto& steps = root["disassembly"]["steps"];
+  for (const char* section : {"disassembly", "disassemblyFailure"}) {
+    if (!report.disassembly || !root.contains(section) || !root[section].is_object() || !root[section].contains("steps")) {
+      continue;
+    }
+    auto& steps = root[section]["steps"];
     for (size_t k = 0; k < steps.size() && k < report.disassembly->moves.size(); ++k) {
       const Vec3& d = report.disassembly->moves[k].direction;
       steps[k]["dir"] = directionLabel(d);

@@ -336,6 +336,30 @@ TEST(MeshAssembly, PartsFromSeveralStlFilesAndFromOneAsciiStlOfSeveralSolids) {
   expectSameAsOwnKind(document, fromSolids, "one ASCII STL, one solid per part", false);
 }
 
+// Two cages, each around a voxel of its own: no part can move alone, but either cage leaves the other
+// with its prisoner (a group: what the first cage's prisoner drags along +x). Then each pair is
+// stuck, as in voxels.
+TEST(MeshAssembly, GroupsMoveTogetherWhereNoSinglePartCan) {
+  const std::vector<std::string> outer{"1 1 1 3 3 3", "1 1 1 3 3 3", "1 1 1 3 3 3"};
+  const VoxelGrid grid = testing::gridFromLayers({outer, {"1 1 1 3 3 3", "1 2 1 3 4 3", "1 1 1 3 3 3"}, outer});
+  const AssemblyDocument document = documentFromVoxels(grid);
+  const MeshAssembly meshes = meshesOf({{"cages.obj", exported(document, "obj")}});
+  const CheckReport report = checkMeshAssembly(meshes, bothTests());
+  EXPECT_EQ(report.result.verdict, checkDocument(document, bothTests()).result.verdict);
+  ASSERT_TRUE(report.disassembly);
+  const DisassemblyPlan& plan = *report.disassembly;
+  EXPECT_FALSE(plan.complete);
+  EXPECT_FALSE(plan.singlePartPaths);
+  ASSERT_EQ(plan.moves.size(), 1u);
+  EXPECT_EQ(plan.moves[0].parts, (std::vector<int>{2, 3}));
+  EXPECT_EQ(plan.moves[0].direction, (Vec3{1, 0, 0}));
+  EXPECT_TRUE(plan.moves[0].out);
+  EXPECT_EQ(plan.unseparated, (std::vector<std::vector<int>>{{0, 1}, {2, 3}}));
+  const std::string json = meshCheckReportToJson(meshes, report, -1);
+  EXPECT_NE(json.find(R"("dir":"+x")"), std::string::npos) << json;
+  EXPECT_NE(json.find(R"("kind":"mesh")"), std::string::npos);
+}
+
 // --- Bad input -------------------------------------------------------------------------------------
 
 std::string cubeObj(const std::string& name, double x, double y, double z, double size, int firstVertex = 1,
