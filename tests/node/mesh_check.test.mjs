@@ -82,6 +82,11 @@ test('bad input exits 2 and names the file and line, or the part', () => {
   result = runCli(['check', open]);
   assert.equal(result.status, 2);
   assert.match(result.stderr, /open\.obj: part 1 \('lid'\): is not closed: the edge from vertex 2/);
+  const threeMf = path.join(tmp, 'box.3mf');
+  fs.writeFileSync(threeMf, 'PK');
+  result = runCli(['check', threeMf]);
+  assert.equal(result.status, 2);
+  assert.match(result.stderr, /box\.3mf: 3MF is not read yet/);
   result = runCli(['check', open, '--unit', 'furlong']);
   assert.equal(result.status, 2);
   assert.match(result.stderr, /unknown unit 'furlong'/);

@@ -23,7 +23,8 @@ struct MeshFile {
   std::string bytes;
 };
 
-// True for a path ending in .obj or .stl (any case): `desia check` reads it as a mesh assembly.
+// True for a path ending in .obj, .stl or .3mf (any case): `desia check` reads it as a mesh
+// assembly (3MF: refused as Unsupported until its reader exists).
 bool isMeshAssemblyPath(const std::string& path);
 
 // Every part of every file, ids 1, 2, ... in file order, coordinates in millimetres. OBJ: one part
