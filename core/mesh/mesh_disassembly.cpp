@@ -5,6 +5,7 @@
 // (G(d): i -> j when j blocks i), swept together past the others. A group moved out becomes a
 // sub-assembly of its own; the plan is done when every sub-assembly is one part.
 #include <algorithm>
+#include <deque>
 #include <cmath>
 #include <set>
 
@@ -19,6 +20,17 @@ namespace {
 // A part with more vertex levels than this along a slide (a curved or finely meshed part) stops
 // only where the slide ends: trying every level would cost a sweep each.
 constexpr size_t kMaxLevels = 64;
+
+// Bent paths: at most this many translations (the last one out), and at most this many sweeps
+// tried for one slide (work, not time: the same plan everywhere).
+constexpr size_t kMostPathMoves = 3;
+constexpr int kMostBentSweeps = 600;
+
+// A point on a bent path: the part's offset from its place and the moves that took it there.
+struct Waypoint {
+  Vec3 offset;
+  std::vector<Move> path;
+};
 
 struct Slide {
   int part;
@@ -154,38 +166,67 @@ class Planner {
     return false;
   }
 
-  // A part its contacts let move along d1 but that something stops after `travel`: moved by one of
-  // the distances at which its vertices come level with another part's (along d1, up to `travel`),
-  // and from there out along another base direction, if the sweep lets it (paper Section 3.3: a
-  // path of translations; two suffice for most puzzles, BurrTools' level 2).
+  // A part its contacts let move along d1 but that something stops after `travel`: a bent path of
+  // at most kMostPathMoves translations (paper Section 3.3), breadth-first so that the fewest moves
+  // win. From each waypoint, every base direction (either sign) but the last move's line: out, if
+  // the sweep lets the part leave; else, while moves are left, to each distance where its vertex
+  // levels meet another part's (or where it touches). At most kMostBentSweeps sweeps per slide.
   bool bentRemoval(const Slide& slide, const std::vector<BaseDirection>& bases, const std::vector<bool>& present,
                    Removal* removal) const {
     std::vector<bool> obstacles = present;
     obstacles[static_cast<size_t>(slide.part)] = false;
-    for (double distance : stopDistances(slide, present)) {
-      TriangleMesh moved = meshes_.parts[static_cast<size_t>(slide.part)].mesh;
-      for (Vec3& v : moved.vertices) v = plus(v, scaled(slide.d, distance));
+    const MeshPart& part = meshes_.parts[static_cast<size_t>(slide.part)];
+    std::deque<Waypoint> queue;
+    std::vector<Vec3> seen;
+    const auto visit = [&](const Waypoint& from, const Vec3& d, double distance) {
+      const Vec3 offset = plus(from.offset, scaled(d, distance));
+      for (const Vec3& other : seen) {
+        if (norm(minus(other, offset)) <= meshes_.tolerance) return;
+      }
+      seen.push_back(offset);
+      Waypoint next{offset, from.path};
+      next.path.push_back(Move{d, 0, distance});
+      queue.push_back(std::move(next));
+    };
+    const Waypoint start{{0, 0, 0}, {}};
+    for (double distance : stopDistances(slide.part, start.offset, slide.d, slide.travel, present)) {
+      visit(start, slide.d, distance);
+    }
+    int sweeps = 0;
+    while (!queue.empty() && sweeps < kMostBentSweeps) {
+      const Waypoint at = std::move(queue.front());
+      queue.pop_front();
+      TriangleMesh moved = part.mesh;
+      for (Vec3& v : moved.vertices) v = plus(v, at.offset);
       const PartGeometry movedGeometry(moved);
+      const bool lastMove = at.path.size() + 1 >= kMostPathMoves;
       for (const BaseDirection& base : bases) {
         for (const Vec3& d : {base.vector, negated(base.vector)}) {
-          if (std::abs(dot(d, slide.d)) >= 1 - tolerance::kDirection) continue;
-          const double travel = travelDistance(meshes_, geometry_, {&movedGeometry}, obstacles, d, meshes_.tolerance, nullptr);
-          if (!std::isinf(travel)) continue;
-          Move first{slide.d, 0, distance};
-          *removal = Removal{slide.part, {first, Move{d, 1}}};
-          return true;
+          if (std::abs(dot(d, at.path.back().direction)) >= 1 - tolerance::kDirection) continue;
+          ++sweeps;
+          const double travel = travelDistance(meshes_, geometry_, {&movedGeometry}, obstacles, d,
+                                               lastMove ? meshes_.tolerance : 0, nullptr);
+          if (std::isinf(travel)) {
+            *removal = Removal{slide.part, at.path};
+            removal->path.push_back(Move{d, 1});
+            return true;
+          }
+          if (lastMove || travel <= meshes_.tolerance) continue;
+          for (double distance : stopDistances(slide.part, at.offset, d, travel, present)) visit(at, d, distance);
         }
       }
     }
     return false;
   }
 
-  // Where the part may stop along its slide: each distance (at most the travel) at which one of its
-  // vertex levels along d meets a vertex level of a part present, the travel itself included.
-  std::vector<double> stopDistances(const Slide& slide, const std::vector<bool>& present) const {
-    const auto levels = [&](size_t part) {
+  // Where the part, moved by `offset`, may stop on its way along d: each distance (below the
+  // travel) at which one of its vertex levels along d meets a vertex level of a part present, and
+  // the travel itself.
+  std::vector<double> stopDistances(int mover, const Vec3& offset, const Vec3& d, double travel,
+                                    const std::vector<bool>& present) const {
+    const auto levels = [&](size_t part, double shift) {
       std::vector<double> values;
-      for (const Vec3& v : meshes_.parts[part].mesh.vertices) values.push_back(dot(v, slide.d));
+      for (const Vec3& v : meshes_.parts[part].mesh.vertices) values.push_back(dot(v, d) + shift);
       std::sort(values.begin(), values.end());
       std::vector<double> distinct;
       for (double value : values) {
@@ -193,17 +234,17 @@ class Planner {
       }
       return distinct;
     };
-    const std::vector<double> own = levels(static_cast<size_t>(slide.part));
-    std::vector<double> distances{slide.travel};
+    const std::vector<double> own = levels(static_cast<size_t>(mover), dot(offset, d));
+    std::vector<double> distances{travel};
     if (own.size() > kMaxLevels) return distances;
     for (size_t other = 0; other < present.size(); ++other) {
-      if (!present[other] || static_cast<int>(other) == slide.part) continue;
-      const std::vector<double> theirs = levels(other);
+      if (!present[other] || static_cast<int>(other) == mover) continue;
+      const std::vector<double> theirs = levels(other, 0);
       if (theirs.size() > kMaxLevels) continue;
       for (double mine : own) {
         for (double level : theirs) {
           const double distance = level - mine;
-          if (distance > meshes_.tolerance && distance < slide.travel - meshes_.tolerance) distances.push_back(distance);
+          if (distance > meshes_.tolerance && distance < travel - meshes_.tolerance) distances.push_back(distance);
         }
       }
     }

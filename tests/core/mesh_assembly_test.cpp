@@ -336,6 +336,23 @@ TEST(MeshAssembly, PartsFromSeveralStlFilesAndFromOneAsciiStlOfSeveralSolids) {
   expectSameAsOwnKind(document, fromSolids, "one ASCII STL, one solid per part", false);
 }
 
+// Part 1 in an S-shaped channel through part 2: out only by three moves, +x 1, +y 1, then +x.
+TEST(MeshAssembly, AThreeMovePathOutOfAnSChannel) {
+  const AssemblyDocument document = documentFromVoxels(testing::gridFromLayers(testing::sChannelLayers()));
+  const MeshAssembly meshes = meshesOf({{"channel.obj", exported(document, "obj")}});
+  const CheckReport report = checkMeshAssembly(meshes, bothTests());
+  ASSERT_TRUE(report.disassembly && report.disassembly->complete);
+  const Removal& first = report.disassembly->removals.front();
+  EXPECT_EQ(first.part, 0);
+  ASSERT_EQ(first.path.size(), 3u);
+  EXPECT_EQ(first.path[0].direction, (Vec3{1, 0, 0}));
+  EXPECT_NEAR(first.path[0].length, 1, 1e-9);
+  EXPECT_EQ(first.path[1].direction, (Vec3{0, 1, 0}));
+  EXPECT_NEAR(first.path[1].length, 1, 1e-9);
+  EXPECT_EQ(first.path[2].direction, (Vec3{1, 0, 0}));
+  EXPECT_EQ(replayFailure(meshes, *report.disassembly), "");
+}
+
 // Two cages, each around a voxel of its own: no part can move alone, but either cage leaves the other
 // with its prisoner (a group: what the first cage's prisoner drags along +x). Then each pair is
 // stuck, as in voxels.

@@ -55,8 +55,9 @@ MeshAssembly buildMeshAssembly(std::vector<MeshPart> parts, const MeshAssemblyOp
 std::string meshSweepObstacle(const MeshAssembly& meshes, const std::vector<int>& moving,
                               const std::vector<bool>& present, const Vec3& d);
 
-// A disassembly plan by translations to infinity, single parts first and groups of parts where no
-// single part can leave, every step checked by meshSweepObstacle. Groups: the parts a part drags
+// A disassembly plan by translations, single parts first (straight out, else by a bent path of up
+// to three moves) and groups of parts where no single part can leave, every step checked by the
+// sweep (meshSweepObstacle, from the part's place on its path). Groups: the parts a part drags
 // along d in the blocking graph of the parts still together. The plan's `moves` list every step
 // (`out`), its `removals` the order in which parts come free.
 DisassemblyPlan planMeshDisassembly(const MeshAssembly& meshes);
