@@ -47,7 +47,9 @@ CheckReport checkMeshAssembly(const MeshAssembly& meshes, const CheckOptions& op
   check.checked = "contacts from the meshes' planar faces (tolerance " + std::to_string(meshes.tolerance) +
                   " mm); each step of the plan swept past the parts in place, triangle against triangle";
   if (report.disassembly && !report.disassembly->complete) {
-    check.failure = "no translation separates the parts left: the plan is stuck";
+    check.failure = report.disassembly->searchLimitReached
+                        ? "the plan stopped at its limit (" + report.disassembly->limit + "): the parts left are not proven stuck"
+                        : "no translation separates the parts left: the plan is stuck";
   }
   report.shapeRemoval = check;
   return report;

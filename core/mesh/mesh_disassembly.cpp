@@ -8,6 +8,7 @@
 #include <deque>
 #include <cmath>
 #include <set>
+#include <string>
 
 #include "analysis/vec3.h"
 #include "desia/blocking_graph.h"
@@ -25,6 +26,10 @@ constexpr size_t kMaxLevels = 64;
 // tried for one slide (work, not time: the same plan everywhere).
 constexpr size_t kMostPathMoves = 3;
 constexpr int kMostBentSweeps = 600;
+// Bent-path sweeps for the whole plan: a large assembly stuck with many parts that slide a little
+// would otherwise try every slide of every part after every removal. Past it the plan stops as
+// "not proven" (searchLimitReached), like the voxel planner at its work limit.
+constexpr int kBentSweepBudget = 20000;
 
 // A point on a bent path: the part's offset from its place and the moves that took it there.
 struct Waypoint {
@@ -99,6 +104,10 @@ class Planner {
     }
     std::sort(plan.stuck.begin(), plan.stuck.end());
     plan.complete = plan.stuck.empty();
+    if (!plan.complete && bentBudgetSpent_) {
+      plan.searchLimitReached = true;
+      plan.limit = std::to_string(kBentSweepBudget) + " sweeps of bent paths";
+    }
     if (grouped) {
       plan.singlePartPaths = false;
       plan.movesFollowRemovals = false;
@@ -194,6 +203,10 @@ class Planner {
     }
     int sweeps = 0;
     while (!queue.empty() && sweeps < kMostBentSweeps) {
+      if (bentSweepsLeft_ <= 0) {
+        bentBudgetSpent_ = true;
+        return false;
+      }
       const Waypoint at = std::move(queue.front());
       queue.pop_front();
       TriangleMesh moved = part.mesh;
@@ -204,6 +217,7 @@ class Planner {
         for (const Vec3& d : {base.vector, negated(base.vector)}) {
           if (std::abs(dot(d, at.path.back().direction)) >= 1 - tolerance::kDirection) continue;
           ++sweeps;
+          --bentSweepsLeft_;
           const double travel = travelDistance(meshes_, geometry_, {&movedGeometry}, obstacles, d,
                                                lastMove ? meshes_.tolerance : 0, nullptr);
           if (std::isinf(travel)) {
@@ -302,6 +316,8 @@ class Planner {
   const MeshAssembly& meshes_;
   const std::vector<PartGeometry>& geometry_;
   std::vector<std::vector<int>> contactsOfPart_;
+  mutable int bentSweepsLeft_ = kBentSweepBudget;
+  mutable bool bentBudgetSpent_ = false;
 };
 
 }  // namespace
