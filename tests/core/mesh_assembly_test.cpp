@@ -448,6 +448,11 @@ TEST(MeshAssembly, BadPartsAreNamedWithWhatIsWrong) {
   EXPECT_NE(errorOf({{"short.obj", "o a\nv 0 0 0\nv 1 0\n"}}).find("short.obj:3"), std::string::npos);
   EXPECT_NE(errorOf({{"cut.stl", "solid a\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\n"}}).find("cut.stl:"),
             std::string::npos);
+  // An ASCII STL of several solids: a fault in the second names the file's own line (13).
+  const std::string facet = "facet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\n";
+  EXPECT_NE(errorOf({{"two.stl", "solid a\n" + facet + "endsolid a\nsolid b\nfacet normal 0 0 1\nouter loop\nvertex 0 0\n"}})
+                .find("two.stl:13: vertex has 2 coordinates"),
+            std::string::npos);
   // Touching within the tolerance is a contact, not an overlap: 1e-6 of a 20 mm model.
   EXPECT_EQ(errorOf({{"close.obj", cubeObj("a", 0, 0, 0, 10) + cubeObj("b", 0, 0, 10 - 1e-6, 10, 9)}}), "");
   EXPECT_THROW(parseLengthUnit("furlong"), Error);
