@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Disassembly of a mesh assembly by translations (paper Section 3.3): in each sub-assembly, a single
-// part that its contacts let move along some direction and that the sweep lets leave; where none
-// can, a group of parts: all that one part drags along d in the blocking graph of the sub-assembly
+// part that its contacts let move along some direction and that the sweep lets leave, straight or
+// by a bent path of up to three moves; where none can, a group of parts: all that one part drags along d in the blocking graph of the sub-assembly
 // (G(d): i -> j when j blocks i), swept together past the others. A group moved out becomes a
 // sub-assembly of its own; the plan is done when every sub-assembly is one part.
 #include <algorithm>
-#include <deque>
 #include <cmath>
+#include <deque>
 #include <set>
 #include <string>
 
