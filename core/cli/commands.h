@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "desia/contact_check.h"
+
 // desia voxelize --input MESH.obj|.stl [--resolution R] --output SHAPE.puz|.json
 int runVoxelizeCommand(const std::vector<std::string>& args);
 
@@ -22,3 +24,8 @@ int runPlatesFromMeshCommand(const std::vector<std::string>& args);
 
 // desia export FILE --format stl|stl-ascii|obj|xmpuzzle [--part N] [--voxel-size S] --output OUT
 int runExportCommand(const std::vector<std::string>& args);
+
+// desia check FILE.obj|.stl [more files] [--unit mm|m|inch] [--tolerance MM]: the check of a mesh
+// assembly (main.cpp parses the shared check options).
+int runMeshCheck(const std::vector<std::string>& files, const desia::CheckOptions& options, bool json,
+                 const std::string& unit, double contactTolerance);

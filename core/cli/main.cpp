@@ -2,6 +2,7 @@
 // The `desia` command line: a thin shell over the core API. Exit codes: 0 success (interlocking),
 // 1 a negative verdict, 2 bad input or usage.
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <sstream>
 #include <string>
@@ -12,6 +13,7 @@
 #include "desia/check.h"
 #include "desia/document_check.h"
 #include "desia/error.h"
+#include "desia/mesh_input.h"
 #include "desia/version.h"
 
 namespace {
@@ -21,6 +23,7 @@ constexpr int kExitBadInput = 2;
 
 const char* kUsage =
     "usage: desia check FILE [--method dbg|lp|both] [--json] [--graphs]\n"
+    "       desia check MESH.obj|.stl [MORE.obj|.stl ...] [--unit mm|m|inch] [--tolerance MM] [--method ...] [--json]\n"
     "       desia voxelize --input MESH.obj|.stl [--resolution R] --output SHAPE.puz|.json\n"
     "       desia design voxel --input SHAPE.puz|.json --parts N --output OUT.puz|.json\n"
     "             [--seed S] [--candidates M] [--rank compactness|x|y|z|-x|-y|-z] [--mode desia|recursive]\n"
@@ -46,6 +49,10 @@ const char* kUsage =
     "        --method both  run both and compare\n"
     "        --json         print one JSON object instead of text\n"
     "        --graphs       list every base direction and DBG (by default only up to 128)\n"
+    "        OBJ/STL files are a mesh assembly (docs/meshes.md): one part per OBJ object or group, per\n"
+    "        ASCII STL solid or per binary STL; parts closed and not overlapping; contacts where faces\n"
+    "        lie on each other; every step of the plan swept. --unit: of the files (default mm);\n"
+    "        --tolerance MM: faces this close touch (default 1e-5 of the model's diagonal)\n"
     "voxelize fills every voxel whose centre lies inside the closed mesh (OBJ or STL) and writes\n"
     "        the one-part shape; R voxels along the longest side (default 32, at most 1024);\n"
     "        exit 0 when written\n"
@@ -89,30 +96,48 @@ struct UsageError {
 };
 
 int runCheck(const std::vector<std::string>& args) {
-  std::string file, method = "dbg";
+  std::vector<std::string> files;
+  std::string method = "dbg", unit = "mm";
+  double contactTolerance = 0;
   bool json = false, allGraphs = false;
+  auto value = [&](size_t& i, const char* what) {
+    if (i + 1 == args.size()) throw UsageError{args[i] + " needs a value (" + what + ")"};
+    return args[++i];
+  };
   for (size_t i = 0; i < args.size(); ++i) {
     if (args[i] == "--json") {
       json = true;
     } else if (args[i] == "--graphs") {
       allGraphs = true;
     } else if (args[i] == "--method") {
-      if (i + 1 == args.size()) throw UsageError{"--method needs a value (dbg, lp or both)"};
-      method = args[++i];
+      method = value(i, "dbg, lp or both");
     } else if (args[i].rfind("--method=", 0) == 0) {
       method = args[i].substr(9);
+    } else if (args[i] == "--unit") {
+      unit = value(i, "mm, m or inch");
+    } else if (args[i] == "--tolerance") {
+      const std::string text = value(i, "a length in mm");
+      char* end = nullptr;
+      contactTolerance = std::strtod(text.c_str(), &end);
+      if (end == text.c_str() || *end != '\0' || !(contactTolerance > 0)) {
+        throw UsageError{"--tolerance " + text + ": expected a length in mm above 0"};
+      }
     } else if (!args[i].empty() && args[i][0] == '-') {
       throw UsageError{"unknown option " + args[i]};
-    } else if (file.empty()) {
-      file = args[i];
     } else {
-      throw UsageError{"check takes one FILE, got also " + args[i]};
+      files.push_back(args[i]);
     }
   }
-  if (file.empty()) throw UsageError{"check needs a FILE"};
+  if (files.empty()) throw UsageError{"check needs a FILE"};
   desia::CheckOptions options;
   options.method = desia::parseCheckMethod(method);
   options.allGraphs = allGraphs;
+  bool meshes = false;
+  for (const std::string& file : files) meshes = meshes || desia::isMeshAssemblyPath(file);
+  if (meshes) return runMeshCheck(files, options, json, unit, contactTolerance);
+  if (files.size() > 1) throw UsageError{"check takes one FILE (or several .obj/.stl files), got also " + files[1]};
+  if (unit != "mm" || contactTolerance > 0) throw UsageError{"--unit and --tolerance apply to .obj/.stl files only"};
+  const std::string& file = files.front();
   const desia::AssemblyDocument document = desia::parseAssemblyText(desia::cli::readInputFile(file), file);
   const desia::CheckReport report = desia::checkDocument(document, options);
   std::cout << (json ? desia::checkReportToJson(document, report) + "\n" : desia::checkReportToText(document, report));

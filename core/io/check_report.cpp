@@ -102,7 +102,10 @@ json disassemblyJson(const Assembly& assembly, const DisassemblyPlan& plan) {
   for (const Removal& removal : plan.removals) {
     order.push_back(assembly.parts[removal.part].id);
     json path = json::array();
-    for (const Move& move : removal.path) path.push_back({{"dir", directionLabel(move.direction)}, {"steps", move.steps}});
+    for (const Move& move : removal.path) {
+      path.push_back({{"dir", directionLabel(move.direction)}, {"steps", move.steps}});
+      if (move.length > 0) path.back()["length"] = move.length;  // a mesh plan's finite move, mm
+    }
     paths.push_back(path);
   }
   json result = {{"order", order}, {"paths", plan.singlePartPaths ? paths : json(nullptr)}};
@@ -128,11 +131,18 @@ json disassemblyFailureJson(const Assembly& assembly, const DisassemblyPlan& pla
   return failure;
 }
 
+std::string lengthText(double mm) {
+  std::ostringstream out;
+  out << mm;
+  return out.str();
+}
+
 std::string pathText(const std::vector<Move>& path) {
   std::string text;
   for (const Move& move : path) {
     if (!text.empty()) text += ", ";
-    text += directionLabel(move.direction) + " " + std::to_string(move.steps);
+    text += directionLabel(move.direction) + " " +
+            (move.length > 0 ? lengthText(move.length) + " mm" : std::to_string(move.steps));
   }
   return text;
 }

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The core's layers (docs/architecture.md), checked on every #include: a file may include headers
 // of its own layer and of the layers below it, never above. model (core/model, core/graph) <
-// analysis, search < the kinds (core/voxel, core/plate, core/frame; frames are built on voxels) <
+// analysis, search < the kinds (core/voxel, core/plate, core/frame, core/mesh; frames are built on voxels) <
 // io < cli. A layer's private headers ("voxel/x.h") are for its own folder, except the few listed
 // below that a layer offers the ones above it. A new public header gets its layer here.
 import assert from 'node:assert/strict';
@@ -11,9 +11,9 @@ import { test } from 'node:test';
 
 import { root } from './support.mjs';
 
-const RANK = { model: 0, analysis: 1, search: 1, voxel: 2, plate: 2, frame: 2, io: 3, cli: 4 };
+const RANK = { model: 0, analysis: 1, search: 1, voxel: 2, plate: 2, frame: 2, mesh: 2, io: 3, cli: 4 };
 const FOLDER_LAYER = { model: 'model', graph: 'model', analysis: 'analysis', search: 'search', voxel: 'voxel',
-  plate: 'plate', frame: 'frame', io: 'io', cli: 'cli' };
+  plate: 'plate', frame: 'frame', mesh: 'mesh', io: 'io', cli: 'cli' };
 
 // Public headers (core/include/desia) by the layer that implements them.
 const HEADER_LAYER = {
@@ -24,10 +24,11 @@ const HEADER_LAYER = {
   'voxel_grid.h': 'voxel', 'voxel_design.h': 'voxel', 'voxel_disassembly.h': 'voxel', 'voxel_surface.h': 'voxel',
   'voxelize.h': 'voxel',
   'plate.h': 'plate', 'plate_design.h': 'plate', 'plate_repair.h': 'plate', 'mitred_plates.h': 'plate',
-  'frame.h': 'frame', 'frame_design.h': 'frame',
+  'frame.h': 'frame', 'frame_design.h': 'frame', 'mesh_assembly.h': 'mesh',
   'document.h': 'io', 'check.h': 'io', 'document_check.h': 'io', 'mesh.h': 'io', 'puz_format.h': 'io',
   'design_io.h': 'io', 'plate_design_io.h': 'io', 'frame_design_io.h': 'io', 'frame_format.h': 'io',
   'export.h': 'io', 'export_formats.h': 'io', 'cut_sheets.h': 'io', 'design_session.h': 'io',
+  'mesh_input.h': 'io',
 };
 
 // Private headers a layer offers the layers above it: vectors for every layer, the part-motion

@@ -14,6 +14,7 @@ namespace desia {
 struct Move {
   Vec3 direction{0, 0, 0};
   int steps = 0;
+  double length = 0;  // mesh plans: a finite move's length in mm (steps = 0); 0 otherwise
 };
 
 struct Removal {

@@ -54,6 +54,11 @@ constexpr double kZeroLengthMm = 1e-9;
 // doubles on lengths of millimetres to metres): coinciding corners, boxes that only touch.
 constexpr double kRoundingMm = 1e-12;
 
+// Fraction of a mesh assembly's bounding-box diagonal: the default contact tolerance of
+// MeshAssemblyOptions (faces this close lie on one another; parts may overlap this much). Binary
+// STL stores floats (6e-8 relative), and a model rotated or rescaled keeps its faces this flat.
+constexpr double kMeshContactShare = 1e-5;
+
 // --- Areas, mm² --------------------------------------------------------------------------------
 
 // Clipper's rounding along a long outline (its 1e-4 mm grid): a difference of outlines this
@@ -79,6 +84,11 @@ constexpr double kNoTwiceAreaMm2 = 1e-12;
 // A triangle of a written mesh whose twice-area is at most this has no area: robust mesh tools
 // call it degenerate (the tests count areas up to 1e-9 mm²).
 constexpr double kDegenerateTriangleTwiceAreaMm2 = 2e-9;
+
+// Fraction of the squared bounding-box diagonal of a mesh assembly: a contact region or the
+// overlap of two triangles' shadows smaller than this has no area (rounding where faces only meet
+// along an edge, or a face seen edge-on).
+constexpr double kMeshEmptyAreaShare = 1e-10;
 
 // --- Directions: unit vectors (cosine, sine, component) and angles ------------------------------
 

@@ -1,0 +1,199 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Mesh assemblies read from OBJ and STL files, and their check reports.
+#include "desia/mesh_input.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cstdint>
+#include <sstream>
+
+#include "desia/blocking_graph.h"
+#include "desia/error.h"
+#include "desia/mesh.h"
+
+namespace desia {
+namespace {
+
+std::string lowered(std::string text) {
+  for (char& c : text) c = (c >= 'A' && c <= 'Z') ? static_cast<char>(c - 'A' + 'a') : c;
+  return text;
+}
+
+bool endsWith(const std::string& text, const std::string& suffix) {
+  return text.size() >= suffix.size() && lowered(text.substr(text.size() - suffix.size())) == suffix;
+}
+
+bool isBinaryStl(const std::string& bytes) {
+  if (bytes.size() < 84) return false;
+  const auto* p = reinterpret_cast<const unsigned char*>(bytes.data()) + 80;
+  const uint64_t count = p[0] | (p[1] << 8) | (p[2] << 16) | (static_cast<uint64_t>(p[3]) << 24);
+  return 84 + 50 * count == bytes.size();
+}
+
+// The triangles of one group, with their own vertices (numbered in order of first use).
+TriangleMesh subMesh(const TriangleMesh& mesh, const std::vector<size_t>& triangles) {
+  TriangleMesh part;
+  std::vector<int> renumbered(mesh.vertices.size(), -1);
+  for (size_t t : triangles) {
+    std::array<int, 3> corners{};
+    for (int k = 0; k < 3; ++k) {
+      const int v = mesh.triangles[t][static_cast<size_t>(k)];
+      if (renumbered[static_cast<size_t>(v)] < 0) {
+        renumbered[static_cast<size_t>(v)] = static_cast<int>(part.vertices.size());
+        part.vertices.push_back(mesh.vertices[static_cast<size_t>(v)]);
+      }
+      corners[static_cast<size_t>(k)] = renumbered[static_cast<size_t>(v)];
+    }
+    part.triangles.push_back(corners);
+  }
+  return part;
+}
+
+void addObjParts(const MeshFile& file, std::vector<MeshPart>* parts) {
+  const TriangleMesh mesh = parseObj(file.bytes, file.source);
+  if (mesh.triangles.empty()) throwBadInput(file.source, "the OBJ file has no faces");
+  if (mesh.groupNames.empty()) {
+    parts->push_back({0, meshShapeName(file.source), file.source, mesh});
+    return;
+  }
+  std::vector<std::vector<size_t>> byGroup(mesh.groupNames.size());
+  for (size_t t = 0; t < mesh.triangles.size(); ++t) byGroup[static_cast<size_t>(mesh.triangleGroup[t])].push_back(t);
+  for (size_t g = 0; g < byGroup.size(); ++g) {
+    if (byGroup[g].empty()) continue;  // a group record without faces (a material or an empty object)
+    parts->push_back({0, mesh.groupNames[g], file.source, subMesh(mesh, byGroup[g])});
+  }
+}
+
+// ASCII STL: each `solid ... endsolid` is a part; the text before each is kept as blank lines so
+// that the reader's messages name the file's own line numbers.
+void addAsciiStlParts(const MeshFile& file, std::vector<MeshPart>* parts) {
+  size_t start = 0, lineStart = 0;
+  int linesBefore = 0, line = 0;
+  while (lineStart < file.bytes.size()) {
+    size_t lineEnd = file.bytes.find('\n', lineStart);
+    if (lineEnd == std::string::npos) lineEnd = file.bytes.size();
+    ++line;
+    std::istringstream words(file.bytes.substr(lineStart, lineEnd - lineStart));
+    std::string first;
+    words >> first;
+    lineStart = lineEnd + 1;
+    if (lowered(first) != "endsolid") continue;
+    const std::string text = std::string(static_cast<size_t>(linesBefore), '\n') +
+                             file.bytes.substr(start, std::min(lineStart, file.bytes.size()) - start);
+    std::istringstream head(file.bytes.substr(start, 256));
+    std::string keyword, name;
+    head >> keyword;
+    std::getline(head, name);
+    name.erase(0, name.find_first_not_of(" \t"));
+    name.erase(name.find_last_not_of(" \t\r") + 1);
+    parts->push_back({0, name.empty() ? meshShapeName(file.source) : name, file.source, parseStl(text, file.source)});
+    start = std::min(lineStart, file.bytes.size());
+    linesBefore = line;
+  }
+  const std::string rest = file.bytes.substr(start);
+  if (rest.find_first_not_of(" \t\r\n") != std::string::npos || parts->empty()) {
+    // Text after the last endsolid, or none at all: the reader names what is wrong.
+    parts->push_back({0, meshShapeName(file.source), file.source,
+                      parseStl(std::string(static_cast<size_t>(linesBefore), '\n') + rest, file.source)});
+  }
+}
+
+}  // namespace
+
+LengthUnit parseLengthUnit(const std::string& name) {
+  if (name == "mm") return LengthUnit::Millimetre;
+  if (name == "m") return LengthUnit::Metre;
+  if (name == "inch" || name == "in") return LengthUnit::Inch;
+  throw Error(ErrorCode::BadInput, "unknown unit '" + name + "': expected mm, m or inch");
+}
+
+double millimetresPer(LengthUnit unit) {
+  switch (unit) {
+    case LengthUnit::Metre: return 1000.0;
+    case LengthUnit::Inch: return 25.4;
+    case LengthUnit::Millimetre: break;
+  }
+  return 1.0;
+}
+
+bool isMeshAssemblyPath(const std::string& path) {
+  return endsWith(path, ".obj") || endsWith(path, ".stl") || endsWith(path, ".3mf");
+}
+
+std::vector<MeshPart> readMeshParts(const std::vector<MeshFile>& files, LengthUnit unit) {
+  std::vector<MeshPart> parts;
+  for (const MeshFile& file : files) {
+    if (file.bytes.find_first_not_of(" \t\r\n") == std::string::npos) throwBadInput(file.source, "the file is empty");
+    if (endsWith(file.source, ".3mf")) {
+      throw Error(ErrorCode::Unsupported, file.source + ": 3MF is not read yet (its ZIP needs inflate); export the "
+                                                        "parts as OBJ (one object each) or STL");
+    }
+    const size_t before = parts.size();
+    if (isBinaryStl(file.bytes)) {
+      parts.push_back({0, meshShapeName(file.source), file.source, parseStl(file.bytes, file.source)});
+    } else if (endsWith(file.source, ".stl") || lowered(file.bytes.substr(0, 5)) == "solid") {
+      addAsciiStlParts(file, &parts);
+    } else {
+      addObjParts(file, &parts);
+    }
+    if (parts.size() - before > 1 || parts.back().name.empty()) {
+      for (size_t k = before; k < parts.size(); ++k) {
+        if (parts[k].name.empty()) parts[k].name = meshShapeName(file.source) + "#" + std::to_string(k - before + 1);
+      }
+    }
+  }
+  const double scale = millimetresPer(unit);
+  for (size_t k = 0; k < parts.size(); ++k) {
+    parts[k].id = static_cast<int>(k + 1);
+    for (auto& v : parts[k].mesh.vertices) v = {v[0] * scale, v[1] * scale, v[2] * scale};
+  }
+  return parts;
+}
+
+AssemblyDocument meshReportDocument(const MeshAssembly& meshes) {
+  AssemblyDocument document;
+  document.kind = AssemblyKind::Contacts;
+  document.name = meshShapeName(meshes.parts.front().source);
+  document.assembly = meshes.assembly;
+  return document;
+}
+
+std::string meshCheckReportToJson(const MeshAssembly& meshes, const CheckReport& report, int indent) {
+  nlohmann::json root = nlohmann::json::parse(checkReportToJson(meshReportDocument(meshes), report, -1));
+  root["kind"] = "mesh";
+  size_t triangles = 0;
+  for (const MeshPart& part : meshes.parts) triangles += part.mesh.triangles.size();
+  root["mesh"] = {{"tolerance", meshes.tolerance},
+                  {"diagonal", meshes.diagonal},
+                  {"planarFaces", meshes.faceCount},
+                  {"contacts", meshes.assembly.contacts.size()},
+                  {"triangles", triangles}};
+  for (const char* section : {"disassembly", "disassemblyFailure"}) {
+    if (!report.disassembly || !root.contains(section) || !root[section].is_object() || !root[section].contains("steps")) {
+      continue;
+    }
+    auto& steps = root[section]["steps"];
+    for (size_t k = 0; k < steps.size() && k < report.disassembly->moves.size(); ++k) {
+      const Vec3& d = report.disassembly->moves[k].direction;
+      steps[k]["dir"] = directionLabel(d);
+      steps[k]["vector"] = {d[0], d[1], d[2]};
+    }
+  }
+  return root.dump(indent);
+}
+
+std::string meshCheckReportToText(const MeshAssembly& meshes, const CheckReport& report) {
+  size_t triangles = 0;
+  for (const MeshPart& part : meshes.parts) triangles += part.mesh.triangles.size();
+  std::ostringstream out;
+  out << "meshes: " << meshes.parts.size() << " parts, " << triangles << " triangles, " << meshes.faceCount
+      << " planar faces, " << meshes.assembly.contacts.size() << " contacts (tolerance " << meshes.tolerance << " mm)\n";
+  std::string text = checkReportToText(meshReportDocument(meshes), report);
+  const std::string contactsKind = " (contacts)\n";  // the first line names the parts' kind
+  const size_t kind = text.find(contactsKind);
+  if (kind != std::string::npos && kind < text.find('\n')) text.replace(kind, contactsKind.size(), " (mesh)\n");
+  return out.str() + text;
+}
+
+}  // namespace desia

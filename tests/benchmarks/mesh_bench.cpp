@@ -1,0 +1,111 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The mesh kind's benchmark (issue 29): a grid of touching boxes, each face a k x k grid of
+// squares (12 k² triangles a part; k = 9 gives 972), built (validation, overlaps, contacts) and
+// checked (DBG test and a swept plan). Prints one row per size: parts, triangles, seconds.
+//   desia_mesh_bench [PARTS...]   (default 100 1000; parts are rounded to a grid nx × ny × nz)
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "desia/mesh_assembly.h"
+
+namespace {
+
+constexpr int kFaceDivisions = 9;
+constexpr double kBoxMm = 10;
+
+// One box with every face divided into k x k squares (two triangles each), outward.
+desia::TriangleMesh dividedBox(const desia::Vec3& corner) {
+  desia::TriangleMesh mesh;
+  const int k = kFaceDivisions;
+  for (int axis = 0; axis < 3; ++axis) {
+    for (int side = 0; side < 2; ++side) {
+      const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+      const int first = static_cast<int>(mesh.vertices.size());
+      for (int i = 0; i <= k; ++i) {
+        for (int j = 0; j <= k; ++j) {
+          desia::Vec3 p = corner;
+          p[axis] += side * kBoxMm;
+          p[u] += kBoxMm * i / k;
+          p[v] += kBoxMm * j / k;
+          mesh.vertices.push_back(p);
+        }
+      }
+      for (int i = 0; i < k; ++i) {
+        for (int j = 0; j < k; ++j) {
+          const int a = first + i * (k + 1) + j, b = a + k + 1, c = b + 1, d = a + 1;
+          // (u, v, axis) is right-handed: counter-clockwise in (u, v) faces +axis.
+          if (side == 1) {
+            mesh.triangles.push_back({a, b, c});
+            mesh.triangles.push_back({a, c, d});
+          } else {
+            mesh.triangles.push_back({a, c, b});
+            mesh.triangles.push_back({a, d, c});
+          }
+        }
+      }
+    }
+  }
+  return mesh;  // duplicate vertices along box edges: the validation works on indices, so weld
+}
+
+desia::TriangleMesh welded(const desia::TriangleMesh& mesh) {
+  desia::TriangleMesh out;
+  std::vector<int> index(mesh.vertices.size());
+  for (size_t v = 0; v < mesh.vertices.size(); ++v) {
+    int found = -1;
+    for (size_t w = 0; w < out.vertices.size() && found < 0; ++w) {
+      if (out.vertices[w] == mesh.vertices[v]) found = static_cast<int>(w);
+    }
+    if (found < 0) {
+      found = static_cast<int>(out.vertices.size());
+      out.vertices.push_back(mesh.vertices[v]);
+    }
+    index[v] = found;
+  }
+  for (const auto& t : mesh.triangles) out.triangles.push_back({index[t[0]], index[t[1]], index[t[2]]});
+  return out;
+}
+
+void run(int requested) {
+  const int nx = static_cast<int>(std::round(std::cbrt(requested)));
+  const int ny = nx, nz = (requested + nx * ny - 1) / (nx * ny);
+  const desia::TriangleMesh unit = welded(dividedBox({0, 0, 0}));
+  std::vector<desia::MeshPart> parts;
+  for (int z = 0; z < nz; ++z) {
+    for (int y = 0; y < ny; ++y) {
+      for (int x = 0; x < nx && static_cast<int>(parts.size()) < requested; ++x) {
+        desia::MeshPart part;
+        part.id = static_cast<int>(parts.size()) + 1;
+        part.source = "grid";
+        part.mesh = unit;
+        for (auto& v : part.mesh.vertices) v = {v[0] + x * kBoxMm, v[1] + y * kBoxMm, v[2] + z * kBoxMm};
+        parts.push_back(part);
+      }
+    }
+  }
+  const size_t triangles = parts.size() * unit.triangles.size();
+  const auto start = std::chrono::steady_clock::now();
+  const desia::MeshAssembly meshes = desia::buildMeshAssembly(std::move(parts));
+  const auto built = std::chrono::steady_clock::now();
+  const desia::CheckReport report = desia::checkMeshAssembly(meshes);
+  const auto done = std::chrono::steady_clock::now();
+  const auto seconds = [](auto a, auto b) { return std::chrono::duration<double>(b - a).count(); };
+  std::printf("| %zu parts | %zu triangles | %zu contacts | build %.3f s | check %.3f s | total %.3f s | plan %s |\n",
+              meshes.parts.size(), triangles, meshes.assembly.contacts.size(), seconds(start, built),
+              seconds(built, done), seconds(start, done),
+              report.disassembly && report.disassembly->complete ? "complete" : "INCOMPLETE");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<int> sizes;
+  for (int k = 1; k < argc; ++k) sizes.push_back(std::atoi(argv[k]));
+  if (sizes.empty()) sizes = {100, 1000};
+  for (int size : sizes) run(size);
+  return 0;
+}
