@@ -107,6 +107,12 @@ const ui = {
 const CLOCK_INTERVAL_MS = 100;
 /** Live design: the view draws the deepest node at most this often (worker.js sends as often). */
 const LIVE_INTERVAL_MS = 250;
+/**
+ * ... and leaves the page at least this share of the time between two drawings (issue 28, item 8):
+ * a drawing that took 200 ms (software WebGL with the workers on every core) waits 1 s for the
+ * next; on a GPU a drawing takes a few ms and the interval above rules.
+ */
+const LIVE_FREE_SHARE = 0.8;
 
 /**
  * A reasonable N for a shape of `voxels` voxels: about a dozen voxels per part (80 parts at
@@ -333,21 +339,46 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy, showL
 
   /**
    * Live design: draws a snapshot deeper than the one shown (with several Workers they come from
-   * whichever search is deepest), at most every LIVE_INTERVAL_MS so that a large structure's
-   * redraws leave the page responsive; one that comes sooner waits for the next progress.
+   * whichever search is deepest), at most every LIVE_INTERVAL_MS, and rarer when a drawing costs
+   * the page more than a fifth of that (LIVE_FREE_SHARE), so that redraws leave the page
+   * responsive; one that comes sooner waits for the next progress.
    */
   function offerLiveSnapshot(snapshot) {
     const shownDepth = Number(ui.progressBox.dataset.liveParts || -1);
     if (!(snapshot.depth > shownDepth)) return;
-    if (performance.now() - (run.liveAt ?? -Infinity) < LIVE_INTERVAL_MS) {
+    const interval = Math.max(LIVE_INTERVAL_MS, (run.liveCost ?? 0) / (1 - LIVE_FREE_SHARE));
+    if (performance.now() - (run.liveAt ?? -Infinity) < interval) {
       run.pendingLive = snapshot;
       return;
     }
     run.pendingLive = null;
     run.liveAt = performance.now();
-    run.live = true;
-    ui.progressBox.dataset.liveParts = String(snapshot.depth);
-    showLive(snapshot, kind);
+    drawLiveOnNextFrame(snapshot);
+  }
+
+  /**
+   * The view changes on an animation frame (issue 28, item 8): snapshots that arrive within one
+   * frame (several workers) draw only the deepest, and a run that ended before draws nothing.
+   */
+  function drawLiveOnNextFrame(snapshot) {
+    const current = run;
+    if (current.liveSnapshot && !(snapshot.depth > current.liveSnapshot.depth)) return;
+    current.liveSnapshot = snapshot;
+    current.liveFrame ||= requestAnimationFrame(() => {
+      current.liveFrame = 0;
+      const latest = current.liveSnapshot;
+      if (run !== current || current.ended || !latest) return;
+      current.live = true;
+      ui.progressBox.dataset.liveParts = String(latest.depth);
+      const drawnAt = performance.now();
+      showLive(latest, kind);
+      // What the drawing cost the page: until the frame after the view's could start (the view
+      // renders on the next frame, and the browser presents that before the one after).
+      requestAnimationFrame(() => requestAnimationFrame(() => {
+        current.liveCost = performance.now() - drawnAt;
+        current.liveAt = performance.now();
+      }));
+    });
   }
 
   /**

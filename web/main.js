@@ -197,6 +197,7 @@ window.__desiaView = {
   partAt: (x, y) => view.partAt(x, y),
   get selected() { return view.selectedPart; },
   framing: () => view.framing(),
+  renderStats: () => view.renderStats(),
   get step() { return view.disassemblyStep; },
   get steps() { return playback.player.length; },
   /** Playing a plan of moves: the parts of the move shown (they glow). */
@@ -528,8 +529,8 @@ const exportPanel = createExportPanel({ core });
 function showLiveDesign(snapshot) {
   if (!shown) return;
   if (snapshot.document) {
-    view.show(snapshot.document, snapshot.surfaces, { keepCamera: true });
-    view.setEmphasis({ ghost: [snapshot.depth + 1] });
+    // Merged into a few meshes (issue 28, item 8): a picture redrawn several times a second.
+    view.showLive(snapshot.document, snapshot.surfaces, { ghost: [snapshot.depth + 1] });
     return;
   }
   if (!Array.isArray(snapshot.placed)) return;
