@@ -522,15 +522,18 @@ const exportPanel = createExportPanel({ core });
 
 /**
  * Live design (issue 11): the deepest node of a running design, drawn over what is shown with the
- * user's camera kept. A voxel snapshot brings its document and surfaces (parts 1..depth placed, the
+ * user's camera kept. A voxel snapshot brings its labels and surfaces (parts 1..depth placed, the
  * remainder see-through); a plate or frame snapshot lists the input indices placed, and the input
  * on screen is recoloured: the rest see-through. The report stays the input's until the result.
  */
 function showLiveDesign(snapshot) {
   if (!shown) return;
-  if (snapshot.document) {
-    // Merged into a few meshes (issue 28, item 8): a picture redrawn several times a second.
-    view.showLive(snapshot.document, snapshot.surfaces, { ghost: [snapshot.depth + 1] });
+  if (snapshot.labels) {
+    // The shape on screen with the node's labels, its surfaces made in the worker (the package's
+    // liveSurfaces), merged into a few meshes (issue 28, item 8): a picture redrawn several times a second.
+    const voxel = shown.document?.voxel;
+    if (!voxel || !Array.isArray(snapshot.surfaces)) return;
+    view.showLive({ ...shown.document, voxel: { ...voxel, labels: snapshot.labels } }, snapshot.surfaces, { ghost: [snapshot.depth + 1] });
     return;
   }
   if (!Array.isArray(snapshot.placed)) return;
@@ -696,12 +699,16 @@ function main() {
   wireControls();
   wireDragAndDrop();
   setStatus('loading', 'Starting the core…');
-  core.start();
+  core.start().catch(() => {}); // failures are on screen (onCrash)
   const file = initialExample();
   ui.exampleSelect.value = file;
   registerServiceWorker();
   // Once the first assembly is on screen, keep the playground's files for offline use.
-  loadExample(file, { keepJoints: readUrlState().joints !== undefined, first: true }).finally(() => keepForOffline([
+  loadExample(file, { keepJoints: readUrlState().joints !== undefined, first: true }).finally(() => {
+    // Live design's shader programs, compiled while nothing else happens (issue 28, item 8).
+    const whenIdle = window.requestIdleCallback ?? ((callback) => setTimeout(callback, 0));
+    whenIdle(() => view.prepareLive().catch(() => {}));
+  }).finally(() => keepForOffline([
     ...EXAMPLES.map((example) => exampleUrl(example.file).href),
     ...meshInput.exampleUrls,
   ]));

@@ -65,6 +65,29 @@ export class LiveDrawing {
     return this.#group;
   }
 
+  /**
+   * One small object per material, to compile their shader programs before the first picture
+   * (AssemblyView.prepareLive); free it with disposeSample.
+   */
+  sample() {
+    const geometry = new THREE.BufferGeometry();
+    const triangle = new Float32Array([0, 0, 0, 1, 0, 0, 0, 1, 0]);
+    geometry.setAttribute('position', new THREE.BufferAttribute(triangle, 3));
+    geometry.setAttribute('normal', new THREE.BufferAttribute(new Float32Array([0, 0, 1, 0, 0, 1, 0, 0, 1]), 3));
+    geometry.setAttribute('color', new THREE.BufferAttribute(new Float32Array(9).fill(1), 3));
+    const group = new THREE.Group();
+    const { placed, ghost, placedEdges, ghostEdges } = this.#materials;
+    group.add(new THREE.Mesh(geometry, placed), new THREE.Mesh(geometry, ghost),
+      new THREE.LineSegments(geometry, placedEdges), new THREE.LineSegments(geometry, ghostEdges));
+    return group;
+  }
+
+  /** Frees what sample() made (its materials are the drawing's own and stay). */
+  static disposeSample(group) {
+    group.children[0]?.geometry.dispose();
+    group.clear();
+  }
+
   /** Frees the merged geometries (the materials stay for the next update). */
   clear() {
     for (const child of this.#group.children) child.geometry.dispose();

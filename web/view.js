@@ -513,12 +513,31 @@ export class AssemblyView {
     this.#scene.remove(grid);
   }
 
-  #addLiveParts(surfaces, centroids, ghost) {
+  #liveDrawingOnce() {
     this.#liveDrawing ??= new LiveDrawing({
       partColor, edgeColor: EDGE_COLOR, edgeOpacity: 0.55, ghostOpacity: GHOST_OPACITY, ghostEdgeOpacity: GHOST_EDGE_OPACITY,
     });
+    return this.#liveDrawing;
+  }
+
+  /**
+   * Compiles live design's shader programs ahead (in parallel where the browser can), so that a
+   * design's first picture does not wait for them (a second in software WebGL on a busy
+   * machine). Call when the page is idle; resolves when they are ready.
+   */
+  async prepareLive() {
+    if (!this.available) return;
+    const sample = this.#liveDrawingOnce().sample();
+    try {
+      await this.#renderer.compileAsync(sample, this.#camera, this.#scene);
+    } finally {
+      LiveDrawing.disposeSample(sample);
+    }
+  }
+
+  #addLiveParts(surfaces, centroids, ghost) {
     const drawn = surfaces.filter((surface) => centroids.has(surface.partId));
-    this.#content.add(this.#liveDrawing.update(drawn, ghost));
+    this.#content.add(this.#liveDrawingOnce().update(drawn, ghost));
     this.#container.dataset.parts = String(drawn.length);
     this.#container.dataset.ghost = drawn.filter((surface) => ghost.has(surface.partId)).map((surface) => surface.partId).join(' ');
   }
