@@ -17,7 +17,7 @@
 import { byId, element, fitSelectToValue } from './dom.js';
 import { AssemblyView, createPlaybackControls } from './view.js';
 import { highlightMove, highlightRemovalStep, renderPlan, renderReport, resetReport, unjointedKind, withPlannedRemoval } from './report.js';
-import { CoreWorker, MAX_FAILED_STARTS } from './worker-client.js';
+import { CoreWorker } from './worker-client.js';
 import { createDesignPanel } from './design-panel.js';
 import { readUrlState, writeUrlState } from './url-state.js';
 import { createMeshInput, isMeshName } from './mesh-input.js';
@@ -489,11 +489,9 @@ const core = new CoreWorker({
     // A fresh worker has no design session: let the panel notice.
     designPanel?.refresh();
   },
-  onCrash(message, willRestart) {
+  onCrash(text) {
     coreReady = false;
-    showError(willRestart
-      ? `${message}. A fresh worker was started; choose an assembly to try again.`
-      : `${message}. The worker failed ${MAX_FAILED_STARTS} times in a row; choosing an assembly tries once more.`);
+    showError(text);
     setStatus('error');
   },
 });

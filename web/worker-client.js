@@ -36,6 +36,16 @@ const WORKER_URL = new URL('./core-worker.js', import.meta.url).href;
 /** Consecutive failed worker starts before we stop restarting on our own. */
 export const MAX_FAILED_STARTS = 3;
 
+/**
+ * What the page says when a worker died: `message`, and whether a fresh one was started. The calls
+ * that waited for that worker fail with the same words, so whichever the page shows last says it.
+ */
+function crashText(message, willRestart) {
+  return willRestart
+    ? `${message}. A fresh worker was started; choose an assembly to try again.`
+    : `${message}. The worker failed ${MAX_FAILED_STARTS} times in a row; choosing an assembly tries once more.`;
+}
+
 /** The rejection of requests that were cancelled (not a failure: nothing to report). */
 export class CancelledError extends Error {
   constructor(message = 'cancelled') {
@@ -79,7 +89,8 @@ export class CoreWorker {
 
   /**
    * `onStart()` when a worker starts (first time, after a crash or a cancel), `onReady(version)`
-   * once it has loaded the core, `onCrash(message, willRestart)` when one dies.
+   * once it has loaded the core, `onCrash(text, willRestart)` when one dies (`text` says what
+   * happened and what comes next).
    */
   constructor({ onStart = () => {}, onReady, onCrash }) {
     this.#onStart = onStart;
@@ -116,10 +127,11 @@ export class CoreWorker {
       this.#failedStarts += 1;
       this.#starting = null;
       const willRestart = this.#failedStarts < MAX_FAILED_STARTS;
-      this.#onCrash(String(error?.message ?? error), willRestart);
+      const text = crashText(String(error?.message ?? error), willRestart);
+      this.#onCrash(text, willRestart);
       // The calls that waited for this start fail with it; a fresh start begins for the next ones.
       if (willRestart) this.start().catch(() => {});
-      throw error;
+      throw Object.assign(new Error(text), { code: error?.code ?? 'internal' });
     }
   }
 
@@ -177,7 +189,7 @@ export class CoreWorker {
   #lost(message) {
     this.#forgetSession();
     this.#generation += 1;
-    this.#onCrash(message, true);
+    this.#onCrash(crashText(message, true), true);
     this.#onStart();
     this.#desia?.exportFormats().then(() => this.#onReady(this.#desia.version()), () => {});
   }
