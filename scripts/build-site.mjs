@@ -6,8 +6,8 @@
 //
 //   node scripts/build-site.mjs [--out dist/site]
 //
-//   index.html, *.js, style.css   the playground (web/), its worker and offline service worker
-//   wasm/*.js                     the package's loader and host, which the worker imports
+//   index.html, *.js, style.css   the playground (web/) and its offline service worker
+//   wasm/*.js                     the package the playground runs on (createDesia) and its worker
 //   dist/desia_wasm.{js,wasm}     the WebAssembly core
 //   examples/                     the example folders the playground lists, and embed.html
 //   vendor/three/                 the three.js modules the pages import (and three's LICENSE)
@@ -223,7 +223,7 @@ export async function buildSite(out = DEFAULT_OUT, { minify = true } = {}) {
   }
   // Never wipe a folder that is not a site built here.
   if (existsSync(out) && (await readdir(out)).length > 0
-    && !['index.html', 'sw.js', 'worker.js'].every((file) => existsSync(path.join(out, file)))) {
+    && !['index.html', 'sw.js', 'main.js'].every((file) => existsSync(path.join(out, file)))) {
     throw new SiteError(`${out} exists and does not look like a built site: refusing to replace it`);
   }
   const staging = `${out}.partial-${process.pid}`;

@@ -393,13 +393,25 @@ function requireJobs(jobs) {
 }
 
 /**
+ * designVoxel's `liveSurfaces` (true or false, default false): the package's own option, for the
+ * host next to the search (wasm/host.js createLiveSurfaces), not the core's.
+ */
+function requireLiveSurfaces(liveSurfaces) {
+  if (liveSurfaces === undefined) return { liveSurfaces: false };
+  if (typeof liveSurfaces !== 'boolean') {
+    throw new DesiaError(`designVoxel: liveSurfaces must be true or false, got ${describeValue(liveSurfaces)}`, 'bad-input');
+  }
+  return { liveSurfaces };
+}
+
+/**
  * designVoxel with `jobs` > 1: a portfolio of searches (wasm/portfolio.js) with seeds seed,
  * seed + 1, ..., each in a worker of its own (`newClient()`), as many as the machine has cores
  * (availableWorkers; one core: `single()`, the caller's worker). The first verified result wins
  * and the other workers are terminated; the result names its seed. The caller's own worker is
  * left alone (its design sessions live on).
  */
-async function designPortfolio(newClient, single, shape, coreOptions, jobs, { signal, onProgress }) {
+async function designPortfolio(newClient, single, shape, coreOptions, jobs, { signal, onProgress }, live) {
   const count = Math.min(jobs, await availableWorkers());
   if (count === 1) return single();
   const seeds = portfolioSeeds(coreOptions.seed ?? 1, count);
@@ -408,7 +420,7 @@ async function designPortfolio(newClient, single, shape, coreOptions, jobs, { si
     return await runPortfolio(seeds, (seed, job) => {
       const client = newClient();
       clients.push(client);
-      return client.request('designVoxel', [shape, { ...coreOptions, seed }], job);
+      return client.request('designVoxel', [shape, { ...coreOptions, seed }, live], job);
     }, { signal, onProgress });
   } finally {
     await Promise.all(clients.map((client) => client.terminate()));
@@ -542,14 +554,21 @@ export async function createDesia(options) {
       } catch (error) {
         return Promise.reject(error);
       }
+      let live;
+      try {
+        live = requireLiveSurfaces(split.coreOptions.liveSurfaces);
+      } catch (error) {
+        return Promise.reject(error);
+      }
       const coreOptions = { ...split.coreOptions };
       delete coreOptions.jobs;
+      delete coreOptions.liveSurfaces;
       const call = { signal: split.signal, onProgress: split.onProgress };
-      const single = () => client.request('designVoxel', [shape, coreOptions], call);
+      const single = () => client.request('designVoxel', [shape, coreOptions, live], call);
       // In-process there is one thread: one search.
       if (jobs === 1 || !worker) return single();
       const newClient = () => new DesiaClient({ wasmUrl, wasmBinary, startTimeout }, startPort);
-      return designPortfolio(newClient, single, shape, coreOptions, jobs, call);
+      return designPortfolio(newClient, single, shape, coreOptions, jobs, call, live);
     },
     designPlate: simple('designPlate'),
     designFrame: simple('designFrame'),

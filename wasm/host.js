@@ -24,6 +24,8 @@ import { documentedCode } from './core.js';
 
 /** Progress is for eyes, not logs: ten messages a second are plenty. */
 export const PROGRESS_INTERVAL_MS = 100;
+/** designVoxel's liveSurfaces: a snapshot's surfaces cost the search a few ms, at most four times a second. */
+export const LIVE_SURFACES_INTERVAL_MS = 250;
 
 /** The methods of a design session the client may call by name. */
 const SESSION_METHODS = new Set(['state', 'childCount', 'preview', 'choose', 'next', 'back', 'check']);
@@ -76,8 +78,11 @@ export function createCoreHost(loadCore, post, { isCancelled = () => false } = {
   const sessions = new Map();
   let nextSessionId = 1;
 
-  function withProgress(id, run) {
-    const progress = createProgressThrottle((value) => post({ type: 'progress', id, value }, []));
+  function withProgress(id, run, live = (value) => value) {
+    const progress = createProgressThrottle((value) => {
+      const sent = live(value);
+      post({ type: 'progress', id, value: sent }, surfaceBuffers(sent?.snapshot?.surfaces ?? null));
+    });
     const result = run((value) => {
       progress.report(value);
       // false stops the search (status 'cancelled'); in a worker nobody is left to read the
@@ -107,8 +112,10 @@ export function createCoreHost(loadCore, post, { isCancelled = () => false } = {
     partSurfaces: (core, [assembly, options]) => core.partSurfaces(assembly, options),
     cutSheets: (core, [assembly, options]) => core.cutSheets(assembly, options),
     parseFrame: (core, [input, options]) => core.parseFrame(input, options),
-    designVoxel: (core, [shape, options], id) =>
-      withProgress(id, (onProgress) => core.designVoxel(shape, { ...options, onProgress })),
+    // The client's third argument: { liveSurfaces } (createLiveSurfaces), not an option of the core.
+    designVoxel: (core, [shape, options, { liveSurfaces = false } = {}], id) =>
+      withProgress(id, (onProgress) => core.designVoxel(shape, { ...options, onProgress }),
+        liveSurfaces ? createLiveSurfaces(core, shape, options?.source) : undefined),
     designPlate: (core, [input, options], id) =>
       withProgress(id, (onProgress) => core.designPlate(input, { ...options, onProgress })),
     designFrame: (core, [input, options], id) =>
@@ -180,6 +187,34 @@ export function createCoreHost(loadCore, post, { isCancelled = () => false } = {
       for (const session of sessions.values()) session.dispose();
       sessions.clear();
     },
+  };
+}
+
+/**
+ * designVoxel's `liveSurfaces` (live design, issue 28 item 8): a progress value's snapshot (the
+ * deepest node, `{ depth, labels }`) also carries `surfaces`, the core's part surfaces of the
+ * shape with those labels (parts 1..depth placed, depth + 1 the remainder), made here beside the
+ * search so that the caller's thread only draws them. At most every LIVE_SURFACES_INTERVAL_MS; a
+ * snapshot that comes sooner is held back and rides on a later value, so the deepest node is
+ * never lost. Returns a function from the progress value to the value to send.
+ */
+export function createLiveSurfaces(core, shape, source = '<input>') {
+  let shapeDocument = null;
+  let held = null;
+  let lastAt = -Infinity;
+  return (value) => {
+    if (!(value?.snapshot || held)) return value;
+    const { snapshot = held, ...rest } = value;
+    if (performance.now() - lastAt < LIVE_SURFACES_INTERVAL_MS) {
+      held = snapshot;
+      return rest;
+    }
+    held = null;
+    lastAt = performance.now();
+    shapeDocument ??= typeof shape === 'string' ? core.parseDocument(shape, { source }) : shape;
+    const document = { ...shapeDocument, voxel: { ...shapeDocument.voxel, labels: Array.from(snapshot.labels) } };
+    const surfaces = core.partSurfaces(document, { source: `${source} (deepest node)` });
+    return { ...rest, snapshot: { ...snapshot, surfaces } };
   };
 }
 

@@ -234,6 +234,13 @@ export interface PortfolioOptions {
    * worker (and its design sessions) is not used. Limits apply to each search.
    */
   jobs?: number;
+  /**
+   * Live design (default false): every snapshot a progress value delivers also carries
+   * `surfaces`, the part surfaces of the deepest node (as partSurfaces gives them), made in the
+   * worker beside the search at most four times a second (a snapshot in between rides on a
+   * later value), so that the caller's thread only draws them. The playground draws with it.
+   */
+  liveSurfaces?: boolean;
 }
 
 /** Options of designVoxel (the same meaning as `desia design voxel`'s flags). */
@@ -306,6 +313,8 @@ export interface VoxelSnapshot {
    * partSurfaces and check take.
    */
   labels: Int32Array;
+  /** With `liveSurfaces`: the part surfaces of the shape with these labels (moved, not copied). */
+  surfaces?: PartSurface[];
 }
 
 /** designPlate's and designFrame's snapshot: the plates or beams of the deepest node. */

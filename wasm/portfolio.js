@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// A portfolio of voxel designs (issue 10, "all cores"), shared by the package (wasm/client.js) and
-// the playground (web/worker-client.js). The designer's search is heavy tailed: how long a seed
+// A portfolio of voxel designs (issue 10, "all cores"), run by the package's designVoxel with
+// `jobs` (wasm/client.js; the playground designs through it). The designer's search is heavy tailed: how long a seed
 // takes varies by orders of magnitude, so several searches from different seeds, each in its own
 // single-threaded worker, the first verified one winning, use the cores one worker leaves idle.
 // The core is unchanged: the winner's result is exactly what one worker with its seed gives, and

@@ -2,7 +2,7 @@
 //
 // The Design panel: designs an N-part interlocking voxel puzzle from the assembly on screen
 // (all its voxels are the shape), automatically (designVoxel, with live progress; with several
-// Workers a portfolio of seeds, worker-client.js WorkerPortfolio, the winner naming the result) or step by
+// Workers the package's portfolio of seeds, designVoxel's jobs, the winner naming the result) or step by
 // step (a design session); for a plate design it plans the joints (designPlate: seed,
 // candidates, time limit; N, ranking and mode do not apply), for a frame it designs the 3x3x3
 // voxel joints (designFrame: seed, candidates, time limit); plates and frames also step by step
@@ -27,7 +27,6 @@ import { byId } from './dom.js';
 import { readUrlState, writeUrlState } from './url-state.js';
 import { formatDirection } from './view.js';
 import { createChildThumbnails } from './child-thumbnails.js';
-import { WorkerPortfolio } from './worker-client.js';
 import { createPaceTracker, difficultyText } from './live-design.js';
 
 /** The fields of the form, by URL key; their values go to the core as they are. */
@@ -105,8 +104,19 @@ const ui = {
 
 /** How often the elapsed time moves while the core is busy between progress messages. */
 const CLOCK_INTERVAL_MS = 100;
-/** Live design: the view draws the deepest node at most this often (worker.js sends as often). */
+/** Live design: the view draws the deepest node at most this often (the package's liveSurfaces sends as often). */
 const LIVE_INTERVAL_MS = 250;
+/**
+ * ... and leaves the page at least this share of the time between two drawings (issue 28, item 8):
+ * a drawing that took 200 ms (software WebGL with the workers on every core) waits 1 s for the
+ * next; on a GPU a drawing takes a few ms and the interval above rules.
+ */
+const LIVE_FREE_SHARE = 0.8;
+/**
+ * ... but draws at least once a second: a design of a few seconds still shows its parts growing,
+ * and one slow picture (the first compiles the live drawing's shader programs) does not stall it.
+ */
+const LIVE_MAX_INTERVAL_MS = 1000;
 
 /**
  * A reasonable N for a shape of `voxels` voxels: about a dozen voxels per part (80 parts at
@@ -133,14 +143,12 @@ function seconds(ms) {
  * assembly on screen or null; `showAssembly({ name, text, document, surfaces, report, elapsedMs,
  * timingLabel })` puts an assembly on screen; `setBusy(busy, label)` locks the page's other
  * inputs while the worker is busy for us. Live design: `showLive(snapshot, kind)` draws the deepest
- * node so far (worker.js createLiveView) and `endLive()` puts back what was shown before, when a
+ * node so far (the package's liveSurfaces, wasm/host.js) and `endLive()` puts back what was shown before, when a
  * run ends without a result to show.
  */
 export function createDesignPanel({ core, getShape, showAssembly, setBusy, showLive = () => {}, endLive = () => {} }) {
   let busy = false;
   let partsTouched = false;
-  /** The workers of portfolio designs (started on the first one), or null. */
-  let portfolio = null;
   /** The open step-by-step session: { generation, base, snapshot }, or null. */
   let session = null;
   /** The latest run (design or session step): { started, latest, updates, clock, withProgress, noun }. */
@@ -333,21 +341,49 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy, showL
 
   /**
    * Live design: draws a snapshot deeper than the one shown (with several Workers they come from
-   * whichever search is deepest), at most every LIVE_INTERVAL_MS so that a large structure's
+   * whichever search is deepest), at most every LIVE_INTERVAL_MS, and rarer (down to once a
+   * second) when a drawing costs the page more than a fifth of that (LIVE_FREE_SHARE), so that
    * redraws leave the page responsive; one that comes sooner waits for the next progress.
    */
   function offerLiveSnapshot(snapshot) {
     const shownDepth = Number(ui.progressBox.dataset.liveParts || -1);
     if (!(snapshot.depth > shownDepth)) return;
-    if (performance.now() - (run.liveAt ?? -Infinity) < LIVE_INTERVAL_MS) {
+    const interval = Math.min(LIVE_MAX_INTERVAL_MS, Math.max(LIVE_INTERVAL_MS, (run.liveCost ?? 0) / (1 - LIVE_FREE_SHARE)));
+    if (performance.now() - (run.liveAt ?? -Infinity) < interval) {
       run.pendingLive = snapshot;
       return;
     }
     run.pendingLive = null;
     run.liveAt = performance.now();
-    run.live = true;
-    ui.progressBox.dataset.liveParts = String(snapshot.depth);
-    showLive(snapshot, kind);
+    drawLiveOnNextFrame(snapshot);
+  }
+
+  /**
+   * The view changes on an animation frame (issue 28, item 8): snapshots that arrive within one
+   * frame (several workers) draw only the deepest, and a run that ended before draws nothing.
+   */
+  function drawLiveOnNextFrame(snapshot) {
+    const current = run;
+    if (current.liveSnapshot && !(snapshot.depth > current.liveSnapshot.depth)) return;
+    current.liveSnapshot = snapshot;
+    current.liveFrame ||= requestAnimationFrame(() => {
+      current.liveFrame = 0;
+      const latest = current.liveSnapshot;
+      if (run !== current || current.ended || !latest) return;
+      current.live = true;
+      ui.progressBox.dataset.liveParts = String(latest.depth);
+      const drawnAt = performance.now();
+      showLive(latest, kind);
+      // What the drawing cost the page: until the frame after the view's could start (the view
+      // renders on the next frame, and the browser presents that before the one after).
+      // The first picture of a run may still compile its shader programs: it does not count.
+      const first = !current.pictures;
+      current.pictures = (current.pictures ?? 0) + 1;
+      requestAnimationFrame(() => requestAnimationFrame(() => {
+        if (!first) current.liveCost = performance.now() - drawnAt;
+        current.liveAt = performance.now();
+      }));
+    });
   }
 
   /**
@@ -401,8 +437,7 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy, showL
   function cancel() {
     if (!busy) return;
     // Rejects the pending request with a CancelledError, handled where it was sent.
-    if (run?.portfolio) portfolio.cancel();
-    else core.cancel();
+    core.cancel();
   }
 
   // -------------------------------------------------------------------------------------------
@@ -438,18 +473,15 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy, showL
     if (busy) return;
     const request = readRequest();
     if (!request) return;
-    const { shape, options: { jobs = 1, ...options } } = request;
+    const { shape, options } = request;
     const structure = STRUCTURES[kind] ?? null;
     syncUrl();
     begin(structure ? structure.label : 'Designing…', { withProgress: true, ...(structure ? { noun: structure.noun } : {}) });
-    // Several workers: a portfolio of seeds (the result names the one that won).
-    run.portfolio = !structure && jobs > 1;
     try {
       const operation = structure ? structure.op : 'design';
       const coreOptions = { ...options, source: shape.name };
-      const { value: result, elapsedMs } = run.portfolio
-        ? await (portfolio ??= new WorkerPortfolio(core)).run(operation, shape.text, coreOptions, jobs, { onProgress })
-        : await core.run(operation, shape.text, coreOptions, { onProgress });
+      // Several workers: the package's portfolio (designVoxel's jobs), the page's core left alone.
+      const { value: result, elapsedMs } = await core.run(operation, shape.text, coreOptions, { onProgress });
       if (structure) {
         // The result's progress is the final count (a finished plan has every plate joined); a cut
         // point is found before any search, so there is no progress to show.

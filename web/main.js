@@ -17,7 +17,7 @@
 import { byId, element, fitSelectToValue } from './dom.js';
 import { AssemblyView, createPlaybackControls } from './view.js';
 import { highlightMove, highlightRemovalStep, renderPlan, renderReport, resetReport, unjointedKind, withPlannedRemoval } from './report.js';
-import { CoreWorker, MAX_FAILED_STARTS } from './worker-client.js';
+import { CoreWorker } from './worker-client.js';
 import { createDesignPanel } from './design-panel.js';
 import { readUrlState, writeUrlState } from './url-state.js';
 import { createMeshInput, isMeshName } from './mesh-input.js';
@@ -197,6 +197,7 @@ window.__desiaView = {
   partAt: (x, y) => view.partAt(x, y),
   get selected() { return view.selectedPart; },
   framing: () => view.framing(),
+  renderStats: () => view.renderStats(),
   get step() { return view.disassemblyStep; },
   get steps() { return playback.player.length; },
   /** Playing a plan of moves: the parts of the move shown (they glow). */
@@ -488,11 +489,9 @@ const core = new CoreWorker({
     // A fresh worker has no design session: let the panel notice.
     designPanel?.refresh();
   },
-  onCrash(message, willRestart) {
+  onCrash(text) {
     coreReady = false;
-    showError(willRestart
-      ? `${message}. A fresh worker was started; choose an assembly to try again.`
-      : `${message}. The worker failed ${MAX_FAILED_STARTS} times in a row; choosing an assembly tries once more.`);
+    showError(text);
     setStatus('error');
   },
 });
@@ -521,15 +520,18 @@ const exportPanel = createExportPanel({ core });
 
 /**
  * Live design (issue 11): the deepest node of a running design, drawn over what is shown with the
- * user's camera kept. A voxel snapshot brings its document and surfaces (parts 1..depth placed, the
+ * user's camera kept. A voxel snapshot brings its labels and surfaces (parts 1..depth placed, the
  * remainder see-through); a plate or frame snapshot lists the input indices placed, and the input
  * on screen is recoloured: the rest see-through. The report stays the input's until the result.
  */
 function showLiveDesign(snapshot) {
   if (!shown) return;
-  if (snapshot.document) {
-    view.show(snapshot.document, snapshot.surfaces, { keepCamera: true });
-    view.setEmphasis({ ghost: [snapshot.depth + 1] });
+  if (snapshot.labels) {
+    // The shape on screen with the node's labels, its surfaces made in the worker (the package's
+    // liveSurfaces), merged into a few meshes (issue 28, item 8): a picture redrawn several times a second.
+    const voxel = shown.document?.voxel;
+    if (!voxel || !Array.isArray(snapshot.surfaces)) return;
+    view.showLive({ ...shown.document, voxel: { ...voxel, labels: snapshot.labels } }, snapshot.surfaces, { ghost: [snapshot.depth + 1] });
     return;
   }
   if (!Array.isArray(snapshot.placed)) return;
@@ -695,12 +697,16 @@ function main() {
   wireControls();
   wireDragAndDrop();
   setStatus('loading', 'Starting the core…');
-  core.start();
+  core.start().catch(() => {}); // failures are on screen (onCrash)
   const file = initialExample();
   ui.exampleSelect.value = file;
   registerServiceWorker();
   // Once the first assembly is on screen, keep the playground's files for offline use.
-  loadExample(file, { keepJoints: readUrlState().joints !== undefined, first: true }).finally(() => keepForOffline([
+  loadExample(file, { keepJoints: readUrlState().joints !== undefined, first: true }).finally(() => {
+    // Live design's shader programs, compiled while nothing else happens (issue 28, item 8).
+    const whenIdle = window.requestIdleCallback ?? ((callback) => setTimeout(callback, 0));
+    whenIdle(() => view.prepareLive().catch(() => {}));
+  }).finally(() => keepForOffline([
     ...EXAMPLES.map((example) => exampleUrl(example.file).href),
     ...meshInput.exampleUrls,
   ]));

@@ -14,9 +14,12 @@
 
 import { byId } from './dom.js';
 
-/** Files the worker loads: resource timing of the page does not list them. */
-/** The compute worker and everything it imports (the page's resource list does not show them). */
-const WORKER_FILES = ['./worker.js', '../wasm/core.js', '../wasm/host.js', '../dist/desia_wasm.js', '../dist/desia_wasm.wasm'];
+/**
+ * The package's worker (createDesia's, started as core-worker.js) and everything it imports: the
+ * page's resource list does not show them (the page imports wasm/index.js, client.js, core.js,
+ * host.js and portfolio.js itself).
+ */
+const WORKER_FILES = ['./core-worker.js', '../wasm/worker.js', '../wasm/core.js', '../wasm/host.js', '../dist/desia_wasm.js', '../dist/desia_wasm.wasm'];
 /** The page under both of its names (a link to web/ and to web/index.html). */
 const PAGE_FILES = ['./', './index.html'];
 const SNAPSHOT_TIMEOUT_MS = 120_000;

@@ -31,6 +31,7 @@ import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { RUN_OUT_VOXELS, layOutTray, pointAlong, removalMotions, stepMotions, stepsToPlay } from './view-motions.js';
 import { fitCamera, fitDistance, reframeCamera, screenFill, setDepthRange } from './view-camera.js';
 import { isClick, pickPart, screenPointOf } from './view-picking.js';
+import { LiveDrawing, equalFloats } from './view-live.js';
 
 export {
   formatDirection, formatLevel, formatStep, formatStepMove, planDisassembly, stepsToPlay, withPlannedRemoval,
@@ -208,6 +209,8 @@ export class AssemblyView {
   #partNoun = 'part';
   #cutPoints = new Set();
   #frameRequest = 0;
+  /** Frames drawn so far (renderStats). */
+  #framesRendered = 0;
   #raycaster = new THREE.Raycaster();
   #hoverLabel = null;
   /** The part list's state: the selected part (or null) and the parts the user hid. */
@@ -230,6 +233,15 @@ export class AssemblyView {
   #arrowKey = '';
   /** What show() measured, to size the grid again once the tray is known. */
   #bounds = null;
+  /**
+   * Materials of parts no longer drawn, { surface, edges } pairs kept for the next parts (issue
+   * 28, item 8): a disposed material frees its shader program once no other material uses it, so
+   * the next assembly compiled the same programs again (hundreds of ms in software WebGL, at every
+   * live-design update). Reused, the programs stay; #takeMaterials resets their state.
+   */
+  #spareMaterials = [];
+  /** Live design's merged drawing (view-live.js), made on first use. */
+  #liveDrawing = null;
   #resizeObserver = null;
   #disposed = false;
 
@@ -350,8 +362,36 @@ export class AssemblyView {
    */
   show(document_, surfaces, { keepCamera = false } = {}) {
     const kept = keepCamera ? this.#framed : null;
+    // A part whose surface is unchanged keeps its geometry and edges (a live design redraws the
+    // placed parts at every update; their edges are the costly part to make again).
+    const previous = this.#detachParts();
+    try {
+      this.clear();
+      if (!this.available) return;
+      this.#build(document_, surfaces, previous, kept);
+    } finally {
+      this.#releaseParts(previous);
+    }
+  }
+
+  /**
+   * Live design (issue 28, item 8): the deepest node of a running design, a picture only: its
+   * parts merged into a few meshes (view-live.js), those in `ghost` see-through, the camera where
+   * it is. No picking, playback or emphasis until the next show(). The container's data-parts
+   * and data-ghost say what is drawn, as for show() and setEmphasis.
+   */
+  showLive(document_, surfaces, { ghost = [] } = {}) {
+    const kept = this.#framed;
     this.clear();
     if (!this.available) return;
+    this.#build(document_, surfaces, new Map(), kept, new Set(ghost));
+  }
+
+  /**
+   * show()'s drawing, once the view is empty: `previous` parts may lend their geometry; with
+   * `liveGhost` (a Set of part ids) the parts are merged as showLive draws them.
+   */
+  #build(document_, surfaces, previous, kept, liveGhost = null) {
     const voxel = document_?.kind === 'voxel' && document_.voxel;
     // Plates (and any other kind the core gives surfaces for) are drawn in their own units.
     if (!voxel && !(Array.isArray(surfaces) && surfaces.length > 0)) {
@@ -393,15 +433,16 @@ export class AssemblyView {
     const offset = new THREE.Vector3(-snap((min[0] + max[0]) / 2), -min[1], -snap((min[2] + max[2]) / 2));
     this.#content.position.copy(offset);
     this.#floorY = min[1] + offset.y;
-    this.#addParts(surfaces, centroids, min, max);
+    if (liveGhost) this.#addLiveParts(surfaces, centroids, liveGhost);
+    else this.#addParts(surfaces, centroids, min, max, previous);
     this.#content.add(this.#arrow);
     this.#bounds = { min, max, offset };
     this.#addGrid(min, max, offset);
-    this.#container.dataset.parts = String(this.#meshes.size);
+    if (!liveGhost) this.#container.dataset.parts = String(this.#meshes.size);
     this.#updatePositions();
     // The explode factor outlives the assembly: frame what is actually shown.
     if (kept) this.#framed = kept;
-    else this.#fitCamera(this.#framingBox());
+    else if (!liveGhost) this.#fitCamera(this.#framingBox()); // a live picture keeps the camera
   }
 
   /** Frames the assembly again from the usual three-quarter view (double-click on the view). */
@@ -436,31 +477,25 @@ export class AssemblyView {
     this.#updatePositions();
   }
 
-  #addParts(surfaces, centroids, min, max) {
+  /** `previous`: the parts drawn before (#detachParts); those reused are taken out of it. */
+  #addParts(surfaces, centroids, min, max, previous) {
     const center = new THREE.Vector3(...min).add(new THREE.Vector3(...max)).multiplyScalar(0.5);
     for (const surface of [...surfaces].sort((a, b) => a.partId - b.partId)) {
       const { partId } = surface;
       const sums = centroids.get(partId);
       if (!sums) continue;
-      const geometry = surfaceGeometry(surface);
-      const material = new THREE.MeshStandardMaterial({
-        color: partColor(partId),
-        roughness: 0.7,
-        metalness: 0.0,
-        // Push the faces back a little so the outline edges win the depth test.
-        polygonOffset: true,
-        polygonOffsetFactor: 1,
-        polygonOffsetUnits: 1,
-      });
-      const mesh = new THREE.Mesh(geometry, material);
+      const old = previous.get(partId);
+      const reused = old && sameSurface(old.geometry, surface);
+      if (reused) previous.delete(partId);
+      const geometry = reused ? old.geometry : surfaceGeometry(surface);
+      const edgesGeometry = reused ? old.children[0].geometry : new THREE.EdgesGeometry(geometry, 30);
+      if (reused) this.#spareMaterials.push({ surface: old.material, edges: old.children[0].material });
+      const materials = this.#takeMaterials(partId);
+      const mesh = new THREE.Mesh(geometry, materials.surface);
       mesh.name = `part ${partId}`;
       mesh.userData.partId = partId;
       mesh.userData.edgeColor = EDGE_COLOR;
-      const edges = new THREE.LineSegments(
-        new THREE.EdgesGeometry(geometry, 30),
-        new THREE.LineBasicMaterial({ color: EDGE_COLOR, transparent: true, opacity: 0.55 }),
-      );
-      mesh.add(edges);
+      mesh.add(new THREE.LineSegments(edgesGeometry, materials.edges));
       this.#content.add(mesh);
       this.#meshes.set(partId, mesh);
       // Exploded view: every part moves away from the assembly's centre along the line through
@@ -470,15 +505,90 @@ export class AssemblyView {
     }
   }
 
-  /** The floor grid under the assembly (and under the tray, `trayBox` in the content's frame). */
+  #removeGrid() {
+    const grid = this.#scene?.getObjectByName('grid');
+    if (!grid) return;
+    grid.geometry.dispose();
+    grid.material.dispose();
+    this.#scene.remove(grid);
+  }
+
+  #liveDrawingOnce() {
+    this.#liveDrawing ??= new LiveDrawing({
+      partColor, edgeColor: EDGE_COLOR, edgeOpacity: 0.55, ghostOpacity: GHOST_OPACITY, ghostEdgeOpacity: GHOST_EDGE_OPACITY,
+    });
+    return this.#liveDrawing;
+  }
+
+  /**
+   * Compiles live design's shader programs ahead (in parallel where the browser can), so that a
+   * design's first picture does not wait for them (a second in software WebGL on a busy
+   * machine). Call when the page is idle; resolves when they are ready.
+   */
+  async prepareLive() {
+    if (!this.available) return;
+    const sample = this.#liveDrawingOnce().sample();
+    try {
+      await this.#renderer.compileAsync(sample, this.#camera, this.#scene);
+    } finally {
+      LiveDrawing.disposeSample(sample);
+    }
+  }
+
+  #addLiveParts(surfaces, centroids, ghost) {
+    const drawn = surfaces.filter((surface) => centroids.has(surface.partId));
+    this.#content.add(this.#liveDrawingOnce().update(drawn, ghost));
+    this.#container.dataset.parts = String(drawn.length);
+    this.#container.dataset.ghost = drawn.filter((surface) => ghost.has(surface.partId)).map((surface) => surface.partId).join(' ');
+  }
+
+  /** A part's materials, as a fresh pair would be: from the spare ones when there are any. */
+  #takeMaterials(partId) {
+    const spare = this.#spareMaterials.pop();
+    const surface = spare?.surface ?? new THREE.MeshStandardMaterial({
+      roughness: 0.7,
+      metalness: 0.0,
+      // Push the faces back a little so the outline edges win the depth test.
+      polygonOffset: true,
+      polygonOffsetFactor: 1,
+      polygonOffsetUnits: 1,
+    });
+    const edges = spare?.edges ?? new THREE.LineBasicMaterial({ transparent: true });
+    surface.color.copy(partColor(partId));
+    surface.emissive.copy(NO_GLOW);
+    surface.opacity = 1;
+    surface.depthWrite = true;
+    // Back to opaque: a program the material has compiled before (three.js keeps it per material).
+    if (surface.transparent) surface.needsUpdate = true;
+    surface.transparent = false;
+    edges.color.set(EDGE_COLOR);
+    edges.opacity = 0.55;
+    return { surface, edges };
+  }
+
+  /** Takes the drawn parts out of the view (partId -> mesh); #releaseParts frees what is not reused. */
+  #detachParts() {
+    const parts = new Map(this.#meshes);
+    this.#meshes.clear();
+    return parts;
+  }
+
+  /** Frees the geometry of `parts` (partId -> mesh) and keeps their materials for the next parts. */
+  #releaseParts(parts) {
+    for (const mesh of parts.values()) {
+      mesh.children[0].geometry.dispose();
+      mesh.geometry.dispose();
+      this.#spareMaterials.push({ surface: mesh.material, edges: mesh.children[0].material });
+    }
+    parts.clear();
+  }
+
+  /**
+   * The floor grid under the assembly (and under the tray, `trayBox` in the content's frame). The
+   * same grid is kept while its size does not change (live design draws many nodes of one shape).
+   */
   #addGrid(min, max, offset, trayBox = null) {
     const { cell } = this.#scale;
-    const old = this.#scene.getObjectByName('grid');
-    if (old) {
-      old.geometry.dispose();
-      old.material.dispose();
-      this.#scene.remove(old);
-    }
     const extent = (Math.max(max[0] - min[0], max[2] - min[2]) * (1 + EXPLODE_SCALE)) / cell;
     // An even number of cells keeps grid lines on whole cells, i.e. on voxel boundaries.
     let divisions = 2 * Math.ceil((extent + 4) / 2);
@@ -490,10 +600,20 @@ export class AssemblyView {
       );
       divisions = Math.max(divisions, 2 * Math.ceil(reach / cell + 2));
     }
-    const grid = new THREE.GridHelper(divisions * cell, divisions, 0x59606e, 0x353a44);
-    grid.name = 'grid';
+    const size = `${divisions} x ${cell}`;
+    let grid = this.#scene.getObjectByName('grid');
+    if (grid && grid.userData.size !== size) {
+      this.#removeGrid();
+      grid = null;
+    }
+    if (!grid) {
+      grid = new THREE.GridHelper(divisions * cell, divisions, 0x59606e, 0x353a44);
+      grid.name = 'grid';
+      grid.userData.size = size;
+      this.#scene.add(grid);
+    }
+    grid.visible = true;
     grid.position.set(0, min[1] + offset.y - 0.001 * cell, 0);
-    this.#scene.add(grid);
   }
 
   /** Puts the camera in front of `box` from the usual three-quarter view (view-camera.js). */
@@ -980,14 +1100,9 @@ export class AssemblyView {
 
   clear() {
     if (this.#hoverLabel) this.#hoverLabel.hidden = true;
-    for (const mesh of this.#meshes.values()) {
-      mesh.children[0].geometry.dispose();
-      mesh.children[0].material.dispose();
-      mesh.geometry.dispose();
-      mesh.material.dispose();
-    }
+    this.#releaseParts(this.#detachParts());
+    this.#liveDrawing?.clear();
     this.#content.clear();
-    this.#meshes.clear();
     this.#motions = new Map();
     this.#explodeOffsets.clear();
     this.#keyId = null;
@@ -1008,12 +1123,9 @@ export class AssemblyView {
     this.#lift.position.set(0, 0, 0);
     if (!this.available) return;
     this.#showNotice('');
+    // Hidden, not freed: the next assembly of the same size shows it again (#addGrid).
     const grid = this.#scene.getObjectByName('grid');
-    if (grid) {
-      grid.geometry.dispose();
-      grid.material.dispose();
-      this.#scene.remove(grid);
-    }
+    if (grid) grid.visible = false;
     this.#container.dataset.parts = '0';
     this.#container.dataset.highlight = '';
     this.#container.dataset.ghost = '';
@@ -1025,6 +1137,14 @@ export class AssemblyView {
   dispose() {
     if (this.#disposed) return;
     this.clear();
+    this.#removeGrid();
+    for (const { surface, edges } of this.#spareMaterials) {
+      surface.dispose();
+      edges.dispose();
+    }
+    this.#spareMaterials = [];
+    this.#liveDrawing?.dispose();
+    this.#liveDrawing = null;
     this.#disposed = true;
     if (this.#frameRequest) cancelAnimationFrame(this.#frameRequest);
     this.#frameRequest = 0;
@@ -1038,12 +1158,27 @@ export class AssemblyView {
     this.#hoverLabel?.remove();
   }
 
+  /**
+   * What the renderer holds (three.js renderer.info): shader programs, geometries and textures
+   * on the GPU, the calls and triangles of the last frame, and the frames drawn so far. Live design keeps `programs`
+   * flat (issue 28, item 8): materials are reused, not made per update.
+   */
+  renderStats() {
+    if (!this.available) return { programs: 0, geometries: 0, textures: 0, calls: 0, triangles: 0, framesRendered: 0 };
+    const { programs, memory, render } = this.#renderer.info;
+    return {
+      programs: programs?.length ?? 0, ...memory, calls: render.calls, triangles: render.triangles, framesRendered: this.#framesRendered,
+    };
+  }
+
   /** Renders on demand (at most once per frame) instead of spinning a render loop. */
   requestRender() {
     if (!this.available || this.#frameRequest) return;
     this.#frameRequest = requestAnimationFrame(() => {
       this.#frameRequest = 0;
-      if (this.available) this.#renderer.render(this.#scene, this.#camera);
+      if (!this.available) return;
+      this.#renderer.render(this.#scene, this.#camera);
+      this.#framesRendered += 1;
     });
   }
 
@@ -1091,6 +1226,12 @@ export class AssemblyView {
     if (!this.#onPartClick || this.#meshes.size === 0 || !isClick(down, event)) return;
     this.#onPartClick(this.partAt(event.clientX, event.clientY));
   }
+}
+
+/** Whether a drawn geometry has exactly the triangles of a core part surface. */
+function sameSurface(geometry, { positions }) {
+  const drawn = geometry.getAttribute('position')?.array;
+  return Boolean(drawn) && equalFloats(drawn, positions);
 }
 
 /** Removes and frees the meshes of `group` (the arrows). */

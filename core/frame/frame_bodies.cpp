@@ -243,6 +243,47 @@ bool asAxisAligned(const OrientedBox& box, AxisAlignedBox* out) {
 
 }  // namespace
 
+namespace {
+
+// `box` with the part inside `cube` cut away, when that part is a slab across one end of the box
+// along one axis (a body box reaching into a joint cube through its face); else unchanged.
+AxisAlignedBox cutBackToFace(AxisAlignedBox box, const Aabb& cube) {
+  int beyond = -1;
+  for (int k = 0; k < 3; ++k) {
+    if (box.hi[k] <= cube.lo[k] || box.lo[k] >= cube.hi[k]) return box;  // apart
+    const bool inside =
+        box.lo[k] >= cube.lo[k] - tolerance::kMeshWeldMm && box.hi[k] <= cube.hi[k] + tolerance::kMeshWeldMm;
+    if (inside) continue;
+    if (beyond >= 0) return box;  // out of the cube on two axes: not a body entering a face
+    beyond = k;
+  }
+  if (beyond < 0) return box;  // wholly inside the cube: nothing of the body is left to cut to
+  if (box.lo[beyond] < cube.lo[beyond]) box.hi[beyond] = std::min(box.hi[beyond], cube.lo[beyond]);
+  else box.lo[beyond] = std::max(box.lo[beyond], cube.hi[beyond]);
+  return box;
+}
+
+}  // namespace
+
+TriangleMesh beamBodyPieceMesh(const FrameLayout& layout, int beam) {
+  std::vector<AxisAlignedBox> boxes;
+  for (const OrientedBox& box : beamBodyBoxes(layout, beam)) {
+    AxisAlignedBox axisBox;
+    if (!asAxisAligned(box, &axisBox)) {
+      std::vector<JointLabels> unowned(layout.frame.joints.size());
+      for (JointLabels& labels : unowned) labels.fill(-1);
+      return beamPartMesh(layout, unowned, beam);  // slanted: the body boxes as they are
+    }
+    // Only a joint cube's face cuts (a bent beam's consecutive boxes overlap each other, which
+    // the union takes care of).
+    for (int joint : layout.frame.beams[beam].joints) axisBox = cutBackToFace(axisBox, cubeBounds(layout, joint));
+    bool empty = false;
+    for (int k = 0; k < 3; ++k) empty = empty || axisBox.hi[k] - axisBox.lo[k] <= tolerance::kMeshWeldMm;
+    if (!empty) boxes.push_back(axisBox);
+  }
+  return surfaceOfBoxUnion(boxes, tolerance::kMeshWeldMm);
+}
+
 TriangleMesh beamPartMesh(const FrameLayout& layout, const std::vector<JointLabels>& labels, int beam) {
   // Axis-aligned bodies (every beam of a frame on a grid): the body boxes and the beam's joint
   // voxels as one solid, their exact union (the body reaches half a section into its joint

@@ -69,7 +69,8 @@ std::vector<NamedMesh> pieceMeshes(const FrameDocument& document, const std::str
   std::vector<NamedMesh> meshes;
   for (int beam : document.order) {
     const int id = layout.frame.beams[beam].id;
-    meshes.push_back({id, bodyMesh(layout, beam), "beam" + std::to_string(id)});
+    // The stick cut to length: it ends where the joint pieces begin (beamBodyPieceMesh).
+    meshes.push_back({id, beamBodyPieceMesh(layout, beam), "beam" + std::to_string(id)});
     for (int joint : layout.frame.beams[beam].joints) {
       TriangleMesh piece = beamJointPieceMesh(layout, document.labels, beam, joint);
       if (piece.triangles.empty()) continue;

@@ -122,9 +122,10 @@ describe('playground offline in headless Chromium', { timeout: 120_000 }, () => 
     const cached = new Set(await cachedUrls(page));
     const origin = new URL(server.url).origin;
     const expected = [
-      '/web/', '/web/index.html', '/web/style.css', '/web/worker.js',
+      '/web/', '/web/index.html', '/web/style.css',
       ...(await pageModules()).map((file) => `/web/${file}`),
-      '/wasm/core.js', '/wasm/host.js', '/dist/desia_wasm.js', '/dist/desia_wasm.wasm',
+      // The package the page runs on (createDesia) and its worker.
+      '/web/core-worker.js', '/wasm/index.js', '/wasm/client.js', '/wasm/portfolio.js', '/wasm/worker.js', '/wasm/core.js', '/wasm/host.js', '/dist/desia_wasm.js', '/dist/desia_wasm.wasm',
       '/node_modules/three/build/three.module.js',
       ...(await readdir(path.join(REPO_ROOT, 'examples/voxel'))).filter((file) => file.endsWith('.puz')).map((file) => `/examples/voxel/${file}`),
       '/examples/meshes/torus.obj',
@@ -175,7 +176,7 @@ describe('playground offline in headless Chromium', { timeout: 120_000 }, () => 
     assert.ok(responsesWhileDown.length > 0);
     const fromNetwork = responsesWhileDown.filter((response) => !response.fromServiceWorker);
     assert.deepEqual(fromNetwork, [], 'responses that did not come from the service worker');
-    for (const file of ['/web/main.js', '/web/worker.js', '/dist/desia_wasm.wasm', '/examples/meshes/torus.obj']) {
+    for (const file of ['/web/main.js', '/web/core-worker.js', '/wasm/worker.js', '/dist/desia_wasm.wasm', '/examples/meshes/torus.obj']) {
       assert.ok(responsesWhileDown.some((response) => new URL(response.url).pathname === file), `${file} was served`);
     }
     assert.deepEqual(pageErrors, []);

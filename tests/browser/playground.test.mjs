@@ -158,8 +158,9 @@ describe('playground in headless Chromium', { timeout: 60_000 }, () => {
     const freshPage = await context.newPage();
     freshPage.on('pageerror', (error) => pageErrors.push(error.message));
     try {
-      // The worker's import of the facade fails: the worker dies before it can say anything.
-      await freshPage.route('**/wasm/core.js', (route) => route.abort());
+      // The package's worker script fails to load (the page imports the package itself, so its
+      // modules load): the worker dies before it can say anything.
+      await freshPage.route('**/wasm/worker.js', (route) => route.abort());
       await freshPage.goto(`${server.url}?example=${FIRST_EXAMPLE}`);
       const failed = await waitForSettled(freshPage, FIRST_EXAMPLE);
       assert.equal(failed.status, 'error');
@@ -168,9 +169,28 @@ describe('playground in headless Chromium', { timeout: 60_000 }, () => {
       await freshPage.waitForFunction(() => /in a row/.test(document.querySelector('#error').textContent));
       await screenshot(freshPage, 'playground-worker-failure');
 
-      await freshPage.unroute('**/wasm/core.js');
+      await freshPage.unroute('**/wasm/worker.js');
       await freshPage.selectOption('#example-select', BUNNY_EXAMPLE);
       assertInterlockingWithKey(await waitForReady(freshPage, BUNNY_EXAMPLE), 1);
+    } finally {
+      await freshPage.close();
+    }
+  });
+
+  // Issue 28: the page's requests wait for the package's worker instead of being lost: the
+  // worker script arrives 2 s late, long after the page asked for its first check.
+  it('answers requests sent before the worker started', async () => {
+    const freshPage = await context.newPage();
+    freshPage.on('pageerror', (error) => pageErrors.push(error.message));
+    try {
+      await freshPage.route('**/wasm/worker.js', async (route) => {
+        await new Promise((resolve) => { setTimeout(resolve, 2000); });
+        await route.continue();
+      });
+      await freshPage.goto(`${server.url}?example=${FIRST_EXAMPLE}`);
+      assert.equal(await freshPage.evaluate(() => document.body.dataset.core), 'starting', 'the page asked before the core was there');
+      assertInterlockingWithKey(await waitForReady(freshPage, FIRST_EXAMPLE), 1);
+      assert.equal(await freshPage.evaluate(() => document.body.dataset.core), 'ready');
     } finally {
       await freshPage.close();
     }

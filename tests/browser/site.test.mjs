@@ -182,7 +182,7 @@ describe('the playground as a static site under a sub-path', { timeout: 180_000 
 
   it('is one self-contained folder of plain files with relative URLs only', async () => {
     const files = await listFiles(siteDir);
-    for (const file of ['index.html', 'main.js', 'worker.js', 'sw.js', 'style.css', 'wasm/core.js', 'wasm/host.js', 'wasm/index.js',
+    for (const file of ['index.html', 'main.js', 'sw.js', 'style.css', 'wasm/worker.js', 'wasm/client.js', 'wasm/core.js', 'wasm/host.js', 'wasm/index.js',
       'dist/desia_wasm.js', 'dist/desia_wasm.wasm', 'vendor/three/build/three.module.js', 'vendor/three/LICENSE',
       `examples/voxel/${FIRST_EXAMPLE}`, `examples/plate/${TABLE}`, 'examples/meshes/torus.obj', 'examples/embed.html']) {
       assert.ok(files.includes(file), `${file} is missing from the site`);
@@ -332,7 +332,7 @@ describe('the playground as a static site under a sub-path', { timeout: 180_000 
       }
       return [...urls];
     });
-    for (const file of ['', 'index.html', 'worker.js', 'wasm/core.js', 'dist/desia_wasm.wasm', 'vendor/three/build/three.module.js',
+    for (const file of ['', 'index.html', 'wasm/worker.js', 'wasm/core.js', 'dist/desia_wasm.wasm', 'vendor/three/build/three.module.js',
       'vendor/three/build/three.core.js', `examples/voxel/${CUBE_SHAPE}`, 'examples/meshes/torus.obj']) {
       assert.ok(cached.includes(`${siteUrl}${file}`), `${SUB_PATH}${file} is not kept for offline use`);
     }
@@ -359,7 +359,7 @@ describe('the playground as a static site under a sub-path', { timeout: 180_000 
     await screenshot(page, 'site-offline');
     assert.ok(responsesWhileDown.length > 0);
     assert.deepEqual(responsesWhileDown.filter((response) => !response.fromServiceWorker), [], 'responses not from the service worker');
-    for (const file of ['main.js', 'worker.js', 'dist/desia_wasm.wasm', 'vendor/three/build/three.module.js']) {
+    for (const file of ['main.js', 'wasm/worker.js', 'dist/desia_wasm.wasm', 'vendor/three/build/three.module.js']) {
       assert.ok(responsesWhileDown.some((response) => response.url === `${siteUrl}${file}`), `${file} was served offline`);
     }
   });

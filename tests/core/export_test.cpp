@@ -897,30 +897,16 @@ TEST(FramePieces, EveryBodyAndGluedJointPieceIsItsOwnClosedObjectAddingUpToTheBe
       EXPECT_NEAR(enclosedVolume(objects.at(piece)), owned * voxel, 1e-6 * owned * voxel) << piece;
       pieces += enclosedVolume(objects.at(piece));
     }
-    // Body and glued pieces together are the beam as the assembly draws it: the beam's mesh is
-    // their union, so what the body shares with its joint voxels (it reaches half a section into
-    // the joint cube) counts once there.
-    double shared = 0;
+    // Body and glued pieces together are the beam as the assembly draws it, and no two share
+    // volume: the body is the stick cut to length, from joint face to joint face (issue 28, item
+    // 11; it used to reach half a section into each joint piece).
+    const double whole = enclosedVolume(beamPartMesh(frame.layout, frame.labels, internal));
+    EXPECT_NEAR(pieces, whole, 1e-6 * whole) << name;
     const std::vector<OrientedBox> body = beamBodyBoxes(frame.layout, internal);
     ASSERT_EQ(body.size(), 1u) << name;
-    for (int joint : beam.joints) {
-      for (int v = 0; v < kJointVoxelCount; ++v) {
-        if (frame.labels[joint][v] != internal) continue;
-        const OrientedBox voxel = jointVoxelBox(frame.layout, joint, v);
-        double overlap = 1;
-        for (int k = 0; k < 3; ++k) {
-          double reach = 0;
-          for (int i = 0; i < 3; ++i) reach += std::abs(body[0].axes[i][k]) * body[0].halfExtents[i];
-          const double lo = std::max(body[0].centre[k] - reach, voxel.centre[k] - voxel.halfExtents[k]);
-          const double hi = std::min(body[0].centre[k] + reach, voxel.centre[k] + voxel.halfExtents[k]);
-          overlap *= std::max(0.0, hi - lo);
-        }
-        shared += overlap;
-      }
-    }
-    EXPECT_GT(shared, 0) << name;
-    const double whole = enclosedVolume(beamPartMesh(frame.layout, frame.labels, internal));
-    EXPECT_NEAR(pieces - shared, whole, 1e-6 * whole) << name;
+    const double halfSide = std::min({body[0].halfExtents[0], body[0].halfExtents[1], body[0].halfExtents[2]});
+    const double stick = beamBodyLength(frame.layout, internal) * (2 * halfSide) * (2 * halfSide);
+    EXPECT_NEAR(enclosedVolume(objects.at(name)), stick, 1e-6 * stick) << name;
   }
   EXPECT_EQ(objects.size(), frame.layout.frame.beams.size() + jointPieces);
 }

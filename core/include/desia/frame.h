@@ -125,6 +125,10 @@ std::string frameSweepObstacle(const FrameLayout& layout, const std::vector<Join
 // edge is in exactly two triangles (surfaceOfBoxUnion); a beam with slanted boxes (a curved path)
 // is still one closed shell per body box and voxel group, overlapping where they meet.
 TriangleMesh beamPartMesh(const FrameLayout& layout, const std::vector<JointLabels>& labels, int beam);
+// The body of a beam as a maker cuts it (pieces-obj): for axis-aligned bodies the body boxes cut
+// back to the faces of the beam's joint cubes (a straight beam: the stick of beamBodyLength), one
+// solid that shares no volume with the joint pieces; a curved beam's slanted boxes as they are.
+TriangleMesh beamBodyPieceMesh(const FrameLayout& layout, int beam);
 // The joint piece glued to a beam's end at `joint`: the voxels it owns there (face voxel
 // included), one closed shell; empty when it owns none there.
 TriangleMesh beamJointPieceMesh(const FrameLayout& layout, const std::vector<JointLabels>& labels, int beam,
