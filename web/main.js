@@ -54,6 +54,7 @@ const EXAMPLES = [
   // Boards whose joints need milling (Joints "milled") or that only the paper's plan joins ("planned only").
   { file: 'chair_repaired.json', label: 'Chair repaired, 10 plates (milled)', plate: true, joints: 'milled' },
   { file: 'cabinet.json', label: 'Cabinet under a gable roof, 7 plates (milled)', plate: true, joints: 'milled' },
+  { file: 'table_slanted_crossing.json', label: 'Table with a tilted shelf and a divider crossing it at 60°, 7 plates (milled halved joint)', plate: true, joints: 'milled' },
   { file: 'mitred_box.json', label: 'Mitred box, 6 plates (milled mitre tenons)', plate: true, joints: 'milled' },
   { file: 'dodecahedron.json', label: 'Dodecahedron, 12 mitred plates (milled mitre tenons)', plate: true, joints: 'milled' },
   { file: 'lizard.json', label: 'Lizard, 38 mitred plates (milled mitre tenons and slides; a few seconds)', plate: true, joints: 'milled', timeLimit: 300 },

@@ -24,6 +24,7 @@ const CASES = [
   ['table.json', 'TABLE, 6 plates (Fig. 17)', '0.02 s', 'planned'],
   ['table_divider.json', 'TABLE with a divider through its shelf, 7 plates', null, 'cut'],
   ['bench_2_bays.json', 'TABLE of 2 bays, 10 plates', null, 'cut'],
+  ['table_slanted_crossing.json', 'TABLE, tilted shelf crossed by a divider at 60 degrees, 7 plates', null, 'milled'],
   ['long_table_102.json', 'LONG TABLE, 25 bays, 102 plates', '— (largest: 33)', 'cut'],
   ['cabinet.json', 'CABINET, 7 plates, gable roof (Fig. 13)', '0.09 s', 'milled'],
   ['cabinet.json', 'CABINET, 7 plates, gable roof (Fig. 13)', '0.09 s', 'planned'],
