@@ -1245,9 +1245,9 @@ std::vector<SlotCut> cutsAlongASlant(uint64_t seed, double across) {
     return Loop{at(from, 0), at(to, 0), at(to, depth), at(from, depth)};
   };
   const double middle = 20 + 20 * unit(random);
-  return {{0, quad(0, middle, 1, 5 + 10 * unit(random), 0)},
-          {0, quad(middle, 60 + 10 * unit(random), 1, 5 + 10 * unit(random), 0)},
-          {0, quad(10 * unit(random), 50 + 10 * unit(random), -1, 5 + 10 * unit(random), -across)}};
+  return {{0, quad(0, middle, 1, 5 + 10 * unit(random), 0), {}},
+          {0, quad(middle, 60 + 10 * unit(random), 1, 5 + 10 * unit(random), 0), {}},
+          {0, quad(10 * unit(random), 50 + 10 * unit(random), -1, 5 + 10 * unit(random), -across), {}}};
 }
 
 TEST(PlateJoints, CutsAreRefusedExactlyWhenTheDesignersFootprintsOverlap) {

@@ -40,16 +40,16 @@ TEST(PlateMissingJoints, TheIcosahedronsPlanNamesTheEdgesNoMadeJointFits) {
       << result.message;
 }
 
-TEST(PlateMissingJoints, ACutPlanHasAMadeJointForEachOfItsJoints) {
-  // The slanted TABLE's cut plan: mortise-and-tenon joints and a halved joint at 60 degrees, each
-  // one a family makes; its planned plan has joints no made one fits (a side leaving across the top).
+TEST(PlateMissingJoints, AMilledPlanHasAMadeJointForEachOfItsJoints) {
+  // The slanted TABLE's milled plan (its halved joint at 60 degrees has slanted notch walls, which
+  // only a router makes): mortise-and-tenon, dovetail and halved joints, each one a family makes; its planned plan has joints no made one fits (a side leaving across the top).
   const AssemblyDocument table = loadPlateExample("table_slanted_crossing.json");
   const std::vector<PlateContact> contacts = computePlateContacts(table.plates, {});
   PlateDesignOptions options;
-  options.realization = JointRealization::Cut;
-  const PlateDesignResult cut = designPlateJoints(table.plates, contacts, options);
-  ASSERT_EQ(cut.status, DesignStatus::Success) << cut.message;
-  EXPECT_EQ(jointsNothingMakesSentence(table.plates, contacts, cut.joints, {}), "");
+  options.realization = JointRealization::Milled;
+  const PlateDesignResult milled = designPlateJoints(table.plates, contacts, options);
+  ASSERT_EQ(milled.status, DesignStatus::Success) << milled.message;
+  EXPECT_EQ(jointsNothingMakesSentence(table.plates, contacts, milled.joints, {}), "");
   options.realization = JointRealization::Planned;
   const PlateDesignResult planned = designPlateJoints(table.plates, contacts, options);
   ASSERT_EQ(planned.status, DesignStatus::Success) << planned.message;
