@@ -32,6 +32,7 @@
 #include "desia/error.h"
 #include "desia/interlocking.h"
 #include "desia/tolerances.h"
+#include "plate/joints/halved.h"
 #include "plate/plate_verification.h"
 #include "plate/swept_collision.h"
 
@@ -411,6 +412,16 @@ std::optional<PlateDesignResult> PlateJointPlanner::refusal() const {
         " is a cut point of the parts-graph: taking it away splits the other plates, and no joints can make such "
         "a structure interlocking (paper Section 5.2, Fig. 18); add a plate or bar that joins the two sides";
     return result;
+  }
+  // Plates crossing at a slant part only along their crossing line, through notches a laser cannot
+  // cut (their walls slanted to the sheet): no cut plan exists, so say why before searching.
+  if (options_.realization == JointRealization::Cut) {
+    const std::string slanted = slantedCrossingsNeedMilling(graph_);
+    if (!slanted.empty()) {
+      result.status = DesignStatus::NotFound;
+      result.message = "no interlocking joint plan exists with the joints that can be cut: " + slanted;
+      return result;
+    }
   }
   if (graph_.plateCount < 3) {
     result.message =

@@ -36,6 +36,7 @@ const CASES = [
   ['mitred_box.json', 'MITRED BOX, 6 plates, 45-degree contacts', null, 'planned'],
   ['dodecahedron.json', 'DODECAHEDRON, 12 mitred plates', null, 'milled'],
   ['dodecahedron.json', 'DODECAHEDRON, 12 mitred plates', null, 'planned'],
+  ['icosahedron.json', 'ICOSAHEDRON, 20 mitred plates, 41.8-degree planes (step tenons)', null, 'milled'],
   ['lizard.json', 'LIZARD, 38 mitred plates (Fig. 1: 33)', '2.73 s', 'milled'],
   ['lizard.json', 'LIZARD, 38 mitred plates (Fig. 1: 33)', '2.73 s', 'planned'],
   ['bookcase_123.json', 'BOOKCASE, 123 plates', '— (largest: 33)', 'milled'],

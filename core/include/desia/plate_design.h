@@ -61,6 +61,23 @@ struct FaceTenonSizes {
   LengthShare depth{1, 3};       // the blind mortise's depth, of the mortise plate's thickness
 };
 
+// A tenon running on square past a shallow mitre into a pocket in the other plate's edge
+// (JointType::StepTenon): plates meeting edge to edge with their planes 30..80 degrees apart.
+struct StepTenonSizes {
+  LengthShare width{1, 3};       // along the shared edge, of the mitre's length
+  LengthShare reach{1, 2};       // how far it runs past the mitre's foot on the tenon plate's face,
+                                 // of the way to the other plate's far face (where the slabs part)
+  LengthShare height{3, 4};      // the tenons' height at the pocket's wall, of the wall's
+  LengthShare gap{1, 4};         // between the two tenons at the wall, of the pair's width
+  double flare = 0.25;           // mm each tenon's ends run outwards along the edge per mm towards
+                                 // the mitre (a dovetail seen along the tenon plate's axis)
+  double leastDegrees = 40;      // the angles between the plates' planes it joins (40..50: sides at
+  double mostDegrees = 50;       // 130..140 degrees, the icosahedron's 138.2). Flatter and steeper
+                                 // mitres are left to the mitre tenons and slides (the lizard's
+                                 // 31..38 degree mitres with step tenons: a plan that fails the
+                                 // final check, issue 26)
+};
+
 // The sizes of the joints cut or milled into the plates. The defaults are the sizes every design
 // has had; each family reads its own and the shared ones.
 struct JointCutOptions {
@@ -80,6 +97,7 @@ struct JointCutOptions {
   MitreTenonSizes mitreTenon;
   MitreSlideSizes mitreSlide;
   FaceTenonSizes faceTenon;
+  StepTenonSizes stepTenon;
 };
 
 enum class JointType {
@@ -93,6 +111,9 @@ enum class JointType {
                  // running in a stopped groove in the other along the edge (paper Fig. 16b)
   FaceTenon,     // milled: plates lying face to face (a lap), a stub tenon on one in a blind
                  // mortise in the other; the plate leaves straight off the lap
+  StepTenon,     // milled: plates meeting edge to edge at a shallow angle, the tenon plate running
+                 // on square past the mitre into a pocket in the other's edge; it leaves along its
+                 // axis or in its plane away from the edge
   Empty,         // the plates only touch
 };
 // "mortise-tenon", "halved", "dovetail", "mitre-tenon", "mitre-slide", "face-tenon",

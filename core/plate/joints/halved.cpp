@@ -1,7 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "plate/joints/halved.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <string>
 
 #include "analysis/vec3.h"
 #include "desia/tolerances.h"
@@ -63,8 +66,7 @@ std::vector<SlotCut> halvedSlots(const std::vector<Plate>& plates, const PlateCo
   auto slot = [&](int plate, int across, double towards) {
     const Vec3 axis = plateThicknessAxis(plates[across]);
     const double width = plateThickness(plates[across]);
-    const double cosine = dot(plateThicknessAxis(plates[plate]), axis);
-    if (std::abs(cosine) >= tolerance::kSquareCosine) {
+    if (needsSlantedNotchWalls(plates, crossing)) {
       return slantedSlot(plates, crossing, plate, across, middle, towards > 0 ? crossing.crossingTo + out
                                                                              : crossing.crossingFrom - out,
                          clearance);
@@ -75,10 +77,32 @@ std::vector<SlotCut> halvedSlots(const std::vector<Plate>& plates, const PlateCo
     auto at = [&](double t, double w) { return plus(crossing.crossingPoint, plus(scaled(line, t), scaled(axis, w))); };
     return SlotCut{plate,
                    {at(start, -clearance / 2), at(end, -clearance / 2), at(end, width + clearance / 2),
-                    at(start, width + clearance / 2)}};
+                    at(start, width + clearance / 2)},
+                   {}};
   };
   // The mover's slot opens behind it (it slides off the other plate forwards); the other's ahead.
   return {slot(mover, other, -sign), slot(other, mover, sign)};
+}
+
+bool needsSlantedNotchWalls(const std::vector<Plate>& plates, const PlateContact& crossing) {
+  const double cosine = dot(plateThicknessAxis(plates[static_cast<size_t>(crossing.a)]),
+                            plateThicknessAxis(plates[static_cast<size_t>(crossing.b)]));
+  return std::abs(cosine) >= tolerance::kSquareCosine;
+}
+
+std::string slantedCrossingsNeedMilling(const PlateGraph& graph) {
+  for (const PlateContact& contact : graph.contacts) {
+    if (!contact.crossing || !needsSlantedNotchWalls(graph.plates, contact)) continue;
+    const double cosine = std::min(1.0, std::abs(dot(graph.thicknessAxis[static_cast<size_t>(contact.a)],
+                                                     graph.thicknessAxis[static_cast<size_t>(contact.b)])));
+    char angle[32];
+    std::snprintf(angle, sizeof angle, "%.1f", std::acos(cosine) * 180 / M_PI);
+    return "the crossing of plates " + std::to_string(graph.plates[static_cast<size_t>(contact.a)].id) + " and " +
+           std::to_string(graph.plates[static_cast<size_t>(contact.b)].id) + " at " + angle +
+           " degrees needs slanted notch walls, which a laser cutting square to the sheet cannot make: mill them "
+           "(joints 'milled')";
+  }
+  return "";
 }
 
 CutFootprint slotFootprint(const SlotCut& slot) {
@@ -113,6 +137,7 @@ class HalvedFamily final : public JointFamily {
     const PlateContact& contact = this->contact(crossing);
     if (!parallel(contact.edgeDirection, d)) return false;
     if (!makesJoints(realization())) return true;
+    if (realization() == JointRealization::Cut && needsSlantedNotchWalls(plates(), contact)) return false;
     const bool ahead = dot(d, contact.edgeDirection) > 0;  // which end of the line d points to
     const std::array<bool, 2>& moverOpens = contact.a == mover ? contact.aOpens : contact.bOpens;
     const std::array<bool, 2>& otherOpens = contact.a == mover ? contact.bOpens : contact.aOpens;

@@ -5,12 +5,14 @@
 #pragma once
 
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "desia/plate.h"
 #include "desia/plate_design.h"
 #include "plate/joints/joint_family.h"
 #include "plate/joints/plate_cuts.h"
+#include "plate/plate_graph.h"
 
 namespace desia {
 
@@ -39,8 +41,18 @@ CutFootprint slotFootprint(const SlotCut& slot);
 // The slot to cut (its clearance is in its rectangle).
 std::shared_ptr<const JointCut> jointCut(const SlotCut& slot);
 
+// Do the plates of `crossing` cross at an angle other than square, so that a halved joint's
+// notch walls are slanted to the sheet? A laser (or a router's through cut) cuts square to the
+// sheet, so only a router milling the slanted walls makes such a notch (issue 26, lead's decision).
+bool needsSlantedNotchWalls(const std::vector<Plate>& plates, const PlateContact& crossing);
+
+// Why no joint of a cut design (JointRealization::Cut) joins the graph's first crossing at an
+// angle: "the crossing of plates 1 and 5 at 60.0 degrees needs slanted notch walls, ...: mill them
+// (joints 'milled')", or "" when every crossing is square.
+std::string slantedCrossingsNeedMilling(const PlateGraph& graph);
+
 // The family for the joint planner: plates that cross part only along their crossing line, and
-// only towards the sides their slots can open to.
+// only towards the sides their slots can open to; when cut (not milled), only where they cross square.
 std::unique_ptr<JointFamily> makeHalvedFamily(const JointSetting& setting);
 
 }  // namespace desia

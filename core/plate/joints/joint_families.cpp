@@ -14,6 +14,7 @@
 #include "plate/joints/halved.h"
 #include "plate/joints/mitre_slide.h"
 #include "plate/joints/mitre_tenon.h"
+#include "plate/joints/step_tenon.h"
 #include "plate/joints/tenon.h"
 
 namespace desia {
@@ -29,7 +30,8 @@ std::string formatNumber(double value) {
 // whether only a CNC router makes it (JointRealization::Milled), and how to make it for a design.
 // In the order the planner prefers them for a pair: joints that can be cut before milled ones,
 // a tenon across a mitre before a slide along it, a sliding dovetail last (where no tenons let
-// the plate out). Halved joints join plates that cross, which no other family does.
+// the plate out), a step tenon past a shallow mitre after them (it joins only what they cannot).
+// Halved joints join plates that cross, which no other family does.
 struct FamilyEntry {
   JointType type;
   const char* name;
@@ -44,12 +46,14 @@ const FamilyEntry kFamilies[] = {
     {JointType::MitreSlide, "mitre-slide", true, makeMitreSlideFamily},
     {JointType::FaceTenon, "face-tenon", true, makeFaceTenonFamily},
     {JointType::Dovetail, "dovetail", true, makeDovetailFamily},
+    {JointType::StepTenon, "step-tenon", true, makeStepTenonFamily},
 };
 
 // The order the joints are cut in. Each plate's cut loops and attached solids come in this
 // order, which the bytes of a result depend on: a new family goes at the end.
 const JointType kCutOrder[] = {JointType::Dovetail,  JointType::MitreTenon, JointType::MitreSlide,
-                               JointType::FaceTenon, JointType::Halved,     JointType::MortiseTenon};
+                               JointType::FaceTenon, JointType::Halved,     JointType::MortiseTenon,
+                               JointType::StepTenon};
 
 }  // namespace
 
