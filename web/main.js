@@ -57,6 +57,8 @@ const EXAMPLES = [
   { file: 'table_slanted_crossing.json', label: 'Table with a tilted shelf and a divider crossing it at 60°, 7 plates (milled halved joint)', plate: true, joints: 'milled' },
   { file: 'mitred_box.json', label: 'Mitred box, 6 plates (milled mitre tenons)', plate: true, joints: 'milled' },
   { file: 'dodecahedron.json', label: 'Dodecahedron, 12 mitred plates (milled mitre tenons)', plate: true, joints: 'milled' },
+  { file: 'icosahedron.json', label: 'Icosahedron, 20 mitred plates (milled step tenons; some seconds)', plate: true, joints: 'milled', timeLimit: 300 },
+  { file: 'slanted_box.json', label: 'Slanted box, 6 mitred plates leaning out 55° (milled)', plate: true, joints: 'milled' },
   { file: 'lizard.json', label: 'Lizard, 38 mitred plates (milled mitre tenons and slides; a few seconds)', plate: true, joints: 'milled', timeLimit: 300 },
   // Flush boards that no mortise-and-tenon lets out: sliding dovetails, milled on a CNC.
   { file: 'bookshelf.json', label: 'Bookshelf, 12 plates (milled dovetails)', plate: true, joints: 'milled' },
