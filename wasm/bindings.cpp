@@ -12,24 +12,15 @@
 #include <string>
 #include <vector>
 
-#include "desia/check.h"
-#include "desia/document_check.h"
-#include "desia/cut_sheets.h"
-#include "desia/plate_design.h"
-#include "desia/plate_design_io.h"
 #include "desia/design_io.h"
-#include "desia/design_session.h"
 #include "desia/document.h"
 #include "desia/error.h"
 #include "desia/export.h"
-#include "desia/export_formats.h"
-#include "desia/frame_design.h"
-#include "desia/frame_design_io.h"
-#include "desia/frame_format.h"
-#include "desia/puz_format.h"
-#include "desia/mesh.h"
+#include "desia/formats.h"
+#include "desia/frame.h"
+#include "desia/plate.h"
 #include "desia/version.h"
-#include "desia/voxelize.h"
+#include "desia/voxel.h"
 
 namespace {
 
@@ -223,7 +214,7 @@ val parseFrame(const std::string& text, const std::string& source, double jointS
 }
 
 // The interactive design session (a long-lived handle: JS must call delete(), which the facade's
-// dispose() does), for a voxel shape, a plate design or a frame (desia/design_session.h: the kind
+// dispose() does), for a voxel shape, a plate design or a frame (desia/design_io.h: the kind
 // of the document decides). Every method returns plain data.
 class DesignSession {
  public:
@@ -253,7 +244,7 @@ class DesignSession {
 };
 
 // An assembly (voxel .puz or JSON text, a plate structure or a frame) as the bytes of one file in
-// `format` (desia/export_formats.h: the same registry and writers as the CLI's export); part 0 =
+// `format` (desia/export.h: the same registry and writers as the CLI's export); part 0 =
 // all parts; `spacing` NaN = the default (one voxel). Cut sheets come from cutSheets. Returns a
 // Uint8Array that owns its bytes (copied out of the heap at once: a later memory growth would
 // detach a view, toolchain.md #9).

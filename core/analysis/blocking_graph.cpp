@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "desia/blocking_graph.h"
+#include "desia/analysis.h"
 
 #include <algorithm>
 #include <array>

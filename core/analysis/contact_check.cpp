@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "desia/contact_check.h"
+#include "desia/analysis.h"
 
 #include "desia/error.h"
 

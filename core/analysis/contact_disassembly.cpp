@@ -3,8 +3,7 @@
 // movable part based on the DBGs"). Without geometry no sweep is possible, so a removal is a
 // local translation: the part has no blocking edge along the chosen direction.
 #include "analysis/part_motion.h"
-#include "desia/blocking_graph.h"
-#include "desia/disassembly.h"
+#include "desia/analysis.h"
 
 namespace desia {
 namespace {

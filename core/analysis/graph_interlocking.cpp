@@ -5,7 +5,7 @@
 
 #include "analysis/part_motion.h"
 #include "analysis/vec3.h"
-#include "desia/interlocking.h"
+#include "desia/analysis.h"
 
 namespace desia {
 namespace {

@@ -36,9 +36,9 @@
 #include "analysis/motion_certificates.h"
 #include "analysis/part_motion.h"
 #include "analysis/vec3.h"
-#include "desia/directed_graph.h"
+#include "desia/analysis.h"
 #include "desia/error.h"
-#include "desia/interlocking.h"
+#include "desia/model.h"
 #include "desia/tolerances.h"
 
 namespace desia {

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "analysis/linear_program.h"
-#include "desia/directed_graph.h"
+#include "desia/model.h"
 
 namespace desia::inequality {
 

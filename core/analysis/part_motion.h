@@ -7,9 +7,8 @@
 #include <vector>
 
 #include "analysis/vec3.h"
-#include "desia/assembly.h"
-#include "desia/blocking_graph.h"
-#include "desia/interlocking.h"
+#include "desia/analysis.h"
+#include "desia/model.h"
 #include "desia/tolerances.h"
 
 namespace desia {

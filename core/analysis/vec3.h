@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "desia/assembly.h"
+#include "desia/model.h"
 #include "desia/tolerances.h"
 
 namespace desia {

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "desia/contact_check.h"
+#include "desia/analysis.h"
 
 // desia voxelize --input MESH.obj|.stl [--resolution R] --output SHAPE.puz|.json
 int runVoxelizeCommand(const std::vector<std::string>& args);

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// desia design voxel: a thin shell over designVoxelPuzzle (core/include/desia/voxel_design.h).
+// desia design voxel: a thin shell over designVoxelPuzzle (core/include/desia/voxel.h).
 #include <iostream>
 
 #include "cli_arguments.h"
@@ -7,12 +7,11 @@
 #include "commands.h"
 #include "design_portfolio.h"
 #include "design_run.h"
-#include "desia/check.h"
 #include "desia/design_io.h"
 #include "desia/document.h"
 #include "desia/error.h"
-#include "desia/puz_format.h"
-#include "desia/voxel_design.h"
+#include "desia/formats.h"
+#include "desia/voxel.h"
 
 namespace {
 
@@ -72,9 +71,9 @@ std::string seedsText(const DesignArguments& parsed) {
 }  // namespace
 
 int runDesignCommand(const std::vector<std::string>& args) {
-  desia::cli::CommandClock clock;
   if (!args.empty() && args[0] == "plate") return runPlateDesignCommand(args);
   if (!args.empty() && args[0] == "frame") return runFrameDesignCommand(args);
+  desia::cli::CommandClock clock;
   DesignArguments parsed = parseArguments(args);
   const desia::AssemblyDocument document = desia::parseAssemblyText(desia::cli::readInputFile(parsed.input), parsed.input);
   if (document.kind != desia::AssemblyKind::Voxel) {

@@ -3,7 +3,7 @@
 // core stays single-threaded (WebAssembly has no threads); this runs independent searches of it.
 #pragma once
 
-#include "desia/voxel_design.h"
+#include "desia/voxel.h"
 
 namespace desia::cli {
 

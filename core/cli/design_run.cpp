@@ -20,7 +20,6 @@
 #include "cli_arguments.h"
 #include "cli_files.h"
 #include "desia/document.h"
-#include "desia/document_check.h"
 #include "desia/error.h"
 
 namespace desia::cli {

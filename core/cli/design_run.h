@@ -9,8 +9,8 @@
 #include <functional>
 #include <string>
 
-#include "desia/check.h"
-#include "desia/design_search.h"
+#include "desia/document.h"
+#include "desia/search.h"
 
 namespace desia::cli {
 

@@ -11,18 +11,16 @@
 #include "cli_arguments.h"
 #include "cli_files.h"
 #include "commands.h"
-#include "desia/cut_sheets.h"
+#include "desia/design_io.h"
 #include "desia/document.h"
 #include "desia/error.h"
 #include "desia/export.h"
-#include "desia/export_formats.h"
-#include "desia/frame_design_io.h"
 
 namespace {
 
 constexpr int kExitBadInput = 2;
 
-// The usage line lists the registry's formats (desia/export_formats.h).
+// The usage line lists the registry's formats (desia/export.h).
 std::string exportUsage() {
   std::string formats;
   for (const desia::ExportFormatInfo& format : desia::exportFormats()) formats += (formats.empty() ? "" : "|") + std::string(format.name);

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// desia design frame: a thin shell over designFrame (core/include/desia/frame_design.h).
+// desia design frame: a thin shell over designFrame (core/include/desia/frame.h).
 #include <iostream>
 
 #include "cli_arguments.h"
@@ -7,8 +7,8 @@
 #include "commands.h"
 #include "design_run.h"
 #include "desia/error.h"
-#include "desia/frame_design.h"
-#include "desia/frame_format.h"
+#include "desia/formats.h"
+#include "desia/frame.h"
 
 namespace {
 

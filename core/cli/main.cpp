@@ -10,10 +10,9 @@
 
 #include "cli_files.h"
 #include "commands.h"
-#include "desia/check.h"
-#include "desia/document_check.h"
+#include "desia/document.h"
 #include "desia/error.h"
-#include "desia/mesh_input.h"
+#include "desia/formats.h"
 #include "desia/version.h"
 
 namespace {

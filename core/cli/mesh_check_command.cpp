@@ -5,8 +5,8 @@
 
 #include "cli_files.h"
 #include "commands.h"
-#include "desia/document_check.h"
-#include "desia/mesh_input.h"
+#include "desia/document.h"
+#include "desia/formats.h"
 
 int runMeshCheck(const std::vector<std::string>& files, const desia::CheckOptions& options, bool json,
                  const std::string& unit, double contactTolerance) {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// desia design plate: a thin shell over designPlateJoints (core/include/desia/plate_design.h).
+// desia design plate: a thin shell over designPlateJoints (core/include/desia/plate.h).
 #include <iostream>
 #include <optional>
 
@@ -7,12 +7,11 @@
 #include "cli_files.h"
 #include "commands.h"
 #include "design_run.h"
+#include "desia/design_io.h"
 #include "desia/document.h"
 #include "desia/error.h"
-#include "desia/mesh.h"
-#include "desia/plate_design.h"
-#include "desia/plate_design_io.h"
-#include "desia/plate_repair.h"
+#include "desia/formats.h"
+#include "desia/plate.h"
 
 namespace {
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // `desia plates-from-mesh`: a closed low-poly mesh (OBJ/STL) to a plate design of mitred plates,
-// one per face (core/include/desia/mitred_plates.h), written as a `kind: "plate"` document.
+// one per face (core/include/desia/plate.h), written as a `kind: "plate"` document.
 #include <chrono>
 #include <cmath>
 #include <iostream>
@@ -14,8 +14,8 @@
 #include "commands.h"
 #include "desia/document.h"
 #include "desia/error.h"
-#include "desia/mesh.h"
-#include "desia/mitred_plates.h"
+#include "desia/formats.h"
+#include "desia/plate.h"
 
 namespace {
 

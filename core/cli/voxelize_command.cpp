@@ -9,9 +9,8 @@
 #include "cli_files.h"
 #include "commands.h"
 #include "desia/document.h"
-#include "desia/mesh.h"
-#include "desia/puz_format.h"
-#include "desia/voxelize.h"
+#include "desia/formats.h"
+#include "desia/voxel.h"
 
 namespace {
 

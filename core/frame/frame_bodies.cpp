@@ -11,8 +11,7 @@
 #include "desia/error.h"
 #include "desia/frame.h"
 #include "desia/tolerances.h"
-#include "desia/voxel_grid.h"
-#include "desia/voxel_surface.h"
+#include "desia/voxel.h"
 #include "frame/geometry_internals.h"
 
 namespace desia {

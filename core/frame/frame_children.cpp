@@ -6,8 +6,8 @@
 #include <cmath>
 #include <limits>
 
-#include "desia/cut_points.h"
-#include "desia/interlocking.h"
+#include "desia/analysis.h"
+#include "desia/model.h"
 #include "desia/tolerances.h"
 #include "frame/frame_designer.h"
 

@@ -54,7 +54,7 @@
 #include <vector>
 
 #include "analysis/vec3.h"
-#include "desia/frame_design.h"
+#include "desia/frame.h"
 #include "frame/geometry_internals.h"
 
 namespace desia::frame_design {

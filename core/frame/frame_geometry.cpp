@@ -11,13 +11,12 @@
 #include <tuple>
 
 #include "analysis/vec3.h"
-#include "desia/cut_points.h"
 #include "desia/error.h"
-#include "desia/voxel_surface.h"
 #include "desia/frame.h"
+#include "desia/model.h"
 #include "desia/tolerances.h"
+#include "desia/voxel.h"
 #include "frame/geometry_internals.h"
-#include "desia/voxel_grid.h"
 
 namespace desia {
 namespace {

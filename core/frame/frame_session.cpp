@@ -7,9 +7,9 @@
 #include <optional>
 
 #include "analysis/vec3.h"
+#include "desia/analysis.h"
 #include "desia/error.h"
-#include "desia/frame_design.h"
-#include "desia/interlocking.h"
+#include "desia/frame.h"
 #include "desia/tolerances.h"
 #include "frame/frame_designer.h"
 

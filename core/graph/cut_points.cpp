@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "desia/cut_points.h"
+#include "desia/model.h"
 
 #include <algorithm>
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "desia/directed_graph.h"
+#include "desia/model.h"
 
 #include <algorithm>
 

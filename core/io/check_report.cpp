@@ -5,8 +5,8 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "desia/check.h"
-#include "desia/voxel_disassembly.h"
+#include "desia/document.h"
+#include "desia/voxel.h"
 
 namespace desia {
 
@@ -228,7 +228,7 @@ std::string checkReportToJson(const AssemblyDocument& document, const CheckRepor
   // Over kReportedGraphLimit directions the lists stay empty (`desia check --graphs` keeps them).
   root["graphsOmitted"] = report.graphs.size() < report.baseDirectionCount;
   if ((document.kind == AssemblyKind::Plate && !document.plates.empty()) ||
-      (document.kind == AssemblyKind::Frame && !document.geometryJson.empty())) {
+      (document.kind == AssemblyKind::Frame && document.frame)) {
     root["cutPoints"] = idsJson(assembly, document.plateCutPoints);
   }
   if (report.method == CheckMethod::Both) {

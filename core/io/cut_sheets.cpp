@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Cut files for plate structures (see desia/cut_sheets.h). Flattening, the kerf offset and the
+// Cut files for plate structures (see desia/export.h). Flattening, the kerf offset and the
 // unions are Clipper's (integer coordinates, the same natively and in WebAssembly); numbers are
 // printed from integers of 1e-3 mm, so the files are byte for byte the same everywhere.
-#include "desia/cut_sheets.h"
+#include "desia/export.h"
 
 #include <nlohmann/json.hpp>
 #include <polyclipping/clipper.hpp>

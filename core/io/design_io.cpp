@@ -3,10 +3,10 @@
 
 #include <nlohmann/json.hpp>
 
-#include "desia/check.h"
 #include "desia/document.h"
 #include "desia/error.h"
-#include "desia/puz_format.h"
+#include "desia/formats.h"
+#include "io/design_json.h"
 #include "io/json_input.h"
 
 namespace desia {
@@ -35,19 +35,6 @@ std::vector<std::vector<int64_t>> groupsFromJson(const json& list, const VoxelGr
     groups.push_back(std::move(voxels));
   }
   return groups;
-}
-
-int64_t integerOption(const json& value, const char* name, int64_t lo, int64_t hi) {
-  if (!value.is_number_integer() || value.get<int64_t>() < lo || value.get<int64_t>() > hi) {
-    throwBadInput("", std::string("design option '") + name + "' must be an integer from " + std::to_string(lo) + " to " +
-                          std::to_string(hi) + ", got " + value.dump());
-  }
-  return value.get<int64_t>();
-}
-
-std::string stringOption(const json& value, const char* name) {
-  if (!value.is_string()) throwBadInput("", std::string("design option '") + name + "' must be a string, got " + value.dump());
-  return value.get<std::string>();
 }
 
 }  // namespace

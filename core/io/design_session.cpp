@@ -1,20 +1,15 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The three kinds' sessions behind one interface (desia/design_session.h).
-#include "desia/design_session.h"
+// The three kinds' sessions behind one interface (desia/design_io.h).
+#include "desia/design_io.h"
 
 #include <nlohmann/json.hpp>
 
-#include "desia/check.h"
-#include "desia/design_io.h"
 #include "desia/document.h"
-#include "desia/document_check.h"
 #include "desia/error.h"
-#include "desia/frame_design.h"
-#include "desia/frame_design_io.h"
-#include "desia/frame_format.h"
-#include "desia/plate_design.h"
-#include "desia/plate_design_io.h"
-#include "desia/voxel_design.h"
+#include "desia/formats.h"
+#include "desia/frame.h"
+#include "desia/plate.h"
+#include "desia/voxel.h"
 
 namespace desia {
 namespace {

@@ -1,15 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "desia/document_check.h"
+#include "desia/document.h"
 
 #include <cmath>
 #include <map>
 
 #include "analysis/vec3.h"
 #include "desia/error.h"
+#include "desia/formats.h"
 #include "desia/frame.h"
-#include "desia/frame_design.h"
-#include "desia/frame_format.h"
-#include "desia/plate_design.h"
+#include "desia/plate.h"
 
 namespace desia {
 namespace {

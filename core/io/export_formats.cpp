@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The export-format registry (desia/export_formats.h) and the one way to write a format: cut files
+// The export-format registry (desia/export.h) and the one way to write a format: cut files
 // for plates, the frame exporter for frames, the mesh and puzzle exporter for the rest.
-#include "desia/export_formats.h"
+#include "desia/export.h"
 
 #include <algorithm>
 
 #include "desia/error.h"
 #include "io/export_internals.h"
-#include "desia/frame_design_io.h"
-#include "desia/frame_format.h"
+#include "desia/design_io.h"
+#include "desia/formats.h"
 
 namespace desia {
 namespace {

@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "desia/document.h"
-#include "desia/mesh.h"
-#include "desia/voxel_grid.h"
+#include "desia/formats.h"
+#include "desia/voxel.h"
 
 namespace desia {
 

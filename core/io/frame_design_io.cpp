@@ -1,40 +1,17 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The frame designer's options and result as JSON, for the WebAssembly module.
-#include "desia/frame_design_io.h"
+#include "desia/design_io.h"
 
 #include <nlohmann/json.hpp>
 
-#include <sstream>
-
-#include "desia/check.h"
-#include "desia/document_check.h"
+#include "desia/document.h"
 #include "desia/error.h"
+#include "io/design_json.h"
 #include "io/json_input.h"
 
 namespace desia {
-namespace {
 
 using nlohmann::json;
-
-int64_t integerOption(const json& value, const std::string& name, int64_t lo, int64_t hi) {
-  if (!value.is_number_integer() || value.get<int64_t>() < lo || value.get<int64_t>() > hi) {
-    throwBadInput("", "design option '" + name + "' must be an integer from " + std::to_string(lo) + " to " +
-                          std::to_string(hi) + ", got " + value.dump());
-  }
-  return value.get<int64_t>();
-}
-
-double numberOption(const json& value, const std::string& name, double lo, double hi, const char* unit) {
-  if (!value.is_number() || !(value.get<double>() >= lo && value.get<double>() <= hi)) {
-    std::ostringstream range;
-    range << lo << " to " << hi;
-    throwBadInput("",
-                  "design option '" + name + "' must be a number from " + range.str() + unit + ", got " + value.dump());
-  }
-  return value.get<double>();
-}
-
-}  // namespace
 
 FramePackageOptions parseFrameDesignOptionsJson(const std::string& text) {
   const json root = parseJsonText(text, "design options");
@@ -65,32 +42,16 @@ FramePackageOptions parseFrameDesignOptionsJson(const std::string& text) {
 }
 
 std::string frameDesignResultToJson(const FrameDocument& input, const FrameDesignResult& result) {
-  json root;
-  root["status"] = designStatusName(result.status);
-  root["message"] = result.message;
-  // Timing differs between runs; keep results reproducible.
-  root["progress"] = {{"nodesVisited", result.progress.nodes},
-                      {"bestDepth", result.progress.bestDepth},
-                      {"targetParts", result.progress.targetParts}};
-  root["puz"] = nullptr;
+  json root = designOutcomeJson(result.status, result.message, result.progress);
   if (result.status == DesignStatus::Success) {
     // The same text `desia design frame` writes (before its final newline), checked as written.
     const std::string text = frameResultToJson(input.layout, result, input.name);
     const AssemblyDocument written = parseAssemblyText(text, "result");
     root["document"] = json::parse(text);
     root["verification"] = json::parse(checkReportToJson(written, checkDocument(written), -1));
-  } else {
-    root["document"] = nullptr;
-    root["verification"] = nullptr;
   }
   return root.dump();
 }
-
-namespace {
-
-json vectorJson(const Vec3& v) { return json::array({v[0], v[1], v[2]}); }
-
-}  // namespace
 
 std::string frameSessionStateToJson(const FrameDocument& input, const FrameDesignSession& session) {
   const Frame& frame = input.layout.frame;
@@ -98,13 +59,10 @@ std::string frameSessionStateToJson(const FrameDocument& input, const FrameDesig
   for (const FrameDesignStep& step : session.steps()) {
     steps.push_back({{"beam", frame.beams[step.beam].id}, {"direction", vectorJson(step.direction)}});
   }
-  json root = {{"partsPlaced", static_cast<int>(session.steps().size()) + 1},
-               {"targetParts", session.targetBeams()},
-               {"complete", session.complete()},
-               {"message", session.result().message},
-               {"steps", steps}};
-  root["document"] = json::parse(session.complete() ? frameResultToJson(input.layout, session.result(), input.name, -1)
-                                                    : frameDocumentToJson(input, -1));
+  json document = json::parse(session.complete() ? frameResultToJson(input.layout, session.result(), input.name, -1)
+                                                 : frameDocumentToJson(input, -1));
+  const json root =
+      sessionStateJson(std::move(steps), session.targetBeams(), session.complete(), session.result().message, document);
   return root.dump();
 }
 
@@ -119,7 +77,7 @@ std::string frameStepToJson(const FrameDocument& input, const FrameDesignStep& s
 }
 
 bool isFrameDocument(const AssemblyDocument& document) {
-  return document.kind == AssemblyKind::Frame && document.contactsFromGeometry;
+  return document.kind == AssemblyKind::Frame && document.frame.has_value();
 }
 
 }  // namespace desia

@@ -6,8 +6,7 @@
 #include <cmath>
 
 #include "desia/error.h"
-#include "desia/frame_format.h"
-#include "desia/puz_format.h"
+#include "desia/formats.h"
 #include "io/export_internals.h"
 
 namespace desia {

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Frame files: JSON (kind "frame"), OBJ lines and faces, FrameInterlock's .fpuz; the result
 // document of a frame design.
-#include "desia/frame_format.h"
+#include "desia/formats.h"
 
 #include <algorithm>
 #include <cmath>
@@ -381,7 +381,9 @@ FrameDocument frameFromFpuz(const std::string& text, const std::string& source, 
   return document;
 }
 
-json frameToJson(const FrameDocument& document) {
+}  // namespace
+
+json frameSectionsJson(const FrameDocument& document) {
   const Frame& frame = document.layout.frame;
   json root = json::object();
   root["jointSize"] = frame.jointSize;
@@ -417,7 +419,6 @@ json frameToJson(const FrameDocument& document) {
   return root;
 }
 
-}  // namespace
 
 bool isFpuzSource(const std::string& source) { return endsWithIgnoringCase(source, ".fpuz"); }
 
@@ -442,7 +443,7 @@ std::string frameDocumentToJson(const FrameDocument& document, int indent) {
     for (int beam : document.order) parts.push_back({{"id", document.layout.frame.beams[beam].id}});
     root["parts"] = parts;
   }
-  const json sections = frameToJson(document);  // must outlive the loop
+  const json sections = frameSectionsJson(document);  // must outlive the loop
   for (const auto& [key, value] : sections.items()) root[key] = value;
   return root.dump(indent);
 }
@@ -485,7 +486,7 @@ AssemblyDocument assemblyDocumentFromFrame(const FrameDocument& frameDocument) {
   } else {
     for (int beam : frameDocument.order) document.assembly.parts.push_back({frame.beams[beam].id, ""});
   }
-  document.geometryJson = frameToJson(frameDocument).dump();
+  document.frame = frameDocument;
   document.contactsFromGeometry = true;
   // The beams whose removal splits the parts-graph (beams sharing a joint), as part indices: the
   // check report names them before any design, as it does a plate structure's (the designer
@@ -498,13 +499,12 @@ AssemblyDocument assemblyDocumentFromFrame(const FrameDocument& frameDocument) {
 }
 
 FrameDocument frameFromAssemblyDocument(const AssemblyDocument& document, const std::string& source) {
-  if (document.kind != AssemblyKind::Frame || document.geometryJson.empty()) {
+  if (document.kind != AssemblyKind::Frame) {
     throwBadInput(
         source, std::string("expected a frame structure, this is a ") + assemblyKindName(document.kind) + " document");
   }
-  const json root = json::parse(document.geometryJson);
-  if (!root.contains("beams")) throwBadInput(source, "this frame document has contacts but no beams");
-  FrameDocument frame = frameFromJsonObject(root, source, 0);
+  if (!document.frame) throwBadInput(source, "this frame document has contacts but no beams");
+  FrameDocument frame = *document.frame;
   frame.name = document.name;
   return frame;
 }

@@ -15,6 +15,10 @@ namespace desia {
 AssemblyDocument frameAssemblyDocumentFromJson(const nlohmann::json& root, const std::string& source,
                                                const std::string& name);
 
+// The geometry sections of a frame document (jointSize, beamSection, joints, beams, and for a
+// design result jointVoxels and removal), as the document writer puts them beside its header.
+nlohmann::json frameSectionsJson(const FrameDocument& document);
+
 // True when `source` names a FrameInterlock .fpuz file.
 bool isFpuzSource(const std::string& source);
 // The same document from a .fpuz file.

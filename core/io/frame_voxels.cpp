@@ -12,8 +12,7 @@
 #include <sstream>
 
 #include "desia/error.h"
-#include "desia/frame_format.h"
-#include "desia/puz_format.h"
+#include "desia/formats.h"
 #include "desia/tolerances.h"
 
 namespace desia {

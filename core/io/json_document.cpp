@@ -9,7 +9,8 @@
 
 #include "desia/document.h"
 #include "desia/error.h"
-#include "desia/puz_format.h"
+#include "desia/formats.h"
+#include "io/design_json.h"
 #include "io/frame_json.h"
 #include "io/json_input.h"
 #include "io/plate_format.h"
@@ -250,6 +251,29 @@ Vec3 removalDirection(const json& entry, const std::string& source, const std::s
   return *unit;
 }
 
+// A result's `joints`: [{mover, other, type, direction}], parts by id.
+std::vector<PlateResultJoint> parsePlateResultJoints(const json& list, const Assembly& assembly,
+                                                     const std::string& source) {
+  if (!list.is_array()) fail(source, "joints", "expected a list of {mover, other, type, direction}");
+  std::vector<PlateResultJoint> joints;
+  for (size_t k = 0; k < list.size(); ++k) {
+    const std::string path = "joints[" + std::to_string(k) + "]";
+    if (!list[k].is_object()) fail(source, path, "expected {\"mover\": id, \"other\": id, \"type\", \"direction\"}");
+    PlateResultJoint joint;
+    for (auto [side, id] : {std::pair<const char*, int*>{"mover", &joint.mover}, {"other", &joint.other}}) {
+      const std::string where = path + "." + side;
+      *id = static_cast<int>(integerField(require(list[k], side, source, path), source, where, 1, 1 << 30));
+      if (assembly.indexOfId(*id) < 0) fail(source, where, "part " + std::to_string(*id) + " is not in 'parts'");
+    }
+    const json& type = require(list[k], "type", source, path);
+    if (!type.is_string() || type.get<std::string>().empty()) fail(source, path + ".type", "expected a joint type's name");
+    joint.type = type.get<std::string>();
+    joint.direction = removalDirection(list[k], source, path);
+    joints.push_back(std::move(joint));
+  }
+  return joints;
+}
+
 // A result's plan: `removal` lists every part once, by id, in the order they leave (the key
 // first), each with its direction but the last (null: it stays); `jointGeometry` says what the
 // plates are. Read by id, whatever the order of `parts` and `plates`.
@@ -281,6 +305,7 @@ PlateResultPlan parsePlateResultPlan(const json& root, const Assembly& assembly,
       plan.directions.push_back(removalDirection(removal[k], source, path));
     }
   }
+  if (root.contains("joints")) plan.joints = parsePlateResultJoints(root["joints"], assembly, source);
   if (root.contains("clearance")) {
     const json& clearance = root["clearance"];
     if (!clearance.is_number() || !(clearance.get<double>() >= 0 && clearance.get<double>() <= 10)) {
@@ -333,8 +358,8 @@ void readPlatePlan(const json& root, const std::string& source, AssemblyDocument
   requirePlatePerPart(document.plates, document.assembly, source, "plates");
   if (root.contains("removal") || root.contains("jointGeometry")) {
     document.plateResult = parsePlateResultPlan(root, document.assembly, source);
-  } else if (root.contains("fabricationPlates") || root.contains("clearance")) {
-    fail(source, "removal", "a result with fabricationPlates needs its plan (removal and jointGeometry)");
+  } else if (root.contains("fabricationPlates") || root.contains("clearance") || root.contains("joints")) {
+    fail(source, "removal", "a result with fabricationPlates, clearance or joints needs its plan (removal and jointGeometry)");
   }
   if (root.contains("fabricationPlates")) {
     // The plates with the clearance cut into their mortises: what the cut files make.
@@ -432,12 +457,6 @@ AssemblyDocument documentFromJson(json root, const std::string& source) {
     document.assembly.contacts = parseContacts(root, document.assembly, source);
     if (document.kind == AssemblyKind::Plate && root.contains("plates")) readPlatePlan(root, source, document);
   }
-  json geometry = json::object();
-  for (const char* section : {"plates", "frame", "joints", "removal", "jointGeometry", "clearance", "fabricationPlates",
-                              "contactTolerance"}) {
-    if (root.contains(section)) geometry[section] = std::move(root[section]);  // read: no second copy
-  }
-  if (!geometry.empty()) document.geometryJson = geometry.dump();
   return document;
 }
 
@@ -482,6 +501,30 @@ AssemblyDocument parseAssemblyText(const std::string& text, const std::string& s
   return documentFromVoxels(parsePuz(text, source));
 }
 
+namespace {
+
+// The sections parsePlateResultPlan reads, as plateDesignToJson writes them.
+void writePlateResultPlan(const PlateResultPlan& plan, json& root) {
+  json removal = json::array();
+  for (size_t k = 0; k < plan.removalOrder.size(); ++k) {
+    removal.push_back({{"part", plan.removalOrder[k]},
+                       {"direction", k < plan.directions.size() ? vectorJson(plan.directions[k]) : json(nullptr)}});
+  }
+  root["removal"] = removal;
+  root["jointGeometry"] = plan.jointGeometry;
+  if (plan.clearance > 0) root["clearance"] = plan.clearance;
+  if (!plan.joints.empty()) {
+    json joints = json::array();
+    for (const PlateResultJoint& joint : plan.joints) {
+      joints.push_back({{"mover", joint.mover}, {"other", joint.other}, {"type", joint.type},
+                        {"direction", vectorJson(joint.direction)}});
+    }
+    root["joints"] = joints;
+  }
+}
+
+}  // namespace
+
 std::string documentToJson(const AssemblyDocument& document, int indent) {
   json root;
   root["format"] = "desia-assembly";
@@ -495,10 +538,10 @@ std::string documentToJson(const AssemblyDocument& document, int indent) {
     const std::vector<int64_t> counts = grid.labelCounts();
     for (const Part& part : document.assembly.parts) parts.push_back({{"id", part.id}, {"voxelCount", counts[part.id]}});
     root["parts"] = parts;
-  } else if (document.kind == AssemblyKind::Frame && document.contactsFromGeometry) {
+  } else if (document.kind == AssemblyKind::Frame && document.frame) {
     // A frame is its geometry (and joint voxels): parts and contacts are derived again when read.
-    const json geometry = json::parse(document.geometryJson);
-    for (const auto& [key, value] : geometry.items()) root[key] = value;
+    const json sections = frameSectionsJson(*document.frame);  // must outlive the loop below
+    for (const auto& [key, value] : sections.items()) root[key] = value;
   } else if (document.kind == AssemblyKind::Plate && document.contactsFromGeometry) {
     // A plate design is its geometry: parts and contacts are derived again when it is read.
     if (document.plateOptions.contactTolerance != PlateOptions{}.contactTolerance) {
@@ -520,12 +563,14 @@ std::string documentToJson(const AssemblyDocument& document, int indent) {
                           {"area", contact.area}});
     }
     root["contacts"] = contacts;
-    if (!document.geometryJson.empty()) {
-      const json geometry = json::parse(document.geometryJson);  // must outlive the loop below
-      for (const auto& [key, value] : geometry.items()) root[key] = value;
-    }
-    // A plan: its plates (read and checked) with its given contacts.
+    // A plan: its plates (read and checked) with its given contacts, and a result's plan.
     if (!document.plates.empty()) root["plates"] = platesToJson(document.plates);
+    if (document.plateResult) writePlateResultPlan(*document.plateResult, root);
+    if (!document.fabricationPlates.empty()) root["fabricationPlates"] = platesToJson(document.fabricationPlates);
+    if (document.kind == AssemblyKind::Plate &&
+        document.plateOptions.contactTolerance != PlateOptions{}.contactTolerance) {
+      root["contactTolerance"] = document.plateOptions.contactTolerance;
+    }
   }
   return root.dump(indent);
 }

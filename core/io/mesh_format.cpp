@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "desia/error.h"
-#include "desia/mesh.h"
+#include "desia/formats.h"
 #include "io/text_lines.h"
 
 namespace desia {

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Mesh assemblies read from OBJ and STL files, and their check reports.
-#include "desia/mesh_input.h"
+#include "desia/formats.h"
 
 #include <nlohmann/json.hpp>
 
@@ -8,9 +8,8 @@
 #include <cstdint>
 #include <sstream>
 
-#include "desia/blocking_graph.h"
+#include "desia/analysis.h"
 #include "desia/error.h"
-#include "desia/mesh.h"
 
 namespace desia {
 namespace {

@@ -3,39 +3,17 @@
 #include <nlohmann/json.hpp>
 
 #include <optional>
-#include <sstream>
 
-#include "desia/check.h"
-#include "desia/document_check.h"
+#include "desia/design_io.h"
+#include "desia/document.h"
 #include "desia/error.h"
-#include "desia/plate_design_io.h"
-#include "desia/plate_repair.h"
+#include "desia/plate.h"
+#include "io/design_json.h"
 #include "io/json_input.h"
 
 namespace desia {
-namespace {
 
 using nlohmann::json;
-
-int64_t integerOption(const json& value, const std::string& name, int64_t lo, int64_t hi) {
-  if (!value.is_number_integer() || value.get<int64_t>() < lo || value.get<int64_t>() > hi) {
-    throwBadInput("", "design option '" + name + "' must be an integer from " + std::to_string(lo) + " to " +
-                          std::to_string(hi) + ", got " + value.dump());
-  }
-  return value.get<int64_t>();
-}
-
-double numberOption(const json& value, const std::string& name, double lo, double hi) {
-  if (!value.is_number() || !(value.get<double>() >= lo && value.get<double>() <= hi)) {
-    std::ostringstream range;
-    range << lo << " to " << hi;
-    throwBadInput("",
-                  "design option '" + name + "' must be a number from " + range.str() + " (mm), got " + value.dump());
-  }
-  return value.get<double>();
-}
-
-}  // namespace
 
 PlateDesignOptions parsePlateDesignOptionsJson(const std::string& text) {
   const json root = parseJsonText(text, "design options");
@@ -54,9 +32,9 @@ PlateDesignOptions parsePlateDesignOptionsJson(const std::string& text) {
     else if (name == "joints")
       options.realization = parseJointRealization(value.is_string() ? value.get<std::string>() : value.dump());
     else if (name == "clearance")
-      options.joints.clearance = numberOption(value, name, 0, 10);
+      options.joints.clearance = numberOption(value, name, 0, 10, " (mm)");
     else if (name == "tenonWidth")
-      options.joints.tenonWidth = numberOption(value, name, 1, 10000);
+      options.joints.tenonWidth = numberOption(value, name, 1, 10000, " (mm)");
     else if (name == "tenonCount")
       options.joints.tenonCount = static_cast<int>(integerOption(value, name, 1, 20));
     else {
@@ -69,14 +47,7 @@ PlateDesignOptions parsePlateDesignOptionsJson(const std::string& text) {
 }
 
 std::string plateDesignResultToJson(const AssemblyDocument& input, const PlateDesignResult& result) {
-  json root;
-  root["status"] = designStatusName(result.status);
-  root["message"] = result.message;
-  // Timing differs between runs; keep results reproducible.
-  root["progress"] = {{"nodesVisited", result.progress.nodes},
-                      {"bestDepth", result.progress.bestDepth},
-                      {"targetParts", result.progress.targetParts}};
-  root["puz"] = nullptr;
+  json root = designOutcomeJson(result.status, result.message, result.progress);
   if (result.status == DesignStatus::Success) {
     const std::string planText = plateDesignToJson(input, result, -1);
     const AssemblyDocument plan = parseJsonDocument(planText, "plan");
@@ -91,12 +62,7 @@ std::string plateDesignResultToJson(const AssemblyDocument& input, const PlateDe
       root["message"] = "the plan found did not verify: " +
                         (report.shapeRemoval && !report.shapeRemoval->failure.empty() ? report.shapeRemoval->failure
                                                                                       : report.result.reason);
-      root["document"] = nullptr;
-      root["verification"] = nullptr;
     }
-  } else {
-    root["document"] = nullptr;
-    root["verification"] = nullptr;
   }
   // A cut point: the repair the core proposes (bars that bypass it, Fig. 18) as a design to open.
   root["repair"] = nullptr;
@@ -111,8 +77,6 @@ std::string plateDesignResultToJson(const AssemblyDocument& input, const PlateDe
 }
 
 namespace {
-
-json vectorJson(const Vec3& v) { return json::array({v[0], v[1], v[2]}); }
 
 json stepJson(const AssemblyDocument& input, const PlateDesignStep& step) {
   json joints = json::array();
@@ -130,12 +94,10 @@ std::string plateSessionStateToJson(const AssemblyDocument& input, const PlateDe
   for (const PlateDesignStep& step : session.steps()) {
     steps.push_back({{"plate", input.plates[step.plate].id}, {"direction", vectorJson(step.direction)}});
   }
-  json root = {{"partsPlaced", static_cast<int>(session.steps().size()) + 1},
-               {"targetParts", session.targetPlates()},
-               {"complete", session.complete()},
-               {"message", session.result().message},
-               {"steps", steps}};
-  root["document"] = json::parse(session.complete() ? plateDesignToJson(input, session.result(), -1) : documentToJson(input, -1));
+  json document =
+      json::parse(session.complete() ? plateDesignToJson(input, session.result(), -1) : documentToJson(input, -1));
+  const json root =
+      sessionStateJson(std::move(steps), session.targetPlates(), session.complete(), session.result().message, document);
   return root.dump();
 }
 

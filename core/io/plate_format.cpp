@@ -5,8 +5,9 @@
 #include <set>
 
 #include "analysis/vec3.h"
+#include "desia/design_io.h"
 #include "desia/error.h"
-#include "desia/plate_design_io.h"
+#include "io/design_json.h"
 
 namespace desia {
 namespace {
@@ -179,7 +180,6 @@ std::string plateDesignToJson(const AssemblyDocument& input, const PlateDesignRe
   const std::vector<Plate>& plates = input.plates;
   std::vector<int> newId(plates.size(), 0);
   for (size_t k = 0; k < result.order.size(); ++k) newId[result.order[k]] = static_cast<int>(k) + 1;
-  auto vectorJson = [](const Vec3& v) { return json::array({v[0], v[1], v[2]}); };
   json root;
   root["format"] = "desia-assembly";
   root["version"] = 1;

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "desia/puz_format.h"
+#include "desia/formats.h"
 
 #include <cctype>
 #include <cmath>

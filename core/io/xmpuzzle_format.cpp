@@ -9,10 +9,10 @@
 #include <string>
 #include <vector>
 
-#include "desia/voxel_disassembly.h"
 #include "desia/error.h"
 #include "desia/export.h"
-#include "desia/mesh.h"
+#include "desia/formats.h"
+#include "desia/voxel.h"
 #include "io/export_internals.h"
 
 namespace desia {

@@ -11,7 +11,7 @@
 #include <string>
 
 #include "analysis/vec3.h"
-#include "desia/blocking_graph.h"
+#include "desia/analysis.h"
 #include "desia/tolerances.h"
 #include "mesh/mesh_geometry.h"
 

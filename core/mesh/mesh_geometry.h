@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "analysis/vec3.h"
-#include "desia/mesh_assembly.h"
+#include "desia/mesh.h"
 
 namespace desia::mesh {
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "desia/assembly.h"
+#include "desia/model.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "desia/triangle_mesh.h"
+#include "desia/model.h"
 
 #include <algorithm>
 #include <cmath>

@@ -6,9 +6,8 @@
 
 #include <vector>
 
-#include "desia/assembly.h"
+#include "desia/model.h"
 #include "desia/plate.h"
-#include "desia/plate_design.h"
 #include "plate/joints/joint_families.h"
 #include "plate/joints/plate_cuts.h"
 #include "plate/plate_graph.h"

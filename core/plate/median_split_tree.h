@@ -9,7 +9,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "desia/assembly.h"
+#include "desia/model.h"
 
 namespace desia {
 

@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The planar faces of the mesh behind plates-from-mesh (mitred_plates.h): its triangles merged
+// The planar faces of the mesh behind plates-from-mesh (plate.h): its triangles merged
 // where their normals agree, each face's plane and its outline of corners and neighbours.
 #pragma once
 
 #include <string>
 #include <vector>
 
-#include "desia/triangle_mesh.h"
-#include "desia/mitred_plates.h"
+#include "desia/model.h"
+#include "desia/plate.h"
 #include "plate/mitred_mesh.h"
 
 namespace desia {

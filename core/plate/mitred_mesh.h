@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The mesh behind plates-from-mesh (mitred_plates.h), checked: welded, closed, manifold,
+// The mesh behind plates-from-mesh (plate.h), checked: welded, closed, manifold,
 // consistently oriented, in one piece, with a volume, turned outward; and how messages name its
 // points and vertices.
 #pragma once
@@ -8,8 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "desia/assembly.h"
-#include "desia/triangle_mesh.h"
+#include "desia/model.h"
 
 namespace desia {
 namespace mitred {

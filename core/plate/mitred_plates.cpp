@@ -10,7 +10,7 @@
 // three faces meet a vertex, the three mitres share a line and every plate gets the same inner
 // corner; where more meet, the corners differ (reported as largestCornerMismatch) and the mitre
 // faces of two neighbours overlap in part only, which still makes a contact.
-#include "desia/mitred_plates.h"
+#include "desia/plate.h"
 
 #include <algorithm>
 #include <cmath>

@@ -12,7 +12,7 @@
 
 #include <vector>
 
-#include "desia/assembly.h"
+#include "desia/model.h"
 #include "desia/plate.h"
 
 namespace desia {

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Designing the joints of a plate structure (paper Section 5.2): the whole design and the
 // step-by-step session, both driving the joint planner (plate_planner.h).
-#include "desia/plate_design.h"
+#include "desia/plate.h"
 
 #include <chrono>
 #include <memory>

@@ -10,8 +10,8 @@
 #include <sstream>
 
 #include "analysis/vec3.h"
-#include "desia/cut_points.h"
 #include "desia/error.h"
+#include "desia/model.h"
 #include "desia/plate.h"
 #include "desia/tolerances.h"
 #include "plate/plane_frame.h"

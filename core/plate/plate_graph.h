@@ -6,7 +6,6 @@
 #include <vector>
 
 #include "desia/plate.h"
-#include "desia/plate_design.h"
 
 namespace desia {
 

@@ -28,9 +28,9 @@
 
 #include "analysis/part_motion.h"
 #include "analysis/vec3.h"
-#include "desia/cut_points.h"
+#include "desia/analysis.h"
 #include "desia/error.h"
-#include "desia/interlocking.h"
+#include "desia/model.h"
 #include "desia/tolerances.h"
 #include "plate/joints/halved.h"
 #include "plate/plate_verification.h"

@@ -11,9 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "desia/triangle_mesh.h"
+#include "desia/model.h"
 #include "desia/plate.h"
-#include "desia/plate_design.h"
 #include "plate/joint_model.h"
 #include "plate/joints/joint_families.h"
 #include "plate/plate_graph.h"

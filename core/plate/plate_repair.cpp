@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Cut point repair for plate structures (paper Section 5.2, Fig. 18; see desia/plate_repair.h).
+// Cut point repair for plate structures (paper Section 5.2, Fig. 18; see desia/plate.h).
 // A parts-graph with a cut point cannot be interlocking; the paper adds one part that bypasses
 // it. Here the added parts are bars laid against two coplanar faces of plates in different groups.
-#include "desia/plate_repair.h"
+#include "desia/plate.h"
 
 #include <algorithm>
 #include <array>

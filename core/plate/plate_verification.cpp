@@ -11,9 +11,8 @@
 
 #include "analysis/part_motion.h"
 #include "analysis/vec3.h"
-#include "desia/blocking_graph.h"
-#include "desia/interlocking.h"
-#include "desia/plate_design.h"
+#include "desia/analysis.h"
+#include "desia/plate.h"
 #include "desia/tolerances.h"
 #include "plate/plan_squaring.h"
 #include "plate/plane_frame.h"

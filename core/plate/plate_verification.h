@@ -2,13 +2,13 @@
 // The pieces of a plate plan's verification that the designer also uses at every node: the two
 // interlocking tests and the removal order on a model, and the sweep of each plate past the
 // plates still in place. The whole verification (verifyJointedPlates, verifyPlannedPlates) is in
-// desia/plate_design.h.
+// desia/plate.h.
 #pragma once
 
 #include <string>
 #include <vector>
 
-#include "desia/assembly.h"
+#include "desia/model.h"
 #include "desia/plate.h"
 
 namespace desia {

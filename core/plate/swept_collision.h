@@ -8,7 +8,7 @@
 #include <functional>
 #include <vector>
 
-#include "desia/triangle_mesh.h"
+#include "desia/model.h"
 #include "desia/plate.h"
 #include "plate/median_split_tree.h"
 

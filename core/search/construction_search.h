@@ -10,7 +10,7 @@
 #include <chrono>
 #include <cstdint>
 
-#include "desia/design_search.h"
+#include "desia/search.h"
 
 namespace desia::search {
 

@@ -2,9 +2,8 @@
 #include "voxel/candidate_checks.h"
 
 #include "analysis/part_motion.h"
-#include "desia/blocking_graph.h"
-#include "desia/voxel_disassembly.h"
-#include "desia/interlocking.h"
+#include "desia/analysis.h"
+#include "desia/voxel.h"
 
 namespace desia::design {
 namespace {

@@ -2,8 +2,8 @@
 // Exact checks of a candidate split, with the project's own tests (Section 4.1 requirements).
 #pragma once
 
-#include "desia/assembly.h"
-#include "desia/voxel_grid.h"
+#include "desia/model.h"
+#include "desia/voxel.h"
 #include "voxel/design_internals.h"
 
 namespace desia::design {

@@ -7,8 +7,7 @@
 #include <random>
 #include <vector>
 
-#include "desia/voxel_design.h"
-#include "desia/voxel_grid.h"
+#include "desia/voxel.h"
 
 namespace desia::design {
 

@@ -7,7 +7,7 @@
 #include <random>
 #include <vector>
 
-#include "desia/directed_graph.h"
+#include "desia/model.h"
 #include "voxel/design_internals.h"
 
 namespace desia::design {

@@ -16,13 +16,16 @@
 #include <utility>
 
 #include "desia/error.h"
+#include "voxel/gap_matrix.h"
 
 namespace desia {
 namespace {
 
-constexpr int kFar = std::numeric_limits<int>::max() / 4;  // no meeting at any distance
-// Directions in the order they are tried (that of the single-part planner: +y first).
-constexpr std::array<std::array<int, 2>, 6> kDirections{{{1, +1}, {1, -1}, {0, +1}, {0, -1}, {2, +1}, {2, -1}}};
+using group_moves::GapMatrix;
+using group_moves::kDirections;
+using group_moves::kFar;
+using group_moves::PartGeometry;
+
 // Sets moved together per direction and distance, at one position: closures and their unions.
 // Hundreds of independent parts could make unions explode; beyond this bound the search is not
 // complete and says so.
@@ -34,178 +37,6 @@ Vec3 directionVector(int direction) {
   v[kDirections[direction][0]] = kDirections[direction][1];
   return v;
 }
-
-// One part's voxels seen along one axis: its columns (the two other coordinates) in sorted
-// order, each with the sorted coordinates of its voxels along the axis.
-struct Columns {
-  std::vector<int64_t> keys;
-  std::vector<int> u, v;
-  std::vector<int> first;  // keys.size() + 1 entries into `along`
-  std::vector<int> along;
-  int minU = kFar, maxU = -kFar, minV = kFar, maxV = -kFar;
-};
-
-int64_t columnKey(int u, int v) { return static_cast<int64_t>(u) * 4294967296LL + (static_cast<int64_t>(v) + 2147483648LL); }
-
-// Coordinates of a voxel as (along, u, v) for an axis.
-std::array<int, 3> alongAxis(const Int3& c, int axis) {
-  if (axis == 0) return {c.x, c.y, c.z};
-  if (axis == 1) return {c.y, c.x, c.z};
-  return {c.z, c.x, c.y};
-}
-
-Columns columnsOf(const std::vector<Int3>& voxels, int axis) {
-  std::vector<std::array<int, 3>> cells;
-  for (const Int3& c : voxels) {
-    const auto a = alongAxis(c, axis);
-    cells.push_back({a[1], a[2], a[0]});
-  }
-  std::sort(cells.begin(), cells.end());
-  Columns columns;
-  for (size_t k = 0; k < cells.size(); ++k) {
-    const auto& [u, v, w] = cells[k];
-    if (k == 0 || cells[k - 1][0] != u || cells[k - 1][1] != v) {
-      columns.keys.push_back(columnKey(u, v));
-      columns.u.push_back(u);
-      columns.v.push_back(v);
-      columns.first.push_back(static_cast<int>(columns.along.size()));
-      columns.minU = std::min(columns.minU, u);
-      columns.maxU = std::max(columns.maxU, u);
-      columns.minV = std::min(columns.minV, v);
-      columns.maxV = std::max(columns.maxV, v);
-    }
-    columns.along.push_back(w);
-  }
-  columns.first.push_back(static_cast<int>(columns.along.size()));
-  return columns;
-}
-
-// Gaps between two parts along an axis: how far the first can slide up the axis before it meets
-// the second, and how far the second can; kFar when they never meet.
-struct AxisGaps {
-  int firstUp = kFar, secondUp = kFar;
-};
-
-AxisGaps gapsAlong(const Columns& a, const Columns& b, const std::array<int, 3>& shift) {
-  AxisGaps gaps;
-  const int sw = shift[0], su = shift[1], sv = shift[2];  // b's voxels sit at their coordinates + shift
-  if (a.keys.empty() || b.keys.empty() || a.maxU < b.minU + su || b.maxU + su < a.minU || a.maxV < b.minV + sv ||
-      b.maxV + sv < a.minV) {
-    return gaps;
-  }
-  for (size_t c = 0; c < a.keys.size(); ++c) {
-    const int64_t key = columnKey(a.u[c] - su, a.v[c] - sv);
-    const auto found = std::lower_bound(b.keys.begin(), b.keys.end(), key);
-    if (found == b.keys.end() || *found != key) continue;
-    const size_t d = static_cast<size_t>(found - b.keys.begin());
-    int p = a.first[c], q = b.first[d];
-    const int pEnd = a.first[c + 1], qEnd = b.first[d + 1];
-    int lastA = 0, lastB = 0;
-    bool seenA = false, seenB = false;
-    while (p < pEnd || q < qEnd) {
-      const bool takeA = q >= qEnd || (p < pEnd && a.along[p] < b.along[q] + sw);
-      if (takeA) {
-        const int t = a.along[p++];
-        if (seenB) gaps.secondUp = std::min(gaps.secondUp, t - lastB - 1);
-        lastA = t;
-        seenA = true;
-      } else {
-        const int s = b.along[q++] + sw;
-        if (seenA) gaps.firstUp = std::min(gaps.firstUp, s - lastA - 1);
-        lastB = s;
-        seenB = true;
-      }
-    }
-  }
-  return gaps;
-}
-
-// Every part's columns along each axis, and the gaps of part pairs remembered by their relative
-// position (positions repeat across a search, and across the searches of its sub-assemblies).
-class PartGeometry {
- public:
-  PartGeometry(const VoxelGrid& grid, int partCount) : columns_(static_cast<size_t>(partCount)) {
-    std::vector<std::vector<Int3>> voxels(static_cast<size_t>(partCount));
-    for (int64_t i = 0; i < grid.voxelCount(); ++i) {
-      const int label = grid.labelAt(i);
-      if (label > 0 && label <= partCount) voxels[static_cast<size_t>(label - 1)].push_back(grid.coordinates(i));
-    }
-    for (int part = 0; part < partCount; ++part) {
-      for (int axis = 0; axis < 3; ++axis) columns_[part][axis] = columnsOf(voxels[part], axis);
-    }
-  }
-
-  // Gaps of parts i < j, j placed at `relative` from i: per axis, i up then j up.
-  const std::array<AxisGaps, 3>& gaps(int i, int j, const Int3& relative) {
-    const PairKey key{i, j, relative.x, relative.y, relative.z};
-    auto found = cache_.find(key);
-    if (found != cache_.end()) return found->second;
-    if (cache_.size() > kMaxCachedPairs) cache_.clear();
-    std::array<AxisGaps, 3> result;
-    for (int axis = 0; axis < 3; ++axis) {
-      result[axis] = gapsAlong(columns_[i][axis], columns_[j][axis], alongAxis(relative, axis));
-    }
-    return cache_.emplace(key, result).first->second;
-  }
-
- private:
-  struct PairKey {
-    int i, j, x, y, z;
-    bool operator==(const PairKey& o) const { return i == o.i && j == o.j && x == o.x && y == o.y && z == o.z; }
-  };
-  struct PairKeyHash {
-    size_t operator()(const PairKey& k) const {
-      uint64_t h = 1469598103934665603ULL;
-      for (int value : {k.i, k.j, k.x, k.y, k.z}) {
-        h ^= static_cast<uint32_t>(value);
-        h *= 1099511628211ULL;
-      }
-      return static_cast<size_t>(h ^ (h >> 32));
-    }
-  };
-  static constexpr size_t kMaxCachedPairs = 1 << 21;
-  std::vector<std::array<Columns, 3>> columns_;
-  std::unordered_map<PairKey, std::array<AxisGaps, 3>, PairKeyHash> cache_;
-};
-
-// The gaps between every two parts of a sub-assembly at one position.
-class GapMatrix {
- public:
-  GapMatrix(PartGeometry& geometry, const std::vector<int>& parts)
-      : geometry_(geometry), parts_(parts), k_(static_cast<int>(parts.size())) {
-    for (auto& axis : up_) axis.assign(static_cast<size_t>(k_) * static_cast<size_t>(k_), kFar);
-  }
-
-  // `offsets`: 3 per part, in the order of `parts`.
-  template <typename Offset>
-  void fill(const Offset* offsets) {
-    for (int p = 0; p < k_; ++p) {
-      for (int q = p + 1; q < k_; ++q) {
-        const Int3 relative{offsets[3 * q] - offsets[3 * p], offsets[3 * q + 1] - offsets[3 * p + 1],
-                            offsets[3 * q + 2] - offsets[3 * p + 2]};
-        const auto& gaps = geometry_.gaps(parts_[p], parts_[q], relative);
-        for (int axis = 0; axis < 3; ++axis) {
-          up_[axis][index(p, q)] = gaps[axis].firstUp;
-          up_[axis][index(q, p)] = gaps[axis].secondUp;
-        }
-      }
-    }
-  }
-
-  // How far part p slides along `direction` before it meets part q.
-  int gap(int direction, int p, int q) const {
-    const int axis = kDirections[direction][0];
-    return kDirections[direction][1] > 0 ? up_[axis][index(p, q)] : up_[axis][index(q, p)];
-  }
-
- private:
-  size_t index(int p, int q) const { return static_cast<size_t>(p) * static_cast<size_t>(k_) + static_cast<size_t>(q); }
-
-  PartGeometry& geometry_;
-  const std::vector<int>& parts_;
-  int k_;
-  std::array<std::vector<int>, 3> up_;  // up_[axis][p * k + q]: how far p slides up the axis before meeting q
-};
 
 // Sets of parts of a sub-assembly (local indices): one word for up to 64 parts, words beyond.
 class SmallPartSet {

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "desia/voxel_disassembly.h"
+#include "desia/voxel.h"
 
 namespace desia {
 

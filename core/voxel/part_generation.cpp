@@ -15,7 +15,7 @@
 #include <set>
 #include <type_traits>
 
-#include "desia/blocking_graph.h"
+#include "desia/analysis.h"
 #include "voxel/candidate_checks.h"
 #include "voxel/final_split.h"
 #include "voxel/design_internals.h"

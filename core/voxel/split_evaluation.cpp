@@ -3,7 +3,7 @@
 
 #include <algorithm>
 
-#include "desia/voxel_disassembly.h"
+#include "desia/voxel.h"
 #include "voxel/candidate_checks.h"
 #include "voxel/voxel_removal.h"
 

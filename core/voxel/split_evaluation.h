@@ -10,8 +10,8 @@
 #include <optional>
 #include <vector>
 
-#include "desia/assembly.h"
-#include "desia/voxel_grid.h"
+#include "desia/model.h"
+#include "desia/voxel.h"
 #include "voxel/design_internals.h"
 
 namespace desia::design {

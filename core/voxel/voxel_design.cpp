@@ -7,8 +7,7 @@
 #include <sstream>
 
 #include "desia/error.h"
-#include "desia/voxel_design.h"
-#include "desia/voxel_disassembly.h"
+#include "desia/voxel.h"
 #include "search/construction_search.h"
 #include "search/restarts.h"
 #include "voxel/design_internals.h"

@@ -9,8 +9,8 @@
 #include <set>
 #include <utility>
 
-#include "desia/voxel_disassembly.h"
 #include "desia/error.h"
+#include "desia/voxel.h"
 #include "voxel/group_disassembly.h"
 #include "voxel/voxel_removal.h"
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "desia/voxel_grid.h"
+#include "desia/voxel.h"
 
 #include <algorithm>
 #include <array>

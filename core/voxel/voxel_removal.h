@@ -6,7 +6,7 @@
 
 #include <vector>
 
-#include "desia/voxel_disassembly.h"
+#include "desia/voxel.h"
 
 namespace desia {
 

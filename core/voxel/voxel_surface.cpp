@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "desia/error.h"
-#include "desia/voxel_surface.h"
+#include "desia/voxel.h"
 
 namespace desia {
 namespace {

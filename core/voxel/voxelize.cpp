@@ -39,7 +39,7 @@
 
 #include "desia/error.h"
 #include "desia/tolerances.h"
-#include "desia/voxelize.h"
+#include "desia/voxel.h"
 
 namespace desia {
 namespace {

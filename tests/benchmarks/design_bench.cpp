@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "desia/puz_format.h"
-#include "desia/voxel_design.h"
+#include "desia/formats.h"
+#include "desia/voxel.h"
 #include "workloads.h"
 
 namespace {

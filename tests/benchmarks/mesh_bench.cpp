@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "desia/mesh_assembly.h"
+#include "desia/mesh.h"
 
 namespace {
 

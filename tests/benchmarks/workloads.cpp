@@ -8,13 +8,11 @@
 #include <random>
 #include <sstream>
 
-#include "desia/blocking_graph.h"
-#include "desia/check.h"
+#include "desia/analysis.h"
 #include "desia/document.h"
-#include "desia/directed_graph.h"
-#include "desia/interlocking.h"
-#include "desia/puz_format.h"
-#include "desia/voxel_disassembly.h"
+#include "desia/formats.h"
+#include "desia/model.h"
+#include "desia/voxel.h"
 
 namespace desia::bench {
 namespace {

@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "desia/assembly.h"
-#include "desia/voxel_grid.h"
+#include "desia/model.h"
+#include "desia/voxel.h"
 
 namespace desia::bench {
 

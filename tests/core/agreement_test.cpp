@@ -10,9 +10,9 @@
 #include <map>
 #include <random>
 
-#include "desia/check.h"
-#include "desia/voxel_disassembly.h"
+#include "desia/document.h"
 #include "desia/error.h"
+#include "desia/voxel.h"
 #include "test_support.h"
 
 namespace desia {

@@ -3,8 +3,8 @@
 
 #include <cmath>
 
-#include "desia/blocking_graph.h"
-#include "desia/voxel_grid.h"
+#include "desia/analysis.h"
+#include "desia/voxel.h"
 #include "test_support.h"
 
 namespace desia {

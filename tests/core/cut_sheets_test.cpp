@@ -8,10 +8,10 @@
 #include <map>
 #include <regex>
 
-#include "desia/cut_sheets.h"
+#include "desia/design_io.h"
 #include "desia/error.h"
-#include "desia/plate_design.h"
-#include "desia/plate_design_io.h"
+#include "desia/export.h"
+#include "desia/plate.h"
 #include "test_support.h"
 
 namespace desia {

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <gtest/gtest.h>
 
-#include "desia/voxel_disassembly.h"
+#include "desia/voxel.h"
 #include "test_support.h"
 
 namespace desia {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The export-format registry (desia/export_formats.h) says what the writers do: every format
+// The export-format registry (desia/export.h) says what the writers do: every format
 // writes every kind of assembly it lists, and refuses the kinds it does not list with BadInput.
 #include <gtest/gtest.h>
 
@@ -9,7 +9,7 @@
 
 #include "desia/document.h"
 #include "desia/error.h"
-#include "desia/export_formats.h"
+#include "desia/export.h"
 #include "test_support.h"
 
 namespace desia {

@@ -18,13 +18,11 @@
 #include <utility>
 #include <vector>
 
-#include "desia/voxel_disassembly.h"
 #include "desia/error.h"
 #include "desia/export.h"
+#include "desia/formats.h"
 #include "desia/frame.h"
-#include "desia/frame_format.h"
-#include "desia/mesh.h"
-#include "desia/voxelize.h"
+#include "desia/voxel.h"
 #include "test_support.h"
 
 namespace desia {

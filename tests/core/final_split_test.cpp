@@ -6,8 +6,8 @@
 
 #include <random>
 
-#include "desia/check.h"
-#include "desia/voxel_design.h"
+#include "desia/document.h"
+#include "desia/voxel.h"
 #include "test_support.h"
 #include "voxel/candidate_checks.h"
 #include "voxel/final_split.h"

@@ -12,13 +12,10 @@
 
 #include <nlohmann/json.hpp>
 
-#include "desia/check.h"
+#include "desia/document.h"
 #include "desia/error.h"
+#include "desia/formats.h"
 #include "desia/frame.h"
-#include "desia/frame_design.h"
-#include "desia/frame_format.h"
-#include "desia/mesh.h"
-#include "desia/puz_format.h"
 #include "frame/frame_designer.h"
 #include "test_support.h"
 

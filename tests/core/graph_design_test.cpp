@@ -5,8 +5,8 @@
 
 #include <map>
 
-#include "desia/blocking_graph.h"
-#include "desia/voxel_design.h"
+#include "desia/analysis.h"
+#include "desia/voxel.h"
 #include "test_support.h"
 #include "voxel/graph_design.h"
 

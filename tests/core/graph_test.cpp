@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <gtest/gtest.h>
 
-#include "desia/directed_graph.h"
+#include "desia/model.h"
 
 namespace desia {
 namespace {

@@ -11,8 +11,8 @@
 #include <nlohmann/json.hpp>
 #include <set>
 
-#include "desia/puz_format.h"
-#include "desia/voxel_disassembly.h"
+#include "desia/formats.h"
+#include "desia/voxel.h"
 #include "test_support.h"
 
 namespace desia {

@@ -3,8 +3,8 @@
 
 #include <cmath>
 
-#include "desia/check.h"
-#include "desia/interlocking.h"
+#include "desia/analysis.h"
+#include "desia/document.h"
 #include "test_support.h"
 
 namespace desia {

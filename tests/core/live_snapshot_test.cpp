@@ -9,11 +9,10 @@
 #include <vector>
 
 #include "desia/document.h"
-#include "desia/frame_design.h"
-#include "desia/frame_format.h"
+#include "desia/formats.h"
+#include "desia/frame.h"
 #include "desia/plate.h"
-#include "desia/plate_design.h"
-#include "desia/voxel_design.h"
+#include "desia/voxel.h"
 #include "test_support.h"
 
 namespace desia {

@@ -12,7 +12,7 @@
 #include <random>
 #include <string>
 
-#include "desia/interlocking.h"
+#include "desia/analysis.h"
 #include "test_support.h"
 
 namespace desia {

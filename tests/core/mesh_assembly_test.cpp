@@ -13,12 +13,11 @@
 #include <sstream>
 
 #include "analysis/vec3.h"
-#include "desia/check.h"
-#include "desia/document_check.h"
+#include "desia/document.h"
 #include "desia/error.h"
-#include "desia/export_formats.h"
-#include "desia/mesh_assembly.h"
-#include "desia/mesh_input.h"
+#include "desia/export.h"
+#include "desia/formats.h"
+#include "desia/mesh.h"
 #include "test_support.h"
 
 namespace desia {

@@ -14,8 +14,8 @@
 #include "analysis/vec3.h"
 #include "desia/document.h"
 #include "desia/error.h"
-#include "desia/mesh.h"
-#include "desia/mitred_plates.h"
+#include "desia/formats.h"
+#include "desia/plate.h"
 #include "test_support.h"
 
 namespace desia {

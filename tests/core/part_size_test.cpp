@@ -7,7 +7,7 @@
 #include <algorithm>
 
 #include "desia/error.h"
-#include "desia/voxel_design.h"
+#include "desia/voxel.h"
 #include "test_support.h"
 #include "voxel/design_internals.h"
 

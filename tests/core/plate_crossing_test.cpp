@@ -11,12 +11,11 @@
 #include <string>
 
 #include "analysis/vec3.h"
-#include "desia/check.h"
+#include "desia/design_io.h"
+#include "desia/document.h"
 #include "desia/error.h"
-#include "desia/mesh.h"
+#include "desia/formats.h"
 #include "desia/plate.h"
-#include "desia/plate_design.h"
-#include "desia/plate_design_io.h"
 #include "plate/joints/halved.h"
 #include "plate/joints/plate_cuts.h"
 #include "plate/swept_collision.h"

@@ -24,13 +24,12 @@
 #include "plate/joints/plate_cuts.h"
 #include "plate/joints/tenon.h"
 #include "plate/swept_collision.h"
-#include "desia/check.h"
+#include "desia/design_io.h"
+#include "desia/document.h"
 #include "desia/error.h"
 #include "desia/export.h"
-#include "desia/mesh.h"
-#include "desia/plate_design.h"
-#include "desia/plate_design_io.h"
-#include "desia/plate_repair.h"
+#include "desia/formats.h"
+#include "desia/plate.h"
 #include "test_support.h"
 
 namespace desia {

@@ -6,7 +6,6 @@
 #include <string>
 
 #include "desia/plate.h"
-#include "desia/plate_design.h"
 #include "plate/joints/missing_joints.h"
 #include "test_support.h"
 

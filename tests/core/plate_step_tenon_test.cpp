@@ -10,11 +10,10 @@
 #include <string>
 
 #include "analysis/vec3.h"
-#include "desia/check.h"
+#include "desia/design_io.h"
+#include "desia/document.h"
 #include "desia/error.h"
 #include "desia/plate.h"
-#include "desia/plate_design.h"
-#include "desia/plate_design_io.h"
 #include "desia/tolerances.h"
 #include "plate/joints/joint_families.h"
 #include "plate/joints/step_tenon.h"

@@ -10,12 +10,12 @@
 #include <set>
 
 #include "analysis/vec3.h"
-#include "desia/check.h"
-#include "desia/cut_points.h"
+#include "desia/design_io.h"
+#include "desia/document.h"
 #include "desia/error.h"
 #include "desia/export.h"
-#include "desia/plate_design.h"
-#include "desia/plate_design_io.h"
+#include "desia/model.h"
+#include "desia/plate.h"
 #include "test_support.h"
 
 namespace desia {

@@ -14,10 +14,10 @@
 
 #include <nlohmann/json.hpp>
 
-#include "desia/document_check.h"
+#include "desia/design_io.h"
+#include "desia/document.h"
 #include "desia/error.h"
-#include "desia/plate_design.h"
-#include "desia/plate_design_io.h"
+#include "desia/plate.h"
 #include "test_support.h"
 
 namespace desia {

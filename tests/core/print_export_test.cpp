@@ -19,7 +19,7 @@
 
 #include "desia/error.h"
 #include "desia/export.h"
-#include "desia/mesh.h"
+#include "desia/formats.h"
 #include "test_support.h"
 
 namespace desia {

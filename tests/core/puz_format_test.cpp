@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <gtest/gtest.h>
 
-#include "desia/error.h"
 #include "desia/document.h"
-#include "desia/puz_format.h"
+#include "desia/error.h"
+#include "desia/formats.h"
 #include "test_support.h"
 
 namespace desia {

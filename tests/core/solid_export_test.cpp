@@ -17,11 +17,11 @@
 #include "analysis/vec3.h"
 #include "desia/document.h"
 #include "desia/error.h"
+#include "desia/formats.h"
 #include "desia/frame.h"
-#include "desia/frame_format.h"
+#include "desia/model.h"
 #include "desia/plate.h"
-#include "desia/triangle_mesh.h"
-#include "desia/voxel_surface.h"
+#include "desia/voxel.h"
 #include "test_support.h"
 
 namespace desia {

@@ -7,7 +7,7 @@
 #include <algorithm>
 #include <random>
 
-#include "desia/voxel_design.h"
+#include "desia/voxel.h"
 #include "voxel/candidate_checks.h"
 #include "voxel/design_internals.h"
 #include "voxel/split_evaluation.h"

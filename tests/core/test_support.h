@@ -10,11 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "desia/check.h"
 #include "desia/document.h"
-#include "desia/mesh.h"
+#include "desia/formats.h"
 #include "desia/plate.h"
-#include "desia/puz_format.h"
 
 namespace desia::testing {
 

@@ -6,7 +6,7 @@
 #include <set>
 
 #include "desia/error.h"
-#include "desia/voxel_design.h"
+#include "desia/voxel.h"
 #include "test_support.h"
 #include "voxel/candidate_checks.h"
 #include "voxel/design_internals.h"

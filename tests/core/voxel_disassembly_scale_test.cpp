@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "desia/voxel_disassembly.h"
 #include "desia/document.h"
+#include "desia/voxel.h"
 #include "test_support.h"
 
 namespace desia {

@@ -16,9 +16,8 @@
 #include <vector>
 
 #include "desia/error.h"
-#include "desia/mesh.h"
-#include "desia/voxel_grid.h"
-#include "desia/voxelize.h"
+#include "desia/formats.h"
+#include "desia/voxel.h"
 
 namespace desia {
 namespace {

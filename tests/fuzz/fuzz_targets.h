@@ -19,19 +19,13 @@
 
 #include <nlohmann/json.hpp>
 
-#include "desia/check.h"
-#include "desia/document_check.h"
 #include "desia/design_io.h"
 #include "desia/document.h"
 #include "desia/error.h"
-#include "desia/mesh.h"
-#include "desia/cut_sheets.h"
-#include "desia/frame_format.h"
-#include "desia/mitred_plates.h"
+#include "desia/export.h"
+#include "desia/formats.h"
 #include "desia/plate.h"
-#include "desia/plate_design_io.h"
-#include "desia/voxel_design.h"
-#include "desia/voxelize.h"
+#include "desia/voxel.h"
 
 namespace desia::fuzz {
 

@@ -1,9 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// File exports of voxel assemblies: per-part surface meshes (STL, OBJ) for 3D printing and
-// rendering, print-ready parts (a clearance between parts, one STL per part in a ZIP, or all parts
-// laid flat on a build plate), and BurrTools .xmpuzzle files holding desia's assembly and its
-// disassembly as a solution. The bytes are deterministic: the same document and options give the
-// same file natively and in WebAssembly.
+// Exports: meshes, prints, cut sheets, and the format registry the CLI and the package ask.
 #pragma once
 
 #include <cstdint>
@@ -12,11 +8,16 @@
 #include <vector>
 
 #include "desia/document.h"
-#include "desia/mesh.h"
-#include "desia/voxel_grid.h"
-#include "desia/voxel_surface.h"
+#include "desia/model.h"
+#include "desia/voxel.h"
 
 namespace desia {
+
+// File exports of voxel assemblies: per-part surface meshes (STL, OBJ) for 3D printing and
+// rendering, print-ready parts (a clearance between parts, one STL per part in a ZIP, or all parts
+// laid flat on a build plate), and BurrTools .xmpuzzle files holding desia's assembly and its
+// disassembly as a solution. The bytes are deterministic: the same document and options give the
+// same file natively and in WebAssembly.
 
 enum class ExportFormat {
   StlBinary,  // "stl": binary STL, one triangle soup (one part, or all parts in one file)
@@ -85,5 +86,80 @@ struct ZipEntry {
   std::string data;
 };
 std::vector<uint8_t> zipStored(const std::vector<ZipEntry>& entries);
+
+// Cut files of a plate structure for a laser cutter or a CNC router: every plate laid flat,
+// nested onto sheets, as SVG at true size (millimetres) or DXF (R12, $INSUNITS = mm). Outer cuts,
+// inner cuts (mortises and holes) and engraving (plate ids, the id of the plate that stands on a
+// face next to its joint) are told apart by colour in SVG and by layer in DXF.
+
+enum class CutFileFormat { Svg, Dxf };
+
+// "svg" or "dxf"; BadInput naming the value else.
+CutFileFormat parseCutFileFormat(const std::string& name);
+
+struct CutSheetOptions {
+  // The sheet in mm; 0 x 0 = one sheet as large as the parts need.
+  double sheetWidth = 0, sheetHeight = 0;
+  double kerf = 0;        // mm the beam removes: outlines move out by half of it, holes in
+  double spacing = 5;     // mm between parts and from the sheet's edges
+  bool hairline = false;  // SVG strokes 0.01 mm wide (lasers that cut hairlines only) instead of 0.1 mm
+  std::string source = "<input>";
+};
+
+// "600x400" (mm); BadInput naming the text else.
+void parseSheetSize(const std::string& text, CutSheetOptions* options);
+
+// Options as the package passes them ({sheet: "600x400", kerf, spacing, hairline, source});
+// unknown names and bad values are BadInput.
+CutSheetOptions parseCutSheetOptionsJson(const std::string& text);
+
+// One file per sheet, in order. The plates are the document's `fabricationPlates` (a result cut
+// with a clearance) or its `plates`; each is laid flat on its first face (a plate with mitred
+// edges: the blank holding both faces), turned to its smallest bounding box, and shelf-packed in
+// order of height. Throws BadInput for a document without plates, a sheet too small for a plate
+// (named, with its size), a kerf or spacing out of range.
+std::vector<std::string> plateCutSheets(const AssemblyDocument& document, CutFileFormat format,
+                                        const CutSheetOptions& options);
+
+// Every file format desia writes, for every kind of assembly, in one registry: the CLI's `export`
+// and the package's exportAssembly both ask it which formats exist, which kinds each takes and
+// which options apply, and write through exportFiles. A new format is one entry here and its
+// writer.
+
+// Which options a format reads: the rest would silently change nothing, so callers refuse them.
+enum class ExportOptionGroup {
+  Part,       // one part only (0 = all)
+  VoxelSize,  // model units per voxel
+  Clearance,  // faces between voxel parts moved in (printing)
+  Spacing,    // gaps between parts laid out (build plate, cut sheets)
+  Sheet,      // sheet size, kerf, hairline (cut files)
+};
+
+struct ExportFormatInfo {
+  const char* name;                         // as the CLI's --format and the package's `format`
+  std::vector<AssemblyKind> kinds;          // the assemblies it exports
+  std::vector<ExportOptionGroup> options;   // the options it reads
+  bool perSheet;                            // one file per sheet (cut files), else one file
+  const char* what;                         // one line for usage and errors
+};
+
+// In the order the usage lists them.
+const std::vector<ExportFormatInfo>& exportFormats();
+
+// The format called `name`; BadInput listing every format otherwise.
+const ExportFormatInfo& exportFormatNamed(const std::string& name);
+
+bool formatReads(const ExportFormatInfo& format, ExportOptionGroup option);
+const char* exportOptionGroupName(ExportOptionGroup option);  // "part", "voxelSize", ...
+
+struct ExportSettings {
+  ExportOptions mesh;      // part, voxel size, clearance, build-plate spacing, source
+  CutSheetOptions sheets;  // sheet, kerf, spacing, hairline (cut files)
+};
+
+// The file(s) of `document` in `format`: one, or one per sheet for cut files. BadInput when the
+// format does not take this kind of assembly (naming both), or as each writer refuses its input.
+std::vector<std::string> exportFiles(const AssemblyDocument& document, const ExportFormatInfo& format,
+                                     const ExportSettings& settings);
 
 }  // namespace desia

@@ -1,20 +1,27 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// Plate structures (paper Section 5.2): plates and their contacts, the joint planner and designer,
+// mitred plates from faces, and the repair of cut points.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "desia/model.h"
+#include "desia/search.h"
+#include "desia/tolerances.h"
+
+namespace desia {
+
 // Plate structures (paper Section 5.2): flat boards of constant thickness, each given by its two
 // parallel faces. Their contacts (which plates touch, where, with which normal) are computed from
 // the geometry: a face of one plate lying on a face of another with opposite outward normals and
 // an overlap of positive area. That covers a plate's edge face against another plate's face (butt,
 // T and L joints) and two plates meeting edge to edge along a shared, possibly mitred, face.
-#pragma once
-
-#include <array>
-#include <string>
-#include <vector>
-
-#include "desia/assembly.h"
-#include "desia/tolerances.h"
-#include "desia/triangle_mesh.h"
-
-namespace desia {
 
 // One closed loop of a face: vertices in order, no closing repeat.
 using Loop = std::vector<Vec3>;
@@ -129,5 +136,324 @@ Assembly assemblyFromPlates(const std::vector<Plate>& plates, const std::vector<
 // The plates whose removal disconnects the parts-graph (its cut points). A structure with a cut
 // point cannot be interlocking whatever the joints (paper Section 5.2, Fig. 18).
 std::vector<int> plateCutPoints(int plateCount, const std::vector<PlateContact>& contacts);
+
+// Designing the joints of an interlocking plate structure (paper Section 5.2): the key, the order
+// in which the other plates are taken out, the direction each one leaves in, the joint each pair
+// of touching plates gets, and the joints cut into the plates (core/plate/joints/). A result is
+// verified on the jointed plates themselves: their contacts computed from the geometry, both
+// interlocking tests, and each plate swept out along its direction past the plates still in place.
+
+// A share of a length: numerator / denominator of it. Kept as two numbers so that a third is the
+// length divided by 3, to the last bit.
+struct LengthShare {
+  double numerator = 1, denominator = 1;
+  double of(double length) const { return numerator * length / denominator; }
+};
+
+// A sliding dovetail (JointType::Dovetail, paper Fig. 2, right).
+struct DovetailSizes {
+  double slope = 1.0 / 6;        // how far each flank leans in, mm per mm of depth (1 in 6)
+  LengthShare depth{1, 3};       // the housing's depth, of the housing plate's thickness (housings
+                                 // from both faces leave the rest between them)
+  LengthShare width{2, 3};       // the tongue's width at the housing's floor, of the tongue plate's thickness
+  double narrowestNeck = 2;      // mm: the tongue's least width at the face; narrower, no dovetail
+  double stop = 10;              // mm: the housing stops at least this far (and at least the housing
+                                 // plate's thickness) before the contact's closed end
+};
+
+// A tenon across a mitre (JointType::MitreTenon, paper Fig. 16a).
+struct MitreTenonSizes {
+  LengthShare width{1, 3};       // along the shared edge, of the mitre's length
+  LengthShare height{1, 4};      // its root across the edge, of the mitre's height
+  double lowestRoot = 1;         // mm: a lower root gets no tenon
+  double shallowestPocket = 2;   // mm: a pocket the plate cannot hold this deep gets no tenon
+};
+
+// A tongue sliding in a groove along a mitre (JointType::MitreSlide, paper Fig. 16b).
+struct MitreSlideSizes {
+  double slope = 1.0 / 6;        // how far the groove's flanks lean out, mm per mm of depth (1 in 6)
+  LengthShare height{1, 4};      // the tongue's root across the edge, of the mitre's height
+  double lowestRoot = 1;         // mm: a lower root gets no slide
+  double shallowestGroove = 2;   // mm: a groove the plate cannot hold this deep gets no slide
+  double stop = 10;              // mm: the groove stops at least this far (and at least the slide
+                                 // plate's thickness) before the mitre's end ahead
+  double shortestGroove = 10;    // mm: a shorter groove (with wood all round it) gets no slide
+};
+
+// A stub tenon on a lap (JointType::FaceTenon).
+struct FaceTenonSizes {
+  LengthShare margin{1, 3};      // the lap left on each side of the block, of the lap's length and width
+  LengthShare depth{1, 3};       // the blind mortise's depth, of the mortise plate's thickness
+};
+
+// A tenon running on square past a shallow mitre into a pocket in the other plate's edge
+// (JointType::StepTenon): plates meeting edge to edge with their planes 30..80 degrees apart.
+struct StepTenonSizes {
+  LengthShare width{1, 3};       // along the shared edge, of the mitre's length
+  LengthShare reach{1, 2};       // how far it runs past the mitre's foot on the tenon plate's face,
+                                 // of the way to the other plate's far face (where the slabs part)
+  LengthShare height{3, 4};      // the tenons' height at the pocket's wall, of the wall's
+  LengthShare gap{1, 4};         // between the two tenons at the wall, of the pair's width
+  double flare = 0.25;           // mm each tenon's ends run outwards along the edge per mm towards
+                                 // the mitre (a dovetail seen along the tenon plate's axis)
+  double leastDegrees = 40;      // the angles between the plates' planes it joins (40..50: sides at
+  double mostDegrees = 50;       // 130..140 degrees, the icosahedron's 138.2). Flatter and steeper
+                                 // mitres are left to the mitre tenons and slides (the lizard's
+                                 // 31..38 degree mitres with step tenons: a plan that fails the
+                                 // final check, issue 26)
+};
+
+// The sizes of the joints cut or milled into the plates. The defaults are the sizes every design
+// has had; each family reads its own and the shared ones.
+struct JointCutOptions {
+  // Through and open mortise-and-tenon joints (JointType::MortiseTenon, paper Fig. 2, left).
+  double tenonWidth = 0;     // mm along the edge; 0 = as wide as the gaps between them and at the ends
+                             // (the edge's length / (2 count + 1): a third, or a fifth for two tenons)
+  int tenonCount = 0;        // tenons per joint; 0 = one, or two from `twoTenonsFrom`
+  double twoTenonsFrom = 8;  // with tenonCount 0: edges at least this many tenon-plate thicknesses
+                             // long get two tenons
+  // Every family.
+  double clearance = 0;      // mm of play between a joint's pieces (the mortises, slots and housings
+                             // grow by it, or the tongues and milled tenons shrink)
+  double woodMargin = 1;     // mm of wood left at least round a mortise, pocket, groove or housing,
+                             // and how far a cut runs on past an edge it opens through
+  double shortestJoint = 3;  // mm: a shorter contact, tenon or block gets no joint
+  DovetailSizes dovetail;
+  MitreTenonSizes mitreTenon;
+  MitreSlideSizes mitreSlide;
+  FaceTenonSizes faceTenon;
+  StepTenonSizes stepTenon;
+};
+
+enum class JointType {
+  MortiseTenon,  // tenons on one plate's edge, mortises through the other (planned: the edge
+                 // within 45..135 degrees of the direction)
+  Halved,        // the edge runs along the direction: slots where two plates cross (paper Fig. 2)
+  Dovetail,      // milled: a sliding dovetail along the edge, out through the housing's open end
+  MitreTenon,    // milled: plates meeting edge to edge at an angle, a tenon across the mitre into a
+                 // pocket that fits it (paper Fig. 16a); the plate leaves straight out of the pocket
+  MitreSlide,    // milled: plates meeting edge to edge at an angle, a dovetail tongue on one
+                 // running in a stopped groove in the other along the edge (paper Fig. 16b)
+  FaceTenon,     // milled: plates lying face to face (a lap), a stub tenon on one in a blind
+                 // mortise in the other; the plate leaves straight off the lap
+  StepTenon,     // milled: plates meeting edge to edge at a shallow angle, the tenon plate running
+                 // on square past the mitre into a pocket in the other's edge; it leaves along its
+                 // axis or in its plane away from the edge
+  Empty,         // the plates only touch
+};
+// "mortise-tenon", "halved", "dovetail", "mitre-tenon", "mitre-slide", "face-tenon",
+// "empty"
+const char* jointTypeName(JointType type);
+
+// What a design makes of its joints.
+enum class JointRealization {
+  // Joints cut into the plates (through and open mortise-and-tenon joints, halved joints), each
+  // pair's joint chosen among those the geometry allows, the result verified on the jointed plates.
+  Cut,
+  // As Cut, and where no such joint lets a plate out, sliding dovetails milled along square edges
+  // (a CNC router with a dovetail bit; the tongue and housing are not 2D cuts): the plate leaves
+  // along the edge. What furniture whose boards end flush (BOOKSHELF) needs. And on plates that
+  // meet edge to edge at an angle (mitres: the CABINET's ridge, polyhedral sculptures), tenons
+  // across the mitre into pockets (paper Fig. 16a). Exports: STL and OBJ (cut sheets hold 2D cuts
+  // only).
+  Milled,
+  // The paper's graph design stage alone (Section 5.2): halved, mortise-and-tenon or empty by the
+  // angle between the shared edge and the direction, each joint modelled by the faces every such
+  // joint has; verified on that model. Nothing to cut yet: halved joints need plates that cross,
+  // and the non-orthogonal variants (Fig. 16) and dovetails are not made.
+  Planned,
+  // Chosen for the user (the CLI's and the package's default): Cut if a plan exists, else Milled,
+  // else Planned; the result says which and why (PlateDesignResult::realization and message).
+  // Step by step, Auto steps with Cut joints (the first it tries; choose Milled or Planned to step
+  // a design that needs them).
+  Auto,
+};
+
+// A joint between two touching plates (internal indices): it lets `mover` leave `other` along
+// `direction` only (relative motion), the removal direction planned when `mover` was taken.
+struct PlateJoint {
+  int mover = 0, other = 0;
+  Vec3 direction{0, 0, 0};
+  JointType type = JointType::Empty;
+  int contact = -1;  // the contact the tenons, slots or dovetail are cut in, an index into the contacts
+};
+
+struct PlateDesignOptions {
+  uint64_t seed = 1;
+  int candidates = 30;  // children kept per node (the paper's m)
+  DesignLimits limits{60, 1'000'000, {}, false};  // time, nodes, progress and cancellation
+  JointRealization realization = JointRealization::Cut;
+  JointCutOptions joints;  // tenon sizes and the clearance cut into the result
+  PlateOptions geometry;   // the contact tolerance for the jointed plates' contacts
+};
+
+struct PlateDesignResult {
+  DesignStatus status = DesignStatus::NotFound;
+  std::string message;           // one sentence for the user
+  std::vector<int> order;        // plate indices: the key first, the last plate last
+  std::vector<Vec3> directions;  // removal direction of order[k] (none for the last plate)
+  std::vector<PlateJoint> joints;
+  JointRealization realization = JointRealization::Cut;
+  // The plates with their joints cut (input order, no clearance): what was verified (Cut only).
+  std::vector<Plate> jointedPlates;
+  // The same with the clearance cut into the mortises: what to make (equal to jointedPlates without one).
+  std::vector<Plate> fabricationPlates;
+  double clearance = 0;  // mm of play cut into the fabrication plates' mortises
+  // The contacts of the jointed plates, computed from their geometry (Planned: the joints' model
+  // contacts); part k = order[k].
+  Assembly jointAssembly;
+  DesignProgress progress;
+};
+
+// One step of a plate design: the plate taken (an index) and the direction it leaves along, with
+// the joints it gets with the plates still in place.
+struct PlateDesignStep {
+  int plate = 0;
+  Vec3 direction{0, 0, 0};
+  std::vector<PlateJoint> joints;
+};
+
+// Step-by-step design (as the voxel session, paper Algorithm 1 by hand): the plates taken so far,
+// the ranked children of the current node, choose one, go back. A node whose choice completes the
+// plan is accepted only if the plan verifies (on its jointed plates when cut).
+class PlateDesignSession {
+ public:
+  // Throws BadInput for a structure no joints can make interlocking (a cut point, named; fewer
+  // than 3 plates).
+  PlateDesignSession(std::vector<Plate> plates, std::vector<PlateContact> contacts, const PlateDesignOptions& options);
+  ~PlateDesignSession();
+  PlateDesignSession(const PlateDesignSession&) = delete;
+  PlateDesignSession& operator=(const PlateDesignSession&) = delete;
+
+  const std::vector<PlateDesignStep>& steps() const;  // the key first
+  int targetPlates() const;
+  bool complete() const;  // every plate placed and the plan verified
+  // The verified result once complete (status Success), else NotFound saying how far it got.
+  const PlateDesignResult& result() const;
+
+  int childCount();                          // ranked children of the current node (generated on first call)
+  PlateDesignStep childPreview(int n);       // the n-th child (0 = best ranked), without moving
+  // Moves to the n-th child. Throws BadInput when n is out of range, or when that child completes
+  // a plan that fails verification (the child is dropped from the list; the message says why).
+  void chooseChild(int n);
+  bool next();  // moves to the best child that works; false when none does (then go back)
+  bool back();  // moves to the parent; false at the root
+  // "Finish automatically from here": designPlateJoints's restarted search run below the current
+  // node, so the plates taken so far stay, first in the order with their directions; restarts
+  // re-seed below this node. A success is verified like any design. The session does not move.
+  // Deterministic: the same path and seed give the same result; from the root it is
+  // designPlateJoints with the session's options and these limits.
+  PlateDesignResult finish(const DesignLimits& limits);
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
+
+// "cut", "milled", "planned" or "auto"; BadInput naming the value else.
+JointRealization parseJointRealization(const std::string& name);
+const char* jointRealizationName(JointRealization realization);
+
+// Designs the joints of a connected plate structure whose parts-graph has no cut point (otherwise:
+// status CutPoint, naming it). A success has been verified on the jointed plates: their contacts,
+// computed from the geometry, are interlocking with the key as the only movable part by both the
+// DBG and the LP test, and each plate, swept along its direction, misses every plate after it.
+PlateDesignResult designPlateJoints(const std::vector<Plate>& plates, const std::vector<PlateContact>& contacts,
+                                    const PlateDesignOptions& options = {});
+
+// What a plan's verification found: "" or why it fails, and what it judged.
+struct PlateRemovalVerification {
+  std::string failure;
+  int hitPosition = -1;          // when a plate ran into another: that one's place in the order
+  Assembly assembly;             // the contacts judged, part k = the k-th to leave (normals squared)
+  std::vector<Vec3> directions;  // the ways out judged (squared to the contacts)
+};
+
+// One verification for the designer (before it reports a plan) and `desia check` (of a file)
+// alike. Jointed plates (a cut or milled result), in removal order, plates[0] the key: their
+// contacts computed from the geometry, normals and ways out squared to each other (plan_squaring.h),
+// interlocking with the key as the only movable part by both the DBG and the LP test, each plate
+// free along directions[k] of the plates after it, and each plate, swept along its direction,
+// missing every plate after it. The result depends on the plates and their removal order, not on
+// how the document lists them.
+PlateRemovalVerification verifyJointedPlates(const std::vector<Plate>& plates, const std::vector<Vec3>& directions,
+                                             const PlateOptions& geometry = {});
+
+// A planned result (nothing cut): the same tests on the joint model's contacts (`model`, part k =
+// plates[k] = the k-th to leave), and the plates as they are swept along their directions, pairs
+// that cross excepted (their slots are not cut).
+PlateRemovalVerification verifyPlannedPlates(const Assembly& model, const std::vector<Plate>& plates,
+                                             const std::vector<Vec3>& directions, const PlateOptions& geometry = {});
+
+// Why a result's `fabricationPlates` (what the cut files and meshes make) are not its verified
+// `plates` with play cut into their joints, or "": plates matched by id, each fabrication plate's
+// faces in its plate's planes, its solid within its plate's (only wood removed) and its plate's
+// within `clearance` of it; attached solids the same in number, each within the clearance of its
+// own.
+std::string fabricationPlatesFailure(const std::vector<Plate>& plates, const std::vector<Plate>& fabrication,
+                                     double clearance, const PlateOptions& geometry = {});
+
+// Plate sculptures from a low-poly mesh (paper Section 5.2, the LIZARD of Fig. 1): every
+// planar face of a closed, consistently oriented mesh becomes a plate of one thickness, inset
+// inside the mesh, with mitred edges. The plate's outer face is the mesh face; its inner face lies
+// on the face's plane moved inward by the thickness; each side face lies on the plane that bisects
+// the dihedral angle between the face and its neighbour across that edge, so two neighbouring
+// plates meet edge to edge along one shared mitre face, which computePlateContacts finds.
+
+struct MitredPlateOptions {
+  double thickness = 0;  // mm, > 0: the plates' thickness, measured from the mesh face inward
+  // mm: how far a face's vertices may lie off one plane, and the plates' contact tolerance.
+  double tolerance = PlateOptions{}.contactTolerance;
+  // Adjacent triangles whose normals differ by less than this are one face (a modelling tool's
+  // triangulation of a polygon); more than that and they are two plates meeting at a mitre.
+  double mergeAngleDegrees = 1.0;
+};
+
+struct MitredPlates {
+  // One plate per mesh face, ids 1, 2, ... in the order of each face's first triangle in the file
+  // (so a rotated copy of the mesh gives the same numbering). `bottom` is the mesh face itself,
+  // counter-clockwise seen from outside and starting at its corner with the lowest vertex index;
+  // `top` is the inner face, vertex for vertex. No names, no holes.
+  std::vector<Plate> plates;
+  // Per plate, per side k (the edge from corner k to corner k+1): the plate (index) across it.
+  std::vector<std::vector<int>> sideNeighbours;
+  // Per plate: the mesh vertices (0-based) at its corners, and the mesh triangles of its face.
+  std::vector<std::vector<int>> cornerVertices;
+  std::vector<std::vector<int>> faceTriangles;
+  // The contacts of the plates (computePlateContacts with the tolerance), each mitre's among them.
+  std::vector<PlateContact> contacts;
+  int meshEdges = 0;            // edges between two faces (runs of mesh edges); each is one mitre
+  bool reoriented = false;      // the mesh was inside out (consistently); its faces were turned outward
+  // mm: where more than three faces meet, each plate's inner corner (its inner plane and its two
+  // mitres) differs from its neighbours'; the largest such distance (0 when all corners agree).
+  double largestCornerMismatch = 0;
+};
+
+// The mitred plates of `mesh`. Throws BadInput naming `source` and the face, edge, vertex or value:
+// a mesh that is not closed, not manifold (an edge of more than two triangles, a vertex where the
+// surface touches itself), inconsistently oriented, in several pieces, or without volume; a face
+// that is not planar within the tolerance or has a hole; a thickness that is not positive, or too
+// large for a face (its inner face would lose an edge or cross itself; the message gives the
+// largest thickness that face allows) or for the shape (an inner corner leaves the mesh).
+// TooLarge beyond 10000 faces, or when inner corners x triangles exceed 2e8 (the inside test).
+MitredPlates mitredPlatesFromMesh(const TriangleMesh& mesh, const MitredPlateOptions& options, const std::string& source);
+
+// Repairing a plate structure whose parts-graph has a cut point (paper Section 5.2, Fig. 18): no
+// joints can make it interlocking, but an added part that joins the groups the cut point holds
+// together can (the paper's CHAIR gets one bar).
+
+struct PlateRepair {
+  std::vector<Plate> plates;  // the input's plates, then the added bars (ids after the largest)
+  std::vector<int> added;     // indices of the added bars in `plates`
+  std::string message;        // what was added, for the user
+};
+
+// Proposes bars that remove every cut point: for the groups a cut point separates, a bar lying
+// flat against a face of a plate in one group and a face of a plate in another that share one
+// plane (a leg's outer face and the edge of a back, say), outside both, spanning from one to the
+// other across the width they share, as thick as the thinner plate, clear of every other plate.
+// The smallest such bar is taken first; repeated until no cut point is left. Nothing when the
+// structure has no cut point or no such bar exists.
+std::optional<PlateRepair> proposeCutPointRepair(const std::vector<Plate>& plates, const PlateOptions& options = {});
 
 }  // namespace desia

@@ -3,14 +3,14 @@
 // the order the planner prefers them, and what the planner asks of them. Adding a family is a
 // file of its own (its sites, its cut and its JointFamily) and its line in the two tables of
 // joint_families.cpp (kFamilies, with its user-visible name, and kCutOrder), plus its JointType
-// in desia/plate_design.h (and the name in the package's types, wasm/index.d.ts).
+// in desia/plate.h (and the name in the package's types, wasm/index.d.ts).
 #pragma once
 
 #include <memory>
 #include <optional>
 #include <vector>
 
-#include "desia/plate_design.h"
+#include "desia/plate.h"
 #include "plate/joints/joint_family.h"
 #include "plate/joints/plate_cuts.h"
 #include "plate/plate_graph.h"

@@ -8,7 +8,7 @@
 #include <memory>
 #include <vector>
 
-#include "desia/plate_design.h"
+#include "desia/plate.h"
 #include "plate/joints/plate_cuts.h"
 #include "plate/plate_graph.h"
 

@@ -15,7 +15,6 @@
 
 #include "analysis/vec3.h"
 #include "desia/plate.h"
-#include "desia/plate_design.h"
 #include "plate/joints/joint_family.h"
 #include "plate/joints/plate_cuts.h"
 

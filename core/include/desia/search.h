@@ -1,8 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// What every designer (voxel puzzles, plate joints, frame joints) shares with its caller: the
-// progress of its construction-tree search (paper Algorithm 1), the limits a caller puts on it and
-// how it ended. One set of types for the three kinds, so the CLI, the bindings and the playground
-// handle a search the same way whatever it designs.
+// The construction-tree search every designer runs (Algorithm 1): limits, progress, status.
 #pragma once
 
 #include <cstdint>
@@ -11,6 +8,11 @@
 #include <vector>
 
 namespace desia {
+
+// What every designer (voxel puzzles, plate joints, frame joints) shares with its caller: the
+// progress of its construction-tree search (paper Algorithm 1), the limits a caller puts on it and
+// how it ended. One set of types for the three kinds, so the CLI, the bindings and the playground
+// handle a search the same way whatever it designs.
 
 class VoxelGrid;
 
