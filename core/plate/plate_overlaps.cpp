@@ -154,6 +154,22 @@ void requireMitredPerpendicularApart(const Plate& a, const Plate& b, double tole
   }
 }
 
+// The contact of plates p and q crossing through each other over [from, to] along the line (point,
+// direction) where their planes meet; `depth` is the larger of their stretches across each other.
+PlateContact crossingContact(int p, int q, const Vec3& direction, const Vec3& point, double from, double to,
+                             double depth) {
+  PlateContact crossing;
+  crossing.a = p;
+  crossing.b = q;
+  crossing.crossing = true;
+  crossing.edgeDirection = direction;
+  crossing.crossingPoint = point;
+  crossing.crossingFrom = from;
+  crossing.crossingTo = to;
+  crossing.area = (to - from) * depth;
+  return crossing;
+}
+
 // Plates crossing at any angle, prisms or with mitred sides (judged by their core prisms, where
 // they have their whole thickness): over a stretch of the line where their planes meet, each has
 // material across the other's whole slab (the parallelogram where the slabs meet, seen along its
@@ -202,15 +218,7 @@ std::optional<PlateContact> slantedCrossing(const std::vector<Plate>& plates, in
     return std::abs(pathsArea(inside) - (high - low) * length) <= tolerance * (length + high - low);
   };
   if (!fills(a, frameA, inA) || !fills(b, frameB, inB)) return std::nullopt;
-  PlateContact crossing;
-  crossing.a = p;
-  crossing.b = q;
-  crossing.crossing = true;
-  crossing.edgeDirection = line;
-  crossing.crossingPoint = point;
-  crossing.crossingFrom = from;
-  crossing.crossingTo = to;
-  crossing.area = (to - from) * std::max(inA.to - inA.from, inB.to - inB.from);
+  PlateContact crossing = crossingContact(p, q, line, point, from, to, std::max(inA.to - inA.from, inB.to - inB.from));
   crossing.aOpens = {shadowA.front().first >= from - tolerance, shadowA.back().second <= to + tolerance};
   crossing.bOpens = {shadowB.front().first >= from - tolerance, shadowB.back().second <= to + tolerance};
   return crossing;
@@ -275,15 +283,7 @@ std::optional<PlateContact> plateCrossing(const std::vector<Plate>& plates, int 
                           " overlap without passing through each other: make them cross "
                           "through (each filling the other's thickness) or meet face to face");
   }
-  PlateContact crossing;
-  crossing.a = p;
-  crossing.b = q;
-  crossing.crossing = true;
-  crossing.edgeDirection = line;
-  crossing.crossingPoint = point;
-  crossing.crossingFrom = from;
-  crossing.crossingTo = to;
-  crossing.area = (to - from) * std::max(ha, hb);
+  PlateContact crossing = crossingContact(p, q, line, point, from, to, std::max(ha, hb));
   // A slot opens where the plate's material in the other's slab ends with the crossing.
   crossing.aOpens = {a0 >= from - tolerance, a1 <= to + tolerance};
   crossing.bOpens = {b0 >= from - tolerance, b1 <= to + tolerance};

@@ -83,6 +83,17 @@ void requireApart(const Plate& plate, const std::vector<Loop>& cuts, const Plane
   }
 }
 
+// Does `point` lie on the segment from a to b (within kSamePointMm)? A segment of no length holds
+// nothing.
+bool liesOnSegment(const Vec3& point, const Vec3& a, const Vec3& b) {
+  const Vec3 edge = minus(b, a);
+  const double length = norm(edge);
+  if (length < tolerance::kZeroLengthMm) return false;
+  const double t = dot(minus(point, a), edge) / (length * length);
+  if (t < -tolerance::kSegmentParameter || t > 1 + tolerance::kSegmentParameter) return false;
+  return norm(minus(point, plus(a, scaled(edge, t)))) <= tolerance::kSamePointMm;
+}
+
 // The point of a plate's second face across from `point` of its first: a vertex as given keeps
 // its partner; a point on a side's first-face edge has its partner on that side's second-face
 // edge straight across the side (a cut through a mitred side); any other
@@ -102,12 +113,9 @@ Vec3 secondFacePartner(const Plate& plate, const Vec3& point, const Vec3* wall =
     const Loop& bottom = plate.bottom[l];
     for (size_t k = 0; k < bottom.size(); ++k) {
       const size_t next = (k + 1) % bottom.size();
+      if (!liesOnSegment(point, bottom[k], bottom[next])) continue;
       const Vec3 edge = minus(bottom[next], bottom[k]);
       const double length = norm(edge);
-      if (length < tolerance::kZeroLengthMm) continue;
-      const double t = dot(minus(point, bottom[k]), edge) / (length * length);
-      if (t < -tolerance::kSegmentParameter || t > 1 + tolerance::kSegmentParameter) continue;
-      if (norm(minus(point, plus(bottom[k], scaled(edge, t)))) > tolerance::kSamePointMm) continue;
       // Across the side, square to its edges (they are parallel): the cuts that reach a mitred
       // side meet it with walls square to it (a mitre tenon's notch).
       const Vec3 along = scaled(edge, 1 / length);
@@ -181,12 +189,8 @@ std::optional<Vec3> slantedPartner(const Plate& plate, const std::vector<std::ar
     const Loop& first = cut[0];
     for (size_t k = 0; k < first.size(); ++k) {
       const size_t next = (k + 1) % first.size();
+      if (!liesOnSegment(point, first[k], first[next])) continue;
       const Vec3 edge = minus(first[next], first[k]);
-      const double length = norm(edge);
-      if (length < tolerance::kZeroLengthMm) continue;
-      const double t = dot(minus(point, first[k]), edge) / (length * length);
-      if (t < -tolerance::kSegmentParameter || t > 1 + tolerance::kSegmentParameter) continue;
-      if (norm(minus(point, plus(first[k], scaled(edge, t)))) > tolerance::kSamePointMm) continue;
       const Vec3 wallNormal = cross(edge, minus(cut[1][k], first[k]));
       const double rate = dot(minus(top1, top0), wallNormal);
       if (std::abs(rate) < tolerance::kSquareCosine * norm(wallNormal) * norm(minus(top1, top0))) continue;
