@@ -7,6 +7,7 @@
 #include "analysis/vec3.h"
 #include "desia/design_io.h"
 #include "desia/error.h"
+#include "desia/tolerances.h"
 #include "io/design_json.h"
 
 namespace desia {
@@ -66,6 +67,25 @@ std::vector<Plate> attachedAt(const json& list, const std::string& source, const
   return solids;
 }
 
+// CAD tools write a vertex twice in a row (a zero-length edge) where an outline bends by nothing:
+// such a vertex, repeated at the same place on both faces, is read once (the faces still match
+// vertex for vertex). Repeated on one face only, the faces would no longer correspond: refused.
+void dropRepeatedVertices(Loop& first, Loop& second, const std::string& source, const std::string& path) {
+  const auto same = [](const Vec3& a, const Vec3& b) { return norm(minus(a, b)) <= tolerance::kSamePointMm; };
+  for (size_t k = first.size(); k-- > 0 && first.size() > 1;) {
+    const size_t previous = (k + first.size() - 1) % first.size();
+    const bool repeatedFirst = same(first[k], first[previous]), repeatedSecond = same(second[k], second[previous]);
+    if (repeatedFirst && repeatedSecond) {
+      first.erase(first.begin() + static_cast<std::ptrdiff_t>(k));
+      second.erase(second.begin() + static_cast<std::ptrdiff_t>(k));
+    } else if (repeatedFirst || repeatedSecond) {
+      fail(source, path, "vertex " + std::to_string(k + 1) + " repeats vertex " + std::to_string(previous + 1) +
+                             " on the " + (repeatedFirst ? "first" : "second") +
+                             " face only: the faces must list corresponding vertices");
+    }
+  }
+}
+
 Plate plateAt(const json& entry, const std::string& source, const std::string& path) {
   if (!entry.is_object()) fail(source, path, "expected an object with 'id' and 'outline' and 'thickness', or 'id' and 'faces'");
   Plate plate;
@@ -88,6 +108,7 @@ Plate plateAt(const json& entry, const std::string& source, const std::string& p
       fail(source, who + ".faces", "the faces do not match: " + std::to_string(plate.bottom[0].size()) + " and " +
                                      std::to_string(plate.top[0].size()) + " vertices (a plate's faces list corresponding vertices in the same order)");
     }
+    dropRepeatedVertices(plate.bottom[0], plate.top[0], source, who + ".faces");
     if (entry.contains("outline") || entry.contains("thickness")) fail(source, who, "give either 'faces' or 'outline' and 'thickness', not both");
     if (entry.contains("holes")) {
       const json& holes = entry["holes"];
@@ -97,6 +118,9 @@ Plate plateAt(const json& entry, const std::string& source, const std::string& p
         if (!holes[h].is_array() || holes[h].size() != 2) fail(source, where, "expected [firstFaceLoop, secondFaceLoop]");
         plate.bottom.push_back(loopAt(holes[h][0], source, where + "[0]"));
         plate.top.push_back(loopAt(holes[h][1], source, where + "[1]"));
+        if (plate.bottom.back().size() == plate.top.back().size()) {
+          dropRepeatedVertices(plate.bottom.back(), plate.top.back(), source, where);
+        }
       }
     }
     if (entry.contains("attached")) plate.attached = attachedAt(entry["attached"], source, who + ".attached");

@@ -4,6 +4,8 @@
 // whole design is turned (the contact normals are then computed from turned coordinates).
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include <array>
 #include <cmath>
 #include <map>
@@ -111,6 +113,31 @@ void ExpectBadPlates(const std::string& platesJson, const std::string& message) 
 }
 
 const char* kSquare = "[[0,0,0],[100,0,0],[100,100,0],[0,100,0]]";
+
+// CAD output (IBOIS's plate dataset, the Vidy chapel's plates) repeats a vertex where an outline
+// bends by nothing: read once when both faces repeat it, so the design reads as the same plates
+// without it; refused, naming the vertex, when only one face does.
+TEST(PlateInput, AVertexRepeatedOnBothFacesIsReadOnce) {
+  const std::string table = testing::readFileText(testing::projectPath("examples/plate/mitred_box.json"));
+  nlohmann::json repeated = nlohmann::json::parse(table);
+  for (auto& face : repeated["plates"][0]["faces"]) face.insert(face.begin() + 2, face[2]);
+  nlohmann::json wrapped = nlohmann::json::parse(table);
+  for (auto& face : wrapped["plates"][1]["faces"]) face.push_back(face[0]);  // closed as polylines are
+  const std::string clean = documentToJson(parseAssemblyText(table, "mitred_box.json"));
+  EXPECT_EQ(documentToJson(parseAssemblyText(repeated.dump(), "mitred_box.json")), clean);
+  EXPECT_EQ(documentToJson(parseAssemblyText(wrapped.dump(), "mitred_box.json")), clean);
+  nlohmann::json oneFace = nlohmann::json::parse(table);
+  auto& first = oneFace["plates"][0]["faces"][0];
+  first.insert(first.begin() + 2, first[2]);
+  oneFace["plates"][0]["faces"][1].insert(oneFace["plates"][0]["faces"][1].begin(), oneFace["plates"][0]["faces"][1][0]);
+  oneFace["plates"][0]["faces"][1][0][0] = -5;
+  try {
+    parseAssemblyText(oneFace.dump(), "mitred_box.json");
+    ADD_FAILURE() << "a vertex repeated on one face only was read";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("repeats vertex"), std::string::npos) << e.what();
+  }
+}
 
 TEST(PlateInput, BadPlatesAreNamedWithTheProblem) {
   ExpectBadPlates(std::string(R"([{"id":1,"outline":)") + kSquare + R"(,"thickness":0}])",
