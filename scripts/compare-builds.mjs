@@ -43,6 +43,8 @@ const WORKLOADS = [
   plate('bookcase_123.json', 'planned'),
   frame('frame_cube.json'), frame('flower.json'), frame('scaffold_92.json'), frame('scaffold_300.json'), frame('scaffold_882.json'),
   check('tests/reference/desia/data/result_puz/bunny_15x14x11_K80.puz'),
+  // The complete disassembler (levels of 98 and 3.5.17: group moves, the gap matrix).
+  check('tests/data/burrtools/PelikanBurr-p0-s0.puz'), check('tests/data/burrtools/DraculasDentalDesaster-p0-s0.puz'),
 ];
 
 const scratch = fs.mkdtempSync(path.join(os.tmpdir(), 'desia-compare-'));

@@ -11,9 +11,9 @@
 #include "desia/error.h"
 #include "desia/formats.h"
 #include "io/design_json.h"
-#include "io/frame_json.h"
+#include "io/frame/frame_json.h"
 #include "io/json_input.h"
-#include "io/plate_format.h"
+#include "io/plate/plate_format.h"
 
 namespace desia {
 namespace {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Cut files of plate structures (core/io/cut_sheets.cpp), read back: true sizes in mm, the kerf and
+// Cut files of plate structures (core/io/plate/cut_sheets.cpp), read back: true sizes in mm, the kerf and
 // the clearance where they belong, every plate on a sheet, clear errors.
 #include <gtest/gtest.h>
 

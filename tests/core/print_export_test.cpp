@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Print-ready voxel exports (core/io/print_export.cpp, voxel_surface.cpp's inset lattice, the ZIP
+// Print-ready voxel exports (core/io/voxel/print_export.cpp, voxel_surface.cpp's inset lattice, the ZIP
 // writer): with a clearance every face of a part against another part moves in by exactly the
 // clearance and the faces against empty space stay; the inset parts are closed, consistently
 // oriented and lie inside their voxels, with the exact volumes worked out by hand for small cases;

@@ -17,7 +17,7 @@ const ALLOWED = {
   'core/cli/frame_design_command.cpp': {
     '1e-9': 'the smallest --joint-size the command accepts (an input range with 1e9, not a tolerance)',
   },
-  'core/io/voxel_export.cpp': {
+  'core/io/voxel/voxel_export.cpp': {
     '1e-6': 'the smallest voxel size an export accepts (an input range with 1e6, printed in its error)',
   },
 };

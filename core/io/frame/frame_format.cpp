@@ -10,7 +10,7 @@
 #include <set>
 
 #include "desia/error.h"
-#include "io/frame_json.h"
+#include "io/frame/frame_json.h"
 #include "io/json_input.h"
 #include "io/text_lines.h"
 

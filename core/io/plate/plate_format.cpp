@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "io/plate_format.h"
+#include "io/plate/plate_format.h"
 
 #include <cmath>
 #include <set>
@@ -7,7 +7,6 @@
 #include "analysis/vec3.h"
 #include "desia/design_io.h"
 #include "desia/error.h"
-#include "desia/tolerances.h"
 #include "io/design_json.h"
 
 namespace desia {
@@ -67,11 +66,12 @@ std::vector<Plate> attachedAt(const json& list, const std::string& source, const
   return solids;
 }
 
-// CAD tools write a vertex twice in a row (a zero-length edge) where an outline bends by nothing:
-// such a vertex, repeated at the same place on both faces, is read once (the faces still match
-// vertex for vertex). Repeated on one face only, the faces would no longer correspond: refused.
+// CAD tools write a vertex twice in a row (the same coordinates: a zero-length edge) where an
+// outline bends by nothing: such a vertex, repeated on both faces, is read once (the faces still
+// match vertex for vertex). Repeated on one face only, the faces would no longer correspond:
+// refused. Only exact repeats: vertices merely close together are the geometry as drawn.
 void dropRepeatedVertices(Loop& first, Loop& second, const std::string& source, const std::string& path) {
-  const auto same = [](const Vec3& a, const Vec3& b) { return norm(minus(a, b)) <= tolerance::kSamePointMm; };
+  const auto same = [](const Vec3& a, const Vec3& b) { return a == b; };
   for (size_t k = first.size(); k-- > 0 && first.size() > 1;) {
     const size_t previous = (k + first.size() - 1) % first.size();
     const bool repeatedFirst = same(first[k], first[previous]), repeatedSecond = same(second[k], second[previous]);
