@@ -26,7 +26,7 @@ if(NOT clipper_sort_count EQUAL 2)
 endif()
 string(REPLACE "std::sort(" "std::stable_sort(" clipper_text "${clipper_text}")
 file(WRITE ${clipper_stable}.new "${clipper_text}")
-file(COPY_FILE ${clipper_stable}.new ${clipper_stable} ONLY_IF_DIFFERENT)
+configure_file(${clipper_stable}.new ${clipper_stable} COPYONLY)  # rewritten only when it changes
 # The core includes <polyclipping/clipper.hpp> as Debian installs it: a folder that holds only
 # that name (it also keeps the host's /usr/include away from Emscripten, toolchain.md item 2).
 set(clipper_include_dir ${CMAKE_BINARY_DIR}/clipper-include)
