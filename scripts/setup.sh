@@ -56,8 +56,8 @@ else
   log "GLPK sources present"
 fi
 
-# Clipper C++ sources for the WebAssembly build, from Debian's source package (libpolyclipping);
-# natively the core links Debian's libpolyclipping-dev of the same version (6.4.2).
+# Clipper C++ sources, from Debian's source package (libpolyclipping): both builds compile them,
+# with stable sorts, so that native and WebAssembly results are the same bytes (cmake/Clipper.cmake).
 clipper_dir="$root/third_party/polyclipping-6.4.2"
 if [ ! -f "$clipper_dir/cpp/clipper.cpp" ]; then
   log "fetching Clipper 6.4.2 sources from Debian's source packages"

@@ -2,6 +2,8 @@
 // The plate planner's restarted search (paper Algorithm 1) on the shared construction-tree search
 // (search/construction_search.h).
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "plate/plate_planner.h"
@@ -9,6 +11,16 @@
 #include "search/restarts.h"
 
 namespace desia {
+namespace {
+
+// A whole number of degrees as such ("40"), else to one decimal ("37.5").
+std::string degreesText(double degrees) {
+  char text[32];
+  std::snprintf(text, sizeof text, degrees == std::floor(degrees) ? "%.0f" : "%.1f", degrees);
+  return text;
+}
+
+}  // namespace
 
 // The construction tree below the node `prefix` (the root for a whole design) as the shared search
 // walks it (search/construction_search.h): an explicit stack of each node's ranked candidates, of
@@ -150,8 +162,11 @@ PlateDesignResult PlateJointPlanner::run(const std::vector<PlanStep>& prefix) {
                "(CNC), joints 'planned' gives the paper's graph design alone"
              : options_.realization == JointRealization::Milled
                    ? " with the joints that can be cut or milled (mortise-and-tenon, halved and sliding dovetail "
-                     "joints on square edges at right angles, tenons across mitres); joints 'planned' gives the "
-                     "paper's graph design alone"
+                     "joints on square edges at right angles, halved joints where plates cross, tenons across "
+                     "mitres, step tenons where plates meet edge to edge with their planes " +
+                         degreesText(options_.joints.stepTenon.leastDegrees) + " to " +
+                         degreesText(options_.joints.stepTenon.mostDegrees) +
+                         " degrees apart); joints 'planned' gives the paper's graph design alone"
                    : "");
     return result;
   }

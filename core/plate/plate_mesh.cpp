@@ -103,14 +103,13 @@ bool bridgeClear(const std::vector<Point2>& points, const std::vector<std::vecto
 // thousands of holes is long).
 class NearestFirst {
  public:
-  NearestFirst(const std::vector<Point2>& points, const std::vector<int>& outer, const Point2& from, double flat) {
+  NearestFirst(const std::vector<Point2>& points, const std::vector<int>& outer, const Point2& from) {
     heap_.reserve(outer.size());
     for (size_t o = 0; o < outer.size(); ++o) {
-      // The export's triangulation (flat > 0) orders by squared distance: sums and products only,
-      // the same bits natively and in WebAssembly (std::hypot differs by an ulp between glibc and
-      // musl, which reorders ties). The sweeps' mesh keeps its order.
+      // By squared distance: sums and products only, the same bits natively and in WebAssembly
+      // (std::hypot differs by an ulp between glibc and musl, which reorders near-ties).
       const double dx = points[outer[o]][0] - from[0], dy = points[outer[o]][1] - from[1];
-      heap_.push_back({flat > 0 ? dx * dx + dy * dy : std::hypot(dx, dy), o});
+      heap_.push_back({dx * dx + dy * dy, o});
     }
     std::make_heap(heap_.begin(), heap_.end(), std::greater<>());
   }
@@ -143,14 +142,10 @@ std::vector<int> bridgeHoles(const std::vector<Point2>& points, std::vector<int>
     };
     return rightmost(a) > rightmost(b);
   };
-  // The export's triangulation (flat > 0) keeps holes with the same rightmost x in their order:
-  // std::sort may order ties differently in libstdc++ and in Emscripten's libc++. The sweeps'
-  // mesh keeps its order.
-  if (flat > 0) {
-    std::stable_sort(holes.begin(), holes.end(), rightmostFirst);
-  } else {
-    std::sort(holes.begin(), holes.end(), rightmostFirst);
-  }
+  // Holes with the same rightmost x keep their order: std::sort orders ties differently in
+  // libstdc++ and in Emscripten's libc++ (the BOOKCASE's rows of mortises exported other triangles
+  // in WebAssembly).
+  std::stable_sort(holes.begin(), holes.end(), rightmostFirst);
   for (size_t h = 0; h < holes.size(); ++h) {
     const std::vector<int>& hole = holes[h];
     size_t m = 0;
@@ -160,7 +155,7 @@ std::vector<int> bridgeHoles(const std::vector<Point2>& points, std::vector<int>
     const Point2& from = points[hole[m]];
     std::vector<std::vector<int>> loops{outer};
     loops.insert(loops.end(), holes.begin() + static_cast<long>(h), holes.end());
-    NearestFirst candidates(points, outer, from, flat);
+    NearestFirst candidates(points, outer, from);
     // The nearest visible vertex whose bridge runs along no edge at its ends (collinear holes'
     // edges: such a bridge would leave flat corners), else the nearest visible one.
     size_t best = candidates.at(0);

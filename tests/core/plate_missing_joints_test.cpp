@@ -43,6 +43,12 @@ TEST(PlateMissingJoints, TheIcosahedronsPlanWithoutStepTenonsNamesTheEdgesNoMade
                                 " of the plan's " + std::to_string(result.joints.size()) + " joints: " + missing[0]),
             std::string::npos)
       << result.message;
+  // Why milled found nothing names the milled families, step tenons and their angles included.
+  EXPECT_NE(result.message.find("no milled plan: no interlocking joint plan exists"), std::string::npos) << result.message;
+  EXPECT_NE(result.message.find("tenons across mitres, step tenons where plates meet edge to edge with their planes "
+                                "50 to 50 degrees apart)"),
+            std::string::npos)
+      << result.message;
 }
 
 TEST(PlateMissingJoints, AMilledPlanHasAMadeJointForEachOfItsJoints) {

@@ -384,6 +384,27 @@ test('plates: every plate one manifold solid, its milled joints unioned with it 
   assert.equal(listed, TOUCHING_SHELLS.size + FLAT_TRIANGLES.size, 'every listed plate was exported');
 });
 
+// Natively and in WebAssembly the same bytes (the conventions' determinism): Clipper's sorts once
+// broke ties apart in libstdc++ and libc++, and two milled designs (BENCH 2 BAYS and BOOKCASE 123,
+// seed 1) exported other triangles in the package (cmake/Clipper.cmake).
+test('plates: the WebAssembly package exports every plate document as the CLI does, byte for byte', async () => {
+  const wasmFile = path.join(root, 'dist/desia_wasm.wasm');
+  assert.ok(fs.existsSync(wasmFile), `${wasmFile} is missing: build it first (bash scripts/build.sh wasm)`);
+  const { loadDesiaModule } = await import('../../wasm/index.js');
+  const core = await loadDesiaModule();
+  let compared = 0;
+  for (const input of plateInputs) {
+    const text = fs.readFileSync(path.resolve(root, input), 'utf8');
+    if (!(JSON.parse(text).fabricationPlates ?? JSON.parse(text).plates)) continue;
+    const name = path.relative(root, path.resolve(root, input)).replaceAll('/', '_').replaceAll('.', '_');
+    const native = exportFile(input, 'stl', `${name}.stl`);
+    const bytes = core.exportAssembly(text, { format: 'stl', source: input });
+    assert.ok(Buffer.from(bytes).equals(native), `${labelOf(input)}: the package's STL differs from the CLI's`);
+    ++compared;
+  }
+  assert.ok(compared >= 60, `${compared} plate documents compared`);
+});
+
 // --- frames -------------------------------------------------------------------------------------
 
 const frameInputs = [...listed('examples/frame', '.json'), ...goldenResults('frame', 'result.json')];
