@@ -3,8 +3,8 @@
 // Live design and blocking graphs at scale (issue 11), in headless Chromium at 1400x900 and
 // 390x844: while the worker designs the bunny with N = 80, the 3D view shows the deepest node so
 // far, its placed parts growing before the result arrives, and the progress says how hard the
-// request is; a plate design recolours the bookcase as its plates are placed (123 meshes, those
-// not yet placed see-through). The blocking graphs of the 80-part bunny zoom and pan (the
+// request is; a plate design draws the bookcase as its plates are placed (123 plates, those not
+// yet placed see-through). The blocking graphs of the 80-part bunny zoom and pan (the
 // drawing's transform changes, by wheel, drag, buttons and keys), Find part 17 highlights and
 // centres its node, and the matrix view draws N x N cells. Live design leaves the page
 // responsive (issue 28, item 8): the bunny with N = 140 on two workers, measured over 5 s
@@ -133,7 +133,7 @@ for (const viewport of [{ width: 1400, height: 900 }, { width: 390, height: 844 
       assert.deepEqual(pageErrors, []);
     });
 
-    it('recolours the 123-plate bookcase as its plates are placed', async () => {
+    it('draws the 123-plate bookcase as its plates are placed', async () => {
       await page.selectOption('#example-select', 'bookcase_123.json');
       await waitForReady(page, 'bookcase_123.json');
       const samples = await designWatchingLiveParts(page);
