@@ -2,7 +2,8 @@
 //
 // Live design's picture (issue 28, item 8): the deepest node of a running design drawn as a few
 // merged meshes (the placed parts in their colours, the remainder see-through, and their
-// outlines) instead of two meshes per part. Every mesh is a draw call, and a live design redraws
+// outlines) instead of two meshes per part: a voxel node's surfaces, or a plate or frame input's
+// own surfaces with the parts its plan has not placed yet see-through (web/main.js). Every mesh is a draw call, and a live design redraws
 // many times a second: 140 parts were 280 draw calls a frame, 170-300 ms of the page's main
 // thread per frame in software WebGL, where four merged meshes take about a third of that. The
 // materials are made once and kept (a new material compiles its shader program again), and the

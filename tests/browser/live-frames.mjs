@@ -9,7 +9,8 @@
 /**
  * Clicks Design and measures for `seconds` (or until the design ends, if sooner): resolves with
  * { seconds, frames, fps, longTasks, longestTaskMs, blockedMs, programsBefore, programsAfter,
- * renders (frames the 3D view drew), liveDepths, outcome }. The Design form must be filled in already.
+ * renders (frames the 3D view drew), liveDepths, maxLiveCalls (the most draw calls of a frame that
+ * showed a live picture), outcome }. The Design form must be filled in already.
  */
 export async function measureLiveDesign(page, { seconds = 5 } = {}) {
   await page.evaluate(() => {
@@ -22,11 +23,19 @@ export async function measureLiveDesign(page, { seconds = 5 } = {}) {
     const stats = window.__desiaView.renderStats();
     state.programsBefore = stats.programs;
     state.rendersBefore = stats.framesRendered;
+    // Draw calls of the view's frames that showed a live picture (the frame after the first
+    // live depth appeared; the picture before it is the input's).
+    state.maxLiveCalls = 0;
     const frame = () => {
       if (!state.running) return;
       state.frames += 1;
       const depth = document.querySelector('#design-progress-box').dataset.liveParts;
       if (depth) state.depths.add(Number(depth));
+      const now = window.__desiaView.renderStats();
+      if (depth && document.body.dataset.design === 'running') {
+        state.rendersAtLive ??= now.framesRendered;
+        if (now.framesRendered > state.rendersAtLive) state.maxLiveCalls = Math.max(state.maxLiveCalls, now.calls);
+      }
       requestAnimationFrame(frame);
     };
     requestAnimationFrame(frame);
@@ -53,6 +62,7 @@ export async function measureLiveDesign(page, { seconds = 5 } = {}) {
       programsAfter: stats.programs,
       renders: stats.framesRendered - state.rendersBefore,
       liveDepths: [...state.depths].sort((a, b) => a - b),
+      maxLiveCalls: state.maxLiveCalls,
       outcome: document.body.dataset.design,
     };
   }, elapsed);
