@@ -11,7 +11,7 @@ sudo_if_needed() { if [ "$(id -u)" = 0 ]; then "$@"; else sudo "$@"; fi; }
 debian_packages=(
   build-essential cmake pkg-config
   libgtest-dev libbenchmark-dev
-  libeigen3-dev nlohmann-json3-dev libglpk-dev libpolyclipping-dev zlib1g-dev
+  libeigen3-dev nlohmann-json3-dev libglpk-dev zlib1g-dev
   emscripten chromium
   clang libclang-rt-14-dev
 )
