@@ -564,6 +564,12 @@ export interface PlateDesignOptions {
   tenonWidth?: number;
   /** Tenons per joint, 1 to 20 (default: 1, or 2 on edges longer than 8 thicknesses). */
   tenonCount?: number;
+  /**
+   * Each joint family's sizes, e.g. `{ dovetail: { slope: 0.2, stop: 12 }, stepTenon: { width: 0.25 } }`
+   * (shares of a length as numbers: 0.25 = a quarter); the names, meanings and ranges are in
+   * docs/plates.md ("Joint sizes"). Unknown names and values out of range throw.
+   */
+  jointSizes?: Record<string, Record<string, number>>;
   onProgress?: (progress: DesignProgress) => boolean | void;
   /** Name used in error messages. */
   source?: string;

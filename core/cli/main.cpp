@@ -30,7 +30,7 @@ const char* kUsage =
     "             [--time-limit SECONDS] [--node-limit N] [--key-direction +y]\n"
     "       desia design plate --input DESIGN.json|.obj|.stl --output RESULT.json [--seed S] [--candidates M]\n"
     "             [--time-limit SECONDS] [--node-limit N] [--joints auto|cut|milled|planned] [--clearance MM]\n"
-    "             [--tenon-width MM] [--tenon-count N] [--repair REPAIRED.json]\n"
+    "             [--tenon-width MM] [--tenon-count N] [--joint-size NAME=VALUE] [--repair REPAIRED.json]\n"
     "       desia design frame --input FRAME.obj|.json|.fpuz --output RESULT.json [--seed S] [--candidates M]\n"
     "             [--time-limit SECONDS] [--node-limit N] [--joint-size MM]\n"
     "       desia plates-from-mesh --input MESH.obj|.stl --thickness T [--tolerance MM] [--merge-angle DEG]\n"

@@ -70,6 +70,14 @@ int runPlateDesignCommand(const std::vector<std::string>& args) {
       options.joints.tenonWidth = desia::cli::numberOption(flag, value, 1, 10000);
     else if (flag == "--tenon-count")
       options.joints.tenonCount = static_cast<int>(desia::cli::integerOption(flag, value, 1, 20));
+    else if (flag == "--joint-size") {
+      // NAME=VALUE, e.g. dovetail.slope=0.2 (desia::jointSizeSettings lists them).
+      const size_t equals = value.find('=');
+      if (equals == std::string::npos) usage("--joint-size expects NAME=VALUE (e.g. dovetail.slope=0.2), got '" + value + "'");
+      const std::string name = value.substr(0, equals);
+      desia::setJointSize(options.joints, name,
+                          desia::cli::numberOption("--joint-size " + name, value.substr(equals + 1), -1e300, 1e300));
+    }
     else
       usage("unknown option " + flag + " for design plate");
   }

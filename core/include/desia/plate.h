@@ -225,6 +225,22 @@ struct JointCutOptions {
   StepTenonSizes stepTenon;
 };
 
+// The joint families' dimensions above as named settings: "dovetail.slope", "stepTenon.width",
+// ... each with its meaning and range, set by the CLI's --joint-size and the package's `jointSizes`.
+// A share of a length (LengthShare) is set as a number: 0.25 = a quarter of it.
+struct JointSizeSetting {
+  std::string name;     // "family.field"
+  std::string meaning;  // one line, with its unit and default
+  double least, most;   // the values accepted
+};
+
+// Every setting, family by family, in the order docs/plates.md lists them.
+std::vector<JointSizeSetting> jointSizeSettings();
+
+// Sets `name` to `value` in options; BadInput naming the setting and its range, or listing the
+// settings for an unknown name.
+void setJointSize(JointCutOptions& options, const std::string& name, double value);
+
 enum class JointType {
   MortiseTenon,  // tenons on one plate's edge, mortises through the other (planned: the edge
                  // within 45..135 degrees of the direction)

@@ -15,6 +15,22 @@ namespace desia {
 
 using nlohmann::json;
 
+namespace {
+
+// {"dovetail": {"slope": 0.2, "stop": 12}, "stepTenon": {"width": 0.25}}: desia::setJointSize each.
+void setJointSizes(JointCutOptions& joints, const json& sizes) {
+  if (!sizes.is_object()) throwBadInput("", "design option 'jointSizes' must be {family: {size: number}}, got " + sizes.dump());
+  for (const auto& [family, fields] : sizes.items()) {
+    if (!fields.is_object()) throwBadInput("", "jointSizes." + family + " must be {size: number}, got " + fields.dump());
+    for (const auto& [field, value] : fields.items()) {
+      if (!value.is_number()) throwBadInput("", "jointSizes." + family + "." + field + " must be a number, got " + value.dump());
+      setJointSize(joints, family + "." + field, value.get<double>());
+    }
+  }
+}
+
+}  // namespace
+
 PlateDesignOptions parsePlateDesignOptionsJson(const std::string& text) {
   const json root = parseJsonText(text, "design options");
   if (!root.is_object()) throwBadInput("", "design options must be an object");
@@ -37,10 +53,12 @@ PlateDesignOptions parsePlateDesignOptionsJson(const std::string& text) {
       options.joints.tenonWidth = numberOption(value, name, 1, 10000, " (mm)");
     else if (name == "tenonCount")
       options.joints.tenonCount = static_cast<int>(integerOption(value, name, 1, 20));
+    else if (name == "jointSizes")
+      setJointSizes(options.joints, value);
     else {
       throwBadInput("", "unknown design option '" + name +
                             "' for designPlate (expected seed, candidates, nodeLimit, timeLimit, joints, clearance, "
-                            "tenonWidth or tenonCount)");
+                            "tenonWidth, tenonCount or jointSizes)");
     }
   }
   return options;
