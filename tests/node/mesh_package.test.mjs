@@ -86,6 +86,17 @@ test('BurrTools puzzles, a plate design and a frame result exported as OBJ: the 
   }
 });
 
+test('a 3MF written by lib3mf, with an OBJ beside it: the same report as the CLI', async () => {
+  const wagon = path.join(root, 'tests/data/meshes/WagonWithWheels.3mf');
+  const crate = path.join(tmp, 'crate.obj');
+  const box = (x) => ['o crate', ...[0, 1, 2, 3, 4, 5, 6, 7].map((k) => `v ${x + 10 * (k & 1)} ${10 * ((k >> 1) & 1)} ${10 * ((k >> 2) & 1)}`),
+    ...[[0, 2, 3, 1], [4, 5, 7, 6], [0, 1, 5, 4], [2, 6, 7, 3], [0, 4, 6, 2], [1, 3, 7, 5]].map((f) => `f ${f.map((v) => v + 1).join(' ')}`)].join('\n');
+  fs.writeFileSync(crate, `${box(-100)}\n`);
+  const cli = cliReport([wagon, crate], '--unit', 'inch');
+  assert.deepEqual(cli.mesh.partNames, ['Wagon', 'Wheel 1', 'crate']);
+  expectSameReport(await desia.check(meshDocument([wagon, crate], { unit: 'inch' })), cli, 'a 3MF and an OBJ in inches');
+});
+
 test('bad mesh documents are Errors naming the file and line, or the part', async () => {
   const short = { files: [{ name: 'short.obj', text: 'o a\nv 0 0 0\nv 1 0\n' }] };
   assert.throws(() => core.check(short), (error) => error instanceof Error && error.code === 'bad-input' &&
@@ -95,6 +106,7 @@ test('bad mesh documents are Errors naming the file and line, or the part', asyn
   assert.throws(() => core.check(lid), /lid\.obj: part 1 \('lid'\): is not closed/);
   assert.throws(() => core.check({ files: [{ name: 'empty.stl', bytes: new Uint8Array() }] }), /empty\.stl: the file is empty/);
   assert.throws(() => core.check({ ...lid, unit: 'furlong' }), /unknown unit 'furlong'/);
+  assert.throws(() => core.check({ files: [{ name: 'box.3mf', bytes: new Uint8Array([0x50, 0x4b]) }] }), /box\.3mf: not a ZIP archive/);
   assert.throws(() => core.check({ ...lid, tolerance: -1 }), /contact tolerance/);
   assert.throws(() => core.check({ files: [] }), /needs at least one file/);
   assert.throws(() => core.check({ files: [{ name: 'a.obj' }] }), /files\[0\] \('a\.obj'\) needs either bytes or text/);
