@@ -25,7 +25,7 @@ function assemblyName(files) {
 async function meshDocumentOf(files) {
   const total = files.reduce((sum, file) => sum + file.size, 0);
   if (total > MAX_MESH_BYTES) {
-    throw new Error(`the files are ${(total / 1048576).toFixed(1)} MiB; the playground accepts meshes up to ${MAX_MESH_BYTES / 1048576} MiB`);
+    throw new Error(`${assemblyName(files)}: the files are ${(total / 1048576).toFixed(1)} MiB; the playground accepts meshes up to ${MAX_MESH_BYTES / 1048576} MiB`);
   }
   const contents = await Promise.all(files.map((file) => file.arrayBuffer()));
   return { files: files.map((file, k) => ({ name: file.name, bytes: new Uint8Array(contents[k]) })) };
@@ -47,7 +47,7 @@ export function createMeshAssemblyInput({ core, loadAssembly, method }) {
       const { value: { report, surfaces }, elapsedMs } = await core.run('mesh-assembly', '', { meshes: await meshes, method: method() });
       // No text: a mesh assembly is shown from its files, and is not the Design panel's input.
       return { text: '', document: meshViewDocument(name, report), surfaces, report, elapsedMs };
-    }, { origin: name, asInput: false });
+    }, { origin: '', asInput: false }); // the core's messages name their file among several: shown as they are
   }
 
   return {

@@ -100,7 +100,11 @@ for (const [width, height] of [[1400, 900], [390, 844]]) {
     it('one OBJ of nine objects picked: an assembly; one of a single solid is still voxelized', async () => {
       await page.setInputFiles('#file-input', { name: 'k9.obj', mimeType: 'text/plain', buffer: puzzleObj });
       const state = await waitForReady(page, 'k9.obj');
+      await shot('obj');
       assert.equal(state.verdictCode, 'interlocking');
+      // The parts keep their objects' names, in the parts list.
+      const details = await page.evaluate(() => [...document.querySelectorAll('#part-list .part-detail')].map((item) => item.textContent));
+      assert.deepEqual(details, Array.from({ length: 9 }, (unused, k) => `part${k + 1}`));
       assert.equal(state.key, '1');
       assert.equal(state.meshes, '9');
       const single = Buffer.from(core.exportAssembly(puzzle, { format: 'obj', part: 1 }));
@@ -124,7 +128,7 @@ for (const [width, height] of [[1400, 900], [390, 844]]) {
       const state = await waitForSettled(page, 'part1.stl + 1 more');
       await shot('error');
       assert.equal(state.status, 'error');
-      assert.match(state.error, /broken\.obj:3/);
+      assert.match(state.error, /^broken\.obj:3: vertex has 2 coordinates/);
     });
 
     it('no page errors', () => {
