@@ -23,6 +23,9 @@ const char* const kModelRelationship = "http://schemas.microsoft.com/3dmanufactu
 const char* const kDefaultModelPath = "3D/3dmodel.model";
 // Components refer to other objects; deeper nesting than this is taken for a cycle.
 constexpr int kMaxComponentDepth = 32;
+// Objects placed by one build item, counting repeats: components that each use an object twice,
+// nested 32 deep, would place it 2^32 times without a triangle to count.
+constexpr size_t kMaxPlacedObjects = 1'000'000;
 
 // One start or end tag: its local name (namespace prefix dropped), attributes and line.
 struct XmlTag {
@@ -323,7 +326,11 @@ TriangleMesh flattened(const Model& model, const Component& item, const XmlTags&
     int depth;
   };
   std::vector<Pending> stack{{item, 0}};
+  size_t placed = 0;
   while (!stack.empty()) {
+    if (++placed > kMaxPlacedObjects) {
+      tags.tooLarge(item.line, "<item>: its components place more than " + std::to_string(kMaxPlacedObjects) + " objects");
+    }
     const Pending pending = stack.back();
     stack.pop_back();
     const auto found = model.objects.find(pending.reference.objectId);

@@ -22,6 +22,10 @@ constexpr size_t kEndOfDirectorySize = 22;
 constexpr size_t kMaxCommentSize = 65535;
 constexpr size_t kDirectoryHeaderSize = 46;
 constexpr size_t kLocalHeaderSize = 30;
+// Deflate expands at most about 1032-fold (a 258-byte match per bit pair, RFC 1951): an entry that
+// claims more than this of its compressed size is damaged, and refused before it is allocated.
+constexpr size_t kMaxDeflateRatio = 1032;
+constexpr size_t kDeflateSlackBytes = 1024;
 constexpr int kStored = 0;
 constexpr int kDeflated = 8;
 constexpr uint16_t kEncryptedFlag = 1;
@@ -176,6 +180,10 @@ std::string ZipArchive::read(const std::string& name) const {
     if (entry.compressedSize != entry.size) throwBadInput(where, "a stored entry whose two sizes differ");
     data = bytes_.substr(start, entry.size);
   } else if (entry.method == kDeflated) {
+    if (entry.size / kMaxDeflateRatio > entry.compressedSize + kDeflateSlackBytes) {
+      throwBadInput(where, "the entry claims " + std::to_string(entry.size) + " bytes from " + std::to_string(entry.compressedSize) +
+                               " compressed, more than deflate can produce");
+    }
     data = inflated(bytes_, start, entry.compressedSize, entry.size, where);
   } else {
     throw Error(ErrorCode::Unsupported, where + ": ZIP compression method " + std::to_string(entry.method) +

@@ -177,6 +177,20 @@ TEST(MeshThreeMf, BadFilesAreNamedWithTheModelPartLineAndElement) {
   const std::string cycle = "<object id=\"2\"><components><component objectid=\"3\"/></components></object>\n"
                             "<object id=\"3\"><components><component objectid=\"2\"/></components></object>\n";
   EXPECT_NE(errorOf(threeMf(modelOf(cycle, "<item objectid=\"2\"/>"))).find("components nest more than 32 deep"), std::string::npos);
+  // Each object placing the next twice, 30 deep: 2^30 placements of no triangle, refused early.
+  std::string doubling = "<object id=\"1\" name=\"empty\"></object>\n";
+  for (int id = 2; id <= 31; ++id) {
+    const std::string next = std::to_string(id - 1);
+    doubling += "<object id=\"" + std::to_string(id) + "\"><components><component objectid=\"" + next +
+                "\"/><component objectid=\"" + next + "\"/></components></object>\n";
+  }
+  try {
+    readMeshParts({{"doubling.3mf", threeMf(modelOf(doubling, "<item objectid=\"31\"/>"))}});
+    ADD_FAILURE() << "2^30 placements were read";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ErrorCode::TooLarge);
+    EXPECT_NE(std::string(e.what()).find("place more than 1000000 objects"), std::string::npos) << e.what();
+  }
   EXPECT_NE(errorOf(threeMf("<model>\n<resources><object id=\"1\"><mesh><vertices><vertex x=\"0\" y=\"0\"")).find(":2: <vertex> is never closed"),
             std::string::npos);
   // A damaged entry: one byte of the stored model changed, so its CRC-32 no longer matches.
