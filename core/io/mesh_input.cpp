@@ -101,6 +101,14 @@ void addAsciiStlParts(const MeshFile& file, std::vector<MeshPart>* parts) {
   }
 }
 
+// Names for the JSON report: file, object and solid names are whatever bytes the files hold, and
+// JSON text must be UTF-8, so an invalid sequence becomes U+FFFD (found by the mesh_assembly fuzz
+// harness: the writer threw on such a name).
+std::string validUtf8(const std::string& text) {
+  return nlohmann::json::parse(nlohmann::json(text).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace))
+      .get<std::string>();
+}
+
 }  // namespace
 
 LengthUnit parseLengthUnit(const std::string& name) {
@@ -189,7 +197,7 @@ std::vector<PartSurface> meshPartSurfaces(const std::vector<MeshFile>& files, Le
 AssemblyDocument meshReportDocument(const MeshAssembly& meshes) {
   AssemblyDocument document;
   document.kind = AssemblyKind::Contacts;
-  document.name = meshShapeName(meshes.parts.front().source);
+  document.name = validUtf8(meshShapeName(meshes.parts.front().source));
   document.assembly = meshes.assembly;
   return document;
 }
@@ -206,7 +214,7 @@ std::string meshCheckReportToJson(const MeshAssembly& meshes, const CheckReport&
                   {"triangles", triangles}};
   // The parts' own names (OBJ objects or groups, STL solids or files), in the order of partIds.
   nlohmann::json names = nlohmann::json::array();
-  for (const MeshPart& part : meshes.parts) names.push_back(part.name);
+  for (const MeshPart& part : meshes.parts) names.push_back(validUtf8(part.name));
   root["mesh"]["partNames"] = names;
   for (const char* section : {"disassembly", "disassemblyFailure"}) {
     if (!report.disassembly || !root.contains(section) || !root[section].is_object() || !root[section].contains("steps")) {
