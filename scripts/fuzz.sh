@@ -23,7 +23,7 @@ cmake --build build/fuzz -j "$jobs" >/dev/null || { echo "fuzz: build failed"; e
 
 dictionary_of() {
   case "$1" in
-    mesh) echo tests/fuzz/mesh.dict ;;
+    mesh | mesh_assembly) echo tests/fuzz/mesh.dict ;;
     design_options) echo tests/fuzz/design_options.dict ;;
     *) echo tests/fuzz/assembly.dict ;;
   esac

@@ -75,6 +75,19 @@ else
   log "Clipper sources present"
 fi
 
+# zlib C sources for the WebAssembly build (inflate, for 3MF files), from Debian's source package;
+# natively the core links Debian's zlib1g-dev of the same version (1.2.13).
+zlib_dir="$root/third_party/zlib-1.2.13.dfsg"
+if [ ! -f "$zlib_dir/inflate.c" ]; then
+  log "fetching zlib 1.2.13 sources from Debian's source packages"
+  enable_source_packages
+  mkdir -p "$root/third_party"
+  (cd "$root/third_party" && apt-get source --download-only zlib >/dev/null 2>&1 || apt-get source --download-only zlib)
+  (cd "$root/third_party" && tar xjf zlib_1.2.13.dfsg.orig.tar.bz2)
+else
+  log "zlib sources present"
+fi
+
 # npm packages (three, playwright-core, and manifold-3d for the tests); package-lock.json pins them.
 if [ ! -d "$root/node_modules/three" ] || [ ! -d "$root/node_modules/playwright-core" ] ||
   [ ! -d "$root/node_modules/manifold-3d" ]; then

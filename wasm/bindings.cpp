@@ -18,6 +18,7 @@
 #include "desia/export.h"
 #include "desia/formats.h"
 #include "desia/frame.h"
+#include "desia/mesh.h"
 #include "desia/plate.h"
 #include "desia/version.h"
 #include "desia/voxel.h"
@@ -285,6 +286,20 @@ val exportFormats() {
   });
 }
 
+// Part surfaces as an array of { partId, positions, normals } with Float32Arrays owning their floats
+// (copied out of the heap at once, like exportAssembly's bytes).
+val surfacesToJs(const std::vector<desia::PartSurface>& surfaces) {
+  val result = val::array();
+  for (const desia::PartSurface& surface : surfaces) {
+    val part = val::object();
+    part.set("partId", surface.partId);
+    part.set("positions", val(emscripten::typed_memory_view(surface.positions.size(), surface.positions.data())).call<val>("slice"));
+    part.set("normals", val(emscripten::typed_memory_view(surface.normals.size(), surface.normals.data())).call<val>("slice"));
+    result.call<void>("push", part);
+  }
+  return result;
+}
+
 // The surface of every part of a voxel assembly (.puz or JSON text), ready to draw: an array of
 // { partId, positions, normals } with Float32Arrays owning their floats (copied out of the heap at
 // once, like exportAssembly's bytes).
@@ -294,15 +309,42 @@ val partSurfaces(const std::string& text, const std::string& source) {
     const std::vector<desia::PartSurface> surfaces =
         desia::isFrameDocument(document) ? desia::framePartSurfaces(desia::frameFromAssemblyDocument(document, source))
                                          : desia::partSurfaces(document, source);
-    val result = val::array();
-    for (const desia::PartSurface& surface : surfaces) {
-      val part = val::object();
-      part.set("partId", surface.partId);
-      part.set("positions", val(emscripten::typed_memory_view(surface.positions.size(), surface.positions.data())).call<val>("slice"));
-      part.set("normals", val(emscripten::typed_memory_view(surface.normals.size(), surface.normals.data())).call<val>("slice"));
-      result.call<void>("push", part);
-    }
-    return result;
+    return surfacesToJs(surfaces);
+  });
+}
+
+// Mesh files from the facade: parallel arrays of names and Uint8Arrays (core.js turns text into
+// bytes), each read into a string with the same size cap as voxelize's mesh.
+std::vector<desia::MeshFile> meshFilesFrom(const val& names, const val& contents) {
+  std::vector<desia::MeshFile> files;
+  const int count = names["length"].as<int>();
+  for (int k = 0; k < count; ++k) {
+    const std::string name = names[k].as<std::string>();
+    files.push_back({name, bytesFromUint8Array(contents[k], name)});
+  }
+  return files;
+}
+
+// A mesh assembly (issue 29) checked as `desia check FILES --unit U --tolerance T --json` checks
+// it: the same core call (checkMeshFiles) and report writer. `tolerance` 0 = the default.
+val checkMeshes(const val& names, const val& contents, const std::string& unit, double tolerance,
+                const std::string& method, bool allGraphs) {
+  return guarded([&] {
+    desia::CheckOptions options;
+    options.method = desia::parseCheckMethod(method);
+    options.allGraphs = allGraphs;
+    desia::MeshAssemblyOptions meshOptions;
+    meshOptions.contactTolerance = tolerance;
+    const desia::MeshCheck check =
+        desia::checkMeshFiles(meshFilesFrom(names, contents), desia::parseLengthUnit(unit), meshOptions, options);
+    return parseJsonText(desia::meshCheckReportToJson(check.meshes, check.report, -1));
+  });
+}
+
+// The parts of mesh files to draw, as partSurfaces (millimetres).
+val meshSurfaces(const val& names, const val& contents, const std::string& unit) {
+  return guarded([&] {
+    return surfacesToJs(desia::meshPartSurfaces(meshFilesFrom(names, contents), desia::parseLengthUnit(unit)));
   });
 }
 
@@ -334,6 +376,8 @@ EMSCRIPTEN_BINDINGS(desia) {
   emscripten::function("exportAssembly", &exportAssembly);
   emscripten::function("exportFormats", &exportFormats);
   emscripten::function("partSurfaces", &partSurfaces);
+  emscripten::function("checkMeshes", &checkMeshes);
+  emscripten::function("meshSurfaces", &meshSurfaces);
   emscripten::function("cutSheets", &cutSheets);
   emscripten::function("version", &version);
   emscripten::class_<DesignSession>("DesignSession")

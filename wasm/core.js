@@ -223,10 +223,14 @@ function makeCore(module) {
     /** Interlocking check of .puz or JSON text; same fields as `desia check --json`. */
     check(text, options) {
       const { method = 'dbg', source = '<input>', graphs = false } = requireOptions('check', options, OPTION_NAMES.check);
-      requireText(text, 'check: text');
+      if (!isMeshDocument(text)) requireText(text, 'check: text');
       requireString(method, 'check: method');
       requireString(source, 'check: source');
       if (typeof graphs !== 'boolean') throw new DesiaError(`check: graphs must be a boolean, got ${describeValue(graphs)}`, 'bad-input');
+      if (isMeshDocument(text)) {
+        const { names, contents, unit, tolerance } = meshDocumentArguments(text, 'check');
+        return callModule(() => module.checkMeshes(names, contents, unit, tolerance, method, graphs));
+      }
       return callModule(() => module.check(text, method, source, graphs));
     },
     /** Parses .puz or JSON text into the JSON assembly document (plain object). */
@@ -327,12 +331,18 @@ function makeCore(module) {
      */
     partSurfaces(assembly, options) {
       const { source = '<input>' } = requireOptions('partSurfaces', options, OPTION_NAMES.partSurfaces);
-      const text = assemblyText(assembly, 'partSurfaces: assembly');
       requireString(source, 'partSurfaces: source');
       if (typeof module.partSurfaces !== 'function') {
         throw new DesiaError('partSurfaces: this build of the WebAssembly module has no part surfaces (rebuild dist/ with scripts/build.sh wasm)', 'unsupported');
       }
-      const surfaces = callModule(() => module.partSurfaces(text, source));
+      let surfaces;
+      if (isMeshDocument(assembly)) {
+        const { names, contents, unit } = meshDocumentArguments(assembly, 'partSurfaces');
+        surfaces = callModule(() => module.meshSurfaces(names, contents, unit));
+      } else {
+        const text = assemblyText(assembly, 'partSurfaces: assembly');
+        surfaces = callModule(() => module.partSurfaces(text, source));
+      }
       // Views into the module's memory would be detached by the next memory growth: own copies.
       const own = (floats) => (floats.buffer === module.HEAPF32?.buffer ? floats.slice() : floats);
       return surfaces.map(({ partId, positions, normals }) => ({ partId, positions: own(positions), normals: own(normals) }));
@@ -463,6 +473,46 @@ function makeCore(module) {
 }
 
 /** A document object as JSON text; text stays text; anything else is refused. */
+/**
+ * A mesh assembly (issue 29, docs/meshes.md): `{ files: [{ name, bytes | text }], unit?, tolerance? }`
+ * — a plain object with a `files` array, which no assembly document has.
+ */
+export function isMeshDocument(value) {
+  return isPlainObject(value) && Array.isArray(value.files);
+}
+
+const MESH_DOCUMENT_KEYS = ['files', 'unit', 'tolerance'];
+
+/**
+ * A mesh document's values for the bindings (checkMeshes, meshSurfaces): parallel arrays of file
+ * names and Uint8Arrays, the unit (default 'mm', the core names a wrong one) and the contact
+ * tolerance in mm (default 0: the core's default, scaled to the model).
+ */
+function meshDocumentArguments(document, name) {
+  for (const key of Object.keys(document)) {
+    if (!MESH_DOCUMENT_KEYS.includes(key)) throw new DesiaError(`${name}: unknown mesh document field '${key}' (expected ${listOf(MESH_DOCUMENT_KEYS)})`, 'bad-input');
+  }
+  const { files, unit = 'mm', tolerance = 0 } = document;
+  if (files.length === 0) throw new DesiaError(`${name}: a mesh document needs at least one file`, 'bad-input');
+  const names = [];
+  const contents = [];
+  files.forEach((file, k) => {
+    const what = `${name}: files[${k}]`;
+    if (!isPlainObject(file)) throw new DesiaError(`${what} must be an object { name, bytes } or { name, text }, got ${describeValue(file)}`, 'bad-input');
+    names.push(requireString(file.name, `${what}.name`));
+    if ((file.bytes === undefined) === (file.text === undefined)) {
+      throw new DesiaError(`${what} ('${file.name}') needs either bytes or text`, 'bad-input');
+    }
+    if (file.text !== undefined) requireText(file.text, `${what}.text`);
+    contents.push(meshBytes(file.bytes ?? file.text, `${what}.bytes`));
+  });
+  requireString(unit, `${name}: unit`);
+  if (typeof tolerance !== 'number' || !Number.isFinite(tolerance)) {
+    throw new DesiaError(`${name}: tolerance must be a finite number (mm), got ${describeValue(tolerance)}`, 'bad-input');
+  }
+  return { names, contents, unit, tolerance };
+}
+
 function assemblyText(assembly, what) {
   if (isPlainObject(assembly)) {
     try {

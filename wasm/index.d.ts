@@ -149,7 +149,7 @@ export interface BlockingGraph {
 export interface CheckReport extends Verdict {
   parts: number;
   partIds: number[];
-  kind: 'voxel' | 'plate' | 'frame' | 'contacts';
+  kind: 'voxel' | 'plate' | 'frame' | 'contacts' | 'mesh';
   method: CheckMethod;
   /** Empty when there are more than 128 base directions and `graphs` was not asked for. */
   baseDirections: { label: string; vector: [number, number, number] }[];
@@ -179,6 +179,25 @@ export interface CheckReport extends Verdict {
    * leave; absent for other documents.
    */
   shapeRemoval?: { checked: string; clear: boolean; failure: string };
+  /**
+   * Mesh assemblies (kind 'mesh'): the contact tolerance in force and the model's bounding-box
+   * diagonal (mm), the planar faces, contacts and triangles found, and the parts' names (OBJ
+   * objects or groups, STL solids or files) in the order of partIds.
+   */
+  mesh?: { tolerance: number; diagonal: number; planarFaces: number; contacts: number; triangles: number; partNames: string[] };
+}
+
+/**
+ * A mesh assembly (docs/meshes.md): closed triangle meshes drawn elsewhere, one part per OBJ
+ * object or group, per STL file or ASCII STL solid. `check` of it is `desia check FILES --json`.
+ */
+export interface MeshDocument {
+  /** The files; `name` is the file name (its extension, .obj or .stl, chooses the reader). */
+  files: ({ name: string; bytes: MeshInput } | { name: string; text: string })[];
+  /** The files' unit: 'mm' (default), 'm' or 'inch'. */
+  unit?: 'mm' | 'm' | 'inch';
+  /** mm: faces this close touch; 0 or absent = 1e-5 of the model's bounding-box diagonal. */
+  tolerance?: number;
 }
 
 /** The JSON assembly document (see docs/json-schema.md). */
@@ -616,8 +635,12 @@ export interface StructureDesignOptions {
  * option names are checked by the core).
  */
 export interface DesiaCore {
-  /** The interlocking check of .puz or JSON text; the same fields as `desia check --json`. */
-  check(text: string, options?: CheckOptions): CheckReport;
+  /**
+   * The interlocking check of .puz or JSON text, or of a mesh assembly ({@link MeshDocument}); the
+   * same fields as `desia check --json` (of the mesh files). Errors in a mesh name the file and line,
+   * or the part and what is wrong with it (open, self-intersecting, overlapping another).
+   */
+  check(text: string | MeshDocument, options?: CheckOptions): CheckReport;
   /** Parses .puz or JSON text into the JSON assembly document. */
   parseDocument(text: string, options?: { source?: string }): AssemblyDocument;
   /**
@@ -652,9 +675,10 @@ export interface DesiaCore {
    * increasing part id, computed by the core from the same faces as the STL/OBJ export: voxels in
    * voxel units, plates and frames in their model units (a frame without designed joints: its
    * beams, then its bare joint cubes as part 0). Throws a DesiaError ('bad-input') for a voxel
-   * document without voxels, as the export does.
+   * document without voxels, as the export does. Of a {@link MeshDocument}: each part's triangles in
+   * millimetres with flat normals (part ids as `check` numbers them).
    */
-  partSurfaces(assembly: string | AssemblyDocument, options?: { source?: string }): PartSurface[];
+  partSurfaces(assembly: string | AssemblyDocument | MeshDocument, options?: { source?: string }): PartSurface[];
   /**
    * Designs an N-part interlocking voxel puzzle from a shape (.puz or JSON text). `puz` and
    * `document` are set when status is 'success' (the puzzle passed the project's own check);
@@ -749,8 +773,8 @@ export interface CreateOptions extends LoadOptions {
  * was running (code 'internal', `fatal` true) and is replaced by the next call.
  */
 export interface Desia {
-  /** The interlocking check of .puz or JSON text; the same fields as `desia check --json`. */
-  check(text: string, options?: CheckOptions & CallOptions): Promise<CheckReport>;
+  /** The interlocking check of .puz or JSON text or of a mesh assembly; see {@link DesiaCore.check}. */
+  check(text: string | MeshDocument, options?: CheckOptions & CallOptions): Promise<CheckReport>;
   /** Parses .puz or JSON text into the JSON assembly document. */
   parseDocument(text: string, options?: { source?: string } & CallOptions): Promise<AssemblyDocument>;
   /**
@@ -768,7 +792,7 @@ export interface Desia {
    * The surface of every part of a voxel assembly, ready to draw; see
    * {@link DesiaCore.partSurfaces}. The float arrays are moved out of the worker, not copied.
    */
-  partSurfaces(assembly: string | AssemblyDocument, options?: { source?: string } & CallOptions): Promise<PartSurface[]>;
+  partSurfaces(assembly: string | AssemblyDocument | MeshDocument, options?: { source?: string } & CallOptions): Promise<PartSurface[]>;
   /**
    * Designs an N-part interlocking voxel puzzle; resolves to the same object as
    * {@link DesiaCore.designVoxel} (byte-identical `.puz` for the same seed). `onProgress` is

@@ -21,6 +21,7 @@ import { CoreWorker } from './worker-client.js';
 import { createDesignPanel } from './design-panel.js';
 import { readUrlState, writeUrlState } from './url-state.js';
 import { createMeshInput, isMeshName } from './mesh-input.js';
+import { createMeshAssemblyInput, isMeshAssemblyName } from './mesh-assembly.js';
 import { createExportPanel } from './export-panel.js';
 import { keepForOffline, registerServiceWorker } from './offline.js';
 import { createPartsPanel } from './parts-panel.js';
@@ -233,7 +234,7 @@ function setCurrent(assembly, report = null, document_ = null) {
   exportPanel.setAssembly(assembly, report, document_);
   current = assembly ? { ...assembly, kind: report?.kind ?? null } : null;
   if (current) designPanel.setKind(current.kind);
-  ui.downloadButton.disabled = !current;
+  ui.downloadButton.disabled = !current?.text; // a mesh assembly has files, not a text
   ui.downloadButton.textContent = `Download .${/\.(json|fpuz)$/i.exec(current?.name ?? '')?.[1]?.toLowerCase() ?? 'puz'}`;
 }
 
@@ -331,12 +332,10 @@ async function loadAssembly(name, readText, { origin = name, asInput = true } = 
   // The view keeps the previous assembly until this one is parsed and checked.
   resetReport('Checking…');
   try {
-    const text = await readText();
+    const loaded = await readText();
     if (!isCurrent()) return;
-    // `source` makes the core's error messages name the file (and line) they are about.
-    const { value: { document: document_, surfaces } } = await core.run('parse', text, { source: name });
-    if (!isCurrent()) return;
-    const { value: report, elapsedMs } = await core.run('check', text, { method: ui.methodSelect.value, source: name });
+    // A mesh assembly comes checked and drawn already (web/mesh-assembly.js); text is parsed here.
+    const { text, document: document_, surfaces, report, elapsedMs } = typeof loaded === 'string' ? await parseAndCheck(name, loaded) : loaded;
     if (!isCurrent()) return;
     // A plate plan opened from a file plays its own removal, as it did when it was designed.
     present({ name, text, document: document_, surfaces, report, elapsedMs, option, optionLabel });
@@ -370,6 +369,14 @@ async function loadAssembly(name, readText, { origin = name, asInput = true } = 
   }
 }
 
+/** The document, part surfaces and check report of an assembly's text. */
+async function parseAndCheck(name, text) {
+  // `source` makes the core's error messages name the file (and line) they are about.
+  const { value: { document: document_, surfaces } } = await core.run('parse', text, { source: name });
+  const { value: report, elapsedMs } = await core.run('check', text, { method: ui.methodSelect.value, source: name });
+  return { text, document: document_, surfaces, report, elapsedMs };
+}
+
 /** 'Cube_4x4x4_origin.puz · 64 voxels' ('· 6 plates', '· 12 beams'): what Design starts from. */
 function describeInput(document_, report) {
   const kind = report.kind ?? document_.kind;
@@ -401,12 +408,34 @@ function loadExample(file, { keepJoints = false, first = false } = {}) {
   // link's N is kept for its first load).
   designPanel.inputChanged({ keepParts: first });
   selectMenuEntry(file);
+  meshAssemblies.forget();
   if (meshInput.isExample(file)) return meshInput.openExample(file);
   meshInput.forget();
   return loadAssembly(file, () => fetchExampleText(file));
 }
 
+/**
+ * Files dropped or picked: several (all OBJ, STL or 3MF), or one 3MF, are a mesh assembly; one file
+ * is loaded as before (an OBJ or STL of several parts becomes a mesh assembly there).
+ */
+function loadUserFiles(files) {
+  if (files.length === 1 && !/\.3mf$/i.test(files[0].name)) return loadUserFile(files[0]);
+  const names = files.map((file) => file.name);
+  lastUserFile = files;
+  designPanel.setExampleJoints(null);
+  designPanel.inputChanged();
+  meshInput.forget();
+  selectMenuEntry(USER_FILE_OPTION, `Your files: ${names.join(', ')}`);
+  if (!files.every((file) => isMeshAssemblyName(file.name))) {
+    meshAssemblies.forget();
+    showError(`${names.join(', ')}: several files are one assembly only when each is a mesh (.obj, .stl or .3mf); open other files one at a time`);
+    return Promise.resolve();
+  }
+  return meshAssemblies.open(files);
+}
+
 function loadUserFile(file) {
+  meshAssemblies.forget();
   lastUserFile = file;
   designPanel.setExampleJoints(null); // the user's own design: 'auto' unless the user chose otherwise
   designPanel.inputChanged();
@@ -423,20 +452,26 @@ function loadUserFile(file) {
 
 /** An OBJ with line elements (`l`) is a frame (its lines and face edges are beams); others are meshes to voxelize. */
 async function openMeshOrFrame(file) {
-  if (!/\.obj$/i.test(file.name) || file.size > MAX_FILE_BYTES) return meshInput.openFile(file);
+  if (!/\.obj$/i.test(file.name) || file.size > MAX_FILE_BYTES) return openMesh(file);
   let text;
   try {
     text = decodeText(file.name, await file.arrayBuffer());
   } catch {
-    return meshInput.openFile(file); // the voxelizer names what is wrong with it
+    return openMesh(file); // the voxelizer names what is wrong with it
   }
-  if (!/^\s*l\s/m.test(text)) return meshInput.openFile(file);
+  if (!/^\s*l\s/m.test(text)) return openMesh(file);
   meshInput.forget();
   // The core reads the OBJ as a frame and gives its JSON document, which the page then shows.
   return loadAssembly(`${file.name.replace(/\.obj$/i, '')}.json`, async () => {
     const { value } = await core.run('frame-document', text, { source: file.name });
     return value;
   }, { origin: file.name });
+}
+
+/** A mesh of several parts is a mesh assembly; one solid is a shape to voxelize. */
+async function openMesh(file) {
+  if (await meshAssemblies.openIfSeveralParts(file)) return;
+  meshInput.openFile(file);
 }
 
 /**
@@ -519,6 +554,7 @@ function setBusy(busy, label) {
 }
 
 const meshInput = createMeshInput({ core, loadAssembly });
+const meshAssemblies = createMeshAssemblyInput({ core, loadAssembly, method: () => ui.methodSelect.value });
 const exportPanel = createExportPanel({ core });
 
 /**
@@ -623,8 +659,8 @@ function wireDragAndDrop() {
     event.preventDefault();
     depth = 0;
     ui.dropOverlay.hidden = true;
-    const file = event.dataTransfer?.files?.[0];
-    if (file && !designPanel.busy) loadUserFile(file);
+    const files = [...(event.dataTransfer?.files ?? [])];
+    if (files.length > 0 && !designPanel.busy) loadUserFiles(files);
   });
 }
 
@@ -632,6 +668,7 @@ function wireDragAndDrop() {
 function recheck() {
   if (!current) return;
   const { name, text } = current;
+  if (meshAssemblies.shows(name)) return meshAssemblies.recheck();
   loadAssembly(name, async () => text, { asInput: designInput?.name === name && designInput?.text === text });
 }
 
@@ -644,14 +681,14 @@ function wireControls() {
       writeUrlState({ example: ui.exampleSelect.value });
       loadExample(ui.exampleSelect.value);
     } else if (lastUserFile) {
-      loadUserFile(lastUserFile);
+      loadUserFiles([lastUserFile].flat());
     }
   });
   ui.fileInput.addEventListener('change', () => {
-    const file = ui.fileInput.files?.[0];
+    const files = [...(ui.fileInput.files ?? [])];
     // Clear the input so picking the same file again still fires `change`.
     ui.fileInput.value = '';
-    if (file) loadUserFile(file);
+    if (files.length > 0) loadUserFiles(files);
   });
   ui.methodSelect.addEventListener('change', recheck);
   // The graph test is not exact for this assembly (report.js says why): run the LP test on it.

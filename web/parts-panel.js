@@ -36,11 +36,13 @@ export function describeParts(document_, report, drawnIds = []) {
   const voxels = kind === 'voxel' ? voxelCounts(document_) : new Map();
   const plates = new Map((Array.isArray(document_?.plates) ? document_.plates : []).map((plate) => [plate.id, plate]));
   const beams = new Map((Array.isArray(document_?.beams) ? document_.beams : []).map((beam) => [beam.id, beam]));
+  const meshParts = new Map((kind === 'mesh' && Array.isArray(document_?.parts) ? document_.parts : []).map((part) => [part.id, part]));
   const ids = new Set([...(report?.partIds ?? []), ...voxels.keys(), ...drawnIds]);
   return [...ids].filter(Number.isInteger).sort((a, b) => a - b).map((id) => {
     let detail = '';
     if (kind === 'voxel') detail = `${voxels.get(id) ?? 0} voxels`;
     else if (kind === 'plate') detail = plates.get(id)?.name ?? '';
+    else if (kind === 'mesh') detail = meshParts.get(id)?.name ?? ''; // its object, group, solid or file
     else if (kind === 'frame' && id === 0) detail = 'joint cubes (no joints designed yet)';
     else if (kind === 'frame' && Number.isInteger(beams.get(id)?.inputId)) detail = `input beam ${beams.get(id).inputId}`;
     const title = id === 0 && kind === 'frame' ? 'joints' : `${noun} ${id}${id === key ? ' (key)' : ''}`;

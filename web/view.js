@@ -427,6 +427,10 @@ export class AssemblyView {
       }
     }
     if (document_?.kind === 'frame') this.#partNames.set(0, 'joint cubes (no joints designed yet)');
+    // A mesh assembly's parts keep the names of their objects, groups, solids or files.
+    for (const part of document_?.kind === 'mesh' && Array.isArray(document_.parts) ? document_.parts : []) {
+      if (Number.isInteger(part?.id) && typeof part.name === 'string' && part.name) this.#partNames.set(part.id, part.name);
+    }
     // Whole-cell offsets keep voxel boundaries (and round plate coordinates) on the grid lines.
     const cell = this.#scale.cell;
     const snap = (value) => Math.floor(value / cell) * cell;

@@ -3,17 +3,20 @@
 // tests/node/package.test.mjs checks that the names here match what viewer.js exports and that
 // ViewerHandle lists the members mountViewer returns).
 
-import type { AssemblyDocument, CheckReport, PartSurface } from '../wasm/index.js';
+import type { AssemblyDocument, CheckReport, MeshDocument, PartSurface } from '../wasm/index.js';
 
 /** What the viewer needs from a desia instance (by default one `createDesia()` per page). */
 export interface ViewerCore {
-  check(text: string, options?: { source?: string }): Promise<CheckReport>;
+  check(text: string | MeshDocument, options?: { source?: string }): Promise<CheckReport>;
   parseDocument(text: string, options?: { source?: string }): Promise<AssemblyDocument>;
-  partSurfaces(assembly: string | AssemblyDocument, options?: { source?: string }): Promise<PartSurface[]>;
+  partSurfaces(assembly: string | AssemblyDocument | MeshDocument, options?: { source?: string }): Promise<PartSurface[]>;
 }
 
-/** Where load() gets an assembly: a same-origin URL, or the file's text and a name for messages. */
-export type ViewerSource = string | { src: string } | { text: string; name?: string };
+/**
+ * Where load() gets an assembly: a same-origin URL (an OBJ / STL URL is a mesh assembly), the
+ * file's text and a name for messages, or a mesh assembly's files (docs/meshes.md).
+ */
+export type ViewerSource = string | { src: string } | { text: string; name?: string } | { meshes: MeshDocument; name?: string };
 
 export interface ViewerOptions {
   /** A parsed document and its check report (desia.parseDocument / desia.check). */
@@ -21,8 +24,10 @@ export interface ViewerOptions {
   report?: CheckReport | null;
   /** The document's part surfaces (desia.partSurfaces); fetched from `desia` when missing. */
   surfaces?: PartSurface[];
-  /** Or a URL (relative to the page, same origin only) of a .puz / JSON file. */
+  /** Or a URL (relative to the page, same origin only) of a .puz / JSON file or an OBJ / STL mesh assembly. */
   src?: string;
+  /** Or a mesh assembly's files (one part per OBJ object or group, per STL file or solid). */
+  meshes?: MeshDocument;
   /** Or the file's text, with `name` used in messages. */
   text?: string;
   name?: string;

@@ -17,7 +17,7 @@
 // removal order and paths, graphs) and the part surfaces to draw (desia.partSurfaces). Everything the viewer draws lives in the host's shadow root,
 // with its own styles: the page's styles do not leak in, the viewer's do not leak out.
 //
-// Attributes of <desia-viewer>: src (a .puz or JSON assembly on the page's origin), autoplay
+// Attributes of <desia-viewer>: src (a .puz or JSON assembly, or an OBJ / STL mesh assembly, on the page's origin), autoplay
 // (play the disassembly and the assembly in a loop), loop, exploded (0..1; empty = 1),
 // controls="none" (no control bar), graphs (offer the blocking-graph drawing).
 // Events on the element (or on mountViewer's element): 'ready' (detail { report, document,
@@ -28,6 +28,7 @@
 import { AssemblyView, createPlaybackControls, withPlannedRemoval } from './view.js';
 import { renderBlockingGraphs } from './dbg-panel.js';
 import { createDesia } from '../wasm/index.js';
+import { isMeshAssemblyName, meshViewDocument } from './mesh-document.js';
 
 /** Larger files are refused before they are read: a voxel file this big is surely a mistake. */
 const MAX_FILE_BYTES = 32 * 1024 * 1024;
@@ -159,6 +160,22 @@ function fileNameOf(url) {
  * this viewer does sends a request elsewhere.
  */
 async function fetchAssemblyText(src, baseUri) {
+  const { name, buffer } = await fetchFile(src, baseUri);
+  try {
+    return { name, text: new TextDecoder('utf-8', { fatal: true }).decode(buffer) };
+  } catch {
+    throw new Error(`${name}: not a text file (it is not valid UTF-8); expected a .puz or desia .json assembly`);
+  }
+}
+
+/** A mesh file of the page's origin (OBJ or STL, any encoding) as a mesh document of one file. */
+async function fetchMeshDocument(src, baseUri) {
+  const { name, buffer } = await fetchFile(src, baseUri);
+  return { files: [{ name, bytes: new Uint8Array(buffer) }] };
+}
+
+/** { name, buffer } of a file on the page's origin, with the size cap. */
+async function fetchFile(src, baseUri) {
   const url = new URL(src, baseUri);
   const name = fileNameOf(url);
   if (url.origin !== location.origin) {
@@ -179,18 +196,16 @@ async function fetchAssemblyText(src, baseUri) {
   if (buffer.byteLength > MAX_FILE_BYTES) {
     throw new Error(`${name}: the file is too large (${(buffer.byteLength / 1048576).toFixed(1)} MiB)`);
   }
-  try {
-    return { name, text: new TextDecoder('utf-8', { fatal: true }).decode(buffer) };
-  } catch {
-    throw new Error(`${name}: not a text file (it is not valid UTF-8); expected a .puz or desia .json assembly`);
-  }
+  return { name, buffer };
 }
 
 /**
  * Mounts a viewer into `host` (its shadow root; one is attached when it has none). Options:
  *   document, report   a parsed document and its check report (desia.parseDocument / desia.check)
  *   surfaces           and its part surfaces (desia.partSurfaces); fetched from `desia` when missing
- *   src                or a URL (relative to the page, same origin) of a .puz / JSON file
+ *   src                or a URL (relative to the page, same origin) of a .puz / JSON file, or of
+ *                      an OBJ / STL mesh assembly (one part per object, group or solid)
+ *   meshes             or a mesh document { files: [{ name, bytes | text }], unit?, tolerance? }
  *   text, name         or the file's text and a name for messages
  *   autoplay           play disassembly and assembly in a loop once shown (not with reduced motion)
  *   loop               loop when played (default: autoplay)
@@ -202,7 +217,8 @@ async function fetchAssemblyText(src, baseUri) {
  *                      createDesia() per page)
  * Returns { element, report, document, update(document, report, name, surfaces), load(source),
  * play(), pause(), setExploded(x), setStep(step), dispose() }; load() takes { src } or
- * { text, name } or a URL string and resolves with the report (it rejects, and shows the message,
+ * { text, name } or { meshes, name? } (a mesh document: the parts of an assembly as OBJ/STL files,
+ * docs/meshes.md; a src ending in .obj, .stl or .3mf is one) or a URL string and resolves with the report (it rejects, and shows the message,
  * on failure); update() resolves once the assembly is drawn (it rejects, and shows the message,
  * when its surfaces cannot be had).
  */
@@ -387,6 +403,17 @@ export function mountViewer(host, options = {}) {
     message.hidden = true;
     setState('loading');
     try {
+      const meshSrc = request.src !== undefined && request.src !== null && isMeshAssemblyName(new URL(String(request.src), host.baseURI).pathname);
+      if (request.meshes !== undefined || meshSrc) {
+        // A mesh assembly: its files checked as `desia check FILES` does, drawn from their triangles.
+        const meshes = request.meshes ?? await fetchMeshDocument(String(request.src), host.baseURI);
+        const name = request.name ?? meshes.files?.map((file) => file.name).join(', ') ?? 'meshes';
+        const desia = desiaSource ?? await pageDesia();
+        const report = await desia.check(meshes);
+        const surfaces = await desia.partSurfaces(meshes);
+        if (!disposed && mine === generation) show(meshViewDocument(name, report), report, name, surfaces);
+        return report;
+      }
       const { name, text } = request.src !== undefined && request.src !== null
         ? await fetchAssemblyText(String(request.src), host.baseURI)
         : { name: request.name ?? 'assembly', text: request.text };
@@ -471,9 +498,11 @@ export function mountViewer(host, options = {}) {
   if (options.document) {
     // Failures are on screen and in the 'error' event.
     showDocument(options.document, options.report ?? null, options.name ?? '', options.surfaces).catch(() => {});
-  } else if (options.src !== undefined || options.text !== undefined) {
+  } else if (options.src !== undefined || options.text !== undefined || options.meshes !== undefined) {
     // Failures are on screen and in the 'error' event; a caller who wants the promise calls load().
-    load(options.src !== undefined ? { src: options.src } : { text: options.text, name: options.name }).catch(() => {});
+    const source = options.src !== undefined ? { src: options.src }
+      : options.meshes !== undefined ? { meshes: options.meshes, name: options.name } : { text: options.text, name: options.name };
+    load(source).catch(() => {});
   }
   return handle;
 }

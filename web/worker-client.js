@@ -15,6 +15,8 @@
 //   'to-puz'           .puz text of a voxel assembly                       desia.toPuz
 //   'document-json'    any assembly as its JSON document text              parseDocument
 //   'frame-document'   a frame (JSON, OBJ or .fpuz by options.source) as JSON text: parseFrame
+//   'mesh-assembly'    options.meshes (a mesh document): { report, surfaces }  check, partSurfaces
+//   'mesh-parts'       options.meshes: how many parts the core reads in it      partSurfaces
 //   'export'           file bytes                                          exportAssembly
 //   'export-formats'   the core's export-format registry                   exportFormats
 //   'cut-sheets'       one text per sheet                                  cutSheets
@@ -250,6 +252,11 @@ const OPERATIONS = {
   'to-puz': (worker, desia, text, options, { signal }) => desia.toPuz(text, { ...options, signal }),
   'document-json': async (worker, desia, text, options, { signal }) => JSON.stringify(await desia.parseDocument(text, { ...options, signal })),
   'frame-document': async (worker, desia, text, options, { signal }) => JSON.stringify(await desia.parseFrame(text, { ...options, signal })),
+  'mesh-assembly': async (worker, desia, text, { meshes, ...options }, { signal }) => {
+    const report = await desia.check(meshes, { ...options, signal });
+    return { report, surfaces: await desia.partSurfaces(meshes, { signal }) };
+  },
+  'mesh-parts': async (worker, desia, text, { meshes }, { signal }) => (await desia.partSurfaces(meshes, { signal })).length,
   export: (worker, desia, text, options, { signal }) => desia.exportAssembly(text, { ...options, signal }),
   'export-formats': (worker, desia, text, options, { signal }) => desia.exportFormats({ signal }),
   'cut-sheets': (worker, desia, text, options, { signal }) => desia.cutSheets(text, { ...options, signal }),

@@ -22,7 +22,7 @@ constexpr int kExitBadInput = 2;
 
 const char* kUsage =
     "usage: desia check FILE [--method dbg|lp|both] [--json] [--graphs]\n"
-    "       desia check MESH.obj|.stl [MORE.obj|.stl ...] [--unit mm|m|inch] [--tolerance MM] [--method ...] [--json]\n"
+    "       desia check MESH.obj|.stl|.3mf [MORE ...] [--unit mm|m|inch] [--tolerance MM] [--method ...] [--json]\n"
     "       desia voxelize --input MESH.obj|.stl [--resolution R] --output SHAPE.puz|.json\n"
     "       desia design voxel --input SHAPE.puz|.json --parts N --output OUT.puz|.json\n"
     "             [--seed S] [--candidates M] [--rank compactness|x|y|z|-x|-y|-z] [--mode desia|recursive]\n"
@@ -48,8 +48,9 @@ const char* kUsage =
     "        --method both  run both and compare\n"
     "        --json         print one JSON object instead of text\n"
     "        --graphs       list every base direction and DBG (by default only up to 128)\n"
-    "        OBJ/STL files are a mesh assembly (docs/meshes.md): one part per OBJ object or group, per\n"
-    "        ASCII STL solid or per binary STL; parts closed and not overlapping; contacts where faces\n"
+    "        OBJ/STL/3MF files are a mesh assembly (docs/meshes.md): one part per OBJ object or group,\n"
+    "        per ASCII STL solid, per binary STL or per 3MF build item (in the model's own unit); parts\n"
+    "        closed and not overlapping; contacts where faces\n"
     "        lie on each other; every step of the plan swept. --unit: of the files (default mm);\n"
     "        --tolerance MM: faces this close touch (default 1e-5 of the model's diagonal)\n"
     "voxelize fills every voxel whose centre lies inside the closed mesh (OBJ or STL) and writes\n"

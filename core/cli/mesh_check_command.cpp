@@ -14,9 +14,8 @@ int runMeshCheck(const std::vector<std::string>& files, const desia::CheckOption
   for (const std::string& file : files) inputs.push_back({file, desia::cli::readInputFile(file)});
   desia::MeshAssemblyOptions meshOptions;
   meshOptions.contactTolerance = contactTolerance;
-  const desia::MeshAssembly meshes =
-      desia::buildMeshAssembly(desia::readMeshParts(inputs, desia::parseLengthUnit(unit)), meshOptions);
-  const desia::CheckReport report = desia::checkMeshAssembly(meshes, options);
-  std::cout << (json ? desia::meshCheckReportToJson(meshes, report) + "\n" : desia::meshCheckReportToText(meshes, report));
-  return desia::checkPassed(report) ? 0 : 1;
+  const desia::MeshCheck check = desia::checkMeshFiles(inputs, desia::parseLengthUnit(unit), meshOptions, options);
+  std::cout << (json ? desia::meshCheckReportToJson(check.meshes, check.report) + "\n"
+                     : desia::meshCheckReportToText(check.meshes, check.report));
+  return desia::checkPassed(check.report) ? 0 : 1;
 }

@@ -5,11 +5,14 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <sstream>
 
 #include "desia/analysis.h"
 #include "desia/error.h"
+#include "desia/mesh.h"
+#include "three_mf.h"
 
 namespace desia {
 namespace {
@@ -98,6 +101,14 @@ void addAsciiStlParts(const MeshFile& file, std::vector<MeshPart>* parts) {
   }
 }
 
+// Names for the JSON report: file, object and solid names are whatever bytes the files hold, and
+// JSON text must be UTF-8, so an invalid sequence becomes U+FFFD (found by the mesh_assembly fuzz
+// harness: the writer threw on such a name).
+std::string validUtf8(const std::string& text) {
+  return nlohmann::json::parse(nlohmann::json(text).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace))
+      .get<std::string>();
+}
+
 }  // namespace
 
 LengthUnit parseLengthUnit(const std::string& name) {
@@ -124,12 +135,11 @@ std::vector<MeshPart> readMeshParts(const std::vector<MeshFile>& files, LengthUn
   std::vector<MeshPart> parts;
   for (const MeshFile& file : files) {
     if (file.bytes.find_first_not_of(" \t\r\n") == std::string::npos) throwBadInput(file.source, "the file is empty");
-    if (endsWith(file.source, ".3mf")) {
-      throw Error(ErrorCode::Unsupported, file.source + ": 3MF is not read yet (its ZIP needs inflate); export the "
-                                                        "parts as OBJ (one object each) or STL");
-    }
     const size_t before = parts.size();
-    if (isBinaryStl(file.bytes)) {
+    if (endsWith(file.source, ".3mf")) {
+      // In millimetres already: a 3MF model says its unit itself.
+      for (MeshPart& part : readThreeMfParts(file.bytes, file.source)) parts.push_back(std::move(part));
+    } else if (isBinaryStl(file.bytes)) {
       parts.push_back({0, meshShapeName(file.source), file.source, parseStl(file.bytes, file.source)});
     } else if (endsWith(file.source, ".stl") || lowered(file.bytes.substr(0, 5)) == "solid") {
       addAsciiStlParts(file, &parts);
@@ -145,15 +155,49 @@ std::vector<MeshPart> readMeshParts(const std::vector<MeshFile>& files, LengthUn
   const double scale = millimetresPer(unit);
   for (size_t k = 0; k < parts.size(); ++k) {
     parts[k].id = static_cast<int>(k + 1);
+    if (endsWith(parts[k].source, ".3mf")) continue;
     for (auto& v : parts[k].mesh.vertices) v = {v[0] * scale, v[1] * scale, v[2] * scale};
   }
   return parts;
 }
 
+MeshCheck checkMeshFiles(const std::vector<MeshFile>& files, LengthUnit unit, const MeshAssemblyOptions& meshOptions,
+                         const CheckOptions& options) {
+  MeshCheck check{buildMeshAssembly(readMeshParts(files, unit), meshOptions), {}};
+  check.report = checkMeshAssembly(check.meshes, options);
+  return check;
+}
+
+std::vector<PartSurface> meshPartSurfaces(const std::vector<MeshFile>& files, LengthUnit unit) {
+  std::vector<PartSurface> surfaces;
+  for (const MeshPart& part : readMeshParts(files, unit)) {
+    PartSurface surface;
+    surface.partId = part.id;
+    for (const std::array<int, 3>& triangle : part.mesh.triangles) {
+      const Vec3& a = part.mesh.vertices[static_cast<size_t>(triangle[0])];
+      const Vec3& b = part.mesh.vertices[static_cast<size_t>(triangle[1])];
+      const Vec3& c = part.mesh.vertices[static_cast<size_t>(triangle[2])];
+      Vec3 normal = {(b[1] - a[1]) * (c[2] - a[2]) - (b[2] - a[2]) * (c[1] - a[1]),
+                     (b[2] - a[2]) * (c[0] - a[0]) - (b[0] - a[0]) * (c[2] - a[2]),
+                     (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])};
+      const double length = std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
+      for (double& x : normal) x = length > 0 ? x / length : 0;  // a sliver draws unlit rather than NaN
+      for (const Vec3* corner : {&a, &b, &c}) {
+        for (size_t k = 0; k < 3; ++k) {
+          surface.positions.push_back(static_cast<float>((*corner)[k]));
+          surface.normals.push_back(static_cast<float>(normal[k]));
+        }
+      }
+    }
+    surfaces.push_back(std::move(surface));
+  }
+  return surfaces;
+}
+
 AssemblyDocument meshReportDocument(const MeshAssembly& meshes) {
   AssemblyDocument document;
   document.kind = AssemblyKind::Contacts;
-  document.name = meshShapeName(meshes.parts.front().source);
+  document.name = validUtf8(meshShapeName(meshes.parts.front().source));
   document.assembly = meshes.assembly;
   return document;
 }
@@ -168,6 +212,10 @@ std::string meshCheckReportToJson(const MeshAssembly& meshes, const CheckReport&
                   {"planarFaces", meshes.faceCount},
                   {"contacts", meshes.assembly.contacts.size()},
                   {"triangles", triangles}};
+  // The parts' own names (OBJ objects or groups, STL solids or files), in the order of partIds.
+  nlohmann::json names = nlohmann::json::array();
+  for (const MeshPart& part : meshes.parts) names.push_back(validUtf8(part.name));
+  root["mesh"]["partNames"] = names;
   for (const char* section : {"disassembly", "disassemblyFailure"}) {
     if (!report.disassembly || !root.contains(section) || !root[section].is_object() || !root[section].contains("steps")) {
       continue;

@@ -24,6 +24,7 @@
 #include "desia/error.h"
 #include "desia/export.h"
 #include "desia/formats.h"
+#include "desia/mesh.h"
 #include "desia/plate.h"
 #include "desia/voxel.h"
 
@@ -277,6 +278,67 @@ inline void plateResultTarget(const uint8_t* data, size_t size) {
   });
 }
 
+// Limits that keep one mesh assembly check in the milliseconds (the sweep and the plan grow with
+// parts times triangles).
+struct MeshAssemblyLimits {
+  static constexpr size_t kMaxBytes = 65536;
+  static constexpr size_t kMaxParts = 12;
+  static constexpr size_t kMaxTriangles = 2000;
+};
+
+// The files of one mesh-assembly input: sections that start with a line "=== NAME" (NAME's
+// extension chooses the reader, as the CLI's path does), and the line break before such a line is
+// not the file's (so a binary STL keeps its exact size); text before the first such line, or an
+// input without one, is a file of its own, "fuzz.obj".
+inline std::vector<MeshFile> meshFilesOf(const std::string& bytes) {
+  static const std::string kMarker = "=== ";
+  std::vector<MeshFile> files{{"fuzz.obj", ""}};
+  size_t lineStart = 0;
+  while (lineStart < bytes.size()) {
+    const size_t newline = bytes.find('\n', lineStart);
+    const size_t lineEnd = newline == std::string::npos ? bytes.size() : newline + 1;
+    if (bytes.compare(lineStart, kMarker.size(), kMarker) == 0) {
+      std::string name = bytes.substr(lineStart + kMarker.size(), lineEnd - lineStart - kMarker.size());
+      while (!name.empty() && (name.back() == '\n' || name.back() == '\r')) name.pop_back();
+      std::string& previous = files.back().bytes;
+      if (!previous.empty() && previous.back() == '\n') previous.pop_back();  // the marker's own line break
+      files.push_back({name, ""});
+    } else {
+      files.back().bytes.append(bytes, lineStart, lineEnd - lineStart);
+    }
+    lineStart = lineEnd;
+  }
+  if (files.size() > 1 && files.front().bytes.empty()) files.erase(files.begin());
+  return files;
+}
+
+// Mesh assemblies as `desia check A.obj B.stl ...` reads them (issue 29): several OBJ objects or
+// groups, several STL files or solids, in one of three units (the input's first byte); then the
+// validation, the contacts, both tests, the plan and both report writers. The parts read keep the
+// ids 1..n, and the assembly has every part that was read.
+inline void meshAssemblyTarget(const uint8_t* data, size_t size) {
+  if (size == 0 || size > MeshAssemblyLimits::kMaxBytes) return;
+  static const LengthUnit kUnits[] = {LengthUnit::Millimetre, LengthUnit::Metre, LengthUnit::Inch};
+  const LengthUnit unit = kUnits[data[0] % 3];
+  detail::refusalsAllowed([&] {
+    std::vector<MeshPart> parts = readMeshParts(meshFilesOf(detail::textOf(data, size)), unit);
+    size_t triangles = 0;
+    for (size_t k = 0; k < parts.size(); ++k) {
+      if (parts[k].id != static_cast<int>(k + 1)) detail::broken("mesh part ids are not 1..n in reading order");
+      triangles += parts[k].mesh.triangles.size();
+    }
+    if (parts.size() > MeshAssemblyLimits::kMaxParts || triangles > MeshAssemblyLimits::kMaxTriangles) return;
+    const size_t count = parts.size();
+    const MeshAssembly meshes = buildMeshAssembly(std::move(parts));
+    if (static_cast<size_t>(meshes.assembly.partCount()) != count) detail::broken("a mesh assembly lost parts");
+    CheckOptions options;
+    options.method = CheckMethod::Both;
+    const CheckReport report = checkMeshAssembly(meshes, options);
+    meshCheckReportToJson(meshes, report, -1);
+    meshCheckReportToText(meshes, report);
+  });
+}
+
 inline const std::vector<Target>& targets() {
   static const std::vector<Target> kTargets = {
       {"assembly_text", assemblyTextTarget},
@@ -287,6 +349,7 @@ inline const std::vector<Target>& targets() {
       {"frame_text", frameTextTarget},
       {"plate_input", plateInputTarget},
       {"plate_result", plateResultTarget},
+      {"mesh_assembly", meshAssemblyTarget},
   };
   return kTargets;
 }

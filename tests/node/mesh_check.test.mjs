@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// `desia check FILE.obj|.stl [more files]` (issue 29): a voxel puzzle exported by desia's own
+// `desia check FILE.obj|.stl|.3mf [more files]` (issue 29): a voxel puzzle exported by desia's own
 // exporter and read back as meshes gets the puzzle's verdict, key and a complete plan, from one OBJ
 // and from one binary STL per part; bad input exits 2 naming the file and line or the part.
 import assert from 'node:assert/strict';
@@ -86,8 +86,21 @@ test('bad input exits 2 and names the file and line, or the part', () => {
   fs.writeFileSync(threeMf, 'PK');
   result = runCli(['check', threeMf]);
   assert.equal(result.status, 2);
-  assert.match(result.stderr, /box\.3mf: 3MF is not read yet/);
+  assert.match(result.stderr, /box\.3mf: not a ZIP archive/);
   result = runCli(['check', open, '--unit', 'furlong']);
   assert.equal(result.status, 2);
   assert.match(result.stderr, /unknown unit 'furlong'/);
+});
+
+test('a 3MF written by lib3mf: one part per build item, in the model\'s unit whatever --unit says', () => {
+  const wagon = path.join(root, 'tests/data/meshes/WagonWithWheels.3mf');
+  const inMm = runCli(['check', wagon, '--json']);
+  assert.equal(inMm.status, 1, inMm.stderr);  // two parts: not interlocking, and both come out
+  const report = JSON.parse(inMm.stdout);
+  assert.equal(report.parts, 2);
+  assert.deepEqual(report.mesh.partNames, ['Wagon', 'Wheel 1']);
+  assert.equal(report.mesh.triangles, 96 + 5 * 56);
+  assert.equal(report.disassembly.order.length, 2);
+  const inMetres = JSON.parse(runCli(['check', wagon, '--json', '--unit', 'm']).stdout);
+  assert.equal(inMetres.mesh.diagonal, report.mesh.diagonal);
 });

@@ -126,7 +126,7 @@ std::vector<PartSurface> framePartSurfaces(const FrameDocument& document);
 
 // Reading a mesh assembly (issue 29): one OBJ with several objects or groups (one part each), one
 // or several STL files (binary: one part; ASCII: one part per `solid`), in millimetres, metres or
-// inches; and the check report of such an assembly.
+// inches, and 3MF files (one part per build item); and the check report of such an assembly.
 
 enum class LengthUnit { Millimetre, Metre, Inch };
 // "mm", "m", "inch" (or "in"); throws BadInput naming the value otherwise.
@@ -139,12 +139,14 @@ struct MeshFile {
 };
 
 // True for a path ending in .obj, .stl or .3mf (any case): `desia check` reads it as a mesh
-// assembly (3MF: refused as Unsupported until its reader exists).
+// assembly.
 bool isMeshAssemblyPath(const std::string& path);
 
 // Every part of every file, ids 1, 2, ... in file order, coordinates in millimetres. OBJ: one part
 // per `o` / `g` record that has faces (faces before the first record are a part of their own), the
-// whole file when there are none. Errors (BadInput) name the file and line, as the readers do.
+// whole file when there are none. 3MF: one part per build item, its object (and components) under
+// the item's transform, in the model's own unit (`unit` applies to OBJ and STL files only). Errors
+// (BadInput) name the file and line (3MF: the model part, line and element), as the readers do.
 std::vector<MeshPart> readMeshParts(const std::vector<MeshFile>& files, LengthUnit unit = LengthUnit::Millimetre);
 
 // The document the check report is written for: kind "mesh" is not a document kind, so it is a
@@ -155,6 +157,20 @@ AssemblyDocument meshReportDocument(const MeshAssembly& meshes);
 // contacts, triangles) and each step's direction as a label and a unit vector (directions of
 // drawn models need not lie on axes).
 std::string meshCheckReportToJson(const MeshAssembly& meshes, const CheckReport& report, int indent = 2);
+// One check of mesh files as `desia check FILES --unit U --tolerance T` runs it: read (readMeshParts),
+// validated and built (buildMeshAssembly), checked (checkMeshAssembly). The CLI and the package
+// call this, so both give the same report.
+struct MeshCheck {
+  MeshAssembly meshes;
+  CheckReport report;
+};
+MeshCheck checkMeshFiles(const std::vector<MeshFile>& files, LengthUnit unit, const MeshAssemblyOptions& meshOptions,
+                         const CheckOptions& options);
+
+// The parts of mesh files as the viewers draw them (part ids as readMeshParts numbers them, in
+// millimetres): each triangle on its own with its flat normal.
+std::vector<PartSurface> meshPartSurfaces(const std::vector<MeshFile>& files, LengthUnit unit);
+
 // checkReportToText after a "meshes:" line (parts, triangles, planar faces, contacts, tolerance).
 std::string meshCheckReportToText(const MeshAssembly& meshes, const CheckReport& report);
 

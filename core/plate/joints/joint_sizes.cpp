@@ -11,6 +11,11 @@
 namespace desia {
 namespace {
 
+// The least slope and share a joint can take: a hundredth (flatter flanks or thinner pieces are
+// no joint a router or saw makes); the most share leaves a hundredth of the length.
+constexpr double kLeastFraction = 1.0 / 100;
+constexpr double kMostShare = 1 - kLeastFraction;
+
 // One setting and where it lives in the options: a number, or a share of a length.
 struct Entry {
   JointSizeSetting setting;
@@ -26,13 +31,13 @@ Entry numberIn(std::string name, std::string meaning, double least, double most,
 
 template <typename Sizes>
 Entry shareIn(std::string name, std::string meaning, Sizes JointCutOptions::*family, LengthShare Sizes::*field) {
-  return {{std::move(name), std::move(meaning), 0.01, 0.99},
+  return {{std::move(name), std::move(meaning), kLeastFraction, kMostShare},
           [family, field](JointCutOptions& options, double value) { options.*family.*field = LengthShare{value, 1}; }};
 }
 
 const std::vector<Entry>& entries() {
   static const std::vector<Entry> table{
-      numberIn("dovetail.slope", "how far each flank leans in, mm per mm of depth (1 in 6)", 0.01, 1,
+      numberIn("dovetail.slope", "how far each flank leans in, mm per mm of depth (1 in 6)", kLeastFraction, 1,
                &JointCutOptions::dovetail, &DovetailSizes::slope),
       shareIn("dovetail.depth", "the housing's depth, of the housing plate's thickness (1/3)", &JointCutOptions::dovetail,
               &DovetailSizes::depth),
@@ -48,7 +53,7 @@ const std::vector<Entry>& entries() {
               &JointCutOptions::mitreTenon, &MitreTenonSizes::height),
       numberIn("mitreTenon.shallowestPocket", "mm: a shallower pocket gets no tenon (2)", 0.1, 1000,
                &JointCutOptions::mitreTenon, &MitreTenonSizes::shallowestPocket),
-      numberIn("mitreSlide.slope", "how far the groove's flanks lean out, mm per mm of depth (1 in 6)", 0.01, 1,
+      numberIn("mitreSlide.slope", "how far the groove's flanks lean out, mm per mm of depth (1 in 6)", kLeastFraction, 1,
                &JointCutOptions::mitreSlide, &MitreSlideSizes::slope),
       shareIn("mitreSlide.height", "the tongue's root across the edge, of the mitre's height (1/4)",
               &JointCutOptions::mitreSlide, &MitreSlideSizes::height),
