@@ -44,13 +44,18 @@ enable_source_packages() {
   sudo_if_needed apt-get update -qq
 }
 
+# Downloads Debian's source package $1 into third_party/ (the unpacking differs per package).
+fetch_source_package() {
+  enable_source_packages
+  mkdir -p "$root/third_party"
+  (cd "$root/third_party" && apt-get source --download-only "$1" >/dev/null 2>&1 || apt-get source --download-only "$1")
+}
+
 # GLPK C sources for the WebAssembly build (the host libglpk cannot be linked into wasm).
 glpk_dir="$root/third_party/glpk-5.0"
 if [ ! -f "$glpk_dir/src/glpk.h" ]; then
   log "fetching GLPK 5.0 sources from Debian's source packages"
-  enable_source_packages
-  mkdir -p "$root/third_party"
-  (cd "$root/third_party" && apt-get source --download-only glpk >/dev/null 2>&1 || apt-get source --download-only glpk)
+  fetch_source_package glpk
   (cd "$root/third_party" && tar xzf glpk_5.0.orig.tar.gz)
 else
   log "GLPK sources present"
@@ -61,9 +66,7 @@ fi
 clipper_dir="$root/third_party/polyclipping-6.4.2"
 if [ ! -f "$clipper_dir/cpp/clipper.cpp" ]; then
   log "fetching Clipper 6.4.2 sources from Debian's source packages"
-  enable_source_packages
-  mkdir -p "$root/third_party"
-  (cd "$root/third_party" && apt-get source --download-only libpolyclipping >/dev/null 2>&1 || apt-get source --download-only libpolyclipping)
+  fetch_source_package libpolyclipping
   unpack="$(mktemp -d "$root/third_party/polyclipping.XXXXXX")"
   tar xjf "$root/third_party"/libpolyclipping_6.4.2.orig.tar.bz2 -C "$unpack"
   # The tarball's top folder has an arbitrary name: take the one that holds cpp/clipper.cpp.
@@ -80,9 +83,7 @@ fi
 zlib_dir="$root/third_party/zlib-1.2.13.dfsg"
 if [ ! -f "$zlib_dir/inflate.c" ]; then
   log "fetching zlib 1.2.13 sources from Debian's source packages"
-  enable_source_packages
-  mkdir -p "$root/third_party"
-  (cd "$root/third_party" && apt-get source --download-only zlib >/dev/null 2>&1 || apt-get source --download-only zlib)
+  fetch_source_package zlib
   (cd "$root/third_party" && tar xjf zlib_1.2.13.dfsg.orig.tar.bz2)
 else
   log "zlib sources present"
