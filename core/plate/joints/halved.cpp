@@ -87,7 +87,12 @@ std::vector<SlotCut> halvedSlots(const std::vector<Plate>& plates, const PlateCo
 bool needsSlantedNotchWalls(const std::vector<Plate>& plates, const PlateContact& crossing) {
   const double cosine = dot(plateThicknessAxis(plates[static_cast<size_t>(crossing.a)]),
                             plateThicknessAxis(plates[static_cast<size_t>(crossing.b)]));
-  return std::abs(cosine) >= tolerance::kSquareCosine;
+  // The notch walls follow the other plate's faces, leaning across the plate by its thickness
+  // times the cosine; within the contact tolerance a wall square to the sheet is that wall (a CAD
+  // file's 89.9994 degrees: 0.0002 mm across 18 mm), so a laser cuts it.
+  const double thickness = std::max(plateThickness(plates[static_cast<size_t>(crossing.a)]),
+                                    plateThickness(plates[static_cast<size_t>(crossing.b)]));
+  return std::abs(cosine) * thickness > tolerance::kContactMm;
 }
 
 std::string slantedCrossingsNeedMilling(const PlateGraph& graph) {
@@ -96,7 +101,10 @@ std::string slantedCrossingsNeedMilling(const PlateGraph& graph) {
     const double cosine = std::min(1.0, std::abs(dot(graph.thicknessAxis[static_cast<size_t>(contact.a)],
                                                      graph.thicknessAxis[static_cast<size_t>(contact.b)])));
     char angle[32];
-    std::snprintf(angle, sizeof angle, "%.1f", std::acos(cosine) * 180 / M_PI);
+    const double degrees = std::acos(cosine) * 180 / M_PI;
+    std::snprintf(angle, sizeof angle, "%.1f", degrees);
+    // Off square by less than the rounding (a CAD file's 89.97 degrees): say so, not "90.0".
+    if (std::string(angle) == "90.0") std::snprintf(angle, sizeof angle, "%.4f", degrees);
     return "the crossing of plates " + std::to_string(graph.plates[static_cast<size_t>(contact.a)].id) + " and " +
            std::to_string(graph.plates[static_cast<size_t>(contact.b)].id) + " at " + angle +
            " degrees needs slanted notch walls, which a laser cutting square to the sheet cannot make: mill them "

@@ -41,8 +41,9 @@ CutFootprint slotFootprint(const SlotCut& slot);
 std::shared_ptr<const JointCut> jointCut(const SlotCut& slot);
 
 // Do the plates of `crossing` cross at an angle other than square, so that a halved joint's
-// notch walls are slanted to the sheet? A laser (or a router's through cut) cuts square to the
-// sheet, so only a router milling the slanted walls makes such a notch (issue 26, lead's decision).
+// notch walls are slanted to the sheet (leaning more than the contact tolerance across the
+// thicker plate)? A laser (or a router's through cut) cuts square to the sheet, so only a router
+// milling the slanted walls makes such a notch (issue 26, lead's decision).
 bool needsSlantedNotchWalls(const std::vector<Plate>& plates, const PlateContact& crossing);
 
 // Why no joint of a cut design (JointRealization::Cut) joins the graph's first crossing at an
