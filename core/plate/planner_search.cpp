@@ -167,7 +167,8 @@ PlateDesignResult PlateJointPlanner::run(const std::vector<PlanStep>& prefix) {
                          degreesText(options_.joints.stepTenon.leastDegrees) + " to " +
                          degreesText(options_.joints.stepTenon.mostDegrees) +
                          " degrees apart); joints 'planned' gives the paper's graph design alone"
-                   : "");
+                   : "") +
+        (prefix.empty() && progress.bestDepth == 0 ? " (" + whyNoPlateLeavesFirst() + ")" : std::string());
     return result;
   }
   result.message =

@@ -64,4 +64,15 @@ int crossingBetween(const PlateGraph& graph, int p, int q) {
   return -1;
 }
 
+bool leavesWithoutPushing(const PlateGraph& graph, int plate, const std::vector<bool>& inOthers, const Vec3& d) {
+  for (int c : graph.contactsOf[plate]) {
+    const PlateContact& contact = graph.contacts[c];
+    const int other = contact.a == plate ? contact.b : contact.a;
+    if (!inOthers[other]) continue;
+    const double push = dot(d, contact.a == plate ? contact.normal : negated(contact.normal));
+    if (push > tolerance::kDirection) return false;
+  }
+  return true;
+}
+
 }  // namespace desia

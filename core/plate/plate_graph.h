@@ -32,4 +32,7 @@ bool parallel(const Vec3& a, const Vec3& b);
 // The crossing between two plates (an index into the contacts), or -1.
 int crossingBetween(const PlateGraph& graph, int p, int q);
 
+// Can `plate` leave each plate in `others` along d without pushing into it (its contact faces)?
+bool leavesWithoutPushing(const PlateGraph& graph, int plate, const std::vector<bool>& inOthers, const Vec3& d);
+
 }  // namespace desia

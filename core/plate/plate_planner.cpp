@@ -37,21 +37,6 @@
 #include "plate/swept_collision.h"
 
 namespace desia {
-namespace {
-
-// Can `plate` leave each plate in `others` along d without pushing into it (its contact faces)?
-bool leavesWithoutPushing(const PlateGraph& graph, int plate, const std::vector<bool>& inOthers, const Vec3& d) {
-  for (int c : graph.contactsOf[plate]) {
-    const PlateContact& contact = graph.contacts[c];
-    const int other = contact.a == plate ? contact.b : contact.a;
-    if (!inOthers[other]) continue;
-    const double push = dot(d, contact.a == plate ? contact.normal : negated(contact.normal));
-    if (push > tolerance::kDirection) return false;
-  }
-  return true;
-}
-
-}  // namespace
 
 PlateJointPlanner::PlateJointPlanner(const std::vector<Plate>& plates, const std::vector<PlateContact>& contacts,
                                      const PlateDesignOptions& options)

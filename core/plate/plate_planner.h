@@ -59,6 +59,8 @@ class PlateJointPlanner {
   bool acceptComplete(const std::vector<PlanStep>& path, PlateDesignResult* result);
   int plateCount() const { return graph_.plateCount; }
   const std::string& lastRejection() const { return lastRejection_; }
+  // Why no plate can be the first step, for a search that ended at its root (planner_first_step.cpp).
+  std::string whyNoPlateLeavesFirst() const;
   void backjump(size_t prefixSize, std::vector<PlanStep>* path, std::vector<RankedCandidates>* pending) const;
 
  private:

@@ -17,6 +17,32 @@ AssemblyDocument loadPlateExample(const std::string& name) {
   return parseAssemblyText(testing::readFileText(testing::projectPath(path)), path);
 }
 
+// A search that ends at its root says why no plate can be the first step (the key), by plate.
+std::string firstStepRefusal(const std::string& example) {
+  const AssemblyDocument design = loadPlateExample(example);
+  PlateDesignOptions options;
+  options.realization = JointRealization::Cut;
+  const PlateDesignResult result = designPlateJoints(design.plates, computePlateContacts(design.plates, {}), options);
+  EXPECT_EQ(result.status, DesignStatus::NotFound) << example << ": " << result.message;
+  EXPECT_EQ(result.progress.bestDepth, 0) << example;
+  return result.message;
+}
+
+TEST(PlateMissingJoints, ASearchEndingAtItsRootSaysWhyNoPlateCanBeTakenFirst) {
+  // The cube's plates meet edge to edge, mitred: no laser-cut joint fits, so each plate could leave
+  // along many ways, and a key must have one only.
+  EXPECT_NE(firstStepRefusal("cube.json").find("(no plate can be taken first: of 6 plates, 6 free to leave, but along "
+                                               "more than the one way a key may)"),
+            std::string::npos);
+  // The LIZARD's plates meet at 31..38 degrees: most are held by their neighbours along every way.
+  const std::string lizard = firstStepRefusal("lizard.json");
+  EXPECT_NE(lizard.find("no plate can be taken first: of 38 plates, 32 blocked along every way out by the plates "
+                        "they touch or would run into"),
+            std::string::npos)
+      << lizard;
+  EXPECT_NE(lizard.find("; 6 free to leave"), std::string::npos) << lizard;
+}
+
 TEST(PlateMissingJoints, TheIcosahedronsPlanWithoutStepTenonsNamesTheEdgesNoMadeJointFits) {
   const AssemblyDocument icosahedron = loadPlateExample("icosahedron.json");
   const std::vector<PlateContact> contacts = computePlateContacts(icosahedron.plates, {});
