@@ -8,7 +8,8 @@
 //
 //   index.html, *.js, style.css   the playground (web/) and its offline service worker
 //   wasm/*.js                     the package the playground runs on (createDesia) and its worker
-//   dist/desia_wasm.{js,wasm}     the WebAssembly core
+//   dist/desia_wasm.{js,wasm}     the WebAssembly core (full: every kind)
+//   dist/desia_light.{js,wasm}    the light core the worker loads first (voxels, contacts, meshes)
 //   examples/                     the example folders the playground lists, and embed.html
 //   vendor/three/                 the three.js modules the pages import (and three's LICENSE)
 //
@@ -217,6 +218,7 @@ async function finishFiles(dir, files, { minify }) {
 export async function buildSite(out = DEFAULT_OUT, { minify = true } = {}) {
   for (const [file, fix] of [
     ['dist/desia_wasm.js', 'bash scripts/build.sh wasm'], ['dist/desia_wasm.wasm', 'bash scripts/build.sh wasm'],
+    ['dist/desia_light.js', 'bash scripts/build.sh wasm'], ['dist/desia_light.wasm', 'bash scripts/build.sh wasm'],
     ['node_modules/three/package.json', 'bash scripts/setup.sh (installs three from the npm registry)'],
   ]) {
     if (!existsSync(path.join(ROOT, file))) throw new SiteError(`${file} is missing: run ${fix}`);
@@ -262,6 +264,8 @@ export async function buildSite(out = DEFAULT_OUT, { minify = true } = {}) {
     }
     await copy('dist/desia_wasm.js', 'dist/desia_wasm.js');
     await copy('dist/desia_wasm.wasm', 'dist/desia_wasm.wasm');
+    await copy('dist/desia_light.js', 'dist/desia_light.js');
+    await copy('dist/desia_light.wasm', 'dist/desia_light.wasm');
 
     // The embed example: a plain page using the drop-in viewer.
     const embed = await readFile(path.join(ROOT, 'examples/embed.html'), 'utf8');

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Builds desia. `build.sh native` (CLI, tests, benchmarks in build/native), `build.sh wasm` (the
-# embind module in dist/ and the WebAssembly test suite in build/wasm), `build.sh` (both),
+# two embind modules in dist/, the full desia_wasm and the light desia_light the package's worker
+# loads first (docs/architecture.md), and the WebAssembly test suite in build/wasm), `build.sh` (both),
 # `build.sh site` (the WebAssembly module, then the playground as a self-contained static site in
 # dist/site/, relative URLs only: scripts/build-site.mjs; docs/playground.md).
 set -euo pipefail

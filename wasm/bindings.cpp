@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// embind adapter: small free functions converting between JS values and the core API. No
+// embind adapter of both WebAssembly modules (the light one: voxels, contacts, meshes; the full
+// one adds bindings_plate_frame.cpp): small free functions converting between JS values and the core API. No
 // algorithm lives here. Results cross the boundary as plain JS objects (JSON text parsed on the
 // JS side of this call), and every C++ exception becomes a real JS Error carrying the core's
 // message and a `code` ("bad-input", "too-large", "unsupported", "internal").
@@ -17,44 +18,17 @@
 #include "desia/error.h"
 #include "desia/export.h"
 #include "desia/formats.h"
-#include "desia/frame.h"
 #include "desia/mesh.h"
-#include "desia/plate.h"
 #include "desia/version.h"
 #include "desia/voxel.h"
+#include "bindings_common.h"
 
 namespace {
 
 using emscripten::val;
-
-val parseJsonText(const std::string& text) { return val::global("JSON").call<val>("parse", val(text)); }
-
-// Runs `operation` and converts any exception into a thrown JS Error carrying the core's message
-// and a `code`. The JS throw happens after the catch block has ended, so C++ destructors and
-// exception cleanup have run (toolchain.md #8).
-template <typename Operation>
-auto guarded(Operation&& operation) -> decltype(operation()) {
-  std::string message, code;
-  try {
-    return operation();
-  } catch (const desia::Error& e) {
-    message = e.what();
-    code = desia::errorCodeName(e.code());
-  } catch (const std::bad_alloc&) {
-    message = "out of memory";
-    code = "too-large";
-  } catch (const std::exception& e) {
-    message = std::string("internal error: ") + e.what();
-    code = "internal";
-  } catch (...) {
-    message = "internal error: unknown exception";
-    code = "internal";
-  }
-  val error = val::global("Error").new_(val(message));
-  error.set("code", val(code));
-  error.set("name", val(std::string("DesiaError")));
-  error.throw_();
-}
+using desia::bindings::guarded;
+using desia::bindings::listen;
+using desia::bindings::parseJsonText;
 
 val check(const std::string& text, const std::string& method, const std::string& source, bool allGraphs) {
   return guarded([&] {
@@ -112,62 +86,6 @@ val voxelize(const val& bytes, int resolution, const std::string& source) {
   });
 }
 
-// Live design (issue 11): the deepest node found so far rides on a progress object as `snapshot`
-// only when it is deeper than the last one handed to JS, so a search of thousands of nodes a
-// second copies at most one snapshot per new depth across the boundary.
-class SnapshotGate {
- public:
-  bool isNew(int depth) {
-    if (depth <= sentDepth_) return false;
-    sentDepth_ = depth;
-    return true;
-  }
-
- private:
-  int sentDepth_ = -1;
-};
-
-// { depth, labels }: the deepest node's voxel labels (parts 1..depth placed, depth + 1 the remainder) as
-// an Int32Array copied out of the heap, in the shape's grid order (x fastest, as documents).
-val voxelSnapshot(const desia::DesignProgress& progress) {
-  const std::vector<int>& labels = progress.deepestGrid->labels();
-  val snapshot = val::object();
-  snapshot.set("depth", progress.bestDepth - 1);  // parts placed, as the plates' and beams' snapshots
-  snapshot.set("labels", val(emscripten::typed_memory_view(labels.size(), labels.data())).call<val>("slice"));
-  return snapshot;
-}
-
-// { depth, placed }: the plates or beams (input indices, the key first) of the deepest node.
-val placedSnapshot(const std::vector<int>& placed) {
-  val snapshot = val::object();
-  snapshot.set("depth", static_cast<int>(placed.size()));
-  snapshot.set("placed", val::array(placed));
-  return snapshot;
-}
-
-// A designer's progress (any kind) as a plain object for a JS function, which may return false to
-// stop the search; the deepest node rides along as `snapshot` when it is new. Holds `onProgress` by
-// reference: use it within the call that received it.
-std::function<bool(const desia::DesignProgress&)> progressCallback(const val& onProgress) {
-  return [&onProgress, gate = SnapshotGate()](const desia::DesignProgress& progress) mutable {
-    val value = parseJsonText(desia::designProgressToJson(progress));
-    if (progress.deepestGrid && gate.isNew(progress.bestDepth)) {
-      value.set("snapshot", voxelSnapshot(progress));
-    } else if (!progress.deepestGrid && !progress.deepestPlaced.empty() &&
-               gate.isNew(static_cast<int>(progress.deepestPlaced.size()))) {
-      value.set("snapshot", placedSnapshot(progress.deepestPlaced));
-    }
-    return !onProgress(value).isFalse();
-  };
-}
-
-// Asks for progress (and the live view) when `onProgress` is a JS function.
-void listen(desia::DesignLimits& limits, const val& onProgress) {
-  if (onProgress.typeOf().as<std::string>() != "function") return;
-  limits.onProgress = progressCallback(onProgress);
-  limits.deepestSnapshots = true;  // a listener gets the live view too
-}
-
 // Designs a voxel puzzle. `optionsJson` is the package's options object as JSON text (parsed by the
 // core); `onProgress` (a JS function or undefined) receives a plain object after every visited
 // node and may return false to stop the search.
@@ -182,36 +100,6 @@ val designVoxel(const std::string& shapeText, const std::string& optionsJson, co
     listen(options.limits, onProgress);
     return parseJsonText(desia::designResultToJson(desia::designVoxelPuzzle(document.voxels, options)));
   });
-}
-
-// Plans the joints of a plate design (paper Section 5.2); options and progress as for designVoxel.
-val designPlate(const std::string& text, const std::string& optionsJson, const std::string& source, val onProgress) {
-  return guarded([&] {
-    const desia::AssemblyDocument document = desia::parseAssemblyText(text, source);
-    if (document.kind != desia::AssemblyKind::Plate || !document.contactsFromGeometry) {
-      throw desia::Error(desia::ErrorCode::BadInput, source + ": designPlate needs a plate design (kind \"plate\" with \"plates\" and no \"contacts\")");
-    }
-    desia::PlateDesignOptions options = desia::parsePlateDesignOptionsJson(optionsJson);
-    listen(options.limits, onProgress);
-    return parseJsonText(desia::plateDesignResultToJson(document, desia::designPlateJoints(document.plates, document.plateContacts, options)));
-  });
-}
-
-// Designs the voxel joints of a frame (paper Section 5.3) from JSON, OBJ or .fpuz text (by the
-// extension of `source`); options and progress as for designPlate.
-val designFrame(const std::string& text, const std::string& optionsJson, const std::string& source, val onProgress) {
-  return guarded([&] {
-    desia::FramePackageOptions options = desia::parseFrameDesignOptionsJson(optionsJson);
-    const desia::FrameDocument frame = desia::parseFrameText(text, source, options.jointSize);
-    listen(options.design.limits, onProgress);
-    return parseJsonText(desia::frameDesignResultToJson(frame, desia::designFrame(frame.layout, options.design)));
-  });
-}
-
-// A frame from JSON, OBJ or .fpuz text (by the extension of `source`) as its JSON document, checked
-// (the frame of an OBJ file's lines and face edges); `jointSize` > 0 overrides the joint cube size.
-val parseFrame(const std::string& text, const std::string& source, double jointSize) {
-  return guarded([&] { return parseJsonText(desia::frameDocumentToJson(desia::parseFrameText(text, source, jointSize), -1)); });
 }
 
 // The interactive design session (a long-lived handle: JS must call delete(), which the facade's
@@ -300,16 +188,13 @@ val surfacesToJs(const std::vector<desia::PartSurface>& surfaces) {
   return result;
 }
 
-// The surface of every part of a voxel assembly (.puz or JSON text), ready to draw: an array of
+// The surface of every part of an assembly (.puz or JSON text; plates and frames in the full module), ready to draw: an array of
 // { partId, positions, normals } with Float32Arrays owning their floats (copied out of the heap at
 // once, like exportAssembly's bytes).
 val partSurfaces(const std::string& text, const std::string& source) {
   return guarded([&] {
     const desia::AssemblyDocument document = desia::parseAssemblyText(text, source);
-    const std::vector<desia::PartSurface> surfaces =
-        desia::isFrameDocument(document) ? desia::framePartSurfaces(desia::frameFromAssemblyDocument(document, source))
-                                         : desia::partSurfaces(document, source);
-    return surfacesToJs(surfaces);
+    return surfacesToJs(desia::partSurfaces(document, source));
   });
 }
 
@@ -348,37 +233,23 @@ val meshSurfaces(const val& names, const val& contents, const std::string& unit)
   });
 }
 
-// The cut files of a plate structure (JSON text): an array of strings, one SVG or DXF per sheet.
-val cutSheets(const std::string& text, const std::string& format, const std::string& optionsJson) {
-  return guarded([&] {
-    const desia::CutSheetOptions options = desia::parseCutSheetOptionsJson(optionsJson);
-    const std::vector<std::string> sheets =
-        desia::plateCutSheets(desia::parseAssemblyText(text, options.source), desia::parseCutFileFormat(format), options);
-    val result = val::array();
-    for (const std::string& sheet : sheets) result.call<void>("push", val(sheet));
-    return result;
-  });
-}
-
 std::string version() { return desia::kVersion; }
 
 }  // namespace
 
+// Both modules (docs/architecture.md, "Two WebAssembly modules"); the full one adds
+// bindings_plate_frame.cpp.
 EMSCRIPTEN_BINDINGS(desia) {
   emscripten::function("check", &check);
   emscripten::function("parseDocument", &parseDocument);
   emscripten::function("toPuz", &toPuz);
   emscripten::function("voxelize", &voxelize);
   emscripten::function("designVoxel", &designVoxel);
-  emscripten::function("designPlate", &designPlate);
-  emscripten::function("designFrame", &designFrame);
-  emscripten::function("parseFrame", &parseFrame);
   emscripten::function("exportAssembly", &exportAssembly);
   emscripten::function("exportFormats", &exportFormats);
   emscripten::function("partSurfaces", &partSurfaces);
   emscripten::function("checkMeshes", &checkMeshes);
   emscripten::function("meshSurfaces", &meshSurfaces);
-  emscripten::function("cutSheets", &cutSheets);
   emscripten::function("version", &version);
   emscripten::class_<DesignSession>("DesignSession")
       .constructor<std::string, std::string, std::string>()

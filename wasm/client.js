@@ -124,6 +124,8 @@ function inProcessPort(handlers) {
  * and a fresh one is started for the next request.
  */
 class DesiaClient {
+  /** The WebAssembly modules loaded so far ('light', 'full'), by any of this client's workers. */
+  modules = new Set();
   #options;
   #startPort;
   /** The live worker: { port, generation, ready, resolveReady, rejectReady, isReady }, or null. */
@@ -206,11 +208,11 @@ class DesiaClient {
       throw new DesiaError(`could not start the desia worker: ${error?.message ?? error}`, 'internal', { fatal: true });
     }
     this.#worker = worker;
-    const { wasmUrl, wasmBinary, startTimeout } = this.#options;
+    const { wasmUrl, wasmBinary, lightWasmUrl, modules, startTimeout } = this.#options;
     // A worker that never answers (a script that is not the package's, a module that never
     // loads) would leave every call waiting forever: give up on it after startTimeout.
     worker.startTimer = setTimeout(() => this.#onStartTimeout(worker, startTimeout), startTimeout);
-    worker.port.post({ type: 'init', wasmUrl, wasmBinary }, []);
+    worker.port.post({ type: 'init', wasmUrl, wasmBinary, lightWasmUrl, modules }, []);
     return worker;
   }
 
@@ -290,9 +292,13 @@ class DesiaClient {
     const request = this.#inFlight;
     const mine = request !== null && message?.id === request.id;
     switch (message?.type) {
+      case 'module':
+        this.modules.add(message.module);
+        break;
       case 'ready':
         clearTimeout(worker.startTimer);
         worker.isReady = true;
+        this.modules.add(message.module ?? 'full');
         this.version ??= message.version;
         worker.resolveReady(message.version);
         this.#updateRef();
@@ -485,13 +491,21 @@ function sessionProxy(client, sessionId, generation) {
 /**
  * The promise-based API, the same in browsers and node. By default the core runs in a worker (a
  * module Web Worker in browsers, a worker_threads Worker in node) started by this call.
- * @param {{wasmUrl?: string|URL, wasmBinary?: ArrayBuffer|Uint8Array, worker?: boolean, workerUrl?: string|URL}} [options]
+ * The worker loads the light module first and the full one when a plate or frame first needs it
+ * (`modules: 'full'`: at once; wasm/host.js). `wasmUrl` / `wasmBinary`: the full module's,
+ * `lightWasmUrl`: the light one's (default: the package's dist/; a wasmUrl without it, or a
+ * wasmBinary, loads only the full module).
+ * @param {{wasmUrl?: string|URL, wasmBinary?: ArrayBuffer|Uint8Array, lightWasmUrl?: string|URL, modules?: 'light-first'|'full', worker?: boolean, workerUrl?: string|URL}} [options]
  */
 export async function createDesia(options) {
-  const { worker = true, workerUrl, startTimeout = DEFAULT_START_TIMEOUT_MS, wasmBinary } =
-    requireOptions('createDesia', options, ['wasmUrl', 'wasmBinary', 'worker', 'workerUrl', 'startTimeout']);
-  let { wasmUrl } = options ?? {};
+  const { worker = true, workerUrl, startTimeout = DEFAULT_START_TIMEOUT_MS, wasmBinary, modules = 'light-first' } =
+    requireOptions('createDesia', options, ['wasmUrl', 'wasmBinary', 'lightWasmUrl', 'modules', 'worker', 'workerUrl', 'startTimeout']);
+  let { wasmUrl, lightWasmUrl } = options ?? {};
   checkLoadOptions('createDesia', { wasmUrl, wasmBinary });
+  checkLoadOptions('createDesia', { wasmUrl: lightWasmUrl });
+  if (modules !== 'light-first' && modules !== 'full') {
+    throw new DesiaError(`createDesia: modules must be 'light-first' or 'full', got ${describeValue(modules)}`, 'bad-input');
+  }
   if (typeof worker !== 'boolean') throw new DesiaError(`createDesia: worker must be true or false, got ${describeValue(worker)}`, 'bad-input');
   if (workerUrl !== undefined && typeof workerUrl !== 'string' && !(workerUrl instanceof URL)) {
     throw new DesiaError(`createDesia: workerUrl must be a string or a URL, got ${describeValue(workerUrl)}`, 'bad-input');
@@ -499,11 +513,12 @@ export async function createDesia(options) {
   if (typeof startTimeout !== 'number' || !(startTimeout > 0)) {
     throw new DesiaError(`createDesia: startTimeout must be a positive number of milliseconds, got ${describeValue(startTimeout)}`, 'bad-input');
   }
-  if (wasmUrl !== undefined) {
-    // The worker resolves URLs against its own script: resolve relative ones against the page.
-    const base = !isNode && typeof location === 'object' ? location.href : undefined;
-    wasmUrl = wasmUrl instanceof URL ? wasmUrl.href : base ? new URL(String(wasmUrl), base).href : String(wasmUrl);
-  }
+  // The worker resolves URLs against its own script: resolve relative ones against the page.
+  const base = !isNode && typeof location === 'object' ? location.href : undefined;
+  const absolute = (url) => (url === undefined ? undefined
+    : url instanceof URL ? url.href : base ? new URL(String(url), base).href : String(url));
+  wasmUrl = absolute(wasmUrl);
+  lightWasmUrl = absolute(lightWasmUrl);
   let startPort;
   if (!worker) {
     startPort = inProcessPort;
@@ -514,7 +529,7 @@ export async function createDesia(options) {
     }
     startPort = (handlers) => workerPort(NodeWorker, workerUrl, handlers);
   }
-  const client = new DesiaClient({ wasmUrl, wasmBinary, startTimeout }, startPort);
+  const client = new DesiaClient({ wasmUrl, wasmBinary, lightWasmUrl, modules, startTimeout }, startPort);
   await client.start();
 
   const simple = (name) => (input, callOptions) => {
@@ -567,7 +582,7 @@ export async function createDesia(options) {
       const single = () => client.request('designVoxel', [shape, coreOptions, live], call);
       // In-process there is one thread: one search.
       if (jobs === 1 || !worker) return single();
-      const newClient = () => new DesiaClient({ wasmUrl, wasmBinary, startTimeout }, startPort);
+      const newClient = () => new DesiaClient({ wasmUrl, wasmBinary, lightWasmUrl, modules, startTimeout }, startPort);
       return designPortfolio(newClient, single, shape, coreOptions, jobs, call, live);
     },
     designPlate: simple('designPlate'),
@@ -581,6 +596,8 @@ export async function createDesia(options) {
       return sessionProxy(client, sessionId, generation);
     },
     version: () => client.version,
+    /** The WebAssembly modules loaded so far, 'light' first: ['light'], ['light', 'full'] or ['full']. */
+    modules: () => ['light', 'full'].filter((name) => client.modules.has(name)),
     terminate: () => client.terminate(),
   };
 }

@@ -9,7 +9,16 @@ const isNode = typeof process === 'object' && typeof process.versions?.node === 
   typeof window === 'undefined' && typeof importScripts === 'undefined';
 
 /** The error codes of the package (index.d.ts ErrorCode); anything else is reported as 'internal'. */
-export const ERROR_CODES = Object.freeze(['bad-input', 'too-large', 'unsupported', 'internal', 'terminated', 'session-lost']);
+export const ERROR_CODES = Object.freeze(['bad-input', 'too-large', 'unsupported', 'internal', 'terminated', 'session-lost', 'kind-not-built']);
+
+/**
+ * The two WebAssembly modules built from the same core (docs/architecture.md): 'full' has every
+ * kind; 'light' has voxels, contacts and meshes and throws code 'kind-not-built' for a plate or
+ * frame, upon which createDesia's worker loads the full module and asks it again (wasm/host.js).
+ */
+export const MODULES = Object.freeze(['light', 'full']);
+/** The calls only the full module binds (wasm/bindings_plate_frame.cpp). */
+const FULL_ONLY = Object.freeze({ designPlate: 'plate', designFrame: 'frame', parseFrame: 'frame', cutSheets: 'plate' });
 
 /** `code` when it is one of ERROR_CODES, else 'internal' (e.g. node's 'ENOENT'). */
 export function documentedCode(code) {
@@ -18,8 +27,9 @@ export function documentedCode(code) {
 
 /**
  * Error thrown for bad input and failures. `code`: from the core 'bad-input', 'too-large',
- * 'unsupported' or 'internal'; from createDesia also 'terminated' (terminate() was called) and
- * 'session-lost' (the worker holding a design session was stopped).
+ * 'unsupported', 'internal', or 'kind-not-built' (the light module was asked for a plate or a
+ * frame; createDesia answers it by loading the full module); from createDesia also 'terminated'
+ * (terminate() was called) and 'session-lost' (the worker holding a design session was stopped).
  */
 export class DesiaError extends Error {
   constructor(message, code = 'internal', { fatal = false } = {}) {
@@ -161,15 +171,26 @@ async function defineNodeGlobals() {
   globalThis.__dirname ??= fileURLToPath(new URL('../dist/', import.meta.url));
 }
 
+/** The package's own copy of a module's .wasm file. */
+function packagedWasmUrl(which) {
+  // Literal URLs, so that bundlers find and ship both files.
+  return which === 'light' ? new URL('../dist/desia_light.wasm', import.meta.url) : new URL('../dist/desia_wasm.wasm', import.meta.url);
+}
+
+/** A module's factory (Emscripten's ES module). */
+function importModuleFactory(which) {
+  return which === 'light' ? import('../dist/desia_light.js') : import('../dist/desia_wasm.js');
+}
+
 /** node: the loader's fetch fails on file paths there (toolchain.md #3), so pass the bytes. */
-async function nodeWasmBinary(wasmUrl) {
+async function nodeWasmBinary(wasmUrl, which) {
   const [{ fileURLToPath }, fs] = await Promise.all([import('node:url'), import('node:fs/promises')]);
-  const file = wasmUrl === undefined ? fileURLToPath(new URL('../dist/desia_wasm.wasm', import.meta.url))
+  const file = wasmUrl === undefined ? fileURLToPath(packagedWasmUrl(which))
     : String(wasmUrl).startsWith('file:') ? fileURLToPath(String(wasmUrl)) : String(wasmUrl);
   return fs.readFile(file);
 }
 
-const LOAD_OPTIONS = ['wasmUrl', 'wasmBinary'];
+const LOAD_OPTIONS = ['wasmUrl', 'wasmBinary', 'module'];
 
 /** Checks loadDesiaModule's and createDesia's wasmUrl / wasmBinary. */
 export function checkLoadOptions(name, { wasmUrl, wasmBinary }) {
@@ -182,30 +203,40 @@ export function checkLoadOptions(name, { wasmUrl, wasmBinary }) {
 }
 
 /**
- * Loads the WebAssembly module and returns a synchronous core (use it inside a worker or in node).
- * @param {{wasmUrl?: string|URL, wasmBinary?: ArrayBuffer|Uint8Array}} [options]
+ * Loads a WebAssembly module and returns a synchronous core (use it inside a worker or in node).
+ * `module`: 'full' (default: every kind) or 'light' (voxels, contacts, meshes; a plate or frame
+ * throws a DesiaError with code 'kind-not-built'); `wasmUrl` / `wasmBinary` are that module's.
+ * @param {{wasmUrl?: string|URL, wasmBinary?: ArrayBuffer|Uint8Array, module?: 'light'|'full'}} [options]
  */
 export async function loadDesiaModule(options) {
-  const { wasmUrl, wasmBinary } = requireOptions('loadDesiaModule', options, LOAD_OPTIONS);
+  const { wasmUrl, wasmBinary, module: which = 'full' } = requireOptions('loadDesiaModule', options, LOAD_OPTIONS);
   checkLoadOptions('loadDesiaModule', { wasmUrl, wasmBinary });
+  if (!MODULES.includes(which)) {
+    throw new DesiaError(`loadDesiaModule: module must be 'light' or 'full', got ${describeValue(which)}`, 'bad-input');
+  }
   let module;
   try {
     if (isNode) await defineNodeGlobals();
-    const { default: createDesiaModule } = await import('../dist/desia_wasm.js');
+    const { default: createDesiaModule } = await importModuleFactory(which);
     const moduleOptions = {};
     if (wasmBinary !== undefined) {
       moduleOptions.wasmBinary = wasmBinary;
     } else if (isNode) {
-      moduleOptions.wasmBinary = await nodeWasmBinary(wasmUrl);
+      moduleOptions.wasmBinary = await nodeWasmBinary(wasmUrl, which);
     } else {
-      const url = wasmUrl !== undefined ? String(wasmUrl) : new URL('../dist/desia_wasm.wasm', import.meta.url).href;
+      const url = wasmUrl !== undefined ? String(wasmUrl) : packagedWasmUrl(which).href;
       moduleOptions.locateFile = (file) => (file.endsWith('.wasm') ? url : file);
     }
     module = await createDesiaModule(moduleOptions);
   } catch (error) {
-    throw new DesiaError(`could not load the desia WebAssembly module: ${error?.message ?? error}`, 'internal');
+    throw new DesiaError(`could not load the desia WebAssembly module: ${error?.message ?? error}${which === 'light' ? ' (the light module)' : ''}`, 'internal');
   }
-  return makeCore(module);
+  return makeCore(module, which);
+}
+
+/** The error the light module gives for a call only the full module binds. */
+function kindNotBuilt(name) {
+  return new DesiaError(`${name}: ${FULL_ONLY[name]}s are in the full desia module (dist/desia_wasm.wasm), not in this light one`, 'kind-not-built');
 }
 
 /** Runs one call into the module, turning whatever it throws into a DesiaError. */
@@ -217,9 +248,14 @@ function callModule(call) {
   }
 }
 
-function makeCore(module) {
+function makeCore(module, which) {
   let formats = null;  // the export-format registry, read once
+  const requireFullModule = (name) => {
+    if (which === 'light') throw kindNotBuilt(name);
+  };
   const core = {
+    /** Which module this core runs: 'light' or 'full'. */
+    module: () => which,
     /** Interlocking check of .puz or JSON text; same fields as `desia check --json`. */
     check(text, options) {
       const { method = 'dbg', source = '<input>', graphs = false } = requireOptions('check', options, OPTION_NAMES.check);
@@ -316,6 +352,7 @@ function makeCore(module) {
       const { format = 'svg', ...rest } = requireOptions('cutSheets', options, OPTION_NAMES.cutSheets);
       const text = assemblyText(assembly, 'cutSheets: assembly');
       requireString(format, 'cutSheets: format');
+      requireFullModule('cutSheets');
       if (typeof module.cutSheets !== 'function') {
         throw new DesiaError('cutSheets: this build of the WebAssembly module has no cut files (rebuild dist/ with scripts/build.sh wasm)', 'unsupported');
       }
@@ -426,8 +463,9 @@ function makeCore(module) {
         },
       };
     },
-    /** Designs a plate structure: not available until the plate designer core lands. */
+    /** Designs the joints of a plate structure (paper Section 5.2); as designFrame. */
     designPlate(input, options) {
+      requireFullModule('designPlate');
       return forwardDesigner(module, 'designPlate', 'plate', input, options);
     },
     /**
@@ -438,6 +476,7 @@ function makeCore(module) {
      * shape as designPlate; `document` is the CLI's result document for the same seed.
      */
     designFrame(input, options) {
+      requireFullModule('designFrame');
       return forwardDesigner(module, 'designFrame', 'frame', input, options);
     },
     /**
@@ -452,6 +491,7 @@ function makeCore(module) {
       if (typeof jointSize !== 'number' || !Number.isFinite(jointSize) || jointSize < 0) {
         throw new DesiaError(`parseFrame: jointSize must be a number of model units (0 = from the file or the geometry), got ${describeValue(jointSize)}`, 'bad-input');
       }
+      requireFullModule('parseFrame');
       if (typeof module.parseFrame !== 'function') {
         throw new DesiaError('parseFrame: this build of the WebAssembly module has no frame reader (rebuild dist/ with scripts/build.sh wasm)', 'unsupported');
       }

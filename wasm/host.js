@@ -4,10 +4,21 @@
 // the caller's thread ({ worker: false }). It only moves messages: every operation is one call of
 // the core (loadDesiaModule's functions), and every answer is plain structured-clone data.
 //
+// Two modules (docs/architecture.md, "Two WebAssembly modules"): the host loads the light one
+// first (voxels, contacts, meshes: about half the bytes) and the full one the first time an
+// operation throws code 'kind-not-built' (a plate or frame), then runs that operation again on the
+// full module, which answers everything from then on. `modules: 'full'` loads only the full one;
+// so does a caller that names only the full module (a `wasmBinary`, or a `wasmUrl` without a
+// `lightWasmUrl`). If the light module cannot be loaded, the full one is.
+//
 // Protocol:
-//   in:  { type: 'init', wasmUrl?, wasmBinary? }      load the core (once; later inits are no-ops)
+//   in:  { type: 'init', wasmUrl?, wasmBinary?,      load the core (once; later inits are no-ops);
+//          lightWasmUrl?, modules? }                 wasmUrl/wasmBinary: the full module's,
+//                                                    modules: 'light-first' (default) or 'full'
 //        { type: 'run', id, op, args }               op: a key of OPERATIONS, args: its arguments
-//   out: { type: 'ready', version }                  the core is loaded
+//   out: { type: 'ready', version, module }          the core is loaded (module: 'light' or 'full')
+//        { type: 'module', module: 'full' }          the full module was loaded (before the answer
+//                                                    to the operation that needed it)
 //        { type: 'progress', id, value }             designers only: ~10 a second, and always the
 //                                                    last one before the result
 //        { type: 'result', id, value }
@@ -73,7 +84,10 @@ export function createProgressThrottle(send, intervalMs = PROGRESS_INTERVAL_MS) 
  * stop at its next node once the client has given up on it.
  */
 export function createCoreHost(loadCore, post, { isCancelled = () => false } = {}) {
+  /** The core that answers (the light one until a plate or frame needs the full one). */
   let corePromise = null;
+  let fullPromise = null;
+  let loadOptions = {};
   /** Open design sessions by id; each holds WebAssembly memory until disposed. */
   const sessions = new Map();
   let nextSessionId = 1;
@@ -142,33 +156,73 @@ export function createCoreHost(loadCore, post, { isCancelled = () => false } = {
     version: (core) => core.version(),
   };
 
-  function loadOnce(options) {
-    corePromise ??= loadCore(options);
+  /** The full module, loaded once; from then on it answers every operation. */
+  function loadFull() {
+    const { wasmUrl, wasmBinary } = loadOptions;
+    fullPromise ??= loadCore({ wasmUrl, wasmBinary, module: 'full' }).catch((error) => {
+      fullPromise = null;
+      corePromise = null;  // the next operation starts again (light first)
+      throw error;
+    });
+    corePromise = fullPromise;
+    return fullPromise;
+  }
+
+  /**
+   * The light module, or the full one when asked, when the caller named only the full one (its
+   * wasmUrl without a lightWasmUrl, or its bytes), or when the light one fails to load.
+   */
+  function loadFirst() {
+    const { wasmUrl, wasmBinary, lightWasmUrl, modules = 'light-first' } = loadOptions;
+    const onlyFull = wasmBinary !== undefined || (wasmUrl !== undefined && lightWasmUrl === undefined);
+    if (modules === 'full' || onlyFull) return loadFull();
+    return loadCore({ wasmUrl: lightWasmUrl, module: 'light' }).catch(() => loadFull());
+  }
+
+  function loadOnce() {
+    corePromise ??= loadFirst().catch((error) => {
+      corePromise = null;
+      throw error;
+    });
     return corePromise;
   }
 
-  async function handleInit({ wasmUrl, wasmBinary }) {
+  async function handleInit({ wasmUrl, wasmBinary, lightWasmUrl, modules }) {
+    if (!corePromise) loadOptions = { wasmUrl, wasmBinary, lightWasmUrl, modules };
     try {
-      const core = await loadOnce({ wasmUrl, wasmBinary });
-      post({ type: 'ready', version: String(core.version()) }, []);
+      const core = await loadOnce();
+      post({ type: 'ready', version: String(core.version()), module: core.module() }, []);
     } catch (error) {
-      corePromise = null;
       post({ type: 'error', id: null, ...describeError(error), fatal: true }, []);
     }
+  }
+
+  function runOperation(core, op, args, id) {
+    if (!Object.hasOwn(OPERATIONS, op)) throw hostError(`unknown operation '${String(op)}'`, 'internal');
+    return OPERATIONS[op](core, Array.isArray(args) ? args : [], id);
   }
 
   async function handleRun({ id, op, args }) {
     let core;
     try {
-      core = await loadOnce({});
+      core = await loadOnce();
     } catch (error) {
       post({ type: 'error', id, ...describeError(error), fatal: true }, []);
       return;
     }
     try {
-      if (!Object.hasOwn(OPERATIONS, op)) throw hostError(`unknown operation '${String(op)}'`, 'internal');
-      const [value, transfer] = packForTransfer(OPERATIONS[op](core, Array.isArray(args) ? args : [], id));
-      post({ type: 'result', id, value }, transfer);
+      let value;
+      try {
+        value = runOperation(core, op, args, id);
+      } catch (error) {
+        // The light module refuses a plate or frame before doing any work: ask the full one.
+        if (error?.code !== 'kind-not-built' || core.module() === 'full') throw error;
+        core = await loadFull();
+        post({ type: 'module', module: core.module() }, []);
+        value = runOperation(core, op, args, id);
+      }
+      const [packed, transfer] = packForTransfer(value);
+      post({ type: 'result', id, value: packed }, transfer);
     } catch (error) {
       post({ type: 'error', id, ...describeError(error) }, []);
     }

@@ -3,12 +3,25 @@
 // names here match what wasm/index.js exports, and that the methods of the objects it returns
 // match the interfaces below).
 
+/**
+ * The two WebAssembly modules, built from the same core (docs/architecture.md): 'full' has every
+ * kind (dist/desia_wasm.wasm); 'light' (dist/desia_light.wasm, about half the bytes) has voxels,
+ * contacts and meshes and rejects a plate or frame with code 'kind-not-built'.
+ */
+export type ModuleName = 'light' | 'full';
+
 /** Where to find the WebAssembly binary; by default `dist/desia_wasm.wasm` beside the package. */
 export interface LoadOptions {
-  /** URL (browser) or file path / file: URL (node) of `desia_wasm.wasm`. */
+  /** URL (browser) or file path / file: URL (node) of `desia_wasm.wasm` (loadDesiaModule: of the module asked for). */
   wasmUrl?: string | URL;
-  /** The bytes of `desia_wasm.wasm`, when the caller already has them. */
+  /** The bytes of `desia_wasm.wasm`, when the caller already has them (createDesia then loads only the full module). */
   wasmBinary?: ArrayBuffer | Uint8Array;
+}
+
+/** Options of {@link loadDesiaModule}. */
+export interface LoadModuleOptions extends LoadOptions {
+  /** Which module: 'full' (default) or 'light'. */
+  module?: ModuleName;
 }
 
 export type CheckMethod = 'dbg' | 'lp' | 'both';
@@ -18,9 +31,11 @@ export type VerdictName = 'interlocking' | 'deadlocked' | 'not-interlocking';
  * CLI does), 'too-large' (above the grid or mesh limits, or out of memory), 'unsupported' (e.g. a
  * designer that has not landed yet), 'internal' (a bug, a trap or a crashed worker). From
  * {@link createDesia}: 'terminated' (terminate() was called while the call was pending) and
- * 'session-lost' (the worker that held a design session was stopped).
+ * 'session-lost' (the worker that held a design session was stopped). From the light module
+ * (loadDesiaModule({ module: 'light' })): 'kind-not-built', a plate or frame it does not hold
+ * (createDesia never shows it: its worker loads the full module and asks again).
  */
-export type ErrorCode = 'bad-input' | 'too-large' | 'unsupported' | 'internal' | 'terminated' | 'session-lost';
+export type ErrorCode = 'bad-input' | 'too-large' | 'unsupported' | 'internal' | 'terminated' | 'session-lost' | 'kind-not-built';
 
 export interface CheckOptions {
   /** 'dbg' (directional blocking graphs, default), 'lp' (linear program) or 'both'. */
@@ -726,6 +741,8 @@ export interface DesiaCore {
   exportFormats(): ExportFormatInfo[];
   /** The core's version, e.g. '0.1.0'. */
   version(): string;
+  /** The module this core runs. */
+  module(): ModuleName;
 }
 
 /** One export format of the core's registry. */
@@ -744,6 +761,17 @@ export interface ExportFormatInfo {
 
 /** Options of {@link createDesia}. */
 export interface CreateOptions extends LoadOptions {
+  /**
+   * 'light-first' (default): the worker loads the light module and, the first time a call is
+   * about a plate or a frame, the full one, which then answers every call (same API, same
+   * results). 'full': only the full module, at once.
+   */
+  modules?: 'light-first' | 'full';
+  /**
+   * URL (browser) or file path (node) of `desia_light.wasm` (default: the package's). A `wasmUrl`
+   * without it, or a `wasmBinary`, names only the full module: only that one is loaded.
+   */
+  lightWasmUrl?: string | URL;
   /**
    * true (default): the core runs in a worker (a module Web Worker in browsers, a worker_threads
    * Worker in node), so long calls never block the caller and an AbortSignal stops them at once.
@@ -815,6 +843,8 @@ export interface Desia {
   exportFormats(options?: CallOptions): Promise<ExportFormatInfo[]>;
   /** The core's version, e.g. '0.1.0' (known since createDesia resolved). */
   version(): string;
+  /** The WebAssembly modules loaded so far: ['light'], then ['light', 'full'] once a plate or frame came; ['full'] with modules 'full'. */
+  modules(): ModuleName[];
   /**
    * Ends the worker (in-process: drops the module). Pending calls reject with code 'terminated'
    * and design sessions are lost; a later call starts a fresh worker, so terminate() is also how
@@ -839,7 +869,7 @@ export class DesiaError extends Error {
  * Loads the WebAssembly module in the calling thread and returns the synchronous core: for use
  * inside a worker of your own, or in node scripts that need nothing asynchronous.
  */
-export function loadDesiaModule(options?: LoadOptions): Promise<DesiaCore>;
+export function loadDesiaModule(options?: LoadModuleOptions): Promise<DesiaCore>;
 
 /**
  * The promise-based API (see {@link Desia}); resolves once the core is loaded in its worker.

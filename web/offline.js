@@ -3,7 +3,7 @@
 // Offline support, the page's side: registers the service worker (web/sw.js) and, once the
 // playground has shown its first verdict and the browser is idle, hands it the list of files to
 // keep: everything this page loaded (its modules, three.js, the style sheet), the worker's files
-// (which the page cannot see load), the core and every bundled example. The files the page and
+// (which the page cannot see load) with the light core, the full core and every bundled example. The files the page and
 // its worker loaded are marked as such: the service worker takes them from the browser's HTTP
 // cache instead of downloading them again, and fetches only the rest. It keeps them all as one
 // snapshot; a small indicator then says whether THIS page works offline: only when it belongs
@@ -15,11 +15,16 @@
 import { byId } from './dom.js';
 
 /**
- * The package's worker (createDesia's, started as core-worker.js) and everything it imports: the
- * page's resource list does not show them (the page imports wasm/index.js, client.js, core.js,
- * host.js and portfolio.js itself).
+ * The package's worker (createDesia's, started as core-worker.js) and everything it imports before
+ * the first verdict: the light module (docs/architecture.md). The page's resource list does not
+ * show them (the page imports wasm/index.js, client.js, core.js, host.js and portfolio.js itself).
  */
-const WORKER_FILES = ['./core-worker.js', '../wasm/worker.js', '../wasm/core.js', '../wasm/host.js', '../dist/desia_wasm.js', '../dist/desia_wasm.wasm'];
+const WORKER_FILES = ['./core-worker.js', '../wasm/worker.js', '../wasm/core.js', '../wasm/host.js', '../dist/desia_light.js', '../dist/desia_light.wasm'];
+/**
+ * The full module, which the worker loads only for a plate or frame: kept for offline too, fetched
+ * with the rest (a revalidation, 304, when the worker has already loaded it).
+ */
+const FULL_MODULE_FILES = ['../dist/desia_wasm.js', '../dist/desia_wasm.wasm'];
 /** The page under both of its names (a link to web/ and to web/index.html). */
 const PAGE_FILES = ['./', './index.html'];
 const SNAPSHOT_TIMEOUT_MS = 120_000;
@@ -94,6 +99,7 @@ export async function keepForOffline(extraUrls = []) {
   const urls = [
     ...PAGE_FILES.map((file) => new URL(file, import.meta.url).href),
     ...loaded,
+    ...FULL_MODULE_FILES.map((file) => new URL(file, import.meta.url).href),
     ...extraUrls.map((url) => new URL(url, location.href).href),
   ];
   setOfflineState('saving', 'Saving for offline…');

@@ -33,6 +33,8 @@
 import { createDesia } from '../wasm/index.js';
 
 const WASM_URL = new URL('../dist/desia_wasm.wasm', import.meta.url).href;
+/** The light module the worker loads first; the full one (WASM_URL) for the first plate or frame. */
+const LIGHT_WASM_URL = new URL('../dist/desia_light.wasm', import.meta.url).href;
 /** The package's worker, started from the playground's folder so that web/sw.js controls it (core-worker.js). */
 const WORKER_URL = new URL('./core-worker.js', import.meta.url).href;
 /** Consecutive failed worker starts before we stop restarting on our own. */
@@ -118,7 +120,7 @@ export class CoreWorker {
     this.#generation += 1;
     this.#onStart();
     try {
-      this.#desia ??= await createDesia({ wasmUrl: WASM_URL, workerUrl: WORKER_URL });
+      this.#desia ??= await createDesia({ wasmUrl: WASM_URL, lightWasmUrl: LIGHT_WASM_URL, workerUrl: WORKER_URL });
       // A fresh worker: the package starts it with the next call; asking for the export formats
       // (a table) loads the core now, so that the page is ready when the user acts.
       await this.#desia.exportFormats();

@@ -9,6 +9,7 @@
 #include "io/export_internals.h"
 #include "desia/design_io.h"
 #include "desia/formats.h"
+#include "io/kind_entries.h"
 
 namespace desia {
 namespace {
@@ -95,12 +96,13 @@ ExportOptions meshOptionsFor(const AssemblyDocument& document, ExportOptions opt
 std::vector<std::string> exportFiles(const AssemblyDocument& document, const ExportFormatInfo& format,
                                      const ExportSettings& settings) {
   const std::string& source = settings.mesh.source;
-  if (format.perSheet) return plateCutSheets(document, parseCutFileFormat(format.name), settings.sheets);
+  const PlateFrameEntries& kinds = plateFrameEntries();
+  if (format.perSheet) return kinds.cutSheets(document, format.name, settings.sheets);
   std::vector<uint8_t> bytes;
   if (isFrameDocument(document)) {
     // Frames (paper Section 5.3): part meshes, .fpuz, the cut list, or (on a voxel grid) voxel files.
     if (settings.mesh.clearance != 0) throwBadInput(source, "the clearance applies to voxel assemblies, not to frames");
-    bytes = exportFrame(frameFromAssemblyDocument(document, source), format.name, settings.mesh.part, source);
+    bytes = kinds.exportFrame(document, format.name, settings.mesh.part, source);
   } else if (format.kinds.size() == 1 && takes(format, Kind::Frame)) {
     throwBadInput(source, "." + std::string(format.name) + " exports are for frame structures");
   } else {

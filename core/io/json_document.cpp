@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The JSON assembly document (docs/json-schema.md).
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -11,9 +12,9 @@
 #include "desia/error.h"
 #include "desia/formats.h"
 #include "io/design_json.h"
-#include "io/frame/frame_json.h"
+#include "io/frame/frame_json.h"  // isFpuzSource, defined here: it picks the reader
 #include "io/json_input.h"
-#include "io/plate/plate_format.h"
+#include "io/kind_entries.h"
 
 namespace desia {
 namespace {
@@ -316,45 +317,10 @@ PlateResultPlan parsePlateResultPlan(const json& root, const Assembly& assembly,
   return plan;
 }
 
-// Millimetres per unit of a plate document's coordinates: "unit" is "mm" (the default), "cm", "m"
-// or "in" (CAD tools export in any of them). Plates are read into millimetres, in which every
-// tolerance and joint size is given, so a design in metres designs as the same design in mm.
-double millimetresPerUnit(const json& root, const std::string& source) {
-  if (!root.contains("unit")) return 1;
-  const json& unit = root["unit"];
-  if (unit == "mm") return 1;
-  if (unit == "cm") return 10;
-  if (unit == "m") return 1000;
-  if (unit == "in") return 25.4;
-  fail(source, "unit", "expected \"mm\", \"cm\", \"m\" or \"in\", found " + unit.dump());
-  return 1;
-}
-
-std::vector<Plate> scaledPlates(std::vector<Plate> plates, double factor) {
-  if (factor == 1) return plates;
-  const auto scaleSolid = [factor](Plate* solid) {
-    for (std::vector<Loop>* face : {&solid->bottom, &solid->top}) {
-      for (Loop& loop : *face) {
-        for (Vec3& p : loop) p = {p[0] * factor, p[1] * factor, p[2] * factor};
-      }
-    }
-  };
-  for (Plate& plate : plates) {
-    scaleSolid(&plate);
-    for (Plate& attached : plate.attached) scaleSolid(&attached);
-  }
-  return plates;
-}
-
-std::vector<Plate> readPlates(const json& root, const char* section, const std::string& source) {
-  return scaledPlates(parsePlates(root[section], source), millimetresPerUnit(root, source));
-}
-
 // A plan or result: its contacts are given (the joints'); its plates are what is made, one per part.
 void readPlatePlan(const json& root, const std::string& source, AssemblyDocument& document) {
-  document.plates = readPlates(root, "plates", source);
-  validatePlates(document.plates, document.plateOptions, source);
-  document.plates = regularizedPlates(document.plates, document.plateOptions, PlateOrigin::Computed);
+  const PlateFrameEntries& plates = plateFrameEntries();
+  document.plates = plates.readPlanPlates(root, "plates", source, document.plateOptions);
   requirePlatePerPart(document.plates, document.assembly, source, "plates");
   if (root.contains("removal") || root.contains("jointGeometry")) {
     document.plateResult = parsePlateResultPlan(root, document.assembly, source);
@@ -363,9 +329,7 @@ void readPlatePlan(const json& root, const std::string& source, AssemblyDocument
   }
   if (root.contains("fabricationPlates")) {
     // The plates with the clearance cut into their mortises: what the cut files make.
-    document.fabricationPlates = readPlates(root, "fabricationPlates", source);
-    validatePlates(document.fabricationPlates, document.plateOptions, source);
-    document.fabricationPlates = regularizedPlates(document.fabricationPlates, document.plateOptions, PlateOrigin::Computed);
+    document.fabricationPlates = plates.readPlanPlates(root, "fabricationPlates", source, document.plateOptions);
     requirePlatePerPart(document.fabricationPlates, document.assembly, source, "fabricationPlates");
   }
 }
@@ -388,30 +352,6 @@ AssemblyDocument documentFromVoxels(VoxelGrid grid, std::string name) {
   document.name = std::move(name);
   document.assembly = assemblyFromVoxels(grid);
   document.voxels = std::move(grid);
-  return document;
-}
-
-AssemblyDocument documentFromPlates(std::vector<Plate> plates, const PlateOptions& options, const std::string& source,
-                                    std::string name) {
-  AssemblyDocument document;
-  document.kind = AssemblyKind::Plate;
-  document.name = std::move(name);
-  document.plateOptions = options;
-  validatePlates(plates, options, source);
-  plates = regularizedPlates(plates, options, PlateOrigin::Drawn);
-  std::vector<PlateContact> contacts;
-  try {
-    contacts = computePlateContacts(plates, options);
-  } catch (const Error& error) {  // overlaps found by the geometry: name the file too
-    if (error.code() != ErrorCode::BadInput || source.empty()) throw;
-    throwBadInput(source, error.what());
-  }
-  requireConnectedPlates(plates, contacts, source);
-  document.assembly = assemblyFromPlates(plates, contacts);
-  document.plateCutPoints = plateCutPoints(static_cast<int>(plates.size()), contacts);
-  document.contactsFromGeometry = true;
-  document.plateContacts = std::move(contacts);
-  document.plates = std::move(plates);
   return document;
 }
 
@@ -438,7 +378,7 @@ AssemblyDocument documentFromJson(json root, const std::string& source) {
   }
   if (document.kind == AssemblyKind::Frame && root.contains("beams") && !root.contains("contacts")) {
     // A frame (paper Section 5.3): parts are its beams, contacts come from its joint voxels.
-    return frameAssemblyDocumentFromJson(root, source, document.name);
+    return plateFrameEntries().frameFromJson(root, source, document.name);
   }
   PlateOptions plateOptions;
   if (document.kind == AssemblyKind::Plate && root.contains("contactTolerance")) {
@@ -450,7 +390,7 @@ AssemblyDocument documentFromJson(json root, const std::string& source) {
   }
   if (document.kind == AssemblyKind::Plate && root.contains("plates") && !root.contains("contacts")) {
     // A plate design: parts and contacts come from the geometry (paper Section 5.2).
-    document = documentFromPlates(readPlates(root, "plates", source), plateOptions, source, document.name);
+    document = plateFrameEntries().plateDesignFromJson(root, plateOptions, source, document.name);
   } else {
     document.plateOptions = plateOptions;
     document.assembly.parts = parseParts(root, source);
@@ -484,7 +424,7 @@ AssemblyDocument parseAssemblyText(std::string&& text, const std::string& source
 }
 
 AssemblyDocument parseAssemblyText(const std::string& text, const std::string& source) {
-  if (isFpuzSource(source)) return frameAssemblyDocumentFromFpuz(text, source);
+  if (isFpuzSource(source)) return plateFrameEntries().frameFromFpuz(text, source);
   if (looksLikePuz(text)) {
     PuzFile file = readPuz(text, source);
     AssemblyDocument document = documentFromVoxels(std::move(file.grid));
@@ -540,14 +480,14 @@ std::string documentToJson(const AssemblyDocument& document, int indent) {
     root["parts"] = parts;
   } else if (document.kind == AssemblyKind::Frame && document.frame) {
     // A frame is its geometry (and joint voxels): parts and contacts are derived again when read.
-    const json sections = frameSectionsJson(*document.frame);  // must outlive the loop below
+    const json sections = plateFrameEntries().frameSections(*document.frame);  // must outlive the loop below
     for (const auto& [key, value] : sections.items()) root[key] = value;
   } else if (document.kind == AssemblyKind::Plate && document.contactsFromGeometry) {
     // A plate design is its geometry: parts and contacts are derived again when it is read.
     if (document.plateOptions.contactTolerance != PlateOptions{}.contactTolerance) {
       root["contactTolerance"] = document.plateOptions.contactTolerance;
     }
-    root["plates"] = platesToJson(document.plates);
+    root["plates"] = plateFrameEntries().platesJson(document.plates);
   } else {
     for (const Part& part : document.assembly.parts) {
       json entry = {{"id", part.id}};
@@ -564,15 +504,29 @@ std::string documentToJson(const AssemblyDocument& document, int indent) {
     }
     root["contacts"] = contacts;
     // A plan: its plates (read and checked) with its given contacts, and a result's plan.
-    if (!document.plates.empty()) root["plates"] = platesToJson(document.plates);
+    if (!document.plates.empty()) root["plates"] = plateFrameEntries().platesJson(document.plates);
     if (document.plateResult) writePlateResultPlan(*document.plateResult, root);
-    if (!document.fabricationPlates.empty()) root["fabricationPlates"] = platesToJson(document.fabricationPlates);
+    if (!document.fabricationPlates.empty()) root["fabricationPlates"] = plateFrameEntries().platesJson(document.fabricationPlates);
     if (document.kind == AssemblyKind::Plate &&
         document.plateOptions.contactTolerance != PlateOptions{}.contactTolerance) {
       root["contactTolerance"] = document.plateOptions.contactTolerance;
     }
   }
   return root.dump(indent);
+}
+
+bool isFpuzSource(const std::string& source) {
+  constexpr char kSuffix[] = ".fpuz";
+  constexpr size_t kLength = sizeof(kSuffix) - 1;
+  if (source.size() < kLength) return false;
+  for (size_t i = 0; i < kLength; ++i) {
+    if (std::tolower(static_cast<unsigned char>(source[source.size() - kLength + i])) != kSuffix[i]) return false;
+  }
+  return true;
+}
+
+bool isFrameDocument(const AssemblyDocument& document) {
+  return document.kind == AssemblyKind::Frame && document.frame.has_value();
 }
 
 }  // namespace desia

@@ -13,6 +13,7 @@ const char* errorCodeName(ErrorCode code) {
     case ErrorCode::TooLarge: return "too-large";
     case ErrorCode::Unsupported: return "unsupported";
     case ErrorCode::Internal: return "internal";
+    case ErrorCode::KindNotBuilt: return "kind-not-built";
   }
   return "internal";
 }

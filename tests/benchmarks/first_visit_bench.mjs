@@ -138,12 +138,16 @@ async function main() {
   const options = parseArguments(process.argv.slice(2));
   const wasm = await compressedSizes(path.join(REPO_ROOT, 'dist/desia_wasm.wasm'));
   const loader = await compressedSizes(path.join(REPO_ROOT, 'dist/desia_wasm.js'));
+  const lightWasm = await compressedSizes(path.join(REPO_ROOT, 'dist/desia_light.wasm'));
+  const lightLoader = await compressedSizes(path.join(REPO_ROOT, 'dist/desia_light.js'));
   const plain = await measureFirstVisit({ siteDir: options.siteDir, revisit: true });
   const slow = options.throttle ? await measureFirstVisit({ siteDir: options.siteDir, throttle: true }) : null;
   console.log('| figure | value |');
   console.log('| --- | ---: |');
   console.log(`| core dist/desia_wasm.wasm: raw / gzip -9 / brotli -q 11 | ${kb(wasm.raw)} / ${kb(wasm.gzip)} / **${kb(wasm.brotli)}** |`);
   console.log(`| core loader dist/desia_wasm.js: raw / gzip / brotli | ${kb(loader.raw)} / ${kb(loader.gzip)} / ${kb(loader.brotli)} |`);
+  console.log(`| light core dist/desia_light.wasm: raw / gzip -9 / brotli -q 11 | ${kb(lightWasm.raw)} / ${kb(lightWasm.gzip)} / **${kb(lightWasm.brotli)}** |`);
+  console.log(`| light core loader dist/desia_light.js: raw / gzip / brotli | ${kb(lightLoader.raw)} / ${kb(lightLoader.gzip)} / ${kb(lightLoader.brotli)} |`);
   console.log(`| first visit, until the first verdict | **${mb(plain.beforeVerdict.bytes)}** in ${plain.beforeVerdict.responses} responses |`);
   console.log(`| first visit, until kept for offline (every example too) | ${mb(plain.afterOffline.bytes)} in ${plain.afterOffline.responses} responses |`);
   console.log(`| files sent twice | ${plain.sentTwice.length === 0 ? 'none' : plain.sentTwice.join(', ')} |`);
@@ -151,7 +155,7 @@ async function main() {
   if (slow) console.log(`| first verdict at 10 Mbit/s, 60 ms (Chromium's emulation) | ${(slow.verdictMs / 1000).toFixed(1)} s |`);
   console.log(`| first verdict, local server | ${(plain.verdictMs / 1000).toFixed(1)} s |`);
   if (plain.offline.state !== 'ready') console.log(`offline: ${plain.offline.state} (${plain.offline.title})`);
-  if (options.json) await writeFile(options.json, `${JSON.stringify({ wasm, loader, plain, slow }, null, 2)}\n`);
+  if (options.json) await writeFile(options.json, `${JSON.stringify({ wasm, loader, lightWasm, lightLoader, plain, slow }, null, 2)}\n`);
 }
 
 if (process.argv[1] && path.resolve(process.argv[1]) === fileURLToPath(import.meta.url)) {

@@ -3,6 +3,7 @@
 // desia_design_bench (desia mode), several seeds, success rate and median time beside the paper's;
 // --frontier adds issue 10's harder cases, as the native bench does.
 //   node tests/benchmarks/wasm_design_bench.mjs [--seeds N] [--time-limit S] [--only TEXT] [--frontier] [--modes desia,recursive]
+//     [--module full|light]  (the module: the full one by default; the playground designs voxels in the light one)
 import fs from 'node:fs';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -53,9 +54,9 @@ function seconds(s) {
 const seeds = Number(option('--seeds', 3));
 const timeLimit = Number(option('--time-limit', 60));
 const only = option('--only', '');
-const core = await loadDesiaModule();
+const core = await loadDesiaModule({ module: option('--module', 'full') });
 const modes = option('--modes', 'desia,recursive').split(',');
-console.log(`Voxel designer in WebAssembly (node ${process.version}): ${seeds} seeds, ${timeLimit} s limit per run.\n`);
+console.log(`Voxel designer in WebAssembly (node ${process.version}, the ${core.module()} module): ${seeds} seeds, ${timeLimit} s limit per run.\n`);
 console.log('| case | mode | paper | success | median time (successes) | median nodes | best parts reached |');
 console.log('| --- | --- | ---: | ---: | ---: | ---: | ---: |');
 const median = (values) => (values.length ? [...values].sort((a, b) => a - b)[Math.floor(values.length / 2)] : null);

@@ -192,7 +192,8 @@ describe('drop-in viewer on examples/embed.html', { timeout: 90_000 }, () => {
       return !['data:', 'blob:'].includes(protocol) && hostname !== '127.0.0.1';
     });
     assert.deepEqual(external, [], 'requests left the origin');
-    assert.ok(requestedUrls.some((url) => url.endsWith('/dist/desia_wasm.wasm')), 'the core was loaded');
+    // The light module (voxels) or the full one (plates, frames): docs/architecture.md.
+    assert.ok(requestedUrls.some((url) => /\/dist\/desia_(light|wasm)\.wasm$/.test(url)), 'the core was loaded');
     assert.deepEqual(consoleErrors, [], 'console errors');
     assert.deepEqual(pageErrors, [], 'page errors');
   });

@@ -4,7 +4,8 @@
 // validators and answers conditional requests with 304, and sends precompressed copies to
 // clients that accept them. The published site (scripts/build-site.mjs), served as a host that
 // sends its .br/.gz copies would, reaches its first verdict in headless Chromium with an empty
-// profile within 1.5 MB; the service worker then keeps it for offline use without any file being
+// profile within 1.5 MB, the core's share within 400 KB (the light module: the full one, for
+// plates and frames, is not loaded for the default voxel example); the service worker then keeps it for offline use without any file being
 // sent twice (it takes what the page loaded from the HTTP cache), and a reload is all 304s but
 // for the page itself. The measurement is tests/benchmarks/first_visit_bench.mjs
 // (docs/benchmarks.md).
@@ -24,6 +25,10 @@ import { checkPrerequisites } from './support.mjs';
 
 /** The budget of the issue: bytes on the wire (bodies as sent plus headers) until the verdict. */
 const FIRST_VERDICT_BUDGET = 1.5e6;
+/** The issue's budget for the core (module and loader, compressed) before the first verdict. */
+const CORE_BUDGET = 400e3;
+const LIGHT_CORE = ['/dist/desia_light.wasm', '/dist/desia_light.js'];
+const FULL_CORE = ['/dist/desia_wasm.wasm', '/dist/desia_wasm.js'];
 
 describe('the development server: validators and precompressed files', () => {
   let tmp;
@@ -132,17 +137,29 @@ describe('the published site\'s first visit in headless Chromium', { timeout: 30
   it(`shows its first verdict within ${FIRST_VERDICT_BUDGET / 1e6} MB, the core and three.js compressed`, () => {
     assert.ok(visit.beforeVerdict.bytes <= FIRST_VERDICT_BUDGET,
       `${visit.beforeVerdict.bytes} bytes in ${visit.beforeVerdict.responses} responses before the first verdict`);
-    for (const file of ['/dist/desia_wasm.wasm', '/dist/desia_wasm.js', '/vendor/three/build/three.core.js', '/main.js', '/']) {
+    for (const file of [...LIGHT_CORE, ...FULL_CORE, '/vendor/three/build/three.core.js', '/main.js', '/']) {
       assert.equal(visit.encodings[file], 'br', `${file} was sent with brotli`);
     }
+  });
+
+  it(`loads the light core (at most ${CORE_BUDGET / 1e3} KB) before the first verdict on the default example, the full one only after`, () => {
+    const before = visit.log.filter((entry) => entry.ms <= visit.verdictMs && entry.status === 200);
+    const coreBytes = before.filter((entry) => LIGHT_CORE.includes(entry.path)).reduce((total, entry) => total + entry.bytes, 0);
+    assert.deepEqual(LIGHT_CORE.filter((file) => !before.some((entry) => entry.path === file)), [], 'the light core was loaded');
+    assert.ok(coreBytes <= CORE_BUDGET, `the light core: ${coreBytes} bytes`);
+    assert.deepEqual(before.filter((entry) => FULL_CORE.includes(entry.path)).map((entry) => entry.path), [],
+      'the full core waits for a plate or frame (or the service worker, when idle)');
   });
 
   it('keeps the playground for offline use, sending no file twice', () => {
     assert.equal(visit.offline.state, 'ready', `offline: ${visit.offline.title}`);
     assert.deepEqual(visit.sentTwice, [], 'files sent twice');
-    // Only the examples the page did not open were left to fetch: a few tens of kilobytes.
-    assert.ok(visit.afterOffline.bytes - visit.beforeVerdict.bytes < 200e3,
-      `${visit.afterOffline.bytes - visit.beforeVerdict.bytes} bytes after the first verdict`);
+    // Left to fetch: the full core (once) and the examples the page did not open, a few tens of kilobytes.
+    const fullCore = visit.log.filter((entry) => FULL_CORE.includes(entry.path) && entry.status === 200);
+    assert.deepEqual(fullCore.map((entry) => entry.path).sort(), [...FULL_CORE].sort(), 'the full core kept for offline, once');
+    const fullCoreBytes = fullCore.reduce((total, entry) => total + entry.bytes, 0);
+    assert.ok(visit.afterOffline.bytes - visit.beforeVerdict.bytes - fullCoreBytes < 200e3,
+      `${visit.afterOffline.bytes - visit.beforeVerdict.bytes} bytes after the first verdict, ${fullCoreBytes} of them the full core`);
   });
 
   it('sends nothing again on a reload but the page: every other file is revalidated (304)', () => {

@@ -125,7 +125,9 @@ describe('playground offline in headless Chromium', { timeout: 120_000 }, () => 
       '/web/', '/web/index.html', '/web/style.css',
       ...(await pageModules()).map((file) => `/web/${file}`),
       // The package the page runs on (createDesia) and its worker.
-      '/web/core-worker.js', '/wasm/index.js', '/wasm/client.js', '/wasm/portfolio.js', '/wasm/worker.js', '/wasm/core.js', '/wasm/host.js', '/dist/desia_wasm.js', '/dist/desia_wasm.wasm',
+      '/web/core-worker.js', '/wasm/index.js', '/wasm/client.js', '/wasm/portfolio.js', '/wasm/worker.js', '/wasm/core.js', '/wasm/host.js', '/dist/desia_light.js', '/dist/desia_light.wasm',
+      // The full module too (for plates and frames), fetched when the page was idle.
+      '/dist/desia_wasm.js', '/dist/desia_wasm.wasm',
       '/node_modules/three/build/three.module.js',
       ...(await readdir(path.join(REPO_ROOT, 'examples/voxel'))).filter((file) => file.endsWith('.puz')).map((file) => `/examples/voxel/${file}`),
       '/examples/meshes/torus.obj',
@@ -176,7 +178,7 @@ describe('playground offline in headless Chromium', { timeout: 120_000 }, () => 
     assert.ok(responsesWhileDown.length > 0);
     const fromNetwork = responsesWhileDown.filter((response) => !response.fromServiceWorker);
     assert.deepEqual(fromNetwork, [], 'responses that did not come from the service worker');
-    for (const file of ['/web/main.js', '/web/core-worker.js', '/wasm/worker.js', '/dist/desia_wasm.wasm', '/examples/meshes/torus.obj']) {
+    for (const file of ['/web/main.js', '/web/core-worker.js', '/wasm/worker.js', '/dist/desia_light.wasm', '/examples/meshes/torus.obj']) {
       assert.ok(responsesWhileDown.some((response) => new URL(response.url).pathname === file), `${file} was served`);
     }
     assert.deepEqual(pageErrors, []);

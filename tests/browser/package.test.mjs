@@ -264,7 +264,9 @@ describe('the npm package installed from its tarball, in a page', { timeout: 180
     const elsewhere = requestedUrls.filter((url) => !url.startsWith(`${origin}/`) && !/^(data|blob):/.test(url));
     assert.deepEqual(elsewhere, []);
     assert.ok(requestedUrls.includes(`${origin}/node_modules/desia/wasm/worker.js`), 'the package worker was loaded');
-    assert.ok(requestedUrls.includes(`${origin}/node_modules/desia/dist/desia_wasm.wasm`), 'the core was loaded from the package');
+    // The light module (voxels) or the full one (plates, frames): docs/architecture.md.
+    assert.ok(requestedUrls.includes(`${origin}/node_modules/desia/dist/desia_light.wasm`)
+      || requestedUrls.includes(`${origin}/node_modules/desia/dist/desia_wasm.wasm`), 'the core was loaded from the package');
     assert.deepEqual(pageErrors, []);
   });
 });

@@ -202,7 +202,8 @@ describe('playground in headless Chromium', { timeout: 60_000 }, () => {
       return !['data:', 'blob:'].includes(protocol) && hostname !== '127.0.0.1';
     });
     assert.deepEqual(external, [], 'requests left the origin');
-    assert.ok(requestedUrls.some((url) => url.endsWith('/dist/desia_wasm.wasm')), 'the worker fetched the wasm');
+    // The light module first; the full one once a plate or frame came (docs/architecture.md).
+    assert.ok(requestedUrls.some((url) => url.endsWith('/dist/desia_light.wasm')), 'the worker fetched the light module');
     assert.deepEqual(pageErrors, []);
   });
 });

@@ -183,14 +183,16 @@ describe('the playground as a static site under a sub-path', { timeout: 180_000 
   it('is one self-contained folder of plain files with relative URLs only', async () => {
     const files = await listFiles(siteDir);
     for (const file of ['index.html', 'main.js', 'sw.js', 'style.css', 'wasm/worker.js', 'wasm/client.js', 'wasm/core.js', 'wasm/host.js', 'wasm/index.js',
-      'dist/desia_wasm.js', 'dist/desia_wasm.wasm', 'vendor/three/build/three.module.js', 'vendor/three/LICENSE',
+      'dist/desia_wasm.js', 'dist/desia_wasm.wasm', 'dist/desia_light.js', 'dist/desia_light.wasm', 'vendor/three/build/three.module.js', 'vendor/three/LICENSE',
       `examples/voxel/${FIRST_EXAMPLE}`, `examples/plate/${TABLE}`, 'examples/meshes/torus.obj', 'examples/embed.html']) {
       assert.ok(files.includes(file), `${file} is missing from the site`);
     }
     assert.deepEqual(files.filter((file) => /(^|\/)\.|\.(py|d\.ts|cpp|txt)$|CMakeLists/.test(file)), [], 'no sources, scripts or hidden files');
     for (const file of files) assert.ok((await lstat(path.join(siteDir, file))).isFile(), `${file} is a plain file`);
     // The core is the one built, byte for byte.
-    assert.deepEqual(await readFile(path.join(siteDir, 'dist/desia_wasm.wasm')), await readFile(path.join(REPO_ROOT, 'dist/desia_wasm.wasm')));
+    for (const module of ['dist/desia_wasm.wasm', 'dist/desia_light.wasm']) {
+      assert.deepEqual(await readFile(path.join(siteDir, module)), await readFile(path.join(REPO_ROOT, module)));
+    }
     // No absolute URL into the repository's layout is left in a page or module.
     for (const file of files.filter((name) => /\.(html|js)$/.test(name) && !name.startsWith('vendor/') && !name.startsWith('dist/'))) {
       const text = await readFile(path.join(siteDir, file), 'utf8');
@@ -332,7 +334,7 @@ describe('the playground as a static site under a sub-path', { timeout: 180_000 
       }
       return [...urls];
     });
-    for (const file of ['', 'index.html', 'wasm/worker.js', 'wasm/core.js', 'dist/desia_wasm.wasm', 'vendor/three/build/three.module.js',
+    for (const file of ['', 'index.html', 'wasm/worker.js', 'wasm/core.js', 'dist/desia_light.wasm', 'dist/desia_wasm.wasm', 'vendor/three/build/three.module.js',
       'vendor/three/build/three.core.js', `examples/voxel/${CUBE_SHAPE}`, 'examples/meshes/torus.obj']) {
       assert.ok(cached.includes(`${siteUrl}${file}`), `${SUB_PATH}${file} is not kept for offline use`);
     }
@@ -359,7 +361,8 @@ describe('the playground as a static site under a sub-path', { timeout: 180_000 
     await screenshot(page, 'site-offline');
     assert.ok(responsesWhileDown.length > 0);
     assert.deepEqual(responsesWhileDown.filter((response) => !response.fromServiceWorker), [], 'responses not from the service worker');
-    for (const file of ['main.js', 'wasm/worker.js', 'dist/desia_wasm.wasm', 'vendor/three/build/three.module.js']) {
+    // Voxel examples only: the light module (docs/architecture.md).
+    for (const file of ['main.js', 'wasm/worker.js', 'dist/desia_light.wasm', 'vendor/three/build/three.module.js']) {
       assert.ok(responsesWhileDown.some((response) => response.url === `${siteUrl}${file}`), `${file} was served offline`);
     }
   });

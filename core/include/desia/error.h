@@ -13,6 +13,8 @@ enum class ErrorCode {
   TooLarge,      // input refused before allocating (grid or part count above the limits)
   Unsupported,   // valid input the requested method cannot handle
   Internal,      // a bug or a solver failure; never expected
+  KindNotBuilt,  // a plate or frame asked of a build without them (the light WebAssembly module):
+                 // the package loads the full module and asks again (docs/architecture.md)
 };
 
 class Error : public std::runtime_error {

@@ -76,8 +76,4 @@ std::string frameStepToJson(const FrameDocument& input, const FrameDesignStep& s
       .dump();
 }
 
-bool isFrameDocument(const AssemblyDocument& document) {
-  return document.kind == AssemblyKind::Frame && document.frame.has_value();
-}
-
 }  // namespace desia

@@ -420,7 +420,6 @@ json frameSectionsJson(const FrameDocument& document) {
 }
 
 
-bool isFpuzSource(const std::string& source) { return endsWithIgnoringCase(source, ".fpuz"); }
 
 FrameDocument parseFrameText(const std::string& text, const std::string& source, double jointSize) {
   if (endsWithIgnoringCase(source, ".obj")) return frameFromObj(text, source, jointSize);

@@ -9,7 +9,9 @@
 
 #include "desia/error.h"
 #include "desia/export.h"
+#include "desia/design_io.h"
 #include "io/export_internals.h"
+#include "io/kind_entries.h"
 
 namespace desia {
 namespace {
@@ -197,40 +199,11 @@ PartSurface drawableSurface(int partId, const TriangleMesh& mesh) {
 
 }  // namespace
 
-namespace {
-
-// A mesh of any orientation as drawable triangles with flat normals.
-PartSurface flatSurface(int partId, const TriangleMesh& mesh) {
-  PartSurface surface;
-  surface.partId = partId;
-  for (const std::array<int, 3>& triangle : mesh.triangles) {
-    const std::array<double, 3>& a = mesh.vertices[triangle[0]];
-    const std::array<double, 3>& b = mesh.vertices[triangle[1]];
-    const std::array<double, 3>& c = mesh.vertices[triangle[2]];
-    double n[3] = {(b[1] - a[1]) * (c[2] - a[2]) - (b[2] - a[2]) * (c[1] - a[1]),
-                   (b[2] - a[2]) * (c[0] - a[0]) - (b[0] - a[0]) * (c[2] - a[2]),
-                   (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])};
-    const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-    for (double& x : n) x = length > 0 ? x / length : 0;
-    for (const std::array<double, 3>* vertex : {&a, &b, &c}) {
-      for (int k = 0; k < 3; ++k) {
-        surface.positions.push_back(static_cast<float>((*vertex)[k]));
-        surface.normals.push_back(static_cast<float>(n[k]));
-      }
-    }
-  }
-  return surface;
-}
-
-}  // namespace
-
 std::vector<PartSurface> partSurfaces(const AssemblyDocument& document, const std::string& source) {
-  // Each kind of assembly brings its own surfaces: plates their meshes (in mm), voxels theirs.
-  if (document.kind == AssemblyKind::Plate && !document.plates.empty()) {
-    std::vector<PartSurface> surfaces;
-    for (const Plate& plate : document.plates) surfaces.push_back(flatSurface(plate.id, plateSolidMesh(plate)));
-    return surfaces;
-  }
+  // Each kind of assembly brings its own surfaces: plates their meshes (in mm), frames their beams
+  // and joint pieces, voxels theirs.
+  if (document.kind == AssemblyKind::Plate && !document.plates.empty()) return plateFrameEntries().plateSurfaces(document);
+  if (isFrameDocument(document)) return plateFrameEntries().frameSurfaces(document, source);
   requireExportableVoxels(document, source);
   const VoxelGrid& grid = document.voxels;
   const std::vector<std::vector<int64_t>> voxels = voxelsByPart(grid);
@@ -254,48 +227,11 @@ std::vector<PartSurface> partSurfaces(const AssemblyDocument& document, const st
   return surfaces;
 }
 
-namespace {
-
-// Plates (in mm) as closed meshes, one per plate, `part` 0 for all. The kind picks its meshes here.
-std::vector<uint8_t> exportPlates(const AssemblyDocument& document, ExportFormat format, const ExportOptions& options) {
-  if (format == ExportFormat::XmPuzzle) {
-    throwBadInput(options.source, "BurrTools .xmpuzzle holds voxel puzzles; export plates as stl, stl-ascii or obj");
-  }
-  if (format == ExportFormat::BuildPlateStl) {
-    throwBadInput(options.source, "a build plate lays out voxel parts; plates are laid flat on cut sheets (svg, dxf)");
-  }
-  if (options.clearance != 0) {
-    throwBadInput(options.source, "plates take their clearance when they are designed (desia design plate --clearance), "
-                                  "not when they are exported");
-  }
-  std::vector<NamedMesh> meshes;
-  // A result cut with a clearance: the plates to make (their mortises larger), not the verified ones.
-  for (const Plate& plate : document.fabricationPlates.empty() ? document.plates : document.fabricationPlates) {
-    if (options.part == 0 || options.part == plate.id) meshes.push_back({plate.id, plateSolidMesh(plate)});
-  }
-  if (meshes.empty()) throwBadInput(options.source, "part " + std::to_string(options.part) + " is not a plate of this structure (0 = all plates)");
-  const std::string title = "plate export, " + (options.part == 0 ? std::to_string(meshes.size()) + " plates" : "plate " + std::to_string(options.part)) + ", mm";
-  std::string bytes;
-  switch (format) {
-    case ExportFormat::StlBinary: bytes = binaryStl(meshes, title); break;
-    case ExportFormat::StlAscii: bytes = asciiStl(meshes, options.part == 0 ? "structure" : "plate" + std::to_string(options.part)); break;
-    case ExportFormat::Obj: bytes = wavefrontObj(meshes, title); break;
-    case ExportFormat::StlZip: {
-      int largestId = 0;
-      for (const NamedMesh& mesh : meshes) largestId = std::max(largestId, mesh.partId);
-      return stlZipArchive(meshes, largestId, "plate export, mm");
-    }
-    case ExportFormat::XmPuzzle:
-    case ExportFormat::BuildPlateStl: break;
-  }
-  return bytesOf(bytes);
-}
-
-}  // namespace
-
 std::vector<uint8_t> exportAssembly(const AssemblyDocument& document, ExportFormat format,
                                     const ExportOptions& options) {
-  if (document.kind == AssemblyKind::Plate && !document.plates.empty()) return exportPlates(document, format, options);
+  if (document.kind == AssemblyKind::Plate && !document.plates.empty()) {
+    return plateFrameEntries().exportPlates(document, format, options);
+  }
   requireExportableVoxels(document, options.source);
   const int parts = document.voxels.maxLabel();
   if (options.part < 0 || options.part > parts) {
