@@ -197,6 +197,12 @@ void appendBox(TriangleMesh& mesh, const OrientedBox& box) {
 
 }  // namespace
 
+TriangleMesh orientedBoxMesh(const OrientedBox& box) {
+  TriangleMesh mesh;
+  appendBox(mesh, box);
+  return mesh;
+}
+
 TriangleMesh beamJointPieceMesh(const FrameLayout& layout, const std::vector<JointLabels>& labels, int beam,
                                 int joint) {
   TriangleMesh mesh;

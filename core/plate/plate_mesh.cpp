@@ -110,7 +110,7 @@ struct MergedFace {
 };
 
 void addRegions(const PlaneFaces& plane, bool alongNormal, VertexWelder& welder, const std::map<std::pair<ClipperLib::cInt, ClipperLib::cInt>, int>& known,
-                std::vector<MergedFace>* faces) {
+                bool pinches, std::vector<MergedFace>* faces) {
   const PlaneFrame frame(plane.origin, alongNormal ? plane.normal : negated(plane.normal));
   auto regionOf = [&](const std::vector<const geometry::SolidFace*>& list) {
     ClipperLib::Paths all;
@@ -143,8 +143,11 @@ void addRegions(const PlaneFaces& plane, bool alongNormal, VertexWelder& welder,
     std::vector<int> loop;
     for (const ClipperLib::IntPoint& p : path) {
       const int v = vertexOf(p);
-      if (loop.empty() || (loop.back() != v && loop.front() != v)) loop.push_back(v);
+      // Where Clipper's contour touches itself (the 3D union's polygons meet at a vertex), the
+      // vertex is visited twice: kept (pinches); the faces per plane drop it, as they always did.
+      if (loop.empty() || (loop.back() != v && (pinches || loop.front() != v))) loop.push_back(v);
     }
+    while (loop.size() > 1 && loop.back() == loop.front()) loop.pop_back();
     return loop;
   };
   // Outlines and their holes, without recursion: an explicit list of outline nodes.
@@ -251,21 +254,45 @@ void triangulateMerged(const MergedFace& face, const std::vector<Vec3>& points, 
   }
 }
 
-TriangleMesh unionMesh(const Plate& plate, double flat) {
+// The plate's prism and its attached solids, each on its own.
+std::vector<Plate> solidsOf(const Plate& plate) {
   std::vector<Plate> solids{plate};
   solids[0].attached.clear();
   solids.insert(solids.end(), plate.attached.begin(), plate.attached.end());
+  return solids;
+}
+
+// The faces of the plate's solids as they are (they touch but never overlap).
+std::vector<geometry::SolidFace> touchingFaces(const Plate& plate) {
+  std::vector<geometry::SolidFace> faces;
+  for (const Plate& solid : solidsOf(plate)) {
+    for (geometry::SolidFace& face : geometry::solidFaces(solid)) faces.push_back(std::move(face));
+  }
+  return faces;
+}
+
+// The boundary of the union of the plate's solids, computed in 3D (unionBoundaryPolygons): each
+// solid's triangles less their parts inside another solid or on a face touching it. For solids
+// that meet on slanted planes or along an edge, where the faces of one plane alone do not tell.
+std::vector<geometry::SolidFace> booleanFaces(const Plate& plate) {
+  std::vector<TriangleMesh> meshes;
+  for (const Plate& solid : solidsOf(plate)) meshes.push_back(prismMesh(solid, 0));
+  std::vector<geometry::SolidFace> faces;
+  for (BoundaryPolygon& polygon : unionBoundaryPolygons(meshes)) faces.push_back({{std::move(polygon.points)}, polygon.normal});
+  return faces;
+}
+
+// `pinches`: keep a vertex where a merged face's contour touches itself (see addRegions).
+TriangleMesh unionMesh(std::vector<geometry::SolidFace> solidFaces, double flat, bool pinches) {
   // Every vertex welded first, so that points the solids share are one point (and one grid point).
   VertexWelder welder;
   std::vector<geometry::SolidFace> faces;
-  for (const Plate& solid : solids) {
-    for (geometry::SolidFace& face : geometry::solidFaces(solid)) {
-      for (Loop& loop : face.loops) {
-        for (Vec3& p : loop) p = welder.points()[static_cast<size_t>(welder.add(p))];
-      }
-      if (loopArea(face.loops[0]) < tolerance::kEmptyAreaMm2) continue;  // a side of no height
-      faces.push_back(std::move(face));
+  for (geometry::SolidFace& face : solidFaces) {
+    for (Loop& loop : face.loops) {
+      for (Vec3& p : loop) p = welder.points()[static_cast<size_t>(welder.add(p))];
     }
+    if (loopArea(face.loops[0]) < tolerance::kEmptyAreaMm2) continue;  // a side of no height
+    faces.push_back(std::move(face));
   }
   // Faces grouped by plane, in order of first appearance.
   std::vector<PlaneFaces> planes;
@@ -301,7 +328,7 @@ TriangleMesh unionMesh(const Plate& plate, double flat) {
           }
         }
       }
-      addRegions(plane, alongNormal, welder, known, &merged);
+      addRegions(plane, alongNormal, welder, known, pinches, &merged);
     }
   }
   insertVerticesOnEdges(merged, welder.points());
@@ -358,6 +385,95 @@ double sixVolume(const TriangleMesh& mesh) {
   return volume;
 }
 
+// Where a solid touches itself along an edge (two joint voxels of a beam meeting only there), the
+// edge is in four triangles: around it, in the order they turn about it, each with the next one
+// that closes a wedge of solid (its outward normal turned away from that wedge).
+std::map<std::pair<int, int>, int> partnersAroundEdge(const TriangleMesh& mesh, int a, int b, const std::vector<int>& four) {
+  const Vec3& pa = mesh.vertices[static_cast<size_t>(a)];
+  const Vec3 e = normalized(minus(mesh.vertices[static_cast<size_t>(b)], pa));
+  struct Around {
+    double x, y;  // the direction to its third vertex, in a frame across the edge
+    int triangle;
+    bool turnsAway;  // its normal points towards smaller angles: the wedge after it is solid
+  };
+  std::vector<Around> around;
+  Vec3 u{0, 0, 0}, v{0, 0, 0};
+  for (int t : four) {
+    const auto& tri = mesh.triangles[static_cast<size_t>(t)];
+    int c = tri[0];
+    for (int w : tri) c = (w != a && w != b) ? w : c;
+    Vec3 r = minus(mesh.vertices[static_cast<size_t>(c)], pa);
+    r = normalized(minus(r, scaled(e, dot(r, e))));
+    if (norm(u) == 0) {
+      u = r;
+      v = cross(e, u);
+    }
+    const Vec3& p0 = mesh.vertices[static_cast<size_t>(tri[0])];
+    const Vec3 n = cross(minus(mesh.vertices[static_cast<size_t>(tri[1])], p0), minus(mesh.vertices[static_cast<size_t>(tri[2])], p0));
+    around.push_back({dot(r, u), dot(r, v), t, dot(n, cross(e, r)) < 0});
+  }
+  // By angle about the edge, without trigonometry (the same order natively and in WebAssembly):
+  // the half turn from 0 first, then by the sign of the cross product.
+  const auto lowerHalf = [](const Around& p) { return p.y < 0 || (p.y == 0 && p.x < 0); };
+  std::sort(around.begin(), around.end(), [&](const Around& p, const Around& q) {
+    if (lowerHalf(p) != lowerHalf(q)) return !lowerHalf(p);
+    const double turn = p.x * q.y - p.y * q.x;
+    return turn != 0 ? turn > 0 : p.triangle < q.triangle;
+  });
+  std::map<std::pair<int, int>, int> partner;  // (edge key a, triangle) -> its partner
+  for (size_t i = 0; i < around.size(); ++i) {
+    const Around& next = around[(i + 1) % around.size()];
+    if (!around[i].turnsAway || next.turnsAway) continue;
+    partner[{a, around[i].triangle}] = next.triangle;
+    partner[{a, next.triangle}] = around[i].triangle;
+  }
+  return partner;
+}
+
+// Gives each pair of partners around an edge in four triangles (partnersAroundEdge) an edge of
+// its own: the edge split at its middle, one new vertex per pair there (two vertices at one
+// point), so that every edge is in two triangles; where the surface then pinches at a vertex,
+// splitPinchedVertices gives each sheet its own copy. One edge at a time, the edges found again
+// after each (a triangle may have two such edges).
+void splitEdgesInFourTriangles(TriangleMesh& mesh) {
+  for (size_t done = 0;; ++done) {
+    std::map<std::pair<int, int>, std::vector<int>> byEdge;
+    for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+      const auto& tri = mesh.triangles[t];
+      for (int k = 0; k < 3; ++k)
+        byEdge[{std::min(tri[k], tri[(k + 1) % 3]), std::max(tri[k], tri[(k + 1) % 3])}].push_back(static_cast<int>(t));
+    }
+    std::map<std::pair<int, int>, int> partner;
+    std::pair<int, int> edge{-1, -1};
+    for (const auto& [key, triangles] : byEdge) {
+      if (triangles.size() != 4) continue;
+      partner = partnersAroundEdge(mesh, key.first, key.second, triangles);
+      if (partner.size() == 4) {
+        edge = key;
+        break;
+      }
+    }
+    if (edge.first < 0 || done > mesh.triangles.size()) return;
+    const Vec3 middle = scaled(plus(mesh.vertices[static_cast<size_t>(edge.first)], mesh.vertices[static_cast<size_t>(edge.second)]), 0.5);
+    for (int t : byEdge[edge]) {
+      const int other = partner.at({edge.first, t});
+      if (other < t) continue;
+      const int m = static_cast<int>(mesh.vertices.size());
+      mesh.vertices.push_back(middle);
+      for (int half : {t, other}) {
+        std::array<int, 3>& tri = mesh.triangles[static_cast<size_t>(half)];
+        int k = 0;
+        const auto onEdge = [&](int v) { return v == edge.first || v == edge.second; };
+        while (k < 3 && !(onEdge(tri[k]) && onEdge(tri[(k + 1) % 3]))) ++k;
+        if (k == 3) return;  // not the edge's triangle: leave the mesh to the check
+        const int p = tri[k], q = tri[(k + 1) % 3], r = tri[(k + 2) % 3];
+        tri = {p, m, r};
+        mesh.triangles.push_back({m, q, r});
+      }
+    }
+  }
+}
+
 // The plate and its attached solids as closed shells of their own, in one mesh (they touch).
 TriangleMesh shellsMesh(const Plate& plate, double flat) {
   Plate body = plate;
@@ -383,10 +499,11 @@ TriangleMesh plateSolidMesh(const Plate& plate) {
   // Candidates in order of preference, each checked as built (every edge in two opposite
   // triangles, and the volume of the solids, which touch but never overlap): the union with the
   // triangulation that makes no flat triangle, the union with the plain one (where collinear
-  // holes leave it no ear: it may keep a flat triangle), and, where neither passes (a few mitre
-  // joints' wedges on slanted planes, where faces meet along an edge only or rounding leaves a
-  // sliver; see docs/export.md), the plate and its attached solids as the closed shells they are,
-  // touching, triangulated the same two ways. A plate without attached solids is its prism.
+  // holes leave it no ear: it may keep a flat triangle), each first from the solids' faces as
+  // they are and then from the 3D union's boundary (unionBoundaryPolygons: solids meeting on
+  // slanted planes, a mitre joint's wedges), and, where none passes (see docs/export.md), the
+  // plate and its attached solids as the closed shells they are, touching, triangulated the same
+  // two ways. A plate without attached solids is its prism.
   constexpr double flat = tolerance::kFlatCornerTwiceAreaMm2;
   const double expected = sixVolume(shellsMesh(plate, 0));
   const auto passes = [&](const TriangleMesh& mesh) {
@@ -396,11 +513,16 @@ TriangleMesh plateSolidMesh(const Plate& plate) {
   TriangleMesh mesh;
   bool found = false;
   if (!plate.attached.empty()) {
-    for (double corner : {flat, 0.0}) {
-      mesh = unionMesh(plate, corner);
-      if (passes(mesh)) {
-        found = true;
-        break;
+    // The faces per plane first (exact where the solids meet on common planes: the bytes of every
+    // plate that passed before the 3D union came), then the 3D union's.
+    for (int method = 0; method < 2 && !found; ++method) {
+      const std::vector<geometry::SolidFace> faces = method == 0 ? touchingFaces(plate) : booleanFaces(plate);
+      for (double corner : {flat, 0.0}) {
+        mesh = unionMesh(faces, corner, method == 1);
+        if (passes(mesh)) {
+          found = true;
+          break;
+        }
       }
     }
   }
@@ -415,6 +537,30 @@ TriangleMesh plateSolidMesh(const Plate& plate) {
   if (flipped.triangles != mesh.triangles && passes(flipped)) mesh = std::move(flipped);
   splitPinchedVertices(mesh);
   return mesh;
+}
+
+std::optional<TriangleMesh> solidBooleanMesh(const std::vector<TriangleMesh>& solids,
+                                             const std::vector<TriangleMesh>& removed) {
+  std::vector<geometry::SolidFace> faces;
+  double expected = 0;  // six times the volume the polygons bound
+  for (BoundaryPolygon& polygon : booleanBoundaryPolygons(solids, removed)) {
+    const Loop& points = polygon.points;
+    for (size_t k = 1; k + 1 < points.size(); ++k) expected += dot(points[0], cross(points[k], points[k + 1]));
+    faces.push_back({{std::move(polygon.points)}, polygon.normal});
+  }
+  for (double corner : {tolerance::kFlatCornerTwiceAreaMm2, 0.0}) {
+    TriangleMesh mesh = unionMesh(faces, corner, true);
+    splitEdgesInFourTriangles(mesh);
+    if (!everyEdgeInTwoOppositeTriangles(mesh) ||
+        std::abs(sixVolume(mesh) - expected) > tolerance::kUnionVolumeShare * std::abs(expected))
+      continue;
+    TriangleMesh flipped = mesh;
+    flipZeroAreaTriangles(flipped);
+    if (everyEdgeInTwoOppositeTriangles(flipped)) mesh = std::move(flipped);
+    splitPinchedVertices(mesh);
+    return mesh;
+  }
+  return std::nullopt;
 }
 
 }  // namespace desia

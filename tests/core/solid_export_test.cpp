@@ -176,14 +176,6 @@ TEST(SolidExport, EveryPlateWithMilledJointsIsOneSolid) {
       }
       withAttached += plate.attached.empty() ? 0 : 1;
       const std::string what = file + " plate " + std::to_string(plate.id);
-      if (file.find("slanted_box") != std::string::npos || file.find("icosahedron") != std::string::npos) {
-        // Step tenons (issue 26): still written as touching shells, each closed, of the plate's
-        // volume together (tests/node/solid_exports.test.mjs lists these designs; docs/export.md).
-        const TriangleMesh mesh = plateSolidMesh(plate);
-        EXPECT_EQ(testing::manifoldProblem(mesh), "") << what;
-        EXPECT_NEAR(testing::enclosedVolume(mesh), volume, 1e-9 * volume) << what;
-        continue;
-      }
       expectSolid(plateSolidMesh(plate), volume, holes, what);
     }
   }

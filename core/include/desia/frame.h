@@ -127,8 +127,11 @@ std::string frameSweepObstacle(const FrameLayout& layout, const std::vector<Join
 // The closed mesh (in the frame's units) of one beam: when its body boxes are axis-aligned (every
 // frame on a grid), the exact union of its body boxes and its joint voxels, one solid whose every
 // edge is in exactly two triangles (surfaceOfBoxUnion); a beam with slanted boxes (a curved path)
-// is still one closed shell per body box and voxel group, overlapping where they meet.
+// is one closed shell per body box and voxel group, overlapping where they meet (the exports
+// union them in 3D: solidBooleanMesh in desia/plate.h, core/io/frame/frame_export.cpp).
 TriangleMesh beamPartMesh(const FrameLayout& layout, const std::vector<JointLabels>& labels, int beam);
+// An oriented box as a closed mesh of 12 triangles, wound outward.
+TriangleMesh orientedBoxMesh(const OrientedBox& box);
 // The body of a beam as a maker cuts it (pieces-obj): for axis-aligned bodies the body boxes cut
 // back to the faces of the beam's joint cubes (a straight beam: the stick of beamBodyLength), one
 // solid that shares no volume with the joint pieces; a curved beam's slanted boxes as they are.

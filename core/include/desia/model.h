@@ -90,6 +90,30 @@ void splitPinchedVertices(TriangleMesh& mesh);
 // made. Returns the number of such triangles left.
 int flipZeroAreaTriangles(TriangleMesh& mesh);
 
+// One planar convex polygon of a solid's boundary: its points in order (counter-clockwise seen
+// from outside), its outward unit normal and the solid it comes from.
+struct BoundaryPolygon {
+  std::vector<Vec3> points;
+  Vec3 normal;
+  int solid = 0;
+};
+
+// The boundary of the union of closed solids (each a closed mesh wound outward), as polygons:
+// each solid's triangles less their parts inside another solid (core/model/solid_boolean.cpp: a
+// BSP tree per solid; points within tolerance::kMeshWeldMm of a plane are on it). Where faces
+// of two solids lie on one plane, those facing the same way are kept once (the earlier solid's)
+// and those facing each other (solids touching) dropped. Polygons are split where another
+// solid's plane crosses them, so they meet in T-junctions: the caller merges the polygons of each
+// plane and triangulates them (solidBooleanMesh in desia/plate.h).
+std::vector<BoundaryPolygon> unionBoundaryPolygons(const std::vector<TriangleMesh>& solids);
+
+// The same for the union of `solids` less the union of `removed` (closed meshes too): the solids'
+// faces outside every removed solid (a face on a removed solid's face facing the same way is cut
+// away, one facing it kept), and the removed solids' faces strictly inside a solid, turned to face
+// out of what is left (`solid` counts on past the solids).
+std::vector<BoundaryPolygon> booleanBoundaryPolygons(const std::vector<TriangleMesh>& solids,
+                                                     const std::vector<TriangleMesh>& removed);
+
 // Throws BadInput unless the mesh has vertices and triangles, finite coordinates, indices in
 // range, no triangle repeating a vertex, and every undirected edge in an even number of triangles
 // (two, or four where solids touch along an edge; the first offending edge in vertex order is

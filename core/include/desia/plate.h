@@ -59,9 +59,18 @@ TriangleMesh plateMesh(const Plate& plate);
 // faces where they touch gone, coplanar faces merged), every edge in exactly two triangles in
 // opposite directions, no T-junction, no zero-area triangle, no pinched vertex. Checked as it is
 // built (edges and volume); where the check fails, the union triangulated plainly (rows of
-// collinear mortises: it may keep zero-area triangles), else the touching shells of plateMesh (a
-// few mitre joints' wedges). docs/export.md lists what is left.
+// collinear mortises: it may keep zero-area triangles), then both from the 3D union's boundary
+// (unionBoundaryPolygons: solids meeting on slanted planes), else the touching shells of
+// plateMesh (no example or golden-corpus plate; docs/export.md).
 TriangleMesh plateSolidMesh(const Plate& plate);
+
+// The union of closed solids less the union of `removed` (booleanBoundaryPolygons) as one closed
+// mesh, by the plates' merge of coplanar faces (Clipper per plane, no T-junction): every edge in
+// two opposite triangles and the volume of the boundary's polygons, checked; nullopt where the
+// check fails. For exports of solids that overlap (a curved frame beam's body boxes and joint
+// voxels).
+std::optional<TriangleMesh> solidBooleanMesh(const std::vector<TriangleMesh>& solids,
+                                             const std::vector<TriangleMesh>& removed = {});
 
 struct PlateOptions {
   // Two faces closer than this (mm) lie on one another; also the planarity tolerance of a face.

@@ -4,9 +4,13 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 
 #include "desia/error.h"
 #include "desia/formats.h"
+#include "desia/frame.h"
+#include "desia/plate.h"
+#include "desia/tolerances.h"
 #include "io/export_internals.h"
 
 namespace desia {
@@ -39,10 +43,67 @@ TriangleMesh cubesMesh(const FrameLayout& layout) {
   return mesh;
 }
 
-TriangleMesh bodyMesh(const FrameLayout& layout, int beam) {
+// Does the beam's body have a box at a slant (a curved beam's path)? Axis-aligned bodies are
+// exact unions of boxes already (beamPartMesh).
+bool slantedBody(const FrameLayout& layout, int beam) {
+  for (const OrientedBox& box : beamBodyBoxes(layout, beam)) {
+    for (const Vec3& axis : box.axes) {
+      int along = 0;
+      for (double c : axis) {
+        if (std::abs(std::abs(c) - 1) < tolerance::kDirection) ++along;
+        else if (std::abs(c) >= tolerance::kDirection) return true;
+      }
+      if (along != 1) return true;
+    }
+  }
+  return false;
+}
+
+std::vector<TriangleMesh> bodyBoxMeshes(const FrameLayout& layout, int beam) {
+  std::vector<TriangleMesh> meshes;
+  for (const OrientedBox& box : beamBodyBoxes(layout, beam)) meshes.push_back(orientedBoxMesh(box));
+  return meshes;
+}
+
+// A curved beam's body as a maker cuts it: the union of its body boxes less its joint cubes (3D
+// union, solidBooleanMesh), so that it shares no volume with the joint pieces; where that union
+// fails its check, the boxes as they are (beamBodyPieceMesh).
+TriangleMesh curvedBodyPiece(const FrameLayout& layout, int beam) {
+  std::vector<TriangleMesh> cubes;
+  for (int joint : layout.frame.beams[beam].joints) {
+    OrientedBox cube;
+    cube.centre = layout.frame.joints[joint].position;
+    cube.halfExtents = {layout.frame.jointSize / 2, layout.frame.jointSize / 2, layout.frame.jointSize / 2};
+    cubes.push_back(orientedBoxMesh(cube));
+  }
+  std::optional<TriangleMesh> body = solidBooleanMesh(bodyBoxMeshes(layout, beam), cubes);
+  return body ? std::move(*body) : beamBodyPieceMesh(layout, beam);
+}
+
+TriangleMesh bodyPieceMesh(const FrameLayout& layout, int beam) {
+  return slantedBody(layout, beam) ? curvedBodyPiece(layout, beam) : beamBodyPieceMesh(layout, beam);
+}
+
+// A beam as one solid: a curved beam's body piece and joint pieces unioned in 3D (the body boxes
+// alone for a frame without joints yet); an axis-aligned one as beamPartMesh makes it. Where the
+// 3D union fails its check, beamPartMesh's closed shells.
+TriangleMesh partMesh(const FrameLayout& layout, const std::vector<JointLabels>& labels, int beam) {
   std::vector<JointLabels> none(layout.frame.joints.size());
-  for (JointLabels& labels : none) labels.fill(-1);
-  return beamPartMesh(layout, none, beam);
+  for (JointLabels& unowned : none) unowned.fill(-1);
+  const std::vector<JointLabels>& owned = labels.empty() ? none : labels;
+  if (!slantedBody(layout, beam)) return beamPartMesh(layout, owned, beam);
+  std::vector<TriangleMesh> pieces;
+  if (labels.empty()) {
+    pieces = bodyBoxMeshes(layout, beam);
+  } else {
+    pieces.push_back(curvedBodyPiece(layout, beam));
+    for (int joint : layout.frame.beams[beam].joints) {
+      TriangleMesh piece = beamJointPieceMesh(layout, labels, beam, joint);
+      if (!piece.triangles.empty()) pieces.push_back(std::move(piece));
+    }
+  }
+  std::optional<TriangleMesh> solid = solidBooleanMesh(pieces);
+  return solid ? std::move(*solid) : beamPartMesh(layout, owned, beam);
 }
 
 std::vector<NamedMesh> partMeshes(const FrameDocument& document, int part, const std::string& source) {
@@ -51,8 +112,7 @@ std::vector<NamedMesh> partMeshes(const FrameDocument& document, int part, const
   for (int beam : document.order) {
     const int id = layout.frame.beams[beam].id;
     if (part != 0 && part != id) continue;
-    meshes.push_back(
-        {id, document.labels.empty() ? bodyMesh(layout, beam) : beamPartMesh(layout, document.labels, beam)});
+    meshes.push_back({id, partMesh(layout, document.labels, beam)});
   }
   if (meshes.empty())
     throwBadInput(source, "part " + std::to_string(part) + " is not a beam of this frame (0 = all parts)");
@@ -69,7 +129,7 @@ std::vector<NamedMesh> pieceMeshes(const FrameDocument& document, const std::str
   for (int beam : document.order) {
     const int id = layout.frame.beams[beam].id;
     // The stick cut to length: it ends where the joint pieces begin (beamBodyPieceMesh).
-    meshes.push_back({id, beamBodyPieceMesh(layout, beam), "beam" + std::to_string(id)});
+    meshes.push_back({id, bodyPieceMesh(layout, beam), "beam" + std::to_string(id)});
     for (int joint : layout.frame.beams[beam].joints) {
       TriangleMesh piece = beamJointPieceMesh(layout, document.labels, beam, joint);
       if (piece.triangles.empty()) continue;
