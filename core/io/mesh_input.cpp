@@ -222,9 +222,14 @@ std::string meshCheckReportToJson(const MeshAssembly& meshes, const CheckReport&
     }
     auto& steps = root[section]["steps"];
     for (size_t k = 0; k < steps.size() && k < report.disassembly->moves.size(); ++k) {
-      const Vec3& d = report.disassembly->moves[k].direction;
+      const GroupMove& move = report.disassembly->moves[k];
+      const Vec3& d = move.direction;
       steps[k]["dir"] = directionLabel(d);
       steps[k]["vector"] = {d[0], d[1], d[2]};
+      // A finite move's length in mm, and the move itself in mm (the voxel kind's are whole cells).
+      const double length = move.out ? 1.0 : move.length;
+      steps[k]["move"] = {d[0] * length, d[1] * length, d[2] * length};
+      if (!move.out) steps[k]["length"] = move.length;
     }
   }
   return root.dump(indent);

@@ -41,11 +41,13 @@ MeshAssembly buildMeshAssembly(std::vector<MeshPart> parts, const MeshAssemblyOp
 
 CheckReport checkMeshAssembly(const MeshAssembly& meshes, const CheckOptions& options) {
   const std::vector<mesh::PartGeometry>& geometry = mesh::geometryOf(meshes);
+  std::string latticeNote;
   CheckReport report = checkContacts(meshes.assembly, options,
-                                     [&](const Assembly&) { return mesh::planWithGeometry(meshes, geometry); });
+                                     [&](const Assembly&) { return mesh::planWithGeometry(meshes, geometry, &latticeNote); });
   ShapeRemovalCheck check;
   check.checked = "contacts from the meshes' planar faces (tolerance " + std::to_string(meshes.tolerance) +
                   " mm); each step of the plan swept past the parts in place, triangle against triangle";
+  if (!latticeNote.empty()) check.checked += "; " + latticeNote;
   if (report.disassembly && !report.disassembly->complete) {
     check.failure = report.disassembly->searchLimitReached
                         ? "the plan stopped at its limit (" + report.disassembly->limit + "): the parts left are not proven stuck"

@@ -157,6 +157,9 @@ double travelDistance(const MeshAssembly& meshes, const std::vector<PartGeometry
 std::string sweepObstacle(const MeshAssembly& meshes, const std::vector<PartGeometry>& geometry,
                           const std::vector<int>& moving, const std::vector<bool>& present, const Vec3& d);
 
-DisassemblyPlan planWithGeometry(const MeshAssembly& meshes, const std::vector<PartGeometry>& geometry);
+// The plan of mesh_disassembly.cpp; where it gets stuck and the parts lie on a lattice, the complete
+// voxel disassembler's (planOnLattice). *note (if given) says what the lattice gave, else "".
+DisassemblyPlan planWithGeometry(const MeshAssembly& meshes, const std::vector<PartGeometry>& geometry,
+                                 std::string* note = nullptr);
 
 }  // namespace desia::mesh
