@@ -32,7 +32,8 @@ MeshAssembly buildMeshAssembly(std::vector<MeshPart> parts, const MeshAssemblyOp
   for (MeshPart& part : parts) mesh::requireClosedOrientedPart(part, emptyArea * meshes.tolerance);
   auto geometry = std::make_shared<const std::vector<mesh::PartGeometry>>(mesh::partGeometries(parts));
   mesh::requireNoOverlaps(parts, *geometry, meshes.tolerance);
-  meshes.assembly.contacts = mesh::meshContacts(parts, *geometry, meshes.tolerance, emptyArea, &meshes.faceCount);
+  meshes.assembly.contacts = mesh::meshContacts(parts, *geometry, meshes.tolerance, emptyArea, &meshes.faceCount,
+                                                 &meshes.curvedContacts);
   meshes.geometry = std::move(geometry);
   for (const MeshPart& part : parts) meshes.assembly.parts.push_back({part.id, part.name});
   meshes.parts = std::move(parts);

@@ -132,9 +132,10 @@ void requireNoOverlaps(const std::vector<MeshPart>& parts, const std::vector<Par
 
 // Contacts between parts: planar faces (coplanar, edge-connected triangles) of two parts lying on
 // each other with opposite normals, overlapping by more than `emptyArea` mm² (Clipper in the
-// face's plane). Sets *faceCount to the number of planar faces.
+// face's plane). Sets *faceCount to the number of planar faces and *curved to the curved contact
+// regions (facets of two parts in contact, joined at slight angles).
 std::vector<Contact> meshContacts(const std::vector<MeshPart>& parts, const std::vector<PartGeometry>& geometry,
-                                  double tolerance, double emptyArea, int* faceCount);
+                                  double tolerance, double emptyArea, int* faceCount, std::vector<CurvedContact>* curved);
 
 // "(x, y, z)" for messages.
 std::string pointText(const Vec3& p);

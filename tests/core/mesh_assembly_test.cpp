@@ -197,6 +197,71 @@ TEST(MeshAssembly, GroupsMoveTogetherWhereNoSinglePartCan) {
   EXPECT_NE(json.find(R"("kind":"mesh")"), std::string::npos);
 }
 
+// --- Curved contacts -------------------------------------------------------------------------------
+
+// A tube (outer radius 10, hole of radius 5, 10 high) and a pin through its hole (radius 5, from -5
+// to 15), both prisms of `sides` sides: the pin's sides lie on the hole's.
+std::string pinInHoleObj(int sides) {
+  std::ostringstream out;
+  const auto ring = [&](double radius, double z) {
+    for (int k = 0; k < sides; ++k) {
+      const double angle = 2 * M_PI * k / sides;
+      out << "v " << radius * std::cos(angle) << ' ' << radius * std::sin(angle) << ' ' << z << "\n";
+    }
+  };
+  // Tube: outer bottom 1.., outer top, inner bottom, inner top (1-based OBJ indices).
+  out << "o tube\n";
+  ring(10, 0), ring(10, 10), ring(5, 0), ring(5, 10);
+  const auto at = [&](int ringIndex, int k) { return ringIndex * sides + (k % sides) + 1; };
+  for (int k = 0; k < sides; ++k) {
+    out << "f " << at(0, k) << ' ' << at(0, k + 1) << ' ' << at(1, k + 1) << ' ' << at(1, k) << "\n";  // outer wall
+    out << "f " << at(2, k) << ' ' << at(3, k) << ' ' << at(3, k + 1) << ' ' << at(2, k + 1) << "\n";  // the hole
+    out << "f " << at(3, k) << ' ' << at(1, k) << ' ' << at(1, k + 1) << ' ' << at(3, k + 1) << "\n";  // top
+    out << "f " << at(2, k) << ' ' << at(2, k + 1) << ' ' << at(0, k + 1) << ' ' << at(0, k) << "\n";  // bottom
+  }
+  out << "o pin\n";
+  ring(5, -5), ring(5, 15);
+  for (int k = 0; k < sides; ++k) {
+    out << "f " << at(4, k) << ' ' << at(4, k + 1) << ' ' << at(5, k + 1) << ' ' << at(5, k) << "\n";
+  }
+  for (int k = 1; k + 1 < sides; ++k) {
+    out << "f " << at(5, 0) << ' ' << at(5, k) << ' ' << at(5, k + 1) << "\n";
+    out << "f " << at(4, 0) << ' ' << at(4, k + 1) << ' ' << at(4, k) << "\n";
+  }
+  return out.str();
+}
+
+// A round pin in a round hole touches along 24 facets: one curved contact region, noted in the text
+// and the JSON; a square pin in a square hole has corners, no curved region; nor has a voxel puzzle.
+TEST(MeshAssembly, ACurvedContactIsNotedAsApproximatedByItsFacets) {
+  const MeshAssembly round = meshesOf({{"pin.obj", pinInHoleObj(24)}});
+  ASSERT_EQ(round.parts.size(), 2u);
+  EXPECT_EQ(round.assembly.contacts.size(), 24u);
+  ASSERT_EQ(round.curvedContacts.size(), 1u);
+  EXPECT_EQ(round.curvedContacts[0].a, 0);
+  EXPECT_EQ(round.curvedContacts[0].b, 1);
+  EXPECT_EQ(round.curvedContacts[0].facets, 24);
+  const double side = 2 * 5 * std::sin(M_PI / 24);
+  EXPECT_NEAR(round.curvedContacts[0].area, 24 * side * 10, 1e-3);  // the OBJ has 6 digits
+  const CheckReport report = checkMeshAssembly(round, bothTests());
+  EXPECT_EQ(report.result.verdict, Verdict::NotInterlocking);  // the pin slides out along its axis
+  ASSERT_TRUE(report.disassembly);
+  EXPECT_TRUE(report.disassembly->complete);
+  EXPECT_NE(meshCheckReportToText(round, report)
+                .find("curved contacts, approximated by their planar facets: parts 1 and 2 (24 facets, "),
+            std::string::npos);
+  const std::string json = meshCheckReportToJson(round, report, -1);
+  EXPECT_NE(json.find(R"("curvedContacts":[{"area":)"), std::string::npos) << json;
+  EXPECT_NE(json.find(R"("facets":24,"parts":[1,2]})"), std::string::npos) << json;
+  const MeshAssembly square = meshesOf({{"square.obj", pinInHoleObj(4)}});
+  EXPECT_EQ(square.assembly.contacts.size(), 4u);
+  EXPECT_TRUE(square.curvedContacts.empty());
+  const std::string squareText = meshCheckReportToText(square, checkMeshAssembly(square));
+  EXPECT_EQ(squareText.find("curved"), std::string::npos);
+  const MeshAssembly k9 = meshesOf({{"k9.obj", exported(readDocument("examples/voxel/Cube_4x4x4_K9.puz"), "obj")}});
+  EXPECT_TRUE(k9.curvedContacts.empty());
+}
+
 // --- Bad input -------------------------------------------------------------------------------------
 
 std::string cubeObj(const std::string& name, double x, double y, double z, double size, int firstVertex = 1,
