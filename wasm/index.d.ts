@@ -90,6 +90,10 @@ export interface DisassemblyStep {
   move: [number, number, number];
   /** A separation: the parts go out to infinity along `move`. */
   out: boolean;
+  /** Mesh plans: a finite move's length in mm (`move` is then in mm), its direction label and unit vector. */
+  length?: number;
+  dir?: string;
+  vector?: [number, number, number];
 }
 
 /**
@@ -199,7 +203,11 @@ export interface CheckReport extends Verdict {
    * diagonal (mm), the planar faces, contacts and triangles found, and the parts' names (OBJ
    * objects or groups, STL solids or files) in the order of partIds.
    */
-  mesh?: { tolerance: number; diagonal: number; planarFaces: number; contacts: number; triangles: number; partNames: string[] };
+  mesh?: {
+    tolerance: number; diagonal: number; planarFaces: number; contacts: number; triangles: number; partNames: string[];
+    /** Curved contact regions (a pin in a hole), approximated by their planar facets (docs/meshes.md). */
+    curvedContacts: { parts: [number, number]; facets: number; area: number }[];
+  };
 }
 
 /**

@@ -819,6 +819,14 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy, showL
   refreshControls();
   explainAll();
 
+  // Shown while a mesh assembly is on screen (setMeshAssembly), above the input line.
+  const meshNote = document.createElement('p');
+  meshNote.id = 'design-mesh-note';
+  meshNote.className = 'design-input design-mesh-note';
+  meshNote.setAttribute('role', 'note');
+  meshNote.hidden = true;
+  ui.input.before(meshNote);
+
   return {
     get busy() {
       return busy;
@@ -889,6 +897,18 @@ export function createDesignPanel({ core, getShape, showAssembly, setBusy, showL
       if (!keepParts) partsTouched = false;
       for (const key of Object.keys(FIELDS)) markInvalid(key, false);
       explainAll();
+    },
+    /**
+     * A mesh assembly is on screen (`name`), or none (null): it is checked, not designed, so the
+     * panel says so in plain words; Design still works from its input (the last one loaded).
+     */
+    setMeshAssembly(name) {
+      meshNote.hidden = !name;
+      meshNote.dataset.name = name ?? '';
+      meshNote.textContent = !name ? ''
+        : `${name} is a mesh assembly: desia checks it (verdict, key, disassembly) but does not design from it. `
+          + (ui.input.hidden ? 'To design, load a voxel shape, a plate design or a frame (an example, a file, or one mesh to voxelize).'
+            : 'Design below still works from the input it names.');
     },
     /** What Design designs from (`input` = { name }, or null), described as 'name · 64 voxels'. */
     setInput(input, description) {

@@ -151,9 +151,13 @@ export function createExportPanel({ core }) {
   }
 
   const MILLED_REASON = 'SVG and DXF cut sheets are greyed out: milled joints (sliding dovetails) are no 2D cuts; export STL or OBJ for the CNC.';
+  // A mesh assembly (web/mesh-assembly.js) is shown from its own files: no document to convert.
+  const MESH_REASON = 'Nothing to export for a mesh assembly: its own OBJ, STL or 3MF files are already the parts as meshes, '
+    + 'and desia checks them without making a document of them (the formats here are for voxel puzzles, plates and frames).';
 
   function refresh() {
     const milled = Boolean(assembly?.milled);
+    const mesh = assembly?.kind === 'mesh';
     const refused = assembly?.refused ?? {};
     for (const option of ui.format.options) {
       const known = formatOf(option.value);
@@ -166,10 +170,10 @@ export function createExportPanel({ core }) {
         option.title = '';
         continue;
       }
-      option.disabled = assembly !== null && ((known.kinds !== null && !known.kinds.includes(assembly.kind)) || (known.cut === true && milled) || option.value in refused);
+      option.disabled = assembly !== null && (mesh || (known.kinds !== null && !known.kinds.includes(assembly.kind)) || (known.cut === true && milled) || option.value in refused);
       option.title = known.cut && milled ? MILLED_REASON : (refused[option.value] ?? '');
     }
-    if (assembly && ui.format.selectedOptions[0]?.disabled) ui.format.value = assembly.kind === 'plate' ? (milled ? 'stl' : 'svg') : 'json';
+    if (assembly && !mesh && ui.format.selectedOptions[0]?.disabled) ui.format.value = assembly.kind === 'plate' ? (milled ? 'stl' : 'svg') : 'json';
     const format = formatOf(ui.format.value);
     ui.part.disabled = !assembly || !format?.perPart;
     ui.part.hidden = Boolean(format?.cut);
@@ -178,6 +182,7 @@ export function createExportPanel({ core }) {
     // Greyed formats, in words: a tooltip never shows on a touch screen.
     const reasons = [];
     if (assembly?.kind === 'plate' && milled) reasons.push(MILLED_REASON);
+    if (mesh) reasons.push(MESH_REASON);
     for (const [name, reason] of Object.entries(refused)) reasons.push(`${name === 'csv' ? 'CSV' : `.${name}`} is greyed out: ${reason}`);
     ui.unavailable.textContent = reasons.join(' ');
     ui.unavailable.hidden = reasons.length === 0;
@@ -222,7 +227,7 @@ export function createExportPanel({ core }) {
         + 'the bare plates (plain outlines on the cut sheets). Design with Joints auto, cut or milled for plates with their joints.';
     }
     if (kind === 'voxel' && parts <= 1) return ''; // a shape to design from: one part, nothing to hold
-    if (kind === 'contacts') return '';
+    if (kind === 'contacts' || kind === 'mesh') return '';  // nothing is exported from a mesh assembly
     if (unjointed) {
       return `Not jointed, not verified: ${name} has no joints, so these files are its bare ${noun}s `
         + `(${kind === 'plate' ? 'plain outlines on the cut sheets' : 'beams without joint voxels'}); nothing holds them together. `

@@ -233,7 +233,9 @@ let lastUserFile = null; // The user's last file, so its select entry can load i
 function setCurrent(assembly, report = null, document_ = null) {
   exportPanel.setAssembly(assembly, report, document_);
   current = assembly ? { ...assembly, kind: report?.kind ?? null } : null;
-  if (current) designPanel.setKind(current.kind);
+  // A mesh assembly is checked, not designed: the panel keeps its input's kind and says so.
+  if (current && current.kind !== 'mesh') designPanel.setKind(current.kind);
+  designPanel.setMeshAssembly(current?.kind === 'mesh' ? current.name : null);
   ui.downloadButton.disabled = !current?.text; // a mesh assembly has files, not a text
   ui.downloadButton.textContent = `Download .${/\.(json|fpuz)$/i.exec(current?.name ?? '')?.[1]?.toLowerCase() ?? 'puz'}`;
 }

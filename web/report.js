@@ -168,7 +168,8 @@ export function renderReport(report, elapsedMs, timingLabel = 'Check time', { vo
   } else {
     ui.verdict.textContent = verdict === 'interlocking' && hasKey ? `${title}, key: ${noun} ${report.key}` : title;
     ui.verdict.dataset.verdict = verdict;
-    ui.reason.textContent = [report.reason, formatMethods(report.methods), formatShapeRemoval(report.shapeRemoval)]
+    ui.reason.textContent = [report.reason, formatMethods(report.methods), formatShapeRemoval(report.shapeRemoval),
+      formatCurvedContacts(report.mesh?.curvedContacts)]
       .filter(Boolean).join('. ');
   }
   ui.verdict.dataset.key = hasKey ? String(report.key) : '';
@@ -220,6 +221,13 @@ function formatShapeRemoval(shapeRemoval) {
   if (!shapeRemoval) return '';
   return shapeRemoval.clear ? 'Removal plan replayed on the real shapes: every part leaves'
     : `Removal plan FAILS on the real shapes: ${shapeRemoval.failure}`;
+}
+
+/** A mesh assembly's curved contact regions (a pin in a hole): the core approximates them by their facets. */
+function formatCurvedContacts(regions) {
+  if (!Array.isArray(regions) || regions.length === 0) return '';
+  const listed = regions.map(({ parts, facets }) => `parts ${parts.join(' and ')} (${facets} facets)`).join('; ');
+  return `Curved contacts, approximated by their planar facets: ${listed}`;
 }
 
 /**

@@ -82,7 +82,9 @@ export function removalMotions(report, scale = { step: 1, runOut: RUN_OUT_VOXELS
     const path = disassembly.paths?.[index] ?? [];
     const waypoints = [new THREE.Vector3()];
     for (const move of path) {
-      const step = directionVector(move.dir, report.baseDirections, move.vector).multiplyScalar((Number(move.steps) || 0) * scale.step);
+      // A mesh plan's finite move gives its `length` in mm, the unit its surfaces are drawn in.
+      const distance = Number(move.length) > 0 ? Number(move.length) : (Number(move.steps) || 0) * scale.step;
+      const step = directionVector(move.dir, report.baseDirections, move.vector).multiplyScalar(distance);
       waypoints.push(waypoints[waypoints.length - 1].clone().add(step));
     }
     const pathEnd = waypoints[waypoints.length - 1].clone();
@@ -184,7 +186,8 @@ export function stepMotions(steps, boxes, scale) {
     before.push(offsets);
     const parts = (Array.isArray(step?.parts) ? step.parts : []).filter((id) => boxes.has(id));
     const move = new THREE.Vector3(...(Array.isArray(step?.move) ? step.move : [0, 0, 0]).map((value) => Number(value) || 0));
-    let delta = move.clone().multiplyScalar(scale.step);
+    // A mesh plan's finite move is in mm already (its `length`), the unit its surfaces are drawn in.
+    let delta = Number(step?.length) > 0 ? move.clone() : move.clone().multiplyScalar(scale.step);
     if (step?.out && parts.length > 0 && move.lengthSq() > 0) {
       const unit = move.clone().normalize();
       const group = new Set(parts);

@@ -164,7 +164,8 @@ void writeMoves(const Assembly& assembly, const std::vector<GroupMove>& moves, s
   for (size_t m = 0; m < moves.size(); ++m) {
     const GroupMove& move = moves[m];
     out << "\n  move " << m + 1 << ": part" << (move.parts.size() > 1 ? "s " : " ") << idsText(assembly, move.parts, ", ")
-        << "  " << directionLabel(move.direction) << ' ' << (move.out ? std::string("out") : std::to_string(move.steps));
+        << "  " << directionLabel(move.direction) << ' '
+        << (move.out ? std::string("out") : move.length > 0 ? lengthText(move.length) + " mm" : std::to_string(move.steps));
   }
 }
 

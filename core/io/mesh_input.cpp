@@ -216,15 +216,28 @@ std::string meshCheckReportToJson(const MeshAssembly& meshes, const CheckReport&
   nlohmann::json names = nlohmann::json::array();
   for (const MeshPart& part : meshes.parts) names.push_back(validUtf8(part.name));
   root["mesh"]["partNames"] = names;
+  // Curved contact regions, approximated by their planar facets (docs/meshes.md).
+  nlohmann::json curved = nlohmann::json::array();
+  for (const CurvedContact& region : meshes.curvedContacts) {
+    curved.push_back({{"parts", {meshes.parts[static_cast<size_t>(region.a)].id, meshes.parts[static_cast<size_t>(region.b)].id}},
+                      {"facets", region.facets},
+                      {"area", region.area}});
+  }
+  root["mesh"]["curvedContacts"] = curved;
   for (const char* section : {"disassembly", "disassemblyFailure"}) {
     if (!report.disassembly || !root.contains(section) || !root[section].is_object() || !root[section].contains("steps")) {
       continue;
     }
     auto& steps = root[section]["steps"];
     for (size_t k = 0; k < steps.size() && k < report.disassembly->moves.size(); ++k) {
-      const Vec3& d = report.disassembly->moves[k].direction;
+      const GroupMove& move = report.disassembly->moves[k];
+      const Vec3& d = move.direction;
       steps[k]["dir"] = directionLabel(d);
       steps[k]["vector"] = {d[0], d[1], d[2]};
+      // A finite move's length in mm, and the move itself in mm (the voxel kind's are whole cells).
+      const double length = move.out ? 1.0 : move.length;
+      steps[k]["move"] = {d[0] * length, d[1] * length, d[2] * length};
+      if (!move.out) steps[k]["length"] = move.length;
     }
   }
   return root.dump(indent);
@@ -236,6 +249,15 @@ std::string meshCheckReportToText(const MeshAssembly& meshes, const CheckReport&
   std::ostringstream out;
   out << "meshes: " << meshes.parts.size() << " parts, " << triangles << " triangles, " << meshes.faceCount
       << " planar faces, " << meshes.assembly.contacts.size() << " contacts (tolerance " << meshes.tolerance << " mm)\n";
+  if (!meshes.curvedContacts.empty()) {
+    out << "curved contacts, approximated by their planar facets:";
+    for (const CurvedContact& region : meshes.curvedContacts) {
+      out << (&region == &meshes.curvedContacts.front() ? " " : "; ") << "parts "
+          << meshes.parts[static_cast<size_t>(region.a)].id << " and " << meshes.parts[static_cast<size_t>(region.b)].id
+          << " (" << region.facets << " facets, " << region.area << " mm²)";
+    }
+    out << "\n";
+  }
   std::string text = checkReportToText(meshReportDocument(meshes), report);
   const std::string contactsKind = " (contacts)\n";  // the first line names the parts' kind
   const size_t kind = text.find(contactsKind);

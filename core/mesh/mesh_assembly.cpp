@@ -32,7 +32,8 @@ MeshAssembly buildMeshAssembly(std::vector<MeshPart> parts, const MeshAssemblyOp
   for (MeshPart& part : parts) mesh::requireClosedOrientedPart(part, emptyArea * meshes.tolerance);
   auto geometry = std::make_shared<const std::vector<mesh::PartGeometry>>(mesh::partGeometries(parts));
   mesh::requireNoOverlaps(parts, *geometry, meshes.tolerance);
-  meshes.assembly.contacts = mesh::meshContacts(parts, *geometry, meshes.tolerance, emptyArea, &meshes.faceCount);
+  meshes.assembly.contacts = mesh::meshContacts(parts, *geometry, meshes.tolerance, emptyArea, &meshes.faceCount,
+                                                 &meshes.curvedContacts);
   meshes.geometry = std::move(geometry);
   for (const MeshPart& part : parts) meshes.assembly.parts.push_back({part.id, part.name});
   meshes.parts = std::move(parts);
@@ -41,11 +42,13 @@ MeshAssembly buildMeshAssembly(std::vector<MeshPart> parts, const MeshAssemblyOp
 
 CheckReport checkMeshAssembly(const MeshAssembly& meshes, const CheckOptions& options) {
   const std::vector<mesh::PartGeometry>& geometry = mesh::geometryOf(meshes);
+  std::string latticeNote;
   CheckReport report = checkContacts(meshes.assembly, options,
-                                     [&](const Assembly&) { return mesh::planWithGeometry(meshes, geometry); });
+                                     [&](const Assembly&) { return mesh::planWithGeometry(meshes, geometry, &latticeNote); });
   ShapeRemovalCheck check;
   check.checked = "contacts from the meshes' planar faces (tolerance " + std::to_string(meshes.tolerance) +
                   " mm); each step of the plan swept past the parts in place, triangle against triangle";
+  if (!latticeNote.empty()) check.checked += "; " + latticeNote;
   if (report.disassembly && !report.disassembly->complete) {
     check.failure = report.disassembly->searchLimitReached
                         ? "the plan stopped at its limit (" + report.disassembly->limit + "): the parts left are not proven stuck"

@@ -3,7 +3,8 @@
 // part (edge-connected triangles facing one way, on one plane within the tolerance), and a contact
 // wherever a face of one part lies on a face of another with opposite normals and their overlap,
 // a 2D polygon intersection by Clipper in the first face's plane, has positive area. A curved
-// region is a set of small faces: its contacts are those of its facets.
+// region is a set of small faces: its contacts are those of its facets, and it is named as a
+// curved contact (the note that such contacts are approximated).
 #include <polyclipping/clipper.hpp>
 
 #include <algorithm>
@@ -19,6 +20,8 @@ namespace {
 // Clipper's integers: the model's bounding-box diagonal spans this many steps, whatever its unit
 // or size (far below the tolerance, kMeshContactShare, and far from Clipper's 64-bit range).
 constexpr double kClipperStepsPerDiagonal = 1e9;
+// A curved contact region has at least this many facets (two faces at a slight angle are a bend).
+constexpr int kLeastCurvedFacets = 3;
 
 struct Face {
   int part = 0;
@@ -59,14 +62,22 @@ std::vector<std::vector<int>> neighbours(const TriangleMesh& mesh) {
   return result;
 }
 
+// A part's planar faces, the face of each triangle (-1 for one of no area) and the triangles'
+// neighbours (for faces that share an edge: curved regions).
+struct PartFaces {
+  std::vector<Face> faces;
+  std::vector<int> faceOf;
+  std::vector<std::vector<int>> adjacent;
+};
+
 // Planar faces by region growing from each unassigned triangle in index order: a neighbour joins
 // when it faces the seed's way (tolerance::kFacingCosine) and its corners lie within the tolerance
 // of the seed's plane.
-std::vector<Face> planarFaces(int part, const TriangleMesh& mesh, const std::vector<Triangle>& triangles,
-                              double tolerance) {
-  const std::vector<std::vector<int>> adjacent = neighbours(mesh);
-  std::vector<int> faceOf(triangles.size(), -1);
-  std::vector<Face> faces;
+PartFaces planarFaces(int part, const TriangleMesh& mesh, const std::vector<Triangle>& triangles, double tolerance) {
+  PartFaces result{{}, std::vector<int>(triangles.size(), -1), neighbours(mesh)};
+  const std::vector<std::vector<int>>& adjacent = result.adjacent;
+  std::vector<int>& faceOf = result.faceOf;
+  std::vector<Face>& faces = result.faces;
   for (size_t seed = 0; seed < triangles.size(); ++seed) {
     if (faceOf[seed] >= 0 || triangles[seed].twiceArea == 0) continue;
     Face face;
@@ -98,7 +109,7 @@ std::vector<Face> planarFaces(int part, const TriangleMesh& mesh, const std::vec
     face.point = triangles[seed].p[0];
     faces.push_back(std::move(face));
   }
-  return faces;
+  return result;
 }
 
 // A plane's 2D frame and Clipper's integer coordinates in it.
@@ -196,34 +207,84 @@ void unifyNormals(std::vector<Contact>* contacts) {
   }
 }
 
+// A contact and the face of its first part it came from.
+struct FaceContact {
+  size_t contact;
+  int face;
+};
+
+// Curved contact regions of part a against part b: the faces of a in contact with b, joined where
+// two share an edge at an angle below kCurvedFacetRad; a group of kLeastCurvedFacets or more is
+// one curved region (a pin in a hole, a ball in a socket), its contacts those of its facets.
+void addCurvedRegions(size_t a, size_t b, const PartFaces& faces, const std::vector<FaceContact>& touching,
+                      const std::vector<Contact>& contacts, std::vector<CurvedContact>* curved) {
+  std::vector<double> area(faces.faces.size(), 0);
+  std::vector<bool> inContact(faces.faces.size(), false), seen(faces.faces.size(), false);
+  for (const FaceContact& c : touching) {
+    inContact[static_cast<size_t>(c.face)] = true;
+    area[static_cast<size_t>(c.face)] += contacts[c.contact].area;
+  }
+  const double leastCosine = std::cos(tolerance::kCurvedFacetRad);
+  for (const FaceContact& start : touching) {
+    if (seen[static_cast<size_t>(start.face)]) continue;
+    seen[static_cast<size_t>(start.face)] = true;
+    std::vector<int> stack{start.face};
+    CurvedContact region{static_cast<int>(a), static_cast<int>(b), 0, 0};
+    while (!stack.empty()) {
+      const int face = stack.back();
+      stack.pop_back();
+      ++region.facets;
+      region.area += area[static_cast<size_t>(face)];
+      for (int t : faces.faces[static_cast<size_t>(face)].triangles) {
+        for (int next : faces.adjacent[static_cast<size_t>(t)]) {
+          const int other = faces.faceOf[static_cast<size_t>(next)];
+          if (other < 0 || !inContact[static_cast<size_t>(other)] || seen[static_cast<size_t>(other)]) continue;
+          if (dot(faces.faces[static_cast<size_t>(face)].normal, faces.faces[static_cast<size_t>(other)].normal) < leastCosine) {
+            continue;
+          }
+          seen[static_cast<size_t>(other)] = true;
+          stack.push_back(other);
+        }
+      }
+    }
+    if (region.facets >= kLeastCurvedFacets) curved->push_back(region);
+  }
+}
+
 }  // namespace
 
 std::vector<Contact> meshContacts(const std::vector<MeshPart>& parts, const std::vector<PartGeometry>& geometry,
-                                  double tolerance, double emptyArea, int* faceCount) {
+                                  double tolerance, double emptyArea, int* faceCount,
+                                  std::vector<CurvedContact>* curved) {
   Box all;
   for (const PartGeometry& g : geometry) all.add(g.box);
   const double diagonal = norm(minus(all.hi, all.lo));
   const double scale = kClipperStepsPerDiagonal / diagonal;
-  std::vector<std::vector<Face>> faces;
+  std::vector<PartFaces> faces;
   *faceCount = 0;
   for (size_t p = 0; p < parts.size(); ++p) {
     faces.push_back(planarFaces(static_cast<int>(p), parts[p].mesh, geometry[p].triangles, tolerance));
-    *faceCount += static_cast<int>(faces.back().size());
+    *faceCount += static_cast<int>(faces.back().faces.size());
   }
   std::vector<Contact> contacts;
+  curved->clear();
   for (size_t a = 0; a < parts.size(); ++a) {
     for (size_t b = a + 1; b < parts.size(); ++b) {
       if (!geometry[a].box.overlaps(geometry[b].box, tolerance)) continue;
-      for (const Face& f : faces[a]) {
+      std::vector<FaceContact> touching;
+      for (size_t fi = 0; fi < faces[a].faces.size(); ++fi) {
+        const Face& f = faces[a].faces[fi];
         if (!f.box.overlaps(geometry[b].box, tolerance)) continue;
-        for (const Face& g : faces[b]) {
+        for (const Face& g : faces[b].faces) {
           if (!onOneAnother(f, g, geometry, tolerance)) continue;
           double extent = 0;
           const double area = overlapArea(f, g, geometry, scale, &extent);
           if (area <= std::max(emptyArea, tolerance * extent)) continue;  // none, or a sliver along an edge
+          touching.push_back({contacts.size(), static_cast<int>(fi)});
           contacts.push_back({static_cast<int>(a), static_cast<int>(b), normalized(minus(f.normal, g.normal)), area});
         }
       }
+      addCurvedRegions(a, b, faces[a], touching, contacts, curved);
     }
   }
   unifyNormals(&contacts);

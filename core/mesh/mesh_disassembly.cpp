@@ -14,6 +14,7 @@
 #include "desia/analysis.h"
 #include "desia/tolerances.h"
 #include "mesh/mesh_geometry.h"
+#include "mesh/mesh_lattice.h"
 
 namespace desia::mesh {
 namespace {
@@ -322,8 +323,14 @@ class Planner {
 
 }  // namespace
 
-DisassemblyPlan planWithGeometry(const MeshAssembly& meshes, const std::vector<PartGeometry>& geometry) {
-  return Planner(meshes, geometry).plan();
+DisassemblyPlan planWithGeometry(const MeshAssembly& meshes, const std::vector<PartGeometry>& geometry,
+                                 std::string* note) {
+  DisassemblyPlan plan = Planner(meshes, geometry).plan();
+  if (plan.complete) return plan;
+  std::string latticeNote;
+  std::optional<DisassemblyPlan> onLattice = planOnLattice(meshes, geometry, &latticeNote);
+  if (note) *note = latticeNote;
+  return onLattice ? *onLattice : plan;
 }
 
 }  // namespace desia::mesh

@@ -132,9 +132,10 @@ void requireNoOverlaps(const std::vector<MeshPart>& parts, const std::vector<Par
 
 // Contacts between parts: planar faces (coplanar, edge-connected triangles) of two parts lying on
 // each other with opposite normals, overlapping by more than `emptyArea` mm² (Clipper in the
-// face's plane). Sets *faceCount to the number of planar faces.
+// face's plane). Sets *faceCount to the number of planar faces and *curved to the curved contact
+// regions (facets of two parts in contact, joined at slight angles).
 std::vector<Contact> meshContacts(const std::vector<MeshPart>& parts, const std::vector<PartGeometry>& geometry,
-                                  double tolerance, double emptyArea, int* faceCount);
+                                  double tolerance, double emptyArea, int* faceCount, std::vector<CurvedContact>* curved);
 
 // "(x, y, z)" for messages.
 std::string pointText(const Vec3& p);
@@ -157,6 +158,9 @@ double travelDistance(const MeshAssembly& meshes, const std::vector<PartGeometry
 std::string sweepObstacle(const MeshAssembly& meshes, const std::vector<PartGeometry>& geometry,
                           const std::vector<int>& moving, const std::vector<bool>& present, const Vec3& d);
 
-DisassemblyPlan planWithGeometry(const MeshAssembly& meshes, const std::vector<PartGeometry>& geometry);
+// The plan of mesh_disassembly.cpp; where it gets stuck and the parts lie on a lattice, the complete
+// voxel disassembler's (planOnLattice). *note (if given) says what the lattice gave, else "".
+DisassemblyPlan planWithGeometry(const MeshAssembly& meshes, const std::vector<PartGeometry>& geometry,
+                                 std::string* note = nullptr);
 
 }  // namespace desia::mesh

@@ -5,7 +5,9 @@
 // as one OBJ of nine objects, and a 3MF written by lib3mf: the parts drawn in their colours, the
 // verdict and key of the package's own check of the same files, the blocking graphs, the
 // disassembly played to the end and the exploded view; a bad mesh shows the core's message naming
-// the file and line; the viewer draws a mesh assembly from `meshes` and from a 3MF `src`.
+// the file and line; the viewer draws a mesh assembly from `meshes` and from a 3MF `src`. A mesh
+// assembly is checked, not designed: the Design panel says so and keeps its input, Export says why
+// it offers nothing.
 //
 //   node --test tests/browser/meshes.test.mjs
 //
@@ -29,6 +31,32 @@ const partStls = Array.from({ length: 9 }, (unused, k) => ({
   bytes: Buffer.from(core.exportAssembly(puzzle, { format: 'stl', part: k + 1 })),
 }));
 const puzzleObj = Buffer.from(core.exportAssembly(puzzle, { format: 'obj' }));
+
+/**
+ * A tube (hole of radius 5) and a round pin through it, both of 24 sides, as one OBJ: the pin's
+ * sides lie on the hole's, a curved contact region of 24 facets.
+ */
+function pinInHoleObj(sides = 24) {
+  const lines = [];
+  const ring = (radius, z) => {
+    for (let k = 0; k < sides; k += 1) {
+      const angle = (2 * Math.PI * k) / sides;
+      lines.push(`v ${radius * Math.cos(angle)} ${radius * Math.sin(angle)} ${z}`);
+    }
+  };
+  const at = (ringIndex, k) => ringIndex * sides + (k % sides) + 1;
+  lines.push('o tube');
+  ring(10, 0); ring(10, 10); ring(5, 0); ring(5, 10);
+  for (let k = 0; k < sides; k += 1) {
+    lines.push(`f ${at(0, k)} ${at(0, k + 1)} ${at(1, k + 1)} ${at(1, k)}`, `f ${at(2, k)} ${at(3, k)} ${at(3, k + 1)} ${at(2, k + 1)}`,
+      `f ${at(3, k)} ${at(1, k)} ${at(1, k + 1)} ${at(3, k + 1)}`, `f ${at(2, k)} ${at(2, k + 1)} ${at(0, k + 1)} ${at(0, k)}`);
+  }
+  lines.push('o pin');
+  ring(5, -5); ring(5, 15);
+  for (let k = 0; k < sides; k += 1) lines.push(`f ${at(4, k)} ${at(4, k + 1)} ${at(5, k + 1)} ${at(5, k)}`);
+  for (let k = 1; k + 1 < sides; k += 1) lines.push(`f ${at(5, 0)} ${at(5, k)} ${at(5, k + 1)}`, `f ${at(4, 0)} ${at(4, k + 1)} ${at(4, k)}`);
+  return Buffer.from(`${lines.join('\n')}\n`);
+}
 
 /** Drops files on the page as a user would (one drop event carrying them all). */
 async function dropFiles(page, files) {
@@ -107,10 +135,31 @@ for (const [width, height] of [[1400, 900], [390, 844]]) {
       assert.deepEqual(details, Array.from({ length: 9 }, (unused, k) => `part${k + 1}`));
       assert.equal(state.key, '1');
       assert.equal(state.meshes, '9');
+      // Design says plainly that a mesh assembly is checked, not designed, and keeps its input;
+      // Export greys every format and says why.
+      const panels = await page.evaluate(() => ({
+        note: document.querySelector('#design-mesh-note')?.hidden === false
+          ? document.querySelector('#design-mesh-note').textContent : null,
+        input: document.querySelector('#design-input').dataset.name,
+        formats: [...document.querySelectorAll('#export-format option')].filter((option) => !option.disabled).map((option) => option.value),
+        button: document.querySelector('#export-button').disabled,
+        why: document.querySelector('#export-unavailable').hidden ? null : document.querySelector('#export-unavailable').textContent,
+      }));
+      assert.match(panels.note ?? '', /^k9\.obj is a mesh assembly: desia checks it \(verdict, key, disassembly\) but does not design from it/);
+      assert.equal(panels.input, 'Cube_4x4x4_origin.puz', 'Design keeps the input it had');
+      assert.deepEqual(panels.formats, [], 'no export format is offered');
+      assert.equal(panels.button, true);
+      assert.match(panels.why ?? '', /^Nothing to export for a mesh assembly: its own OBJ, STL or 3MF files are already the parts/);
+      await page.locator('#design-panel').scrollIntoViewIfNeeded();
+      await shot('obj-design');
+      await page.locator('#export-panel').scrollIntoViewIfNeeded();
+      await shot('obj-export');
+      await page.evaluate(() => window.scrollTo(0, 0));
       const single = Buffer.from(core.exportAssembly(puzzle, { format: 'obj', part: 1 }));
       await page.setInputFiles('#file-input', { name: 'key.obj', mimeType: 'text/plain', buffer: single });
       await waitForReady(page, 'key_r32.json');
       assert.equal(await page.evaluate(() => document.body.dataset.meshAssembly), '');
+      assert.equal(await page.evaluate(() => document.querySelector('#design-mesh-note').hidden), true);
     });
 
     it('a 3MF written by lib3mf: its two build items are the parts', async () => {
@@ -121,6 +170,18 @@ for (const [width, height] of [[1400, 900], [390, 844]]) {
       await shot('3mf');
       assert.equal(state.verdictCode, expected.verdict);
       assert.equal(state.meshes, '2');
+    });
+
+    it('a round pin in a round hole: the report notes the curved contact, approximated by its facets', async () => {
+      const bytes = pinInHoleObj();
+      const expected = core.check({ files: [{ name: 'pin.obj', bytes }] });
+      assert.deepEqual(expected.mesh.curvedContacts.map(({ parts, facets }) => ({ parts, facets })), [{ parts: [1, 2], facets: 24 }]);
+      await dropFiles(page, [{ name: 'pin.obj', bytes }]);
+      const state = await waitForSettled(page, 'pin.obj');
+      await shot('curved');
+      assert.equal(state.verdictCode, 'not-interlocking');
+      const reason = await page.evaluate(() => document.querySelector('#reason').textContent);
+      assert.match(reason, /Curved contacts, approximated by their planar facets: parts 1 and 2 \(24 facets\)/);
     });
 
     it('a bad mesh among the files: the core\'s message names the file and line', async () => {

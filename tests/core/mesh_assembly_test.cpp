@@ -18,178 +18,19 @@
 #include "desia/export.h"
 #include "desia/formats.h"
 #include "desia/mesh.h"
+#include "mesh_test_support.h"
 #include "test_support.h"
 
 namespace desia {
 namespace {
 
-using testing::projectPath;
-using testing::readFileText;
-
-AssemblyDocument readDocument(const std::string& path) {
-  return parseAssemblyText(readFileText(projectPath(path)), path);
-}
-
-std::string exported(const AssemblyDocument& document, const char* format, int part = 0) {
-  ExportSettings settings;
-  settings.mesh.part = part;
-  return exportFiles(document, exportFormatNamed(format), settings).front();
-}
-
-CheckOptions bothTests() {
-  CheckOptions options;
-  options.method = CheckMethod::Both;
-  return options;
-}
-
-MeshAssembly meshesOf(const std::vector<MeshFile>& files, LengthUnit unit = LengthUnit::Millimetre) {
-  return buildMeshAssembly(readMeshParts(files, unit));
-}
-
-// The OBJ text with every vertex turned by `rotation` and divided by `unitInMm` (so that reading it
-// in that unit gives back millimetres).
-std::string transformedObj(const std::string& obj, const std::array<Vec3, 3>& rotation, double unitInMm) {
-  std::istringstream in(obj);
-  std::ostringstream out;
-  std::string line;
-  char buffer[128];
-  while (std::getline(in, line)) {
-    if (line.rfind("v ", 0) == 0) {
-      Vec3 p{};
-      std::istringstream(line.substr(2)) >> p[0] >> p[1] >> p[2];
-      Vec3 q{};
-      for (int i = 0; i < 3; ++i) q[i] = (rotation[i][0] * p[0] + rotation[i][1] * p[1] + rotation[i][2] * p[2]) / unitInMm;
-      std::snprintf(buffer, sizeof buffer, "v %.17g %.17g %.17g", q[0], q[1], q[2]);
-      out << buffer << '\n';
-    } else {
-      out << line << '\n';
-    }
-  }
-  return out.str();
-}
-
-// A uniformly random rotation (a random unit quaternion) from a seeded generator.
-std::array<Vec3, 3> randomRotation(std::mt19937& random) {
-  std::normal_distribution<double> gauss;
-  double q[4];
-  double length = 0;
-  for (double& c : q) c = gauss(random), length += c * c;
-  length = std::sqrt(length);
-  const double w = q[0] / length, x = q[1] / length, y = q[2] / length, z = q[3] / length;
-  return {{{1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)},
-           {2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)},
-           {2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)}}};
-}
-
-// --- An independent check of a plan ------------------------------------------------------------
-
-// Generalized winding number of a closed mesh around p (solid angles of its triangles, Van
-// Oosterom and Strackee): about 1 inside, 0 outside. Nothing of the sweep or the ray test.
-double windingNumber(const TriangleMesh& mesh, const Vec3& p) {
-  double total = 0;
-  for (const auto& t : mesh.triangles) {
-    Vec3 a, b, c;
-    for (int i = 0; i < 3; ++i) {
-      a[i] = mesh.vertices[t[0]][i] - p[i];
-      b[i] = mesh.vertices[t[1]][i] - p[i];
-      c[i] = mesh.vertices[t[2]][i] - p[i];
-    }
-    const auto length = [](const Vec3& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); };
-    const auto dotted = [](const Vec3& u, const Vec3& v) { return u[0] * v[0] + u[1] * v[1] + u[2] * v[2]; };
-    const double la = length(a), lb = length(b), lc = length(c);
-    const double det = a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0]);
-    const double denominator = la * lb * lc + dotted(a, b) * lc + dotted(b, c) * la + dotted(c, a) * lb;
-    total += 2 * std::atan2(det, denominator);
-  }
-  return total / (4 * M_PI);
-}
-
-// Points inside the part, `depth` below the middle of each triangle.
-std::vector<Vec3> samplesInside(const TriangleMesh& mesh, double depth) {
-  std::vector<Vec3> samples;
-  for (const auto& t : mesh.triangles) {
-    const Vec3 &a = mesh.vertices[t[0]], &b = mesh.vertices[t[1]], &c = mesh.vertices[t[2]];
-    Vec3 n{(b[1] - a[1]) * (c[2] - a[2]) - (b[2] - a[2]) * (c[1] - a[1]),
-           (b[2] - a[2]) * (c[0] - a[0]) - (b[0] - a[0]) * (c[2] - a[2]),
-           (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])};
-    const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-    if (length == 0) continue;
-    Vec3 p;
-    for (int i = 0; i < 3; ++i) p[i] = (a[i] + b[i] + c[i]) / 3 - n[i] / length * depth;
-    if (windingNumber(mesh, p) > 0.5) samples.push_back(p);
-  }
-  return samples;
-}
-
-struct Extent {
-  Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
-};
-
-Extent extentOf(const TriangleMesh& mesh, const Vec3& offset) {
-  Extent e;
-  for (const Vec3& v : mesh.vertices) {
-    for (int i = 0; i < 3; ++i) e.lo[i] = std::min(e.lo[i], v[i] + offset[i]), e.hi[i] = std::max(e.hi[i], v[i] + offset[i]);
-  }
-  return e;
-}
-
-bool apart(const Extent& a, const Extent& b) {
-  for (int i = 0; i < 3; ++i) {
-    if (a.lo[i] > b.hi[i] || b.lo[i] > a.hi[i]) return true;
-  }
-  return false;
-}
-
-// "" when the plan's single-part removals, replayed in small steps, never put a sample point of a
-// moving part inside a part still in place (or one of theirs inside it); else what collided.
-std::string replayFailure(const MeshAssembly& meshes, const DisassemblyPlan& plan) {
-  const size_t n = meshes.parts.size();
-  const double depth = 20 * meshes.tolerance;
-  std::vector<std::vector<Vec3>> samples;
-  double smallest = 1e300;
-  for (const MeshPart& part : meshes.parts) {
-    samples.push_back(samplesInside(part.mesh, depth));
-    const Extent e = extentOf(part.mesh, {0, 0, 0});
-    for (int i = 0; i < 3; ++i) smallest = std::min(smallest, e.hi[i] - e.lo[i]);
-  }
-  const double step = smallest / 4;
-  std::vector<bool> present(n, true);
-  for (const Removal& removal : plan.removals) {
-    const MeshPart& mover = meshes.parts[static_cast<size_t>(removal.part)];
-    Vec3 offset{0, 0, 0};
-    for (const Move& move : removal.path) {
-      const bool out = move.length == 0;
-      for (double travelled = 0;; travelled += step) {
-        const double t = out ? travelled : std::min(travelled, move.length);
-        Vec3 at;
-        for (int i = 0; i < 3; ++i) at[i] = offset[i] + move.direction[i] * t;
-        bool clearOfAll = true;
-        for (size_t other = 0; other < n; ++other) {
-          if (!present[other] || static_cast<int>(other) == removal.part) continue;
-          const Extent moved = extentOf(mover.mesh, at), still = extentOf(meshes.parts[other].mesh, {0, 0, 0});
-          if (apart(moved, still)) continue;
-          clearOfAll = false;
-          for (const Vec3& s : samples[static_cast<size_t>(removal.part)]) {
-            if (windingNumber(meshes.parts[other].mesh, {s[0] + at[0], s[1] + at[1], s[2] + at[2]}) > 0.5) {
-              return "part " + std::to_string(mover.id) + " enters part " + std::to_string(meshes.parts[other].id);
-            }
-          }
-          for (const Vec3& s : samples[other]) {
-            if (windingNumber(mover.mesh, {s[0] - at[0], s[1] - at[1], s[2] - at[2]}) > 0.5) {
-              return "part " + std::to_string(meshes.parts[other].id) + " is entered by part " + std::to_string(mover.id);
-            }
-          }
-        }
-        if ((out && clearOfAll) || (!out && t >= move.length)) {
-          offset = at;
-          break;
-        }
-      }
-    }
-    present[static_cast<size_t>(removal.part)] = false;
-  }
-  return "";
-}
+using testing::bothTests;
+using testing::exported;
+using testing::meshesOf;
+using testing::randomRotation;
+using testing::readDocument;
+using testing::replayFailure;
+using testing::transformedObj;
 
 // --- Other kinds read back as meshes -------------------------------------------------------------
 
@@ -223,27 +64,7 @@ TEST(MeshAssembly, EveryVoxelExampleAsObjGetsItsOwnVerdictKeyAndAPlan) {
   }
 }
 
-// BurrTools puzzles (tests/data/burrtools): every one whose voxel plan needs at most two moves before
-// each separation (level entries <= 2) comes apart as meshes too, and the verdicts agree; deeper
-// ones (levels of 3, 5, 98 moves) need the paths the mesh planner does not search yet.
-TEST(MeshAssembly, BurrToolsPuzzlesOfLevelTwoOrLessComeApartAsMeshes) {
-  int compared = 0;
-  for (const auto& entry : std::filesystem::directory_iterator(projectPath("tests/data/burrtools"))) {
-    if (entry.path().extension() != ".puz") continue;
-    const AssemblyDocument document = parseAssemblyText(readFileText(entry.path().string()), entry.path().string());
-    const CheckReport own = checkDocument(document, bothTests());
-    const MeshAssembly meshes = meshesOf({{"puzzle.obj", exported(document, "obj")}});
-    const CheckReport mesh = checkMeshAssembly(meshes, bothTests());
-    const std::string name = entry.path().filename().string();
-    EXPECT_EQ(mesh.result.verdict, own.result.verdict) << name;
-    const auto& level = own.disassembly->level;
-    if (own.disassembly->complete && (level.empty() || *std::max_element(level.begin(), level.end()) <= 2)) {
-      EXPECT_TRUE(mesh.disassembly->complete) << name;
-      ++compared;
-    }
-  }
-  EXPECT_GE(compared, 40);
-}
+// BurrTools puzzles, of every level: tests/core/mesh_lattice_test.cpp.
 
 TEST(MeshAssembly, PlansOfVoxelPuzzlesSurviveAnIndependentReplay) {
   for (const char* name : {"Cube_4x4x4_K9", "Cube_Hollow_4x4x4_K7", "Cube_4x4x4_origin"}) {
@@ -374,6 +195,71 @@ TEST(MeshAssembly, GroupsMoveTogetherWhereNoSinglePartCan) {
   const std::string json = meshCheckReportToJson(meshes, report, -1);
   EXPECT_NE(json.find(R"("dir":"+x")"), std::string::npos) << json;
   EXPECT_NE(json.find(R"("kind":"mesh")"), std::string::npos);
+}
+
+// --- Curved contacts -------------------------------------------------------------------------------
+
+// A tube (outer radius 10, hole of radius 5, 10 high) and a pin through its hole (radius 5, from -5
+// to 15), both prisms of `sides` sides: the pin's sides lie on the hole's.
+std::string pinInHoleObj(int sides) {
+  std::ostringstream out;
+  const auto ring = [&](double radius, double z) {
+    for (int k = 0; k < sides; ++k) {
+      const double angle = 2 * M_PI * k / sides;
+      out << "v " << radius * std::cos(angle) << ' ' << radius * std::sin(angle) << ' ' << z << "\n";
+    }
+  };
+  // Tube: outer bottom 1.., outer top, inner bottom, inner top (1-based OBJ indices).
+  out << "o tube\n";
+  ring(10, 0), ring(10, 10), ring(5, 0), ring(5, 10);
+  const auto at = [&](int ringIndex, int k) { return ringIndex * sides + (k % sides) + 1; };
+  for (int k = 0; k < sides; ++k) {
+    out << "f " << at(0, k) << ' ' << at(0, k + 1) << ' ' << at(1, k + 1) << ' ' << at(1, k) << "\n";  // outer wall
+    out << "f " << at(2, k) << ' ' << at(3, k) << ' ' << at(3, k + 1) << ' ' << at(2, k + 1) << "\n";  // the hole
+    out << "f " << at(3, k) << ' ' << at(1, k) << ' ' << at(1, k + 1) << ' ' << at(3, k + 1) << "\n";  // top
+    out << "f " << at(2, k) << ' ' << at(2, k + 1) << ' ' << at(0, k + 1) << ' ' << at(0, k) << "\n";  // bottom
+  }
+  out << "o pin\n";
+  ring(5, -5), ring(5, 15);
+  for (int k = 0; k < sides; ++k) {
+    out << "f " << at(4, k) << ' ' << at(4, k + 1) << ' ' << at(5, k + 1) << ' ' << at(5, k) << "\n";
+  }
+  for (int k = 1; k + 1 < sides; ++k) {
+    out << "f " << at(5, 0) << ' ' << at(5, k) << ' ' << at(5, k + 1) << "\n";
+    out << "f " << at(4, 0) << ' ' << at(4, k + 1) << ' ' << at(4, k) << "\n";
+  }
+  return out.str();
+}
+
+// A round pin in a round hole touches along 24 facets: one curved contact region, noted in the text
+// and the JSON; a square pin in a square hole has corners, no curved region; nor has a voxel puzzle.
+TEST(MeshAssembly, ACurvedContactIsNotedAsApproximatedByItsFacets) {
+  const MeshAssembly round = meshesOf({{"pin.obj", pinInHoleObj(24)}});
+  ASSERT_EQ(round.parts.size(), 2u);
+  EXPECT_EQ(round.assembly.contacts.size(), 24u);
+  ASSERT_EQ(round.curvedContacts.size(), 1u);
+  EXPECT_EQ(round.curvedContacts[0].a, 0);
+  EXPECT_EQ(round.curvedContacts[0].b, 1);
+  EXPECT_EQ(round.curvedContacts[0].facets, 24);
+  const double side = 2 * 5 * std::sin(M_PI / 24);
+  EXPECT_NEAR(round.curvedContacts[0].area, 24 * side * 10, 1e-3);  // the OBJ has 6 digits
+  const CheckReport report = checkMeshAssembly(round, bothTests());
+  EXPECT_EQ(report.result.verdict, Verdict::NotInterlocking);  // the pin slides out along its axis
+  ASSERT_TRUE(report.disassembly);
+  EXPECT_TRUE(report.disassembly->complete);
+  EXPECT_NE(meshCheckReportToText(round, report)
+                .find("curved contacts, approximated by their planar facets: parts 1 and 2 (24 facets, "),
+            std::string::npos);
+  const std::string json = meshCheckReportToJson(round, report, -1);
+  EXPECT_NE(json.find(R"("curvedContacts":[{"area":)"), std::string::npos) << json;
+  EXPECT_NE(json.find(R"("facets":24,"parts":[1,2]})"), std::string::npos) << json;
+  const MeshAssembly square = meshesOf({{"square.obj", pinInHoleObj(4)}});
+  EXPECT_EQ(square.assembly.contacts.size(), 4u);
+  EXPECT_TRUE(square.curvedContacts.empty());
+  const std::string squareText = meshCheckReportToText(square, checkMeshAssembly(square));
+  EXPECT_EQ(squareText.find("curved"), std::string::npos);
+  const MeshAssembly k9 = meshesOf({{"k9.obj", exported(readDocument("examples/voxel/Cube_4x4x4_K9.puz"), "obj")}});
+  EXPECT_TRUE(k9.curvedContacts.empty());
 }
 
 // --- Bad input -------------------------------------------------------------------------------------

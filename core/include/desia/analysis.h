@@ -168,6 +168,7 @@ struct GroupMove {
   Vec3 direction{0, 0, 0};
   int steps = 0;           // 0 when `out`
   bool out = false;
+  double length = 0;       // mesh plans: a finite move's length in mm; 0 otherwise
 };
 
 struct DisassemblyPlan {

@@ -29,6 +29,15 @@ struct MeshPart {
   TriangleMesh mesh;    // millimetres
 };
 
+// A curved contact region (a pin in a hole, a ball in a socket): facets of two parts in contact,
+// each sharing an edge with another at an angle below tolerance::kCurvedFacetRad. Its contacts are
+// those of its planar facets: the curved surface is approximated by them (issue 29's note).
+struct CurvedContact {
+  int a = 0, b = 0;  // internal indices of the parts
+  int facets = 0;    // planar faces of part a in the region
+  double area = 0;   // mm², the facets' contact areas
+};
+
 struct MeshAssemblyOptions {
   // mm: faces closer than this lie on one another, and parts may overlap by this much. 0 = the
   // default, tolerance::kMeshContactShare of the model's bounding-box diagonal.
@@ -41,6 +50,7 @@ struct MeshAssembly {
   double diagonal = 0;          // mm, of the bounding box of every part
   Assembly assembly;            // parts (same order) and the contacts computed from the faces
   int faceCount = 0;            // planar faces found (coplanar connected triangles), all parts
+  std::vector<CurvedContact> curvedContacts;  // in part order
   // Each part's triangles, boxes and box tree, computed once when built and shared by copies.
   std::shared_ptr<const std::vector<mesh::PartGeometry>> geometry;
 };

@@ -126,6 +126,10 @@ constexpr double kComputedDirectionRad = 1e-6;
 // Rad: the same for designs drawn elsewhere: a CAD file in metres written to 6 decimals turns the
 // side of an 18 mm plate by up to 5.6e-5 rad.
 constexpr double kDrawnDirectionRad = 1e-4;
+// Rad: faces of a mesh meeting along an edge at less than this (0.5 rad, about 29 degrees) are
+// facets of one curved surface (a cylinder of 13 or more sides), not a corner, when noting that a
+// curved contact is approximated by its facets (docs/meshes.md).
+constexpr double kCurvedFacetRad = 0.5;
 // Two Clipper edges crossing at a sine below this are too near parallel to place a point.
 constexpr double kEdgeCrossingSine = 1e-3;
 // Sine: a plate's side faces this close to parallel (0.01 rad: a straight edge drawn in two
