@@ -185,8 +185,20 @@ std::string reasonOf(const PlateDesignResult& result) {
   return advice == std::string::npos ? message : message.substr(0, advice);
 }
 
+// The share of the time left that an attempt of 'auto' may use (see designWithChosenJoints).
+double shareOfTimeLeft(JointRealization realization) {
+  switch (realization) {
+    case JointRealization::Cut: return 0.5;
+    case JointRealization::Milled: return 0.75;
+    default: return 1.0;
+  }
+}
+
 // 'auto': what a laser can cut, else what a router can mill, else the paper's plan, within one
-// time budget (each attempt gets what the ones before left; node limits apply per attempt).
+// time budget. A made-joint search stopped by the clock proves nothing, so it may not eat the
+// whole budget: the laser-cut attempt gets half of it, the milled one three quarters of what is
+// left, the paper's plan the rest (what an attempt does not use passes on). Node limits apply per
+// attempt.
 PlateDesignResult designWithChosenJoints(const std::vector<Plate>& plates, const std::vector<PlateContact>& contacts,
                                          const PlateDesignOptions& options) {
   const auto start = std::chrono::steady_clock::now();
@@ -198,7 +210,8 @@ PlateDesignResult designWithChosenJoints(const std::vector<Plate>& plates, const
     if (options.limits.timeLimitSeconds > 0) {
       const double spent = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       if (spent >= options.limits.timeLimitSeconds) break;  // the budget is spent: say what was tried
-      attempt.limits.timeLimitSeconds = options.limits.timeLimitSeconds - spent;
+      const double left = options.limits.timeLimitSeconds - spent;
+      attempt.limits.timeLimitSeconds = left * shareOfTimeLeft(realization);
     }
     result = designPlateJoints(plates, contacts, attempt);
     if (result.status == DesignStatus::Success) {

@@ -185,6 +185,13 @@ test('design plate: a verified joint plan (exit 0) that check re-verifies; a cut
   const planned = runCli(['design', 'plate', '--input', path.join(examples, 'mitred_box.json'), '--output', path.join(tmp, 'box.json'), '--joints', 'planned']);
   assert.equal(planned.status, 0, planned.stderr);
   assert.equal(JSON.parse(fs.readFileSync(path.join(tmp, 'box.json'), 'utf8')).jointGeometry, 'planned');
+  // One time limit covers auto's attempts, and a made-joint search stopped by the clock may not
+  // eat all of it: the icosahedron's milled search needs about 6 s, so under 2 s it stops at its
+  // share and the paper's plan (found in 19 nodes) still gets its turn.
+  const hurried = runCli(['design', 'plate', '--input', path.join(examples, 'icosahedron.json'), '--output', path.join(tmp, 'ico.json'), '--time-limit', '2']);
+  assert.equal(hurried.status, 0, hurried.stderr);
+  assert.match(hurried.stdout, /^joints: planned, nothing is cut: .*no milled plan found within the limits: no plan within the limits/m);
+  assert.equal(JSON.parse(fs.readFileSync(path.join(tmp, 'ico.json'), 'utf8')).jointGeometry, 'planned');
 });
 
 test('export a designed plate structure as SVG and DXF cut sheets; a sheet too small is named', () => {
