@@ -65,6 +65,7 @@ class PlateJointPlanner::SearchTree : public search::ConstructionTree {
       path_.pop_back();
       return search::Move::Returned;
     }
+    if (path_.size() > deepest_.size()) deepest_ = path_;
     if (!complete()) pending_.push_back(planner_.rankedCandidatesOf(path_));
     return search::Move::Entered;
   }
@@ -81,6 +82,9 @@ class PlateJointPlanner::SearchTree : public search::ConstructionTree {
     return false;
   }
 
+  // The deepest node entered in any tree: where a search that got no further says why.
+  const std::vector<PlanStep>& deepest() const { return deepest_.size() > prefix_.size() ? deepest_ : prefix_; }
+
   void snapshotDeepest(DesignProgress& progress) const override {
     progress.deepestPlaced.clear();
     for (const PlanStep& step : path_) progress.deepestPlaced.push_back(step.plate);
@@ -90,7 +94,7 @@ class PlateJointPlanner::SearchTree : public search::ConstructionTree {
   PlateJointPlanner& planner_;
   const std::vector<PlanStep>& prefix_;
   PlateDesignResult& result_;
-  std::vector<PlanStep> path_;
+  std::vector<PlanStep> path_, deepest_;
   // pending_[k]: the candidates left at depth prefix + k, and how many of them passed.
   std::vector<RankedCandidates> pending_;
 };
@@ -113,6 +117,13 @@ void PlateJointPlanner::backjump(size_t prefixSize, std::vector<PlanStep>* path,
   // pending[k] holds the siblings left at depth prefixSize + k; keep those up to `depth`.
   pending->resize(depth - prefixSize + 1);
   path->resize(depth);
+}
+
+// Where the search got no further, and why no plate could be taken there (the evidence a design
+// refused or stopped at its limits gives; issue 26).
+std::string PlateJointPlanner::atTheDeepestNode(const std::vector<PlanStep>& deepest) const {
+  if (deepest.empty() || static_cast<int>(deepest.size()) + 1 >= graph_.plateCount) return "";
+  return " (the deepest node: " + whyNoPlateLeavesAfter(deepest) + ")";
 }
 
 PlateDesignResult PlateJointPlanner::run(const std::vector<PlanStep>& prefix) {
@@ -144,7 +155,8 @@ PlateDesignResult PlateJointPlanner::run(const std::vector<PlanStep>& prefix) {
     result.message =
         "no plan within the limits (" + std::to_string(progress.nodes) + " nodes; deepest " +
         std::to_string(progress.bestDepth) + " of " + std::to_string(graph_.plateCount) + " plates" +
-        (lastRejection_.empty() ? std::string(")") : "; the last complete plan failed: " + lastRejection_ + ")");
+        (lastRejection_.empty() ? std::string(")") : "; the last complete plan failed: " + lastRejection_ + ")") +
+        atTheDeepestNode(tree.deepest());
     return result;
   }
   if (end == search::SearchEnd::Exhausted) {
@@ -168,7 +180,8 @@ PlateDesignResult PlateJointPlanner::run(const std::vector<PlanStep>& prefix) {
                          degreesText(options_.joints.stepTenon.mostDegrees) +
                          " degrees apart); joints 'planned' gives the paper's graph design alone"
                    : "") +
-        (prefix.empty() && progress.bestDepth == 0 ? " (" + whyNoPlateLeavesFirst() + ")" : std::string());
+        (prefix.empty() && progress.bestDepth == 0 ? " (" + whyNoPlateLeavesFirst() + ")"
+                                                   : atTheDeepestNode(tree.deepest()));
     return result;
   }
   result.message =

@@ -260,9 +260,8 @@ const Plate& PlateJointPlanner::jointedPlate(int plate, const std::vector<PlateJ
 // seeded random order; at most `candidates` of them.
 // Every way the next plate can leave, ranked: the paper's preference (below), then a random order
 // from the seed. The node test is left to nextChild.
-std::vector<PlanStep> PlateJointPlanner::candidatesOf(const std::vector<PlanStep>& steps) {
-  std::vector<bool> taken(graph_.plateCount, false);
-  for (const PlanStep& s : steps) taken[s.plate] = true;
+// The plates of R (those not taken) whose removal would split R's parts-graph.
+std::vector<bool> PlateJointPlanner::cutPointsOfRest(const std::vector<bool>& taken) const {
   std::vector<int> rest, index(graph_.plateCount, -1);
   for (int p = 0; p < graph_.plateCount; ++p) {
     if (!taken[p]) {
@@ -278,6 +277,17 @@ std::vector<PlanStep> PlateJointPlanner::candidatesOf(const std::vector<PlanStep
   }
   std::vector<bool> isCut(graph_.plateCount, false);
   for (int i : findCutPoints(static_cast<int>(rest.size()), restEdges)) isCut[rest[i]] = true;
+  return isCut;
+}
+
+std::vector<PlanStep> PlateJointPlanner::candidatesOf(const std::vector<PlanStep>& steps) {
+  std::vector<bool> taken(graph_.plateCount, false);
+  for (const PlanStep& s : steps) taken[s.plate] = true;
+  std::vector<int> rest;
+  for (int p = 0; p < graph_.plateCount; ++p) {
+    if (!taken[p]) rest.push_back(p);
+  }
+  const std::vector<bool> isCut = cutPointsOfRest(taken);
 
   const NodeFacts node = factsOf(steps);
   std::vector<bool> inRest(graph_.plateCount);

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -61,10 +62,18 @@ class PlateJointPlanner {
   const std::string& lastRejection() const { return lastRejection_; }
   // Why no plate can be the first step, for a search that ended at its root (planner_first_step.cpp).
   std::string whyNoPlateLeavesFirst() const;
+  // Why no plate of R can be taken after `path` (the deepest node of a search that got no further),
+  // plate by plate: how far each gets through the node's tests (planner_first_step.cpp).
+  std::string whyNoPlateLeavesAfter(const std::vector<PlanStep>& path) const;
+  std::string atTheDeepestNode(const std::vector<PlanStep>& deepest) const;
   void backjump(size_t prefixSize, std::vector<PlanStep>* path, std::vector<RankedCandidates>* pending) const;
 
  private:
   bool acceptable(const std::vector<PlanStep>& steps) const;
+  std::vector<bool> cutPointsOfRest(const std::vector<bool>& taken) const;
+  enum class NextStepStage;
+  NextStepStage furthestStage(const std::vector<PlanStep>& path, int plate, const std::vector<bool>& isCutPoint,
+                              std::set<int>* crossingPartners) const;
   void takeWindow(std::vector<PlanStep> ranked, RankedCandidates* candidates) const;
   bool runsIntoARemainingPlate(int plate, size_t way, const std::vector<bool>& taken) const;
   bool runsIntoJointsSoFar(const std::vector<PlanStep>& path) const;

@@ -3,6 +3,9 @@
 // joint are named with how they meet (issue 26, item 2).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cctype>
+#include <set>
 #include <string>
 
 #include "desia/plate.h"
@@ -41,6 +44,81 @@ TEST(PlateMissingJoints, ASearchEndingAtItsRootSaysWhyNoPlateCanBeTakenFirst) {
             std::string::npos)
       << lizard;
   EXPECT_NE(lizard.find("; 6 free to leave"), std::string::npos) << lizard;
+}
+
+// The plate ids in a list such as "plates 3, 4, 6 and 7" or "plate 1".
+std::set<int> idsIn(const std::string& list) {
+  std::set<int> ids;
+  for (size_t k = 0; k < list.size();) {
+    if (!std::isdigit(static_cast<unsigned char>(list[k]))) {
+      ++k;
+      continue;
+    }
+    size_t end = k;
+    while (end < list.size() && std::isdigit(static_cast<unsigned char>(list[end]))) ++end;
+    ids.insert(std::stoi(list.substr(k, end - k)));
+    k = end;
+  }
+  return ids;
+}
+
+// Do the plates of `rest` other than `without` stay in one piece over the contacts (breadth first)?
+bool staysInOnePiece(const std::vector<PlateContact>& contacts, std::set<int> rest, int without) {
+  rest.erase(without);
+  std::set<int> reached{*rest.begin()};
+  std::vector<int> queue{*rest.begin()};
+  while (!queue.empty()) {
+    const int p = queue.back();
+    queue.pop_back();
+    for (const PlateContact& c : contacts) {
+      const int q = c.a == p ? c.b : c.b == p ? c.a : -1;
+      if (q >= 0 && rest.count(q) && reached.insert(q).second) queue.push_back(q);
+    }
+  }
+  return reached.size() == rest.size();
+}
+
+TEST(PlateMissingJoints, ASearchThatGetsNoFurtherSaysWhyAtItsDeepestNode) {
+  // The CABINET with laser-cut joints: the search ends two plates deep (19 nodes).
+  const AssemblyDocument cabinet = loadPlateExample("cabinet.json");
+  const std::vector<PlateContact> contacts = computePlateContacts(cabinet.plates, {});
+  PlateDesignOptions options;
+  options.realization = JointRealization::Cut;
+  const PlateDesignResult result = designPlateJoints(cabinet.plates, contacts, options);
+  ASSERT_EQ(result.status, DesignStatus::NotFound) << result.message;
+  const size_t at = result.message.find("(the deepest node: ");
+  ASSERT_NE(at, std::string::npos) << result.message;
+  const std::string said = result.message.substr(at);
+  const size_t takenEnd = said.find(" taken (");
+  const size_t leftAt = said.find(" left, ");
+  ASSERT_NE(takenEnd, std::string::npos);
+  ASSERT_NE(leftAt, std::string::npos);
+  std::set<int> taken = idsIn(said.substr(0, takenEnd));
+  EXPECT_EQ(static_cast<int>(taken.size()) + 1, result.progress.bestDepth) << said;
+  // Every plate left is named once, in one of the clauses.
+  std::set<int> named;
+  size_t clauses = 0;
+  const std::string rest = said.substr(leftAt + 7);
+  for (size_t from = 0; from < rest.size();) {
+    const size_t end = std::min(rest.find("; ", from), rest.size());
+    const std::string clause = rest.substr(from, end - from);
+    const size_t verb = clause.find(clause.find(" are ") != std::string::npos ? " are " : " is ");
+    const size_t cut = clause.find(" would ") < verb ? clause.find(" would ") : verb;
+    const std::set<int> ids = idsIn(clause.substr(0, cut));
+    for (int id : ids) EXPECT_TRUE(named.insert(id).second) << "plate " << id << " named twice: " << said;
+    ++clauses;
+    // A plate said to be a cut point splits the plates left, by a walk over the contacts.
+    if (clause.find("cut point") != std::string::npos) {
+      std::set<int> left;
+      for (size_t p = 0; p < cabinet.plates.size(); ++p)
+        if (!taken.count(cabinet.plates[p].id)) left.insert(static_cast<int>(p));
+      for (int id : ids) EXPECT_FALSE(staysInOnePiece(contacts, left, id - 1)) << "plate " << id << ": " << said;
+    }
+    from = end + 2;
+  }
+  EXPECT_GE(clauses, 1u);
+  EXPECT_EQ(named.size() + taken.size(), cabinet.plates.size()) << said;
+  for (int id : named) EXPECT_FALSE(taken.count(id)) << said;
 }
 
 TEST(PlateMissingJoints, TheIcosahedronsPlanWithoutStepTenonsNamesTheEdgesNoMadeJointFits) {
