@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <map>
 
 #include "analysis/part_motion.h"
@@ -21,6 +22,33 @@
 
 namespace desia {
 
+namespace {
+
+// The contact that stops `part` leaving along d, the most against d (isPartFreeAlong's test), named
+// with the plate it is with, its normal out of `part`, its area and how far it faces against d.
+std::string blockingContactText(const Assembly& model, const std::vector<bool>& present, int part, const Vec3& d) {
+  const Contact* worst = nullptr;
+  double against = 0;
+  for (const Contact& contact : model.contacts) {
+    if (!present[contact.a] || !present[contact.b] || (contact.a != part && contact.b != part)) continue;
+    const double into = contact.a == part ? dot(d, contact.normal) : -dot(d, contact.normal);
+    if (into > tolerance::kDirection && into > against) {
+      against = into;
+      worst = &contact;
+    }
+  }
+  if (!worst) return "";
+  const int other = worst->a == part ? worst->b : worst->a;
+  const Vec3 normal = worst->a == part ? worst->normal : negated(worst->normal);
+  char text[160];
+  std::snprintf(text, sizeof text, ": its contact with plate %d (%.4g mm^2, normal %s) faces %.3g degrees against it",
+                model.parts[other].id, worst->area, directionLabel(normal).c_str(),
+                std::asin(std::min(1.0, against)) * 180 / M_PI);
+  return text;
+}
+
+}  // namespace
+
 std::string planFailure(const Assembly& model, const std::vector<Vec3>& directions) {
   const std::vector<BaseDirection> bases = computeBaseDirections(model);
   const InterlockingResult byGraphs = testInterlockingByGraphs(model, bases);
@@ -30,7 +58,8 @@ std::string planFailure(const Assembly& model, const std::vector<Vec3>& directio
   std::vector<bool> present(model.partCount(), true);
   for (size_t k = 0; k < directions.size(); ++k) {
     if (!isPartFreeAlong(model, &present, static_cast<int>(k), directions[k])) {
-      return "plate " + std::to_string(model.parts[k].id) + " cannot leave along its direction";
+      return "plate " + std::to_string(model.parts[k].id) + " cannot leave along its direction" +
+             blockingContactText(model, present, static_cast<int>(k), directions[k]);
     }
     present[k] = false;
   }

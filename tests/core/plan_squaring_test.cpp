@@ -93,6 +93,25 @@ TEST(PlanSquaring, AFaceIsSquaredToTheWaysOutFurthestApartFirst) {
   EXPECT_LT(std::abs(dot(face, directions[1])), 6e-9);  // the rounding of that way out stays its own
 }
 
+TEST(PlanSquaring, AFaceIsSquareToTheWayOutOfThePlateThatLeavesItFirst) {
+  // Plates 0 and 1 leave first along horizontal ways rounded out of the plane by -2e-9 and 1e-9;
+  // plate 2 leaves third, sliding along a face of plate 3 that stays, a face rounding turned by
+  // 6e-9 rad. Squared to the plane the two furthest apart span (plates 0 and 1's ways), the face was
+  // left 5e-9 off square to plate 2's way, past the blocking tolerance: the LIZARD with step tenons
+  // from 30 degrees verified in memory and failed once written. Squared to plate 2's way before
+  // the others, it lets plate 2 slide.
+  const std::vector<PlateContact> contacts{faceContact(2, 3, {-6e-9, 0, 1})};
+  std::vector<Vec3> directions{normalized({1, 0, -2e-9}), normalized({0, 1, 1e-9}), normalized({0.73, 0.68, 0})};
+  const std::vector<Part> parts{{1, "first"}, {2, "second"}, {3, "third"}, {4, "stays"}};
+  const Assembly assembly = jointedAssembly(contacts, {0, 1, 2, 3}, parts, &directions);
+  EXPECT_TRUE(leavesInOrder(assembly, directions));
+  EXPECT_LT(std::abs(dot(assembly.contacts[0].normal, directions[2])), 1e-15);
+  // A real block (the face tilted by 1e-4 rad against the way out) is kept.
+  const std::vector<PlateContact> blocking{faceContact(2, 3, {0, -1e-4, 1})};
+  std::vector<Vec3> ways{normalized({1, 0, 0}), normalized({0.6, 0.8, 0}), normalized({0, -1, 0})};
+  EXPECT_FALSE(leavesInOrder(jointedAssembly(blocking, {0, 1, 2, 3}, parts, &ways), ways));
+}
+
 TEST(PlanSquaring, AFaceNearlySquareToThreeIndependentWaysOutIsLeftAsItIs) {
   // Nothing is square to three independent vectors: the face is kept (a real block is the tests'
   // to judge), not replaced by the noise left after taking out all three.
