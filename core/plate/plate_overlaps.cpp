@@ -17,24 +17,6 @@
 namespace desia {
 namespace {
 
-
-// The part of `plate`'s face inside the slab of `other` (between its faces), as Clipper paths in
-// `frame` (the plate's first face plane).
-ClipperLib::Paths insideSlab(const Plate& plate, const PlaneFrame& frame, const Vec3& point, const Vec3& line,
-                             const Vec3& across, double width, double reach, double tolerance) {
-  // The slab's inside, a tolerance in from each face: a hole as wide as the slab (a mortise) then
-  // splits the region, and a face lying on the slab's face adds nothing.
-  const Vec3 low = plus(point, scaled(across, tolerance)), high = plus(point, scaled(across, width - tolerance));
-  const Loop strip{plus(low, scaled(line, -reach)), plus(low, scaled(line, reach)), plus(high, scaled(line, reach)),
-                   plus(high, scaled(line, -reach))};
-  ClipperLib::Clipper clipper;
-  clipper.AddPaths(clipperPaths(plate.bottom, frame), ClipperLib::ptSubject, true);
-  clipper.AddPaths(clipperPaths({strip}, frame), ClipperLib::ptClip, true);
-  ClipperLib::Paths inside;
-  clipper.Execute(ClipperLib::ctIntersection, inside, ClipperLib::pftEvenOdd, ClipperLib::pftNonZero);
-  return inside;
-}
-
 double pathsArea(const ClipperLib::Paths& paths) {
   double area = 0;
   for (const ClipperLib::Path& path : paths) area += ClipperLib::Area(path);
@@ -112,19 +94,33 @@ SlabTrace slabTrace(const Vec3& axis, double thickness, const Vec3& otherAxis, d
   return trace;
 }
 
+// The strip [from, to] along `across` from `point`, `reach` each way along `line`: where a slab
+// (or its trace) meets a plane, as a loop in that plane.
+Loop stripAlong(const Vec3& point, const Vec3& line, const Vec3& across, double from, double to, double reach) {
+  const Vec3 low = plus(point, scaled(across, from)), high = plus(point, scaled(across, to));
+  return {plus(low, scaled(line, -reach)), plus(low, scaled(line, reach)), plus(high, scaled(line, reach)),
+          plus(high, scaled(line, -reach))};
+}
+
 // The loops' region within the strip [from, to] along `across` (from `point`, `reach` each way
 // along `line`), as Clipper paths in `frame`.
 ClipperLib::Paths regionInStrip(const std::vector<Loop>& loops, const PlaneFrame& frame, const Vec3& point,
                                 const Vec3& line, const Vec3& across, double from, double to, double reach) {
-  const Vec3 low = plus(point, scaled(across, from)), high = plus(point, scaled(across, to));
-  const Loop strip{plus(low, scaled(line, -reach)), plus(low, scaled(line, reach)), plus(high, scaled(line, reach)),
-                   plus(high, scaled(line, -reach))};
   ClipperLib::Clipper clipper;
   clipper.AddPaths(clipperPaths(loops, frame), ClipperLib::ptSubject, true);
-  clipper.AddPaths(clipperPaths({strip}, frame), ClipperLib::ptClip, true);
+  clipper.AddPaths(clipperPaths({stripAlong(point, line, across, from, to, reach)}, frame), ClipperLib::ptClip, true);
   ClipperLib::Paths inside;
   clipper.Execute(ClipperLib::ctIntersection, inside, ClipperLib::pftEvenOdd, ClipperLib::pftNonZero);
   return inside;
+}
+
+// The part of `plate`'s face inside the slab of another plate (`width` thick from `point` along
+// `across`), as Clipper paths in `frame` (the plate's first face plane). The slab's inside, a
+// tolerance in from each face: a hole as wide as the slab (a mortise) then splits the region, and
+// a face lying on the slab's face adds nothing.
+ClipperLib::Paths insideSlab(const Plate& plate, const PlaneFrame& frame, const Vec3& point, const Vec3& line,
+                             const Vec3& across, double width, double reach, double tolerance) {
+  return regionInStrip(plate.bottom, frame, point, line, across, tolerance, width - tolerance, reach);
 }
 
 // Where along `line` (from `point`) the plate has material across the whole strip `trace` of the
@@ -133,10 +129,8 @@ ClipperLib::Paths regionInStrip(const std::vector<Loop>& loops, const PlaneFrame
 std::vector<std::pair<double, double>> throughStretches(const Plate& plate, const PlaneFrame& frame, const Vec3& point,
                                                         const Vec3& line, const SlabTrace& trace, double reach,
                                                         double tolerance) {
-  const Vec3 low = plus(point, scaled(trace.across, trace.from + tolerance / trace.rise));
-  const Vec3 high = plus(point, scaled(trace.across, trace.to - tolerance / trace.rise));
-  const Loop strip{plus(low, scaled(line, -reach)), plus(low, scaled(line, reach)), plus(high, scaled(line, reach)),
-                   plus(high, scaled(line, -reach))};
+  const Loop strip = stripAlong(point, line, trace.across, trace.from + tolerance / trace.rise,
+                                trace.to - tolerance / trace.rise, reach);
   ClipperLib::Clipper clipper;
   clipper.AddPaths(clipperPaths({strip}, frame), ClipperLib::ptSubject, true);
   clipper.AddPaths(clipperPaths(plate.bottom, frame), ClipperLib::ptClip, true);
