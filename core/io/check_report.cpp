@@ -25,7 +25,8 @@ double rounded(double value) {
   return r == 0.0 ? 0.0 : r;
 }
 
-json vectorJson(const Vec3& v) { return json::array({rounded(v[0]), rounded(v[1]), rounded(v[2])}); }
+// A vector for the report, rounded as `rounded` (design_json.h's vectorJson writes full precision).
+json roundedVectorJson(const Vec3& v) { return json::array({rounded(v[0]), rounded(v[1]), rounded(v[2])}); }
 
 json idsJson(const Assembly& assembly, const std::vector<int>& parts) {
   json ids = json::array();
@@ -42,7 +43,7 @@ json directionLabels(const std::vector<Vec3>& directions) {
 json witnessJson(const Assembly& assembly, const InterlockingResult& result) {
   if (!result.hasWitness) return nullptr;
   json velocities = json::array();
-  for (const Vec3& v : result.witness.velocities) velocities.push_back(vectorJson(v));
+  for (const Vec3& v : result.witness.velocities) velocities.push_back(roundedVectorJson(v));
   return {{"parts", idsJson(assembly, result.witness.parts)},
           {"direction", result.witness.direction.empty() ? json(nullptr) : json(result.witness.direction)},
           {"velocities", velocities}};
@@ -69,7 +70,7 @@ json graphsJson(const Assembly& assembly, const std::vector<DirectionalBlockingG
     for (const auto& component : findStronglyConnectedComponents(dbg.graph).components) {
       components.push_back(idsJson(assembly, component));
     }
-    list.push_back({{"direction", dbg.direction.label()}, {"vector", vectorJson(dbg.direction.vector)},
+    list.push_back({{"direction", dbg.direction.label()}, {"vector", roundedVectorJson(dbg.direction.vector)},
                     {"edges", edges}, {"components", components}});
   }
   return list;
@@ -221,7 +222,7 @@ std::string checkReportToJson(const AssemblyDocument& document, const CheckRepor
   root["method"] = checkMethodName(report.method);
   json bases = json::array();
   for (const DirectionalBlockingGraph& dbg : report.graphs) {
-    bases.push_back({{"label", dbg.direction.label()}, {"vector", vectorJson(dbg.direction.vector)}});
+    bases.push_back({{"label", dbg.direction.label()}, {"vector", roundedVectorJson(dbg.direction.vector)}});
   }
   root["baseDirections"] = bases;
   root["baseDirectionCount"] = report.baseDirectionCount;
