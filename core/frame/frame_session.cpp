@@ -12,6 +12,7 @@
 #include "desia/frame.h"
 #include "desia/tolerances.h"
 #include "frame/frame_designer.h"
+#include "search/session_path.h"
 
 namespace desia {
 
@@ -29,20 +30,17 @@ struct FrameDesignSession::State {
   FrameLayout layout;
   FrameDesigner designer;
   FrameDesignOptions options;  // what finish() searches with (its limits replaced)
-  std::vector<Step> path;
-  std::vector<FrameDesignStep> steps;
-  std::vector<std::optional<std::vector<Step>>> children{std::nullopt};  // per node on the path, root first
+  search::SessionPath<Step, FrameDesignStep> path;
   FrameDesignResult result;
 
   std::vector<Step>& childrenHere() {
-    if (!children.back()) children.back() = designer.sessionChildren();
-    return *children.back();
+    return path.children([&] { return designer.sessionChildren(); });
   }
   void showProgress() {
     result = FrameDesignResult{};
     result.status = DesignStatus::NotFound;
     result.progress.targetParts = designer.beamCount();
-    result.message = std::to_string(path.size()) + " of " + std::to_string(designer.beamCount()) +
+    result.message = std::to_string(path.depth()) + " of " + std::to_string(designer.beamCount()) +
                      " beams taken (the last one stays): choose the next";
   }
   FrameDesignStep publicStep(const Step& step) const {
@@ -63,7 +61,7 @@ FrameDesignSession::FrameDesignSession(FrameLayout layout, const FrameDesignOpti
 
 FrameDesignSession::~FrameDesignSession() = default;
 
-const std::vector<FrameDesignStep>& FrameDesignSession::steps() const { return state_->steps; }
+const std::vector<FrameDesignStep>& FrameDesignSession::steps() const { return state_->path.shown(); }
 int FrameDesignSession::targetBeams() const { return state_->designer.beamCount(); }
 bool FrameDesignSession::complete() const { return state_->result.status == DesignStatus::Success; }
 const FrameDesignResult& FrameDesignSession::result() const { return state_->result; }
@@ -71,59 +69,41 @@ const FrameDesignResult& FrameDesignSession::result() const { return state_->res
 int FrameDesignSession::childCount() { return complete() ? 0 : static_cast<int>(state_->childrenHere().size()); }
 
 FrameDesignStep FrameDesignSession::childPreview(int n) {
-  if (n < 0 || n >= childCount()) {
-    throwBadInput("", "child " + std::to_string(n) + " does not exist: this node has " + std::to_string(childCount()));
-  }
+  if (n < 0 || n >= childCount()) search::throwNoSuchChild(n, childCount());
   return state_->publicStep(state_->childrenHere()[static_cast<size_t>(n)]);
 }
 
 void FrameDesignSession::chooseChild(int n) {
   const FrameDesignStep preview = childPreview(n);  // checks n
   State& state = *state_;
-  std::vector<Step>& here = state.childrenHere();
-  const Step step = here[static_cast<size_t>(n)];
+  const Step step = state.childrenHere()[static_cast<size_t>(n)];
   state.designer.take(step);
-  state.path.push_back(step);
-  if (static_cast<int>(state.path.size()) + 1 == state.designer.beamCount()) {
+  if (static_cast<int>(state.path.depth()) + 2 == state.designer.beamCount()) {
     // The last beam stays with every free voxel: this choice completes the design, which must verify.
     FrameDesignResult result;
     result.progress.targetParts = state.designer.beamCount();
     if (!state.designer.completeHere(&result)) {
       state.designer.untake();
-      state.path.pop_back();
-      here.erase(here.begin() + n);
+      state.path.drop(static_cast<size_t>(n));
       throwBadInput("", "taking beam " + std::to_string(state.layout.frame.beams[preview.beam].id) +
                             " completes a design that fails: " + state.designer.lastRejection() + "; choose another");
     }
     result.message = "designed the joints of " + std::to_string(state.designer.beamCount()) +
                      " beams step by step (key: " + frame_design::keyBeamName(state.layout.frame, result.order[0]) + ")";
     state.result = result;
+    state.path.enter(step, preview);
   } else {
+    state.path.enter(step, preview);
     state.showProgress();
   }
-  state.steps.push_back(preview);
-  state.children.push_back(std::nullopt);
 }
 
-bool FrameDesignSession::next() {
-  while (childCount() > 0) {
-    try {
-      chooseChild(0);
-      return true;
-    } catch (const Error&) {
-      // That child completed a design that failed and was dropped: try the next one.
-    }
-  }
-  return false;
-}
+bool FrameDesignSession::next() { return search::takeFirstChild(*this); }
 
 bool FrameDesignSession::back() {
   State& state = *state_;
-  if (state.path.empty()) return false;
+  if (!state.path.leave()) return false;
   state.designer.untake();
-  state.path.pop_back();
-  state.steps.pop_back();
-  state.children.pop_back();
   state.showProgress();
   return true;
 }
@@ -136,7 +116,7 @@ FrameDesignResult FrameDesignSession::finish(const DesignLimits& limits) {
   // A designer of its own: its random state does not depend on what this session explored before,
   // and the session's labels and children stay as they are.
   FrameDesigner designer(state.layout, options);
-  FrameDesignResult result = designer.run(state.path);
+  FrameDesignResult result = designer.run(state.path.steps());
   if (result.status == DesignStatus::Success) {
     const std::string failure = frameDesignFailure(state.layout, result.labels, result.order, result.directions);
     if (!failure.empty()) throw Error(ErrorCode::Internal, "the frame design did not verify: " + failure);

@@ -12,6 +12,7 @@
 #include "plate/joints/missing_joints.h"
 #include "plate/plate_planner.h"
 #include "plate/plate_verification.h"
+#include "search/session_path.h"
 
 namespace desia {
 namespace {
@@ -40,18 +41,15 @@ struct PlateDesignSession::State {
   std::vector<PlateContact> contacts;
   PlateJointPlanner planner;
   PlateDesignOptions options;  // what finish() searches with (its limits replaced)
-  std::vector<PlanStep> path;
-  std::vector<PlateDesignStep> steps;
-  std::vector<std::optional<std::vector<PlanStep>>> children{std::nullopt};  // per node on the path, root first
+  search::SessionPath<PlanStep, PlateDesignStep> path;
   PlateDesignResult result;
 
   std::vector<PlanStep>& childrenHere() {
-    if (!children.back()) children.back() = planner.childrenOf(path);
-    return *children.back();
+    return path.children([&] { return planner.childrenOf(path.steps()); });
   }
   void showProgress() {
     result.status = DesignStatus::NotFound;
-    result.message = std::to_string(path.size()) + " of " + std::to_string(planner.plateCount()) +
+    result.message = std::to_string(path.depth()) + " of " + std::to_string(planner.plateCount()) +
                      " plates taken (the last one stays): choose the next";
   }
 };
@@ -79,7 +77,7 @@ PlateDesignSession::PlateDesignSession(std::vector<Plate> plates, std::vector<Pl
 
 PlateDesignSession::~PlateDesignSession() = default;
 
-const std::vector<PlateDesignStep>& PlateDesignSession::steps() const { return state_->steps; }
+const std::vector<PlateDesignStep>& PlateDesignSession::steps() const { return state_->path.shown(); }
 int PlateDesignSession::targetPlates() const { return state_->planner.plateCount(); }
 bool PlateDesignSession::complete() const { return state_->result.status == DesignStatus::Success; }
 const PlateDesignResult& PlateDesignSession::result() const { return state_->result; }
@@ -89,55 +87,37 @@ int PlateDesignSession::childCount() {
 }
 
 PlateDesignStep PlateDesignSession::childPreview(int n) {
-  if (n < 0 || n >= childCount()) {
-    throwBadInput("", "child " + std::to_string(n) + " does not exist: this node has " + std::to_string(childCount()));
-  }
+  if (n < 0 || n >= childCount()) search::throwNoSuchChild(n, childCount());
   return publicStep(state_->childrenHere()[static_cast<size_t>(n)]);
 }
 
 void PlateDesignSession::chooseChild(int n) {
   const PlateDesignStep preview = childPreview(n);  // checks n
   State& state = *state_;
-  std::vector<PlanStep>& here = state.childrenHere();
-  state.path.push_back(here[static_cast<size_t>(n)]);
-  if (static_cast<int>(state.path.size()) + 1 == state.planner.plateCount()) {
+  const PlanStep step = state.childrenHere()[static_cast<size_t>(n)];
+  if (static_cast<int>(state.path.depth()) + 2 == state.planner.plateCount()) {
     // The last plate stays: this choice completes the plan, which must verify.
     PlateDesignResult result;
     result.progress.targetParts = state.planner.plateCount();
-    if (!state.planner.acceptComplete(state.path, &result)) {
-      state.path.pop_back();
-      here.erase(here.begin() + n);
+    if (!state.planner.acceptComplete(state.path.with(step), &result)) {
+      state.path.drop(static_cast<size_t>(n));
       throwBadInput("", "taking plate " + std::to_string(state.plates[preview.plate].id) +
                             " completes a plan that fails: " + state.planner.lastRejection() + "; choose another");
     }
     result.message = "designed " + std::to_string(result.joints.size()) + " joints step by step";
     state.result = result;
+    state.path.enter(step, preview);
   } else {
+    state.path.enter(step, preview);
     state.showProgress();
   }
-  state.steps.push_back(preview);
-  state.children.push_back(std::nullopt);
 }
 
-bool PlateDesignSession::next() {
-  while (childCount() > 0) {
-    try {
-      chooseChild(0);
-      return true;
-    } catch (const Error&) {
-      // That child completed a plan that failed and was dropped: try the next one.
-    }
-  }
-  return false;
-}
+bool PlateDesignSession::next() { return search::takeFirstChild(*this); }
 
 bool PlateDesignSession::back() {
-  State& state = *state_;
-  if (state.path.empty()) return false;
-  state.path.pop_back();
-  state.steps.pop_back();
-  state.children.pop_back();
-  state.showProgress();
+  if (!state_->path.leave()) return false;
+  state_->showProgress();
   return true;
 }
 
@@ -149,7 +129,7 @@ PlateDesignResult PlateDesignSession::finish(const DesignLimits& limits) {
   // A planner of its own: its tie-breaking does not depend on what this session explored before,
   // and the session's own children stay as they are.
   PlateJointPlanner planner(state.plates, state.contacts, options);
-  PlateDesignResult result = planner.run(state.path);
+  PlateDesignResult result = planner.run(state.path.steps());
   requireVerified(state.plates, result, options.geometry);
   return result;
 }
