@@ -1,0 +1,28 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Moves of several parts of a mesh assembly that lies on no lattice (a slanted or curved face
+// somewhere): BurrTools' complete search, with the distances read from the triangles instead of
+// counted in cells (mesh_group_search.cpp).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "mesh/mesh_geometry.h"
+
+namespace desia::mesh {
+
+// The plan of the search for moves of several parts, as it ended: complete, or what it separated
+// before it got stuck (`unseparated`) or stopped at a bound (searchLimitReached, `limit`). Every
+// move is a translation along a base direction of the assembly's contacts (either sign) of a set
+// of parts that the sweep lets travel that far; each sub-assembly is searched breadth-first, so
+// `level` (BurrTools' notation) has the fewest moves before each separation. groupStates: the
+// positions visited, all sub-assemblies together.
+DisassemblyPlan searchGroupMoves(const MeshAssembly& meshes, const std::vector<PartGeometry>& geometry);
+
+// searchGroupMoves where its plan is complete and passes sweepPlan; else nothing. *note says which
+// (and the bound that stopped the search, if one did); *limit (if given) is that bound, "" if none.
+std::optional<DisassemblyPlan> planByGroupMoves(const MeshAssembly& meshes, const std::vector<PartGeometry>& geometry,
+                                                std::string* note, std::string* limit = nullptr);
+
+}  // namespace desia::mesh
