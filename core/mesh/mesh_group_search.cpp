@@ -78,7 +78,7 @@ std::vector<Vec3> searchDirections(const Assembly& assembly) {
     used[best] = true;
     axes[world] = bases[best][world] < 0 ? negated(bases[best]) : bases[best];
   }
-  return {axes[1], axes[0], axes[2]};
+  return {axes[1], axes[0], cross(axes[0], axes[1])};  // right-handed, as the lattice's grid
 }
 
 // What every sub-assembly's search shares: the directions, each part's levels of faces square to
