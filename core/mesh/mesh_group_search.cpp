@@ -34,11 +34,9 @@ namespace {
 constexpr double kFar = std::numeric_limits<double>::infinity();
 // Sets of parts are bit masks: a sub-assembly of more parts held together is not searched.
 constexpr size_t kMostParts = 64;
-// Sets moved alike at one position (closures and their unions), positions of one sub-assembly,
-// and pair sweeps of the whole search: past any of these the plan says "not proven".
+// Sets moved alike at one position (closures and their unions), as the voxel search bounds them:
+// past it (or GroupSearchLimits) the plan says "not proven".
 constexpr size_t kMostSetsPerMove = 4096;
-constexpr size_t kMostPositions = 100000;
-constexpr int64_t kMostPairSweeps = 2000000;
 
 using PartMask = uint64_t;
 
@@ -86,8 +84,8 @@ std::vector<Vec3> searchDirections(const Assembly& assembly) {
 // the offsets of the parts it moves only).
 class SearchContext {
  public:
-  SearchContext(const MeshAssembly& meshes, const std::vector<PartGeometry>& geometry)
-      : meshes_(meshes), geometry_(geometry) {
+  SearchContext(const MeshAssembly& meshes, const std::vector<PartGeometry>& geometry, const GroupSearchLimits& limits)
+      : meshes_(meshes), geometry_(geometry), limits_(limits) {
     for (const Vec3& d : searchDirections(meshes.assembly)) {
       directions_.push_back(d);
       directions_.push_back(negated(d));
@@ -105,7 +103,8 @@ class SearchContext {
     return levels_[static_cast<size_t>(part)][static_cast<size_t>(dir)];
   }
   int64_t sweeps() const { return sweeps_; }
-  bool outOfWork() const { return sweeps_ > kMostPairSweeps; }
+  const GroupSearchLimits& limits() const { return limits_; }
+  bool outOfWork() const { return sweeps_ > limits_.pairSweeps; }
 
   // Gaps of part p placed at `offset` from part q, along every direction (index as directions()).
   const std::vector<double>& gaps(int p, int q, const Vec3& offset) {
@@ -149,6 +148,7 @@ class SearchContext {
 
   const MeshAssembly& meshes_;
   const std::vector<PartGeometry>& geometry_;
+  GroupSearchLimits limits_;
   std::vector<Vec3> directions_;
   std::vector<std::vector<std::vector<double>>> levels_;
   std::map<std::array<int64_t, 5>, std::vector<double>> gaps_;
@@ -173,11 +173,12 @@ class SubAssemblySearch {
   Outcome run(const std::vector<Vec3>& offsets) {
     Position start;
     for (const Vec3& offset : offsets) start.offsets.push_back(minus(offset, offsets.front()));
-    insert(std::move(start));
+    known_.emplace(keyOf(start), 0);
+    positions_.push_back(std::move(start));
     std::vector<SetMove> moves;
     for (size_t at = 0; at < positions_.size(); ++at) {
       fillGaps(positions_[at]);
-      if (context_.outOfWork()) return stop(std::to_string(kMostPairSweeps) + " sweeps of pairs of parts");
+      if (context_.outOfWork()) return stop(std::to_string(context_.limits().pairSweeps) + " sweeps of pairs of parts");
       if (findSeparation()) {
         separationPosition_ = at;
         return Outcome::Separated;
@@ -186,8 +187,14 @@ class SubAssemblySearch {
         return stop("more than " + std::to_string(kMostSetsPerMove) + " sets of parts move alike at one position");
       }
       for (const SetMove& move : moves) {
-        if (positions_.size() >= kMostPositions) return stop(std::to_string(kMostPositions) + " positions of a sub-assembly");
-        insert(moved(positions_[at], move, static_cast<int>(at)));
+        Position next = moved(positions_[at], move, static_cast<int>(at));
+        std::vector<int64_t> key = keyOf(next);
+        if (known_.count(key)) continue;
+        if (positions_.size() >= context_.limits().positions) {
+          return stop(std::to_string(context_.limits().positions) + " positions of a sub-assembly");
+        }
+        known_.emplace(std::move(key), positions_.size());
+        positions_.push_back(std::move(next));
       }
     }
     return Outcome::Stuck;
@@ -227,14 +234,14 @@ class SubAssemblySearch {
     return move;
   }
 
-  void insert(Position position) {
+  // The position's offsets rounded to the tolerance: positions within it of each other are one.
+  std::vector<int64_t> keyOf(const Position& position) const {
     const double tolerance = context_.meshes().tolerance;
     std::vector<int64_t> key;
     for (const Vec3& offset : position.offsets) {
       for (int i = 0; i < 3; ++i) key.push_back(std::llround(offset[i] / tolerance));
     }
-    if (!known_.emplace(std::move(key), positions_.size()).second) return;
-    positions_.push_back(std::move(position));
+    return key;
   }
 
   // gaps_[dir][p * k + q]: how far p travels along direction dir before q stops it.
@@ -438,11 +445,12 @@ void separate(const Pending& current, const SubAssemblySearch& search, Disassemb
 
 }  // namespace
 
-DisassemblyPlan searchGroupMoves(const MeshAssembly& meshes, const std::vector<PartGeometry>& geometry) {
+DisassemblyPlan searchGroupMoves(const MeshAssembly& meshes, const std::vector<PartGeometry>& geometry,
+                                 const GroupSearchLimits& limits) {
   DisassemblyPlan plan;
   plan.singlePartPaths = false;
   plan.movesFollowRemovals = false;
-  SearchContext context(meshes, geometry);
+  SearchContext context(meshes, geometry, limits);
   std::vector<Separation> tree;
   Pending whole;
   for (int part = 0; part < meshes.assembly.partCount(); ++part) {

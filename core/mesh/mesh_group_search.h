@@ -4,6 +4,7 @@
 // counted in cells (mesh_group_search.cpp).
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -18,7 +19,13 @@ namespace desia::mesh {
 // of parts that the sweep lets travel that far; each sub-assembly is searched breadth-first, so
 // `level` (BurrTools' notation) has the fewest moves before each separation. groupStates: the
 // positions visited, all sub-assemblies together.
-DisassemblyPlan searchGroupMoves(const MeshAssembly& meshes, const std::vector<PartGeometry>& geometry);
+// Bounds of the search (work, not time: the same plan everywhere); past one the plan says which.
+struct GroupSearchLimits {
+  size_t positions = 100000;     // positions of one sub-assembly
+  int64_t pairSweeps = 2000000;  // sweeps of pairs of parts, all sub-assemblies together
+};
+DisassemblyPlan searchGroupMoves(const MeshAssembly& meshes, const std::vector<PartGeometry>& geometry,
+                                 const GroupSearchLimits& limits = {});
 
 // searchGroupMoves where its plan is complete and passes sweepPlan; else nothing. *note says which
 // (and the bound that stopped the search, if one did); *limit (if given) is that bound, "" if none.

@@ -87,7 +87,7 @@ std::vector<int> voxelLevel(const char* name) {
 // readings alike: they depend on which of several equally small separations is taken first, and
 // that on the order of the axes found in the turned frame.
 void expectPlannedOffLattice(const MeshAssembly& meshes, const MeshAssembly& straight, const char* name,
-                             bool ownFrame, const std::string& what) {
+                             bool ownFrame, bool replay, const std::string& what) {
   const AssemblyDocument document = readDocument(std::string("tests/data/burrtools/") + name + ".puz");
   const CheckReport own = checkDocument(document, bothTests());
   const CheckReport onLattice = checkMeshAssembly(straight, bothTests());
@@ -109,7 +109,7 @@ void expectPlannedOffLattice(const MeshAssembly& meshes, const MeshAssembly& str
   EXPECT_EQ(report.shapeRemoval->failure, "") << what;
   EXPECT_NE(report.shapeRemoval->checked.find("on no lattice: the search for moves of several parts"), std::string::npos)
       << report.shapeRemoval->checked;
-  EXPECT_EQ(replayMovesFailure(meshes, *report.disassembly), "") << what;
+  if (replay) EXPECT_EQ(replayMovesFailure(meshes, *report.disassembly), "") << what;
 }
 
 TEST(MeshGroupSearch, DentedPuzzlesOffTheirLatticeGetTheVoxelKindsLevel) {
@@ -118,12 +118,14 @@ TEST(MeshGroupSearch, DentedPuzzlesOffTheirLatticeGetTheVoxelKindsLevel) {
     const std::string straight = exported(readDocument(std::string("tests/data/burrtools/") + name + ".puz"), "obj");
     const std::string obj = dentedObj(straight, kDentCells);
     const MeshAssembly dented = meshesOf({{"dented.obj", obj}});
-    expectPlannedOffLattice(dented, meshesOf({{"puzzle.obj", straight}}), name, true, name);
+    // PelikanBurr's 108 moves take 5 s to replay: turned and in inches only.
+    const bool pelikan = std::string(name).rfind("Pelikan", 0) == 0;
+    expectPlannedOffLattice(dented, meshesOf({{"puzzle.obj", straight}}), name, true, !pelikan, name);
     const std::array<Vec3, 3> rotation = randomRotation(random);
     const MeshAssembly turned = meshesOf({{"turned.obj", transformedObj(obj, rotation, 25.4)}}, LengthUnit::Inch);
     const MeshAssembly turnedStraight =
         meshesOf({{"turned.obj", transformedObj(straight, rotation, 25.4)}}, LengthUnit::Inch);
-    expectPlannedOffLattice(turned, turnedStraight, name, false, std::string(name) + " turned, in inches");
+    expectPlannedOffLattice(turned, turnedStraight, name, false, true, std::string(name) + " turned, in inches");
   }
   EXPECT_EQ(voxelLevel("DraculasDentalDesaster-p0-s0"), (std::vector<int>{3, 5, 17, 6, 4}));
   EXPECT_EQ(voxelLevel("PelikanBurr-p0-s0"), (std::vector<int>{98, 2, 5}));
@@ -187,6 +189,25 @@ TEST(MeshGroupSearch, TheReplayAndTheSweepCatchAWrongOffLatticePlan) {
   skipped.moves.erase(skipped.moves.begin());
   EXPECT_NE(replayMovesFailure(meshes, skipped), "");
   EXPECT_NE(mesh::sweepPlan(meshes, geometry, skipped), "");
+}
+
+// The search is bounded by counts of work, and says which bound stopped it: PelikanBurr's first
+// separation takes 98 moves, far beyond 500 positions; the check then calls the parts left not
+// proven stuck.
+TEST(MeshGroupSearch, ASearchStoppedByItsBoundSaysWhich) {
+  const MeshAssembly meshes = meshesOf({{"dented.obj", dentedPuzzle("PelikanBurr-p0-s0")}});
+  mesh::GroupSearchLimits limits;
+  limits.positions = 500;
+  const DisassemblyPlan plan = mesh::searchGroupMoves(meshes, mesh::geometryOf(meshes), limits);
+  EXPECT_FALSE(plan.complete);
+  EXPECT_TRUE(plan.searchLimitReached);
+  EXPECT_EQ(plan.limit, "500 positions of a sub-assembly");
+  EXPECT_EQ(plan.groupStates, 500);
+  limits = {};
+  limits.pairSweeps = 1000;
+  const DisassemblyPlan fewSweeps = mesh::searchGroupMoves(meshes, mesh::geometryOf(meshes), limits);
+  EXPECT_TRUE(fewSweeps.searchLimitReached);
+  EXPECT_EQ(fewSweeps.limit, "1000 sweeps of pairs of parts");
 }
 
 }  // namespace
