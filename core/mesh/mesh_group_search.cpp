@@ -53,6 +53,16 @@ struct Position {
   PartMask moved = 0;
 };
 
+// The values ascending, one of each run within `tolerance` (its least).
+std::vector<double> distinctSorted(std::vector<double> values, double tolerance) {
+  std::sort(values.begin(), values.end());
+  std::vector<double> distinct;
+  for (double value : values) {
+    if (distinct.empty() || value - distinct.back() > tolerance) distinct.push_back(value);
+  }
+  return distinct;
+}
+
 // The base directions of the contacts (paper Section 3.1). Three square ones (a puzzle drawn on
 // axes, turned any way) are taken as the voxel kind takes its axes, the second first (core/voxel/
 // gap_matrix.h), each signed and matched to the world axis it lies nearest as the lattice reading
@@ -98,9 +108,17 @@ class SearchContext {
 
   const MeshAssembly& meshes() const { return meshes_; }
   const std::vector<Vec3>& directions() const { return directions_; }
-  // Levels along direction `dir` of the part's faces square to it, with the part at offset 0.
-  const std::vector<double>& levels(int part, int dir) const {
-    return levels_[static_cast<size_t>(part)][static_cast<size_t>(dir)];
+  // Where part p's faces square to direction dir meet part q's when p moves along it (both at
+  // offset 0): each level of q less each level of p, ascending, distinct within the tolerance.
+  const std::vector<double>& levelDifferences(int p, int q, int dir) {
+    const std::array<int, 3> key{p, q, dir};
+    const auto found = differences_.find(key);
+    if (found != differences_.end()) return found->second;
+    std::vector<double> values;
+    for (double mine : levels_[static_cast<size_t>(p)][static_cast<size_t>(dir)]) {
+      for (double theirs : levels_[static_cast<size_t>(q)][static_cast<size_t>(dir)]) values.push_back(theirs - mine);
+    }
+    return differences_.emplace(key, distinctSorted(std::move(values), meshes_.tolerance)).first->second;
   }
   int64_t sweeps() const { return sweeps_; }
   const GroupSearchLimits& limits() const { return limits_; }
@@ -138,12 +156,7 @@ class SearchContext {
       if (std::abs(dot(t.normal, d)) < 1 - tolerance::kFacingCosine) continue;
       for (const Vec3& p : t.p) values.push_back(dot(p, d));
     }
-    std::sort(values.begin(), values.end());
-    std::vector<double> distinct;
-    for (double value : values) {
-      if (distinct.empty() || value - distinct.back() > meshes_.tolerance) distinct.push_back(value);
-    }
-    return distinct;
+    return distinctSorted(std::move(values), meshes_.tolerance);
   }
 
   const MeshAssembly& meshes_;
@@ -152,6 +165,7 @@ class SearchContext {
   std::vector<Vec3> directions_;
   std::vector<std::vector<std::vector<double>>> levels_;
   std::map<std::array<int64_t, 5>, std::vector<double>> gaps_;
+  std::map<std::array<int, 3>, std::vector<double>> differences_;
   int64_t sweeps_ = 0;
 };
 
@@ -311,20 +325,15 @@ class SubAssemblySearch {
       for (int q = 0; q < k_; ++q) {
         if (q == p) continue;
         const double shift = dot(position.offsets[static_cast<size_t>(q)], d) - shiftP;
-        for (double mine : context_.levels(parts_[static_cast<size_t>(p)], dir)) {
-          for (double theirs : context_.levels(parts_[static_cast<size_t>(q)], dir)) {
-            const double distance = theirs + shift - mine;
-            if (distance > tolerance && distance < largest) values.push_back(distance);
-          }
+        const std::vector<double>& differences =
+            context_.levelDifferences(parts_[static_cast<size_t>(p)], parts_[static_cast<size_t>(q)], dir);
+        for (auto it = std::upper_bound(differences.begin(), differences.end(), tolerance - shift);
+             it != differences.end() && *it + shift < largest; ++it) {
+          values.push_back(*it + shift);
         }
       }
     }
-    std::sort(values.begin(), values.end());
-    std::vector<double> distinct;
-    for (double value : values) {
-      if (distinct.empty() || value - distinct.back() > tolerance) distinct.push_back(value);
-    }
-    return distinct;
+    return distinctSorted(std::move(values), tolerance);
   }
 
   // Every finite move from the current gaps: closures for each part, direction and distance, and
