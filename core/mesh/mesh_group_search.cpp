@@ -22,7 +22,6 @@
 #include <cstdint>
 #include <limits>
 #include <map>
-#include <set>
 
 #include "desia/analysis.h"
 #include "desia/tolerances.h"
@@ -108,31 +107,30 @@ class SearchContext {
 
   const MeshAssembly& meshes() const { return meshes_; }
   const std::vector<Vec3>& directions() const { return directions_; }
+  int64_t sweeps() const { return sweeps_; }
+  const GroupSearchLimits& limits() const { return limits_; }
+  bool outOfWork() const { return sweeps_ > limits_.pairSweeps; }
+
   // Where part p's faces square to direction dir meet part q's when p moves along it (both at
   // offset 0): each level of q less each level of p, ascending, distinct within the tolerance.
   const std::vector<double>& levelDifferences(int p, int q, int dir) {
-    const std::array<int, 3> key{p, q, dir};
-    const auto found = differences_.find(key);
-    if (found != differences_.end()) return found->second;
+    const std::vector<int64_t> key{-1, p, q, dir};
+    if (const std::vector<double>* known = cached(key)) return *known;
     std::vector<double> values;
     for (double mine : levels_[static_cast<size_t>(p)][static_cast<size_t>(dir)]) {
       for (double theirs : levels_[static_cast<size_t>(q)][static_cast<size_t>(dir)]) values.push_back(theirs - mine);
     }
-    return differences_.emplace(key, distinctSorted(std::move(values), meshes_.tolerance)).first->second;
+    return cache(key, distinctSorted(std::move(values), meshes_.tolerance));
   }
-  int64_t sweeps() const { return sweeps_; }
-  const GroupSearchLimits& limits() const { return limits_; }
-  bool outOfWork() const { return sweeps_ > limits_.pairSweeps; }
 
   // Gaps of part p placed at `offset` from part q, along every direction (index as directions()).
   const std::vector<double>& gaps(int p, int q, const Vec3& offset) {
     const double tolerance = meshes_.tolerance;
     const auto key = [&](int a, int b, const Vec3& r) {
-      return std::array<int64_t, 5>{a, b, std::llround(r[0] / tolerance), std::llround(r[1] / tolerance),
-                                    std::llround(r[2] / tolerance)};
+      return std::vector<int64_t>{a, b, std::llround(r[0] / tolerance), std::llround(r[1] / tolerance),
+                                  std::llround(r[2] / tolerance)};
     };
-    const auto found = gaps_.find(key(p, q, offset));
-    if (found != gaps_.end()) return found->second;
+    if (const std::vector<double>* known = cached(key(p, q, offset))) return *known;
     TriangleMesh moved = meshes_.parts[static_cast<size_t>(p)].mesh;
     for (Vec3& v : moved.vertices) v = plus(v, offset);
     const PartGeometry mover(moved);
@@ -145,11 +143,21 @@ class SearchContext {
           pairTravelDistance(meshes_, mover, geometry_[static_cast<size_t>(q)], directions_[dir + 1]);
       sweeps_ += 2;
     }
-    gaps_.emplace(key(q, p, negated(offset)), std::move(backward));
-    return gaps_.emplace(key(p, q, offset), std::move(forward)).first->second;
+    cache(key(q, p, negated(offset)), std::move(backward));
+    return cache(key(p, q, offset), std::move(forward));
   }
 
  private:
+  const std::vector<double>* cached(const std::vector<int64_t>& key) const {
+    const auto found = cacheIndex_.find(key);
+    return found == cacheIndex_.end() ? nullptr : &cacheValues_[found->second];
+  }
+  const std::vector<double>& cache(std::vector<int64_t> key, std::vector<double> values) {
+    const auto placed = cacheIndex_.emplace(std::move(key), cacheValues_.size());
+    if (placed.second) cacheValues_.push_back(std::move(values));
+    return cacheValues_[placed.first->second];
+  }
+
   std::vector<double> squareLevels(const PartGeometry& part, const Vec3& d) const {
     std::vector<double> values;
     for (const Triangle& t : part.triangles) {
@@ -164,8 +172,10 @@ class SearchContext {
   GroupSearchLimits limits_;
   std::vector<Vec3> directions_;
   std::vector<std::vector<std::vector<double>>> levels_;
-  std::map<std::array<int64_t, 5>, std::vector<double>> gaps_;
-  std::map<std::array<int, 3>, std::vector<double>> differences_;
+  // Gaps (keyed by two parts and their relative offset in tolerances) and level differences
+  // (keyed by -1, two parts and a direction), in one store: one kind of map keeps the code small.
+  std::map<std::vector<int64_t>, size_t> cacheIndex_;
+  std::vector<std::vector<double>> cacheValues_;
   int64_t sweeps_ = 0;
 };
 
@@ -352,11 +362,10 @@ class SubAssemblySearch {
         if (sets.empty()) break;
         std::sort(sets.begin(), sets.end());
         sets.erase(std::unique(sets.begin(), sets.end()), sets.end());
-        std::set<PartMask> known(sets.begin(), sets.end());
         for (size_t a = 0; a < sets.size(); ++a) {
           for (size_t b = 0; b < a; ++b) {
             const PartMask joined = sets[a] | sets[b];
-            if (joined == all || !known.insert(joined).second) continue;
+            if (joined == all || std::find(sets.begin(), sets.end(), joined) != sets.end()) continue;
             if (sets.size() >= kMostSetsPerMove) return false;
             sets.push_back(joined);
           }
