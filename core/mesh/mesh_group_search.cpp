@@ -464,7 +464,7 @@ void separate(const Pending& current, const SubAssemblySearch& search, Disassemb
 }  // namespace
 
 DisassemblyPlan searchGroupMoves(const MeshAssembly& meshes, const std::vector<PartGeometry>& geometry,
-                                 const GroupSearchLimits& limits) {
+                                 const GroupSearchLimits& limits, int64_t* pairSweeps) {
   DisassemblyPlan plan;
   plan.singlePartPaths = false;
   plan.movesFollowRemovals = false;
@@ -505,15 +505,17 @@ DisassemblyPlan searchGroupMoves(const MeshAssembly& meshes, const std::vector<P
   std::sort(plan.stuck.begin(), plan.stuck.end());
   plan.complete = plan.unseparated.empty();
   plan.level = levelOf(tree);
+  if (pairSweeps) *pairSweeps = context.sweeps();
   plan.levelMinimal = plan.complete;
   return plan;
 }
 
 std::optional<DisassemblyPlan> planByGroupMoves(const MeshAssembly& meshes, const std::vector<PartGeometry>& geometry,
                                                 std::string* note, std::string* limit) {
-  const DisassemblyPlan plan = searchGroupMoves(meshes, geometry);
+  int64_t sweeps = 0;
+  const DisassemblyPlan plan = searchGroupMoves(meshes, geometry, {}, &sweeps);
   const std::string what = "on no lattice: the search for moves of several parts (" + std::to_string(plan.groupStates) +
-                           " positions) ";
+                           " positions, " + std::to_string(sweeps) + " sweeps of part pairs) ";
   if (limit) *limit = plan.searchLimitReached ? plan.limit : "";
   if (!plan.complete) {
     *note = what + (plan.searchLimitReached ? "stopped at its limit (" + plan.limit + ")" : "finds no plan either");

@@ -22,10 +22,13 @@ namespace desia::mesh {
 // Bounds of the search (work, not time: the same plan everywhere); past one the plan says which.
 struct GroupSearchLimits {
   size_t positions = 100000;     // positions of one sub-assembly
-  int64_t pairSweeps = 2000000;  // sweeps of pairs of parts, all sub-assemblies together
+  // Sweeps of pairs of parts, all sub-assemblies together: about 0.1 ms each for parts of a few
+  // hundred triangles, so about 10 s natively at most (PelikanBurr off its lattice takes 8,568).
+  int64_t pairSweeps = 100000;
 };
+// *pairSweeps (if given): the sweeps the search made.
 DisassemblyPlan searchGroupMoves(const MeshAssembly& meshes, const std::vector<PartGeometry>& geometry,
-                                 const GroupSearchLimits& limits = {});
+                                 const GroupSearchLimits& limits = {}, int64_t* pairSweeps = nullptr);
 
 // searchGroupMoves where its plan is complete and passes sweepPlan; else nothing. *note says which
 // (and the bound that stopped the search, if one did); *limit (if given) is that bound, "" if none.

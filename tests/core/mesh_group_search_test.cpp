@@ -103,13 +103,17 @@ void expectPlannedOffLattice(const MeshAssembly& meshes, const MeshAssembly& str
   ASSERT_TRUE(report.disassembly && report.disassembly->complete) << what;
   EXPECT_FALSE(report.disassembly->singlePartPaths) << what;
   EXPECT_EQ(report.disassembly->level, onLattice.disassembly->level) << what;
-  if (ownFrame) EXPECT_EQ(report.disassembly->level, own.disassembly->level) << what;
+  if (ownFrame) {
+    EXPECT_EQ(report.disassembly->level, own.disassembly->level) << what;
+  }
   EXPECT_TRUE(report.disassembly->levelMinimal) << what;
   ASSERT_TRUE(report.shapeRemoval);
   EXPECT_EQ(report.shapeRemoval->failure, "") << what;
   EXPECT_NE(report.shapeRemoval->checked.find("on no lattice: the search for moves of several parts"), std::string::npos)
       << report.shapeRemoval->checked;
-  if (replay) EXPECT_EQ(replayMovesFailure(meshes, *report.disassembly), "") << what;
+  if (replay) {
+    EXPECT_EQ(replayMovesFailure(meshes, *report.disassembly), "") << what;
+  }
 }
 
 TEST(MeshGroupSearch, DentedPuzzlesOffTheirLatticeGetTheVoxelKindsLevel) {
