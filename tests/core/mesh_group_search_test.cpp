@@ -214,5 +214,32 @@ TEST(MeshGroupSearch, ASearchStoppedByItsBoundSaysWhich) {
   EXPECT_EQ(fewSweeps.limit, "1000 sweeps of pairs of parts");
 }
 
+// Part 1 in a staircase channel through part 2 (the middle layer: right, up, right, up, then out
+// to the right): five moves, beyond the single-part planner's bent paths of three. Dented off its
+// lattice, the search finds the five, the voxel kind's level, turned at random and in inches too.
+TEST(MeshGroupSearch, AFiveMovePathOutOfAStaircaseChannelOffItsLattice) {
+  const std::vector<std::string> solid(5, "2 2 2 2 2 2 2");
+  const std::vector<std::string> channel{"2 2 2 2 2 2 2", "2 1 0 2 2 2 2", "2 2 0 0 2 2 2", "2 2 2 0 0 0 0",
+                                         "2 2 2 2 2 2 2"};
+  const AssemblyDocument document = documentFromVoxels(testing::gridFromLayers({solid, channel, solid}));
+  const CheckReport own = checkDocument(document, bothTests());
+  ASSERT_TRUE(own.disassembly && own.disassembly->complete);
+  EXPECT_EQ(own.disassembly->level, (std::vector<int>{5}));
+  const std::string obj = dentedObj(exported(document, "obj"), kDentCells);
+  std::mt19937 random(55);
+  for (const double unitMm : {1.0, 25.4}) {
+    const MeshAssembly meshes = meshesOf({{"staircase.obj", transformedObj(obj, randomRotation(random), unitMm)}},
+                                         unitMm == 1.0 ? LengthUnit::Millimetre : LengthUnit::Inch);
+    EXPECT_FALSE(mesh::meshLattice(meshes));
+    const CheckReport report = checkMeshAssembly(meshes, bothTests());
+    ASSERT_TRUE(report.disassembly && report.disassembly->complete) << unitMm;
+    EXPECT_EQ(report.disassembly->level, own.disassembly->level) << unitMm;
+    ASSERT_EQ(report.disassembly->moves.size(), 5u) << unitMm;
+    for (size_t m = 0; m < 4; ++m) EXPECT_NEAR(report.disassembly->moves[m].length, 1, 1e-6) << unitMm;
+    EXPECT_TRUE(report.disassembly->moves.back().out) << unitMm;
+    EXPECT_EQ(replayMovesFailure(meshes, *report.disassembly), "") << unitMm;
+  }
+}
+
 }  // namespace
 }  // namespace desia
