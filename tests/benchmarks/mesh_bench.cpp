@@ -21,6 +21,8 @@ namespace {
 
 constexpr int kFaceDivisions = 9;
 constexpr double kBoxMm = 10;
+// --dented: how far each diagonal's farthest vertex is pushed in (a quarter of the exports' 1 mm cells).
+constexpr double kDentMm = 0.25;
 
 // One box with every face divided into k x k squares (two triangles each), outward.
 desia::TriangleMesh dividedBox(const desia::Vec3& corner) {
@@ -149,7 +151,7 @@ void runFile(const std::string& path, bool dented) {
   char buffer[65536];
   for (size_t n; (n = std::fread(buffer, 1, sizeof buffer, file)) > 0;) bytes.append(buffer, n);
   std::fclose(file);
-  if (dented) bytes = dentedObj(bytes, 0.25);
+  if (dented) bytes = dentedObj(bytes, kDentMm);
   const auto start = std::chrono::steady_clock::now();
   const desia::MeshAssembly meshes = desia::buildMeshAssembly(desia::readMeshParts({{path, bytes}}));
   const auto built = std::chrono::steady_clock::now();
