@@ -14,6 +14,7 @@
 #include "desia/analysis.h"
 #include "desia/tolerances.h"
 #include "mesh/mesh_geometry.h"
+#include "mesh/mesh_group_search.h"
 #include "mesh/mesh_lattice.h"
 
 namespace desia::mesh {
@@ -330,7 +331,18 @@ DisassemblyPlan planWithGeometry(const MeshAssembly& meshes, const std::vector<P
   std::string latticeNote;
   std::optional<DisassemblyPlan> onLattice = planOnLattice(meshes, geometry, &latticeNote);
   if (note) *note = latticeNote;
-  return onLattice ? *onLattice : plan;
+  if (onLattice) return *onLattice;
+  if (!latticeNote.empty()) return plan;  // on a lattice, the voxel disassembler's search was complete
+  // Off any lattice: the search for finite moves of several parts (mesh_group_search.cpp).
+  std::string searchNote, limit;
+  std::optional<DisassemblyPlan> byGroups = planByGroupMoves(meshes, geometry, &searchNote, &limit);
+  if (note) *note = searchNote;
+  if (byGroups) return *byGroups;
+  if (!limit.empty()) {
+    plan.searchLimitReached = true;
+    plan.limit = limit;
+  }
+  return plan;
 }
 
 }  // namespace desia::mesh

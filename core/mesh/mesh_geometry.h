@@ -154,6 +154,12 @@ double travelDistance(const MeshAssembly& meshes, const std::vector<PartGeometry
                       const std::vector<const PartGeometry*>& movers, const std::vector<bool>& obstacles,
                       const Vec3& d, double stopBelow, int* obstacle);
 
+// How far `mover` can travel along d before `obstacle` stops it (both as placed): infinity when
+// it passes, 0 when it cannot move. One pair of travelDistance, for callers that place parts
+// themselves (the search for moves of several parts, mesh_group_search.cpp).
+double pairTravelDistance(const MeshAssembly& meshes, const PartGeometry& mover, const PartGeometry& obstacle,
+                          const Vec3& d);
+
 // meshSweepObstacle on geometry computed once (the planner sweeps many times).
 std::string sweepObstacle(const MeshAssembly& meshes, const std::vector<PartGeometry>& geometry,
                           const std::vector<int>& moving, const std::vector<bool>& present, const Vec3& d);

@@ -162,6 +162,12 @@ double travelDistance(const MeshAssembly& meshes, const std::vector<PartGeometry
   return travel;
 }
 
+double pairTravelDistance(const MeshAssembly& meshes, const PartGeometry& mover, const PartGeometry& obstacle,
+                          const Vec3& d) {
+  const double emptyArea = tolerance::kMeshEmptyAreaShare * meshes.diagonal * meshes.diagonal;
+  return partTravel(mover, obstacle, Shadow(normalized(d)), meshes.tolerance, emptyArea, 0);  // 0: the least travel
+}
+
 std::string sweepObstacle(const MeshAssembly& meshes, const std::vector<PartGeometry>& geometry,
                           const std::vector<int>& moving, const std::vector<bool>& present, const Vec3& d) {
   std::vector<bool> obstacles = present;

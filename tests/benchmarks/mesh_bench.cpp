@@ -2,12 +2,15 @@
 // The mesh kind's benchmark (issue 29): a grid of touching boxes, each face a k x k grid of
 // squares (12 k² triangles a part; k = 9 gives 972), built (validation, overlaps, contacts) and
 // checked (DBG test and a swept plan). Prints one row per size: parts, triangles, seconds. A file
-// (OBJ, STL, 3MF) is read and checked as `desia check FILE` does: a row with its plan's level.
-//   desia_mesh_bench [PARTS | FILE ...]   (default 100 1000; parts are rounded to a grid nx × ny × nz)
+// (OBJ, STL, 3MF) is read and checked as `desia check FILE` does: a row with its plan's level;
+// `--dented FILE.obj` first pushes the vertex farthest along each diagonal (±1, ±1, ±1) a quarter
+// mm into its part, off any lattice, as tests/core/mesh_group_search_test.cpp does.
+//   desia_mesh_bench [PARTS | FILE | --dented FILE.obj ...]   (default 100 1000; parts are rounded to a grid nx × ny × nz)
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -18,6 +21,8 @@ namespace {
 
 constexpr int kFaceDivisions = 9;
 constexpr double kBoxMm = 10;
+// --dented: how far each diagonal's farthest vertex is pushed in (a quarter of the exports' 1 mm cells).
+constexpr double kDentMm = 0.25;
 
 // One box with every face divided into k x k squares (two triangles each), outward.
 desia::TriangleMesh dividedBox(const desia::Vec3& corner) {
@@ -102,8 +107,41 @@ void run(int requested) {
               report.disassembly && report.disassembly->complete ? "complete" : "INCOMPLETE");
 }
 
-// A mesh assembly from a file (PelikanBurr exported as OBJ: its plan needs the voxel disassembler).
-void runFile(const std::string& path) {
+// The OBJ with the vertex farthest along each diagonal moved `depth` mm back along it.
+std::string dentedObj(const std::string& obj, double depth) {
+  std::vector<std::string> lines;
+  std::vector<std::pair<size_t, desia::Vec3>> vertices;
+  std::istringstream in(obj);
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("v ", 0) == 0) {
+      desia::Vec3 p{};
+      std::istringstream(line.substr(2)) >> p[0] >> p[1] >> p[2];
+      vertices.push_back({lines.size(), p});
+    }
+    lines.push_back(line);
+  }
+  for (int corner = 0; corner < 8 && !vertices.empty(); ++corner) {
+    const desia::Vec3 s{corner & 1 ? -1.0 : 1.0, corner & 2 ? -1.0 : 1.0, corner & 4 ? -1.0 : 1.0};
+    const auto along = [&](const desia::Vec3& p) { return p[0] * s[0] + p[1] * s[1] + p[2] * s[2]; };
+    desia::Vec3 farthest = vertices.front().second;
+    for (const auto& vertex : vertices) {
+      if (along(vertex.second) > along(farthest)) farthest = vertex.second;
+    }
+    char text[128];
+    std::snprintf(text, sizeof text, "v %.17g %.17g %.17g", farthest[0] - depth * s[0], farthest[1] - depth * s[1],
+                  farthest[2] - depth * s[2]);
+    for (const auto& vertex : vertices) {
+      if (vertex.second == farthest) lines[vertex.first] = text;
+    }
+  }
+  std::string out;
+  for (const std::string& line : lines) out += line + "\n";
+  return out;
+}
+
+// A mesh assembly from a file (PelikanBurr exported as OBJ: its plan needs the voxel disassembler;
+// dented, the search for moves of several parts off any lattice).
+void runFile(const std::string& path, bool dented) {
   std::FILE* file = std::fopen(path.c_str(), "rb");
   if (!file) {
     std::fprintf(stderr, "cannot read %s\n", path.c_str());
@@ -113,6 +151,7 @@ void runFile(const std::string& path) {
   char buffer[65536];
   for (size_t n; (n = std::fread(buffer, 1, sizeof buffer, file)) > 0;) bytes.append(buffer, n);
   std::fclose(file);
+  if (dented) bytes = dentedObj(bytes, kDentMm);
   const auto start = std::chrono::steady_clock::now();
   const desia::MeshAssembly meshes = desia::buildMeshAssembly(desia::readMeshParts({{path, bytes}}));
   const auto built = std::chrono::steady_clock::now();
@@ -125,11 +164,12 @@ void runFile(const std::string& path) {
   if (report.disassembly) {
     for (int moves : report.disassembly->level) level += (level.empty() ? "" : ".") + std::to_string(moves);
   }
-  std::printf("| %s: %zu parts | %zu triangles | %zu contacts | build %.3f s | check %.3f s | total %.3f s | plan %s, level %s, %zu moves |\n",
-              path.c_str(), meshes.parts.size(), triangles, meshes.assembly.contacts.size(), seconds(start, built),
+  std::printf("| %s%s: %zu parts | %zu triangles | %zu contacts | build %.3f s | check %.3f s | total %.3f s | plan %s, level %s, %zu moves, %lld positions |\n",
+              dented ? "dented " : "", path.c_str(), meshes.parts.size(), triangles, meshes.assembly.contacts.size(), seconds(start, built),
               seconds(built, done), seconds(start, done),
               report.disassembly && report.disassembly->complete ? "complete" : "INCOMPLETE", level.c_str(),
-              report.disassembly ? report.disassembly->moves.size() : size_t{0});
+              report.disassembly ? report.disassembly->moves.size() : size_t{0},
+              static_cast<long long>(report.disassembly ? report.disassembly->groupStates : 0));
 }
 
 }  // namespace
@@ -138,8 +178,10 @@ int main(int argc, char** argv) {
   std::vector<int> sizes;
   for (int k = 1; k < argc; ++k) {
     const std::string arg = argv[k];
-    if (desia::isMeshAssemblyPath(arg)) {
-      runFile(arg);
+    if (arg == "--dented" && k + 1 < argc) {
+      runFile(argv[++k], true);
+    } else if (desia::isMeshAssemblyPath(arg)) {
+      runFile(arg, false);
     } else {
       sizes.push_back(std::atoi(argv[k]));
     }
