@@ -73,7 +73,9 @@ TEST(MeshLattice, EveryBurrToolsPuzzleAsMeshesGetsTheVoxelKindsVerdictAndPlan) {
     ++complete;
     onLattice += mesh.shapeRemoval->checked.find("planned by the complete voxel disassembler") != std::string::npos;
     // Plans of parts moved together are replayed turned and in inches below.
-    if (mesh.disassembly->singlePartPaths) EXPECT_EQ(replayFailure(meshes, *mesh.disassembly), "") << path;
+    if (mesh.disassembly->singlePartPaths) {
+      EXPECT_EQ(replayFailure(meshes, *mesh.disassembly), "") << path;
+    }
   }
   EXPECT_EQ(puzzles, 44);
   EXPECT_EQ(complete, 43);  // all but CubeInCage, which neither kind takes apart
