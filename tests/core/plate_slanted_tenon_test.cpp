@@ -104,7 +104,8 @@ bool steppedCollision(const SlantedTenonSite& site, const Plate& mover, const Pl
   for (double r = -kMargin + 0.013; r < site.reach + kMargin; r += kStep) {
     for (double h = -kMargin + 0.017; h < kThickness + kMargin; h += kStep) {
       for (double s = site.from + 0.011; s < site.to; s += 3) {
-        const Vec3 p = plus(site.origin[0], plus(scaled(site.out, r), plus(scaled(site.across, h), scaled(site.along, s))));
+        const Vec3 p =
+            plus(site.origin[0], plus(scaled(site.out, r), plus(scaled(site.across, h), scaled(site.along, s))));
         if (inside(mover, p)) samples.push_back(p);
       }
     }

@@ -57,8 +57,9 @@ std::string slantedTenonElsewhere(const PlateGraph& graph, const PlateContact& c
   if (!site) return "";
   const Vec3 exit = site->tenonPlate == joint.mover ? negated(site->out) : site->out;
   const double cosine = std::max(-1.0, std::min(1.0, dot(exit, normalized(joint.direction))));
-  return "; a slanted tenon fits there but lets " + geometry::plateName(graph.plates[static_cast<size_t>(joint.mover)]) +
-         " out only " + degrees(std::acos(cosine) * 180 / M_PI) + " off that way";
+  return "; a slanted tenon fits there but lets " +
+         geometry::plateName(graph.plates[static_cast<size_t>(joint.mover)]) + " out only " +
+         degrees(std::acos(cosine) * 180 / M_PI) + " off that way";
 }
 
 }  // namespace
@@ -84,7 +85,8 @@ std::vector<std::string> jointsNothingMakes(const std::vector<Plate>& plates, co
               " leaving at " + degrees(degreesBetweenLines(contact->edgeDirection, joint.direction)) + " to their " +
               (contact->crossing ? "crossing line" : "edge");
       // Tenons leave their mortises across the face they stand on (square to it), slides along the edge.
-      if (!contact->crossing) said += " and " + degrees(degreesBetweenLines(contact->normal, joint.direction)) + " to the contact's normal";
+      if (!contact->crossing)
+        said += " and " + degrees(degreesBetweenLines(contact->normal, joint.direction)) + " to the contact's normal";
       said += slantedTenonElsewhere(graph, *contact, joint, options);
       said += std::string(" (the plan's ") + jointTypeName(joint.type) + ")";
     }
@@ -100,8 +102,8 @@ std::string jointsNothingMakesSentence(const std::vector<Plate>& plates, const s
   if (missing.empty()) return "";
   size_t needed = 0;
   for (const PlateJoint& joint : planned) needed += joint.type == JointType::Empty ? 0 : 1;
-  std::string sentence = "no joint that can be cut or milled for " + std::to_string(missing.size()) + " of the plan's " +
-                         std::to_string(needed) + " joints: ";
+  std::string sentence = "no joint that can be cut or milled for " + std::to_string(missing.size()) +
+                         " of the plan's " + std::to_string(needed) + " joints: ";
   for (size_t k = 0; k < missing.size() && k < shown; ++k) sentence += (k ? "; " : "") + missing[k];
   if (missing.size() > shown) sentence += "; and " + std::to_string(missing.size() - shown) + " more";
   return sentence;

@@ -50,7 +50,8 @@ Vec3 pointInMortise(const Plate& mortisePlate, const SlantedTenonSite& site, dou
 // behind it (away from intoMortise)?
 bool sideLiesOnFace(const Plate& tenonPlate, size_t k, const Vec3& onFace, const Vec3& intoMortise) {
   const size_t next = (k + 1) % tenonPlate.bottom[0].size();
-  for (const Vec3& p : {tenonPlate.bottom[0][k], tenonPlate.bottom[0][next], tenonPlate.top[0][k], tenonPlate.top[0][next]}) {
+  for (const Vec3& p :
+       {tenonPlate.bottom[0][k], tenonPlate.bottom[0][next], tenonPlate.top[0][k], tenonPlate.top[0][next]}) {
     if (std::abs(dot(minus(p, onFace), intoMortise)) > tolerance::kContactMm) return false;
   }
   for (const Loop& loop : {tenonPlate.bottom[0], tenonPlate.top[0]}) {
@@ -74,7 +75,8 @@ bool placeOnSide(const Plate& tenonPlate, size_t k, SlantedTenonSite& site) {
   site.out = normalized(cross(site.along, site.across));
   if (dot(site.out, site.intoMortise) < 0) site.out = negated(site.out);
   const Vec3& topStart = tenonPlate.top[0][k];
-  site.origin = {tenonPlate.bottom[0][k], minus(topStart, scaled(site.along, dot(minus(topStart, tenonPlate.bottom[0][k]), site.along)))};
+  site.origin = {tenonPlate.bottom[0][k],
+                 minus(topStart, scaled(site.along, dot(minus(topStart, tenonPlate.bottom[0][k]), site.along)))};
   return true;
 }
 
@@ -112,8 +114,7 @@ bool mortisesInside(const std::vector<Plate>& plates, const SlantedTenonSite& si
   const Plate& mortisePlate = plates[static_cast<size_t>(site.mortisePlate)];
   const PlaneFrame frame(mortisePlate.bottom[0][0], plateThicknessAxis(mortisePlate));
   std::vector<Loop> loops;
-  for (const std::array<Loop, 2>& mortise :
-       slantedMortises(plates, site, options.woodMargin + options.clearance / 2)) {
+  for (const std::array<Loop, 2>& mortise : slantedMortises(plates, site, options.woodMargin + options.clearance / 2)) {
     loops.push_back(mortise[0]);
     loops.push_back(mortise[1]);
   }
@@ -169,7 +170,8 @@ std::vector<Plate> slantedTenonSolids(const SlantedTenonSite& site) {
   for (const auto& [start, stop] : site.spans) {
     std::array<Loop, 2> faces;
     for (size_t f = 0; f < 2; ++f) {
-      const Vec3 a = plus(site.origin[f], scaled(site.along, start)), b = plus(site.origin[f], scaled(site.along, stop));
+      const Vec3 a = plus(site.origin[f], scaled(site.along, start)),
+                 b = plus(site.origin[f], scaled(site.along, stop));
       faces[f] = {a, b, plus(b, end), plus(a, end)};
     }
     solids.push_back(solidOf(faces[0], faces[1]));
@@ -259,7 +261,8 @@ class SlantedTenonFamily final : public JointFamily {
   }
 
   void addFootprints(const PlateJoint& joint, std::vector<CutFootprint>& footprints) const override {
-    for (CutFootprint& mortise : slantedTenonFootprints(plates(), siteOf(joint))) footprints.push_back(std::move(mortise));
+    for (CutFootprint& mortise : slantedTenonFootprints(plates(), siteOf(joint)))
+      footprints.push_back(std::move(mortise));
   }
 
   void addCuts(const PlateJoint& joint, double, JointCutList& cuts) const override {
@@ -267,9 +270,7 @@ class SlantedTenonFamily final : public JointFamily {
   }
 
  private:
-  const SlantedTenonSite& siteOf(const PlateJoint& joint) const {
-    return *sites_[static_cast<size_t>(joint.contact)];
-  }
+  const SlantedTenonSite& siteOf(const PlateJoint& joint) const { return *sites_[static_cast<size_t>(joint.contact)]; }
   std::vector<std::optional<SlantedTenonSite>> sites_;  // per contact
 };
 

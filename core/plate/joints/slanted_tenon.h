@@ -33,8 +33,8 @@ struct SlantedTenonSite {
   // The side's edge on S's first face [0] and second [1] at along = 0 (distances along the side
   // are measured from there on both faces, so that the tenons' ends are square to the side).
   std::array<Vec3, 2> origin{};
-  double from = 0, to = 0;    // the stretch of the side on the face, along it
-  double reach = 0;           // how far along `out` the tenons run to F's far face
+  double from = 0, to = 0;                       // the stretch of the side on the face, along it
+  double reach = 0;                              // how far along `out` the tenons run to F's far face
   std::vector<std::pair<double, double>> spans;  // the tenons along the side: [start, end)
 };
 
