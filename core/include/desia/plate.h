@@ -212,6 +212,14 @@ struct StepTenonSizes {
                                  // final check, issue 26)
 };
 
+// A mortise-and-tenon at an angle (JointType::SlantedTenon): a plate's side bevelled to lie on
+// another's face, their planes from leastDegrees to less than square apart; its tenons are sized
+// as the square tenon's (tenonWidth, tenonCount, twoTenonsFrom).
+struct SlantedTenonSizes {
+  double leastDegrees = 60;      // the least angle between the plates' planes it joins (IBOIS's
+                                 // hexboxes: 80..88 degrees)
+};
+
 // The sizes of the joints cut or milled into the plates. The defaults are the sizes every design
 // has had; each family reads its own and the shared ones.
 struct JointCutOptions {
@@ -232,6 +240,7 @@ struct JointCutOptions {
   MitreSlideSizes mitreSlide;
   FaceTenonSizes faceTenon;
   StepTenonSizes stepTenon;
+  SlantedTenonSizes slantedTenon;
 };
 
 // The joint families' dimensions above as named settings: "dovetail.slope", "stepTenon.width",
@@ -264,10 +273,12 @@ enum class JointType {
   StepTenon,     // milled: plates meeting edge to edge at a shallow angle, the tenon plate running
                  // on square past the mitre into a pocket in the other's edge; it leaves along its
                  // axis or in its plane away from the edge
+  SlantedTenon,  // milled: a plate's bevelled side on another's face at 45..<90 degrees, tenons
+                 // along its plane through slanted mortises; it leaves along its plane, out of them
   Empty,         // the plates only touch
 };
 // "mortise-tenon", "halved", "dovetail", "mitre-tenon", "mitre-slide", "face-tenon",
-// "empty"
+// "step-tenon", "slanted-tenon", "empty"
 const char* jointTypeName(JointType type);
 
 // What a design makes of its joints.

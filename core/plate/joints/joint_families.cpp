@@ -14,6 +14,7 @@
 #include "plate/joints/halved.h"
 #include "plate/joints/mitre_slide.h"
 #include "plate/joints/mitre_tenon.h"
+#include "plate/joints/slanted_tenon.h"
 #include "plate/joints/step_tenon.h"
 #include "plate/joints/tenon.h"
 
@@ -47,13 +48,14 @@ const FamilyEntry kFamilies[] = {
     {JointType::FaceTenon, "face-tenon", true, makeFaceTenonFamily},
     {JointType::Dovetail, "dovetail", true, makeDovetailFamily},
     {JointType::StepTenon, "step-tenon", true, makeStepTenonFamily},
+    {JointType::SlantedTenon, "slanted-tenon", true, makeSlantedTenonFamily},
 };
 
 // The order the joints are cut in. Each plate's cut loops and attached solids come in this
 // order, which the bytes of a result depend on: a new family goes at the end.
 const JointType kCutOrder[] = {JointType::Dovetail,  JointType::MitreTenon, JointType::MitreSlide,
                                JointType::FaceTenon, JointType::Halved,     JointType::MortiseTenon,
-                               JointType::StepTenon};
+                               JointType::StepTenon, JointType::SlantedTenon};
 
 }  // namespace
 

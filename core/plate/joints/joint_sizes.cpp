@@ -75,6 +75,8 @@ const std::vector<Entry>& entries() {
                &JointCutOptions::stepTenon, &StepTenonSizes::leastDegrees),
       numberIn("stepTenon.mostDegrees", "the largest angle between the plates' planes it joins (50)", 1, 89,
                &JointCutOptions::stepTenon, &StepTenonSizes::mostDegrees),
+      numberIn("slantedTenon.leastDegrees", "the least angle between the plates' planes it joins (60)", 1, 89,
+               &JointCutOptions::slantedTenon, &SlantedTenonSizes::leastDegrees),
   };
   return table;
 }

@@ -8,6 +8,7 @@
 #include "analysis/vec3.h"
 #include "desia/tolerances.h"
 #include "plate/joints/joint_families.h"
+#include "plate/joints/slanted_tenon.h"
 #include "plate/plate_graph.h"
 #include "plate/plate_solid.h"
 
@@ -46,6 +47,21 @@ std::string howTheyMeet(const PlateContact& contact, const Vec3& axisA, const Ve
   return "edge to edge";
 }
 
+// Where a slanted tenon fits the pair's contact but lets the mover out another way than the
+// plan's (IBOIS's hexboxes: the plan slides plates along their edges, a tenon lets them out
+// along the tenon plate's plane only): that way and how far it is from the plan's, else "".
+std::string slantedTenonElsewhere(const PlateGraph& graph, const PlateContact& contact, const PlateJoint& joint,
+                                  const JointCutOptions& options) {
+  const size_t index = static_cast<size_t>(&contact - graph.contacts.data());
+  const std::optional<SlantedTenonSite> site = slantedTenonSiteOf(graph.plates, graph.computedContacts[index], options);
+  if (!site) return "";
+  const Vec3 exit = site->tenonPlate == joint.mover ? negated(site->out) : site->out;
+  const double cosine = std::max(-1.0, std::min(1.0, dot(exit, normalized(joint.direction))));
+  return "; a slanted tenon fits there but lets " +
+         geometry::plateName(graph.plates[static_cast<size_t>(joint.mover)]) + " out only " +
+         degrees(std::acos(cosine) * 180 / M_PI) + " off that way";
+}
+
 }  // namespace
 
 std::vector<std::string> jointsNothingMakes(const std::vector<Plate>& plates, const std::vector<PlateContact>& contacts,
@@ -69,7 +85,9 @@ std::vector<std::string> jointsNothingMakes(const std::vector<Plate>& plates, co
               " leaving at " + degrees(degreesBetweenLines(contact->edgeDirection, joint.direction)) + " to their " +
               (contact->crossing ? "crossing line" : "edge");
       // Tenons leave their mortises across the face they stand on (square to it), slides along the edge.
-      if (!contact->crossing) said += " and " + degrees(degreesBetweenLines(contact->normal, joint.direction)) + " to the contact's normal";
+      if (!contact->crossing)
+        said += " and " + degrees(degreesBetweenLines(contact->normal, joint.direction)) + " to the contact's normal";
+      said += slantedTenonElsewhere(graph, *contact, joint, options);
       said += std::string(" (the plan's ") + jointTypeName(joint.type) + ")";
     }
     missing.push_back(said);
@@ -84,8 +102,8 @@ std::string jointsNothingMakesSentence(const std::vector<Plate>& plates, const s
   if (missing.empty()) return "";
   size_t needed = 0;
   for (const PlateJoint& joint : planned) needed += joint.type == JointType::Empty ? 0 : 1;
-  std::string sentence = "no joint that can be cut or milled for " + std::to_string(missing.size()) + " of the plan's " +
-                         std::to_string(needed) + " joints: ";
+  std::string sentence = "no joint that can be cut or milled for " + std::to_string(missing.size()) +
+                         " of the plan's " + std::to_string(needed) + " joints: ";
   for (size_t k = 0; k < missing.size() && k < shown; ++k) sentence += (k ? "; " : "") + missing[k];
   if (missing.size() > shown) sentence += "; and " + std::to_string(missing.size() - shown) + " more";
   return sentence;
