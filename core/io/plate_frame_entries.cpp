@@ -139,7 +139,7 @@ std::vector<uint8_t> exportPlates(const AssemblyDocument& document, ExportFormat
   std::vector<NamedMesh> meshes;
   // A result cut with a clearance: the plates to make (their mortises larger), not the verified ones.
   for (const Plate& plate : document.fabricationPlates.empty() ? document.plates : document.fabricationPlates) {
-    if (options.part == 0 || options.part == plate.id) meshes.push_back({plate.id, plateSolidMesh(plate)});
+    if (options.part == 0 || options.part == plate.id) meshes.push_back({plate.id, plateSolidMesh(plate), ""});
   }
   if (meshes.empty()) throwBadInput(options.source, "part " + std::to_string(options.part) + " is not a plate of this structure (0 = all plates)");
   const std::string title = "plate export, " + (options.part == 0 ? std::to_string(meshes.size()) + " plates" : "plate " + std::to_string(options.part)) + ", mm";

@@ -178,7 +178,9 @@ PlateDesignResult PlateJointPlanner::run(const std::vector<PlanStep>& prefix) {
                      "mitres, step tenons where plates meet edge to edge with their planes " +
                          degreesText(options_.joints.stepTenon.leastDegrees) + " to " +
                          degreesText(options_.joints.stepTenon.mostDegrees) +
-                         " degrees apart); joints 'planned' gives the paper's graph design alone"
+                         " degrees apart, slanted tenons where a bevelled side lies on a face " +
+                         degreesText(options_.joints.slantedTenon.leastDegrees) +
+                         " to 90 degrees apart); joints 'planned' gives the paper's graph design alone"
                    : "") +
         (prefix.empty() && progress.bestDepth == 0 ? " (" + whyNoPlateLeavesFirst() + ")"
                                                    : atTheDeepestNode(tree.deepest()));

@@ -441,7 +441,9 @@ TEST(PlateCrossingAtAngle, ACrossingOffSquareWithinTheToleranceIsCutSquare) {
     const std::vector<PlateContact> contacts = computePlateContacts(plates, {});
     ASSERT_EQ(crossingCount(contacts), 1) << degrees;
     for (const PlateContact& contact : contacts) {
-      if (contact.crossing) EXPECT_EQ(needsSlantedNotchWalls(plates, contact), slanted) << degrees;
+      if (contact.crossing) {
+        EXPECT_EQ(needsSlantedNotchWalls(plates, contact), slanted) << degrees;
+      }
     }
   }
 }

@@ -150,7 +150,8 @@ TEST(PlateMissingJoints, TheIcosahedronsPlanWithoutStepTenonsNamesTheEdgesNoMade
   // Why milled found nothing names the milled families, step tenons and their angles included.
   EXPECT_NE(result.message.find("no milled plan: no interlocking joint plan exists"), std::string::npos) << result.message;
   EXPECT_NE(result.message.find("tenons across mitres, step tenons where plates meet edge to edge with their planes "
-                                "50 to 50 degrees apart)"),
+                                "50 to 50 degrees apart, slanted tenons where a bevelled side lies on a face 60 to 90 "
+                                "degrees apart)"),
             std::string::npos)
       << result.message;
 }

@@ -112,11 +112,11 @@ std::vector<NamedMesh> partMeshes(const FrameDocument& document, int part, const
   for (int beam : document.order) {
     const int id = layout.frame.beams[beam].id;
     if (part != 0 && part != id) continue;
-    meshes.push_back({id, partMesh(layout, document.labels, beam)});
+    meshes.push_back({id, partMesh(layout, document.labels, beam), ""});
   }
   if (meshes.empty())
     throwBadInput(source, "part " + std::to_string(part) + " is not a beam of this frame (0 = all parts)");
-  if (document.labels.empty() && part == 0) meshes.push_back({0, cubesMesh(layout)});
+  if (document.labels.empty() && part == 0) meshes.push_back({0, cubesMesh(layout), ""});
   return meshes;
 }
 

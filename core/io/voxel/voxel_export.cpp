@@ -71,7 +71,7 @@ std::vector<uint8_t> exportMeshes(const AssemblyDocument& document, ExportFormat
   }
   std::vector<NamedMesh> meshes;
   for (const int part : chosen) {
-    meshes.push_back({part, insetSurfaceOfVoxels(grid, part, voxels[part], options.voxelSize, options.clearance)});
+    meshes.push_back({part, insetSurfaceOfVoxels(grid, part, voxels[part], options.voxelSize, options.clearance), ""});
   }
 
   const std::string what = options.part == 0

@@ -69,8 +69,8 @@ const std::vector<Entry>& entries() {
               &JointCutOptions::stepTenon, &StepTenonSizes::height),
       numberIn("stepTenon.flare", "mm each end runs outwards per mm towards the mitre (0.25)", 0, 1,
                &JointCutOptions::stepTenon, &StepTenonSizes::flare),
-      // Below 40 degrees a plan may verify in memory and fail once written (docs/plates.md, "Not
-      // yet"): the result is checked as written before it is reported, so it is refused then.
+      // Wider than the default 40..50 the search slows (docs/plates.md, "Not yet"); the result is
+      // checked as written before it is reported, whatever the range.
       numberIn("stepTenon.leastDegrees", "the least angle between the plates' planes it joins (40)", 1, 89,
                &JointCutOptions::stepTenon, &StepTenonSizes::leastDegrees),
       numberIn("stepTenon.mostDegrees", "the largest angle between the plates' planes it joins (50)", 1, 89,
