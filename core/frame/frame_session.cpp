@@ -82,7 +82,14 @@ void FrameDesignSession::chooseChild(int n) {
     // The last beam stays with every free voxel: this choice completes the design, which must verify.
     FrameDesignResult result;
     result.progress.targetParts = state.designer.beamCount();
-    if (!state.designer.completeHere(&result)) {
+    bool verified = false;
+    try {
+      verified = state.designer.completeHere(&result);
+    } catch (...) {
+      state.designer.untake();  // the designer follows the session's path
+      throw;
+    }
+    if (!verified) {
       state.designer.untake();
       state.path.drop(static_cast<size_t>(n));
       throwBadInput("", "taking beam " + std::to_string(state.layout.frame.beams[preview.beam].id) +

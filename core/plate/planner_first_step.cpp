@@ -5,6 +5,7 @@
 // up so that a design refused at once, or stopped at its limits, says why with evidence (issue 26:
 // "design or say with evidence why none exists"; "the rest refused with the reason named").
 #include <algorithm>
+#include <iterator>
 #include <set>
 #include <string>
 #include <vector>
@@ -59,8 +60,8 @@ enum class PlateJointPlanner::NextStepStage {
   NoJoint,         // no joint of the realization lets it out that way
   CutsCollide,     // its joints would run into each other or into joints cut before
   RestNotHeld,     // the rest would not interlock with the key alone (DBG; at the root: the key moves more ways)
-  JointSolids,     // it would run into solids earlier joints left standing, or the LP test lets more move
-  Passes,          // a child of the node: the plans below it failed
+  JointSolids,     // it would run into solids earlier joints left standing
+  Passes,          // passes every test: a child the search did not enter (limits, or m kept)
 };
 
 PlateJointPlanner::NextStepStage PlateJointPlanner::furthestStage(const std::vector<PlanStep>& path, int plate,
@@ -91,10 +92,11 @@ PlateJointPlanner::NextStepStage PlateJointPlanner::furthestStage(const std::vec
       if (!child.back().blocked && path.empty()) {
         stage = NextStepStage::RestNotHeld;  // at the root: free, but (the search found) not along d alone
       } else if (!child.back().blocked) {
+        // Not the LP test (heldByInequalities): this runs after the search's time limit, and its
+        // cost on 100+ plates for every way left would overrun it.
         stage = !acceptable(child) ? NextStepStage::RestNotHeld
-                : (makesJoints(options_.realization) && runsIntoJointsSoFar(child)) || !heldByInequalities(child)
-                    ? NextStepStage::JointSolids
-                    : NextStepStage::Passes;
+                : makesJoints(options_.realization) && runsIntoJointsSoFar(child) ? NextStepStage::JointSolids
+                                                                                 : NextStepStage::Passes;
       }
     }
     furthest = std::max(furthest, stage);
@@ -111,7 +113,7 @@ std::string PlateJointPlanner::whyNoPlateLeavesFirst() const {
     const NextStepStage stage = furthestStage({}, plate, noCutPoints, &crossingPartners);
     if (stage >= NextStepStage::RestNotHeld) {
       ++free;
-    } else if (stage == NextStepStage::HeldByCrossing) {
+    } else if (!crossingPartners.empty()) {  // a way held by a crossing: held by crossings
       ++heldByCrossings;
       // The clearest example: a plate held by two crossings, else the fewest that hold one.
       const auto clearer = [](size_t n, size_t than) { return (n >= 2) != (than >= 2) ? n >= 2 : n < than; };
@@ -166,12 +168,11 @@ std::string PlateJointPlanner::whyNoPlateLeavesAfter(const std::vector<PlanStep>
       {"would have joints running into joints cut before or into each other",
        "would have joints running into joints cut before or into each other"},
       {"would leave the rest not held by the key alone", "would leave the rest not held by the key alone"},
-      {"would run into solids earlier joints leave standing, or leave the rest held by the DBG but not the "
-       "inequality test",
-       "would run into solids earlier joints leave standing, or leave the rest held by the DBG but not the "
-       "inequality test"},
-      {"was taken in the search, every plan below it failing", "were taken in the search, every plan below them failing"},
+      {"would run into solids earlier joints leave standing", "would run into solids earlier joints leave standing"},
+      {"passes every test here but was not tried (the search stopped at its limits, or kept other candidates)",
+       "pass every test here but were not tried (the search stopped at its limits, or kept other candidates)"},
   };
+  static_assert(std::size(kSaid) == static_cast<size_t>(NextStepStage::Passes) + 1, "a text for every stage");
   std::string text = takenList(plates_, path) + " taken (" + std::to_string(path.size()) + " of " +
                      std::to_string(graph_.plateCount) + "); of the " + std::to_string(rest.size()) + " left, ";
   bool first = true;

@@ -8,6 +8,7 @@
 
 #include <cstddef>
 #include <optional>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -68,12 +69,14 @@ class SessionPath {
 // is dropped by chooseChild, which throws, and the next is tried); false when none is left.
 template <class Session>
 bool takeFirstChild(Session& session) {
-  while (session.childCount() > 0) {
+  for (int count = session.childCount(); count > 0; count = session.childCount()) {
     try {
       session.chooseChild(0);
       return true;
     } catch (const Error&) {
-      // That child completed a design that failed and was dropped: try the next one.
+      // That child completed a design that failed and was dropped: try the next one. Any other
+      // error left the children as they were: trying the same child again would loop forever.
+      if (session.childCount() != count - 1) throw;
     }
   }
   return false;

@@ -102,6 +102,7 @@ TEST(PlateMissingJoints, ASearchThatGetsNoFurtherSaysWhyAtItsDeepestNode) {
   for (size_t from = 0; from < rest.size();) {
     const size_t end = std::min(rest.find("; ", from), rest.size());
     const std::string clause = rest.substr(from, end - from);
+    ASSERT_EQ(clause.find(" more"), std::string::npos) << "every plate listed: " << said;
     const size_t verb = clause.find(clause.find(" are ") != std::string::npos ? " are " : " is ");
     const size_t cut = clause.find(" would ") < verb ? clause.find(" would ") : verb;
     const std::set<int> ids = idsIn(clause.substr(0, cut));
