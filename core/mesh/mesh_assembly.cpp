@@ -51,7 +51,7 @@ CheckReport checkMeshAssembly(const MeshAssembly& meshes, const CheckOptions& op
   if (!latticeNote.empty()) check.checked += "; " + latticeNote;
   if (report.disassembly && !report.disassembly->complete) {
     check.failure = report.disassembly->searchLimitReached
-                        ? "the plan stopped at its limit (" + report.disassembly->limit + "): the parts left are not proven stuck"
+                        ? "the plan stopped short (" + report.disassembly->limit + "): the parts left are not proven stuck"
                         : "no translation separates the parts left: the plan is stuck";
   }
   report.shapeRemoval = check;

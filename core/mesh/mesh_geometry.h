@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <limits>
 #include <string>
 #include <vector>
@@ -154,11 +155,12 @@ double travelDistance(const MeshAssembly& meshes, const std::vector<PartGeometry
                       const std::vector<const PartGeometry*>& movers, const std::vector<bool>& obstacles,
                       const Vec3& d, double stopBelow, int* obstacle);
 
-// How far `mover` can travel along d before `obstacle` stops it (both as placed): infinity when
-// it passes, 0 when it cannot move. One pair of travelDistance, for callers that place parts
-// themselves (the search for moves of several parts, mesh_group_search.cpp).
-double pairTravelDistance(const MeshAssembly& meshes, const PartGeometry& mover, const PartGeometry& obstacle,
-                          const Vec3& d);
+// How far `mover`, placed `moverOffset` off where its geometry lies, can travel along d before
+// `obstacle` (as placed) stops it: infinity when it passes, 0 when it cannot move. One pair of
+// travelDistance, for callers that place parts themselves (the search for moves of several parts,
+// mesh_group_search.cpp). *work (if given) grows by the triangles and triangle pairs looked at.
+double pairTravelDistance(const MeshAssembly& meshes, const PartGeometry& mover, const Vec3& moverOffset,
+                          const PartGeometry& obstacle, const Vec3& d, int64_t* work = nullptr);
 
 // meshSweepObstacle on geometry computed once (the planner sweeps many times).
 std::string sweepObstacle(const MeshAssembly& meshes, const std::vector<PartGeometry>& geometry,

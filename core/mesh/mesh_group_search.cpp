@@ -11,8 +11,16 @@
 // faces square to d of the parts they pass (where a channel across d may open, as cells meet on a
 // lattice), and the gaps themselves (where a slanted face stops a move). Positions are the parts'
 // offsets from the sub-assembly's first part, hashed rounded to the tolerance; breadth-first, so
-// the first separation found has the fewest moves (BurrTools' level). Bounded by counts of
-// positions and sweeps (work, not time: the same plan everywhere).
+// the first separation found has the fewest moves (BurrTools' level). Bounded by counts of positions and of
+// work (triangles swept, set operations: the same plan everywhere).
+//
+// What it proves: where every face of every part is square or parallel to every direction tried
+// (boxes drawn off any lattice), the distances tried are all the distances at which what can move
+// changes, as the cells' sizes are on a lattice, so the level is the least and a search that runs
+// out of positions proves the parts left stuck (for moves along those directions, as BurrTools'
+// and the voxel kind's proofs are). Where a face is slanted, a way out may need a distance no
+// square face or gap marks (a peg that lines up with a countersunk hole), so the plan
+// found is not proven the fewest and parts left are not proven stuck: the plan says why.
 #include "mesh/mesh_group_search.h"
 
 #include <algorithm>
@@ -20,12 +28,15 @@
 #include <bitset>
 #include <cmath>
 #include <cstdint>
+#include <deque>
 #include <limits>
 #include <map>
+#include <set>
 
 #include "desia/analysis.h"
 #include "desia/tolerances.h"
 #include "mesh/mesh_lattice.h"
+#include "search/level_notation.h"
 
 namespace desia::mesh {
 namespace {
@@ -38,6 +49,10 @@ constexpr size_t kMostParts = 64;
 constexpr size_t kMostSetsPerMove = 4096;
 
 using PartMask = uint64_t;
+
+std::string workLimitText(const GroupSearchLimits& limits) {
+  return std::to_string(limits.work) + " steps of work (triangles swept, sets of parts joined)";
+}
 
 int countOf(PartMask mask) { return static_cast<int>(std::bitset<64>(mask).count()); }
 
@@ -88,9 +103,27 @@ std::vector<Vec3> searchDirections(const Assembly& assembly) {
   return {axes[1], axes[0], cross(axes[0], axes[1])};  // right-handed, as the lattice's grid
 }
 
+// Is the triangle's plane square to d, or parallel to it (as drawn: the sweep's own reading)?
+bool squareToDirection(const Triangle& t, const Vec3& d) { return std::abs(dot(t.normal, d)) >= 1 - tolerance::kFacingCosine; }
+bool parallelToDirection(const Triangle& t, const Vec3& d) { return std::abs(dot(t.normal, d)) <= tolerance::kDrawnDirectionRad; }
+
+// The first part (index) with a face neither square nor parallel to one of the directions; -1 if
+// none: then the distances tried are complete (see the file's comment) and the search proves.
+int firstSlantedPart(const std::vector<PartGeometry>& geometry, const std::vector<Vec3>& directions) {
+  for (size_t part = 0; part < geometry.size(); ++part) {
+    for (const Triangle& t : geometry[part].triangles) {
+      if (t.twiceArea <= 0) continue;
+      for (const Vec3& d : directions) {
+        if (!squareToDirection(t, d) && !parallelToDirection(t, d)) return static_cast<int>(part);
+      }
+    }
+  }
+  return -1;
+}
+
 // What every sub-assembly's search shares: the directions, each part's levels of faces square to
-// each direction, and the gaps of part pairs by their relative offset (most recur: a move changes
-// the offsets of the parts it moves only).
+// each direction, the gaps of part pairs by their relative offset (most recur: a move changes the
+// offsets of the parts it moves only), and the work done.
 class SearchContext {
  public:
   SearchContext(const MeshAssembly& meshes, const std::vector<PartGeometry>& geometry, const GroupSearchLimits& limits)
@@ -99,6 +132,7 @@ class SearchContext {
       directions_.push_back(d);
       directions_.push_back(negated(d));
     }
+    slantedPart_ = firstSlantedPart(geometry, directions_);
     levels_.resize(geometry.size());
     for (size_t part = 0; part < geometry.size(); ++part) {
       for (const Vec3& d : directions_) levels_[part].push_back(squareLevels(geometry[part], d));
@@ -109,7 +143,11 @@ class SearchContext {
   const std::vector<Vec3>& directions() const { return directions_; }
   int64_t sweeps() const { return sweeps_; }
   const GroupSearchLimits& limits() const { return limits_; }
-  bool outOfWork() const { return sweeps_ > limits_.pairSweeps; }
+  // -1 when every face is square or parallel to every direction (the search is complete).
+  int slantedPart() const { return slantedPart_; }
+  void addWork(int64_t steps) { work_ += steps; }
+  int64_t work() const { return work_; }
+  bool outOfWork() const { return work_ > limits_.work; }
 
   // Where part p's faces square to direction dir meet part q's when p moves along it (both at
   // offset 0): each level of q less each level of p, ascending, distinct within the tolerance.
@@ -120,10 +158,12 @@ class SearchContext {
     for (double mine : levels_[static_cast<size_t>(p)][static_cast<size_t>(dir)]) {
       for (double theirs : levels_[static_cast<size_t>(q)][static_cast<size_t>(dir)]) values.push_back(theirs - mine);
     }
+    work_ += static_cast<int64_t>(values.size());
     return cache(key, distinctSorted(std::move(values), meshes_.tolerance));
   }
 
   // Gaps of part p placed at `offset` from part q, along every direction (index as directions()).
+  // Swept in place: p's triangles are moved one at a time inside the sweep, after its box passed.
   const std::vector<double>& gaps(int p, int q, const Vec3& offset) {
     const double tolerance = meshes_.tolerance;
     const auto key = [&](int a, int b, const Vec3& r) {
@@ -131,17 +171,13 @@ class SearchContext {
                                   std::llround(r[2] / tolerance)};
     };
     if (const std::vector<double>* known = cached(key(p, q, offset))) return *known;
-    TriangleMesh moved = meshes_.parts[static_cast<size_t>(p)].mesh;
-    for (Vec3& v : moved.vertices) v = plus(v, offset);
-    const PartGeometry mover(moved);
+    const PartGeometry& mover = geometry_[static_cast<size_t>(p)];
+    const PartGeometry& obstacle = geometry_[static_cast<size_t>(q)];
     std::vector<double> forward(directions_.size()), backward(directions_.size());
-    for (size_t dir = 0; dir < directions_.size(); dir += 2) {
+    for (size_t dir = 0; dir < directions_.size(); ++dir) {
       // q moving against d meets p exactly where p moving along d meets q.
-      forward[dir] = backward[dir + 1] =
-          pairTravelDistance(meshes_, mover, geometry_[static_cast<size_t>(q)], directions_[dir]);
-      forward[dir + 1] = backward[dir] =
-          pairTravelDistance(meshes_, mover, geometry_[static_cast<size_t>(q)], directions_[dir + 1]);
-      sweeps_ += 2;
+      forward[dir] = backward[dir ^ 1] = pairTravelDistance(meshes_, mover, offset, obstacle, directions_[dir], &work_);
+      ++sweeps_;
     }
     cache(key(q, p, negated(offset)), std::move(backward));
     return cache(key(p, q, offset), std::move(forward));
@@ -158,10 +194,14 @@ class SearchContext {
     return cacheValues_[placed.first->second];
   }
 
+  // Where the part's faces square to d lie along d (where cells meet, on a lattice). Not the
+  // vertices of faces slanted to d: tried, they multiply the positions (DraculasDentalDesaster,
+  // dented at a slant, went from 634 positions past 100,000), and they would not make the distances
+  // complete either (two slanted faces' edges crossing mark a distance no vertex does).
   std::vector<double> squareLevels(const PartGeometry& part, const Vec3& d) const {
     std::vector<double> values;
     for (const Triangle& t : part.triangles) {
-      if (std::abs(dot(t.normal, d)) < 1 - tolerance::kFacingCosine) continue;
+      if (t.twiceArea <= 0 || !squareToDirection(t, d)) continue;
       for (const Vec3& p : t.p) values.push_back(dot(p, d));
     }
     return distinctSorted(std::move(values), meshes_.tolerance);
@@ -171,12 +211,15 @@ class SearchContext {
   const std::vector<PartGeometry>& geometry_;
   GroupSearchLimits limits_;
   std::vector<Vec3> directions_;
+  int slantedPart_ = -1;
   std::vector<std::vector<std::vector<double>>> levels_;
   // Gaps (keyed by two parts and their relative offset in tolerances) and level differences
   // (keyed by -1, two parts and a direction), in one store: one kind of map keeps the code small.
+  // A deque: a reference handed out stays valid while later entries are added.
   std::map<std::vector<int64_t>, size_t> cacheIndex_;
-  std::vector<std::vector<double>> cacheValues_;
+  std::deque<std::vector<double>> cacheValues_;
   int64_t sweeps_ = 0;
+  int64_t work_ = 0;
 };
 
 // A set of parts moved along directions()[direction] by `amount` (kFar: out).
@@ -202,14 +245,15 @@ class SubAssemblySearch {
     std::vector<SetMove> moves;
     for (size_t at = 0; at < positions_.size(); ++at) {
       fillGaps(positions_[at]);
-      if (context_.outOfWork()) return stop(std::to_string(context_.limits().pairSweeps) + " sweeps of pairs of parts");
-      if (findSeparation()) {
+      if (findSeparation()) {  // the gaps are all known: a separation found is sound past the bound too
         separationPosition_ = at;
         return Outcome::Separated;
       }
-      if (!movesFrom(positions_[at], &moves)) {
+      const MovesFound found = movesFrom(positions_[at], &moves);
+      if (found == MovesFound::TooManySets) {
         return stop("more than " + std::to_string(kMostSetsPerMove) + " sets of parts move alike at one position");
       }
+      if (found == MovesFound::OutOfWork || context_.outOfWork()) return stop(workLimitText(context_.limits()));
       for (const SetMove& move : moves) {
         Position next = moved(positions_[at], move, static_cast<int>(at));
         std::vector<int64_t> key = keyOf(next);
@@ -286,6 +330,7 @@ class SubAssemblySearch {
 
   // The least set holding part x that can move `amount` along direction dir (kFar: out).
   PartMask closure(int x, int dir, double amount) const {
+    context_.addWork(static_cast<int64_t>(k_) * k_);  // at most every pair looked at once
     const double reach = std::isinf(amount) ? kFar : amount - context_.meshes().tolerance;
     const std::vector<double>& gaps = gaps_[static_cast<size_t>(dir)];
     PartMask set = PartMask{1} << x;
@@ -346,9 +391,11 @@ class SubAssemblySearch {
     return distinctSorted(std::move(values), tolerance);
   }
 
+  enum class MovesFound { All, TooManySets, OutOfWork };
+
   // Every finite move from the current gaps: closures for each part, direction and distance, and
-  // their unions (moving independent sets at once is one move). False past kMostSetsPerMove.
-  bool movesFrom(const Position& position, std::vector<SetMove>* moves) const {
+  // their unions (moving independent sets at once is one move).
+  MovesFound movesFrom(const Position& position, std::vector<SetMove>* moves) const {
     moves->clear();
     const PartMask all = k_ == 64 ? ~PartMask{0} : (PartMask{1} << k_) - 1;
     std::vector<PartMask> sets;
@@ -362,18 +409,31 @@ class SubAssemblySearch {
         if (sets.empty()) break;
         std::sort(sets.begin(), sets.end());
         sets.erase(std::unique(sets.begin(), sets.end()), sets.end());
-        for (size_t a = 0; a < sets.size(); ++a) {
-          for (size_t b = 0; b < a; ++b) {
-            const PartMask joined = sets[a] | sets[b];
-            if (joined == all || std::find(sets.begin(), sets.end(), joined) != sets.end()) continue;
-            if (sets.size() >= kMostSetsPerMove) return false;
-            sets.push_back(joined);
-          }
-        }
+        const MovesFound unions = addUnions(all, &sets);
+        if (unions != MovesFound::All) return unions;
         for (PartMask set : sets) moves->push_back(SetMove{dir, amount, set});
+        if (context_.outOfWork()) return MovesFound::OutOfWork;
       }
     }
-    return true;
+    return MovesFound::All;
+  }
+
+  // Unions of the closures, each set once (sorted and distinct on entry), as the voxel search
+  // makes them: m independent closures have 2^m - 1 unions, so kMostSetsPerMove and the work
+  // bound stop that, each union and its lookup counted.
+  MovesFound addUnions(PartMask all, std::vector<PartMask>* sets) const {
+    std::set<PartMask> known(sets->begin(), sets->end());
+    for (size_t a = 0; a < sets->size(); ++a) {
+      for (size_t b = 0; b < a; ++b) {
+        context_.addWork(1 + static_cast<int64_t>(std::log2(static_cast<double>(known.size()) + 1)));
+        const PartMask joined = (*sets)[a] | (*sets)[b];
+        if (joined == all || !known.insert(joined).second) continue;
+        if (sets->size() >= kMostSetsPerMove) return MovesFound::TooManySets;
+        sets->push_back(joined);
+      }
+      if (context_.outOfWork()) return MovesFound::OutOfWork;
+    }
+    return MovesFound::All;
   }
 
   Position moved(const Position& from, const SetMove& move, int parent) const {
@@ -398,52 +458,16 @@ class SubAssemblySearch {
   std::string limit_;
 };
 
-// A separation of the tree BurrTools' level notation is read from.
-struct Separation {
-  int moves = 0;
-  int left = -1, removed = -1;  // sub-assemblies of two parts or more, when separated
-};
-
-// A sub-assembly waiting: its parts, their offsets, and where its separation hangs in the tree.
-struct Pending {
-  std::vector<int> parts;
-  std::vector<Vec3> offsets;
-  int parent = -1;
-  bool left = true;
-};
-
-// BurrTools' notation: a separation's moves, then, in pre-order, those of the side left in place
-// and of the side removed, where that side holds a separation of more than one move.
-std::vector<int> levelOf(const std::vector<Separation>& tree) {
-  if (tree.empty()) return {};
-  std::vector<bool> multi(tree.size(), false);
-  for (size_t n = tree.size(); n-- > 0;) {  // children come after their parent
-    const Separation& s = tree[n];
-    multi[n] = s.moves > 1 || (s.left >= 0 && multi[static_cast<size_t>(s.left)]) ||
-               (s.removed >= 0 && multi[static_cast<size_t>(s.removed)]);
-  }
-  std::vector<int> level, stack{0};
-  while (!stack.empty()) {
-    const Separation& s = tree[static_cast<size_t>(stack.back())];
-    stack.pop_back();
-    level.push_back(s.moves);
-    if (s.removed >= 0 && multi[static_cast<size_t>(s.removed)]) stack.push_back(s.removed);
-    if (s.left >= 0 && multi[static_cast<size_t>(s.left)]) stack.push_back(s.left);
-  }
-  return level;
-}
+using search::levelOf;
+using search::Separation;
+using Pending = search::PendingSubAssembly<Vec3>;
 
 // Records the separation of `current` and queues both sides (the side left in place first).
 void separate(const Pending& current, const SubAssemblySearch& search, DisassemblyPlan* plan,
               std::vector<Separation>* tree, std::vector<Pending>* pending) {
   const std::vector<GroupMove> moves = search.plan();
   plan->moves.insert(plan->moves.end(), moves.begin(), moves.end());
-  const int node = static_cast<int>(tree->size());
-  tree->push_back({static_cast<int>(moves.size()), -1, -1});
-  if (current.parent >= 0) {
-    Separation& parent = (*tree)[static_cast<size_t>(current.parent)];
-    (current.left ? parent.left : parent.removed) = node;
-  }
+  const int node = search::addSeparation(tree, static_cast<int>(moves.size()), current.parent, current.left);
   Pending sides[2];  // [0] left in place, [1] removed
   for (size_t p = 0; p < current.parts.size(); ++p) {
     Pending& side = sides[search.leaves(static_cast<int>(p)) ? 1 : 0];
@@ -464,7 +488,7 @@ void separate(const Pending& current, const SubAssemblySearch& search, Disassemb
 }  // namespace
 
 DisassemblyPlan searchGroupMoves(const MeshAssembly& meshes, const std::vector<PartGeometry>& geometry,
-                                 const GroupSearchLimits& limits, int64_t* pairSweeps) {
+                                 const GroupSearchLimits& limits, GroupSearchStats* stats) {
   DisassemblyPlan plan;
   plan.singlePartPaths = false;
   plan.movesFollowRemovals = false;
@@ -505,20 +529,30 @@ DisassemblyPlan searchGroupMoves(const MeshAssembly& meshes, const std::vector<P
   std::sort(plan.stuck.begin(), plan.stuck.end());
   plan.complete = plan.unseparated.empty();
   plan.level = levelOf(tree);
-  if (pairSweeps) *pairSweeps = context.sweeps();
-  plan.levelMinimal = plan.complete;
+  // Proven only where the distances tried are complete (the file's comment): else say why not.
+  const bool proves = context.slantedPart() < 0;
+  const bool stoppedAtBound = plan.searchLimitReached;
+  plan.levelMinimal = plan.complete && proves;
+  if (!proves && !plan.searchLimitReached) {
+    plan.limit = "part " + std::to_string(meshes.parts[static_cast<size_t>(context.slantedPart())].id) +
+                 " has faces slanted to the moves tried, and off a lattice the search does not try every distance there";
+    plan.searchLimitReached = !plan.complete;  // the parts left are not proven stuck
+  }
+  if (stats) *stats = GroupSearchStats{context.sweeps(), context.work(), proves, stoppedAtBound};
   return plan;
 }
 
 std::optional<DisassemblyPlan> planByGroupMoves(const MeshAssembly& meshes, const std::vector<PartGeometry>& geometry,
                                                 std::string* note, std::string* limit) {
-  int64_t sweeps = 0;
-  const DisassemblyPlan plan = searchGroupMoves(meshes, geometry, {}, &sweeps);
+  GroupSearchStats stats;
+  const DisassemblyPlan plan = searchGroupMoves(meshes, geometry, {}, &stats);
   const std::string what = "on no lattice: the search for moves of several parts (" + std::to_string(plan.groupStates) +
-                           " positions, " + std::to_string(sweeps) + " sweeps of part pairs) ";
+                           " positions, " + std::to_string(stats.pairSweeps) + " sweeps of part pairs) ";
   if (limit) *limit = plan.searchLimitReached ? plan.limit : "";
   if (!plan.complete) {
-    *note = what + (plan.searchLimitReached ? "stopped at its limit (" + plan.limit + ")" : "finds no plan either");
+    *note = what + (stats.stoppedAtBound ? "stopped at its limit (" + plan.limit + ")"
+                    : stats.proves ? "finds no plan either: every face is square or parallel to the moves, so the parts left are stuck"
+                                   : "finds no plan, and the parts left are not proven stuck: " + plan.limit);
     return std::nullopt;
   }
   const std::string failure = sweepPlan(meshes, geometry, plan);
@@ -526,7 +560,7 @@ std::optional<DisassemblyPlan> planByGroupMoves(const MeshAssembly& meshes, cons
     *note = what + "found a plan that fails the sweep: " + failure;
     return std::nullopt;
   }
-  *note = what + "planned them, each move swept";
+  *note = what + "planned them, each move swept" + (plan.levelMinimal ? "" : " (the level not proven the fewest: " + plan.limit + ")");
   return plan;
 }
 

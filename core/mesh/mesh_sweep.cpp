@@ -117,26 +117,41 @@ double pairTravel(const Triangle& front, const Triangle& back, const Shadow& sha
   return std::max(least, 0.0);
 }
 
-// The least travel over the pairs of the two parts, stopping early once it is below `stopBelow`.
-double partTravel(const PartGeometry& mover, const PartGeometry& obstacle, const Shadow& shadow, double tolerance,
-                  double emptyArea, double stopBelow) {
+// The box moved by `offset`.
+Box shifted(const Box& box, const Vec3& offset) { return Box{plus(box.lo, offset), plus(box.hi, offset)}; }
+
+Triangle shifted(Triangle triangle, const Vec3& offset) {
+  for (Vec3& p : triangle.p) p = plus(p, offset);
+  return triangle;
+}
+
+// The least travel over the pairs of the two parts, the mover placed `moverOffset` off where its
+// geometry lies, stopping early once it is below `stopBelow`. *work (if given) counts the mover's
+// triangles looked at and the triangle pairs compared: the cost, whatever the meshes' sizes.
+double partTravel(const PartGeometry& mover, const Vec3& moverOffset, const PartGeometry& obstacle,
+                  const Shadow& shadow, double tolerance, double emptyArea, double stopBelow, int64_t* work) {
   const Vec3& d = shadow.d;
+  const bool moved = moverOffset != Vec3{0, 0, 0};
   double travel = std::numeric_limits<double>::infinity();
-  if (!sweptBoxMeets(mover.box, d, obstacle.box, tolerance)) return travel;
-  for (const Triangle& front : mover.triangles) {
-    if (dot(front.normal, d) <= tolerance::kDrawnDirectionRad) continue;
+  if (!sweptBoxMeets(shifted(mover.box, moverOffset), d, obstacle.box, tolerance)) return travel;
+  int64_t pairs = 0;
+  for (const Triangle& placed : mover.triangles) {
+    if (dot(placed.normal, d) <= tolerance::kDrawnDirectionRad) continue;
+    const Triangle front = moved ? shifted(placed, moverOffset) : placed;
     const Box box = front.box();
     if (!sweptBoxMeets(box, d, obstacle.box, tolerance)) continue;
     obstacle.tree.query([&](const Box& other) { return sweptBoxMeets(box, d, other, tolerance); },
                         [&](int index) {
                           const Triangle& back = obstacle.triangles[static_cast<size_t>(index)];
                           if (dot(back.normal, d) < -tolerance::kDrawnDirectionRad) {
+                            ++pairs;
                             travel = std::min(travel, pairTravel(front, back, shadow, tolerance, emptyArea));
                           }
                           return travel >= stopBelow;
                         });
-    if (travel < stopBelow) return travel;
+    if (travel < stopBelow) break;
   }
+  if (work) *work += static_cast<int64_t>(mover.triangles.size()) + pairs;
   return travel;
 }
 
@@ -151,7 +166,7 @@ double travelDistance(const MeshAssembly& meshes, const std::vector<PartGeometry
   for (size_t other = 0; other < geometry.size(); ++other) {
     if (!obstacles[other]) continue;
     for (const PartGeometry* mover : movers) {
-      const double t = partTravel(*mover, geometry[other], shadow, meshes.tolerance, emptyArea, stopBelow);
+      const double t = partTravel(*mover, Vec3{0, 0, 0}, geometry[other], shadow, meshes.tolerance, emptyArea, stopBelow, nullptr);
       if (t < travel) {
         travel = t;
         if (obstacle) *obstacle = static_cast<int>(other);
@@ -162,10 +177,11 @@ double travelDistance(const MeshAssembly& meshes, const std::vector<PartGeometry
   return travel;
 }
 
-double pairTravelDistance(const MeshAssembly& meshes, const PartGeometry& mover, const PartGeometry& obstacle,
-                          const Vec3& d) {
+double pairTravelDistance(const MeshAssembly& meshes, const PartGeometry& mover, const Vec3& moverOffset,
+                          const PartGeometry& obstacle, const Vec3& d, int64_t* work) {
   const double emptyArea = tolerance::kMeshEmptyAreaShare * meshes.diagonal * meshes.diagonal;
-  return partTravel(mover, obstacle, Shadow(normalized(d)), meshes.tolerance, emptyArea, 0);  // 0: the least travel
+  // 0: the least travel, never stopping early
+  return partTravel(mover, moverOffset, obstacle, Shadow(normalized(d)), meshes.tolerance, emptyArea, 0, work);
 }
 
 std::string sweepObstacle(const MeshAssembly& meshes, const std::vector<PartGeometry>& geometry,

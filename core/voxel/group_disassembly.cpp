@@ -16,6 +16,7 @@
 #include <utility>
 
 #include "desia/error.h"
+#include "search/level_notation.h"
 #include "voxel/gap_matrix.h"
 
 namespace desia {
@@ -365,40 +366,9 @@ class SubAssemblySearch {
   std::string limit_;
 };
 
-// A separation of the tree BurrTools' level notation is read from.
-struct Separation {
-  int moves = 0;
-  int left = -1, removed = -1;  // sub-assemblies of two parts or more, when separated
-};
-
-// A sub-assembly waiting to be taken apart: its parts, their offsets, and where its separation
-// hangs in the tree (parent separation, and whether it is the part left in place).
-struct PendingSubAssembly {
-  std::vector<int> parts;
-  std::vector<int> offsets;
-  int parent = -1;
-  bool left = true;
-};
-
-// BurrTools' movesText: a separation's moves, then, in pre-order, those of the side left in place
-// and of the side removed, where that side contains a separation of more than one move.
-std::vector<int> levelOf(const std::vector<Separation>& tree) {
-  if (tree.empty()) return {};
-  std::vector<bool> multi(tree.size(), false);
-  for (size_t n = tree.size(); n-- > 0;) {  // children come after their parent
-    const Separation& s = tree[n];
-    multi[n] = s.moves > 1 || (s.left >= 0 && multi[s.left]) || (s.removed >= 0 && multi[s.removed]);
-  }
-  std::vector<int> level, stack{0};
-  while (!stack.empty()) {
-    const Separation& s = tree[static_cast<size_t>(stack.back())];
-    stack.pop_back();
-    level.push_back(s.moves);
-    if (s.removed >= 0 && multi[s.removed]) stack.push_back(s.removed);
-    if (s.left >= 0 && multi[s.left]) stack.push_back(s.left);
-  }
-  return level;
-}
+using search::levelOf;
+using search::Separation;
+using PendingSubAssembly = search::PendingSubAssembly<int>;  // offsets: 3 cell counts per part
 
 }  // namespace
 
@@ -418,12 +388,7 @@ void recordSeparation(const PendingSubAssembly& current, const std::vector<Group
                       const std::vector<char>& leaving, const std::vector<int>& offsets, GroupPlan* plan,
                       std::vector<Separation>* tree, std::vector<PendingSubAssembly>* pending) {
   plan->moves.insert(plan->moves.end(), moves.begin(), moves.end());
-  const int node = static_cast<int>(tree->size());
-  tree->push_back({static_cast<int>(moves.size()), -1, -1});
-  if (current.parent >= 0) {
-    Separation& parent = (*tree)[static_cast<size_t>(current.parent)];
-    (current.left ? parent.left : parent.removed) = node;
-  }
+  const int node = search::addSeparation(tree, static_cast<int>(moves.size()), current.parent, current.left);
   PendingSubAssembly sides[2];  // [0] left in place, [1] removed
   for (size_t p = 0; p < current.parts.size(); ++p) {
     PendingSubAssembly& side = sides[leaving[p] ? 1 : 0];

@@ -16,6 +16,8 @@
 
 #include "desia/formats.h"
 #include "desia/mesh.h"
+#include "mesh/mesh_geometry.h"
+#include "mesh/mesh_group_search.h"
 
 namespace {
 
@@ -170,6 +172,14 @@ void runFile(const std::string& path, bool dented) {
               report.disassembly && report.disassembly->complete ? "complete" : "INCOMPLETE", level.c_str(),
               report.disassembly ? report.disassembly->moves.size() : size_t{0},
               static_cast<long long>(report.disassembly ? report.disassembly->groupStates : 0));
+  if (dented) {  // the search's own counts, against its bounds (GroupSearchLimits)
+    desia::mesh::GroupSearchStats stats;
+    const auto searchStart = std::chrono::steady_clock::now();
+    desia::mesh::searchGroupMoves(meshes, desia::mesh::geometryOf(meshes), {}, &stats);
+    std::printf("|   search alone: %.3f s, %lld sweeps of part pairs, %lld steps of work (bound %lld) |\n",
+                seconds(searchStart, std::chrono::steady_clock::now()), static_cast<long long>(stats.pairSweeps),
+                static_cast<long long>(stats.work), static_cast<long long>(desia::mesh::GroupSearchLimits{}.work));
+  }
 }
 
 }  // namespace
