@@ -30,7 +30,7 @@
 #include <cstdint>
 #include <deque>
 #include <limits>
-#include <map>
+#include <unordered_map>
 #include <set>
 
 #include "desia/analysis.h"
@@ -49,6 +49,20 @@ constexpr size_t kMostParts = 64;
 constexpr size_t kMostSetsPerMove = 4096;
 
 using PartMask = uint64_t;
+
+// Hashes a key of integers (FNV-1a over their bits): the maps below are only looked up, never
+// walked, so their order cannot reach the plan.
+struct IntegersHash {
+  template <typename Integers>
+  size_t operator()(const Integers& key) const {
+    uint64_t hash = 1469598103934665603ull;
+    for (const int64_t value : key) hash = (hash ^ static_cast<uint64_t>(value)) * 1099511628211ull;
+    return static_cast<size_t>(hash);
+  }
+};
+
+// A cache key: two parts and their relative offset in tolerances, or -1, two parts and a direction.
+using CacheKey = std::array<int64_t, 5>;
 
 std::string workLimitText(const GroupSearchLimits& limits) {
   return std::to_string(limits.work) + " steps of work (triangles swept, sets of parts joined)";
@@ -152,7 +166,7 @@ class SearchContext {
   // Where part p's faces square to direction dir meet part q's when p moves along it (both at
   // offset 0): each level of q less each level of p, ascending, distinct within the tolerance.
   const std::vector<double>& levelDifferences(int p, int q, int dir) {
-    const std::vector<int64_t> key{-1, p, q, dir};
+    const CacheKey key{-1, p, q, dir, 0};
     if (const std::vector<double>* known = cached(key)) return *known;
     std::vector<double> values;
     for (double mine : levels_[static_cast<size_t>(p)][static_cast<size_t>(dir)]) {
@@ -167,8 +181,7 @@ class SearchContext {
   const std::vector<double>& gaps(int p, int q, const Vec3& offset) {
     const double tolerance = meshes_.tolerance;
     const auto key = [&](int a, int b, const Vec3& r) {
-      return std::vector<int64_t>{a, b, std::llround(r[0] / tolerance), std::llround(r[1] / tolerance),
-                                  std::llround(r[2] / tolerance)};
+      return CacheKey{a, b, std::llround(r[0] / tolerance), std::llround(r[1] / tolerance), std::llround(r[2] / tolerance)};
     };
     if (const std::vector<double>* known = cached(key(p, q, offset))) return *known;
     const PartGeometry& mover = geometry_[static_cast<size_t>(p)];
@@ -184,12 +197,12 @@ class SearchContext {
   }
 
  private:
-  const std::vector<double>* cached(const std::vector<int64_t>& key) const {
+  const std::vector<double>* cached(const CacheKey& key) const {
     const auto found = cacheIndex_.find(key);
     return found == cacheIndex_.end() ? nullptr : &cacheValues_[found->second];
   }
-  const std::vector<double>& cache(std::vector<int64_t> key, std::vector<double> values) {
-    const auto placed = cacheIndex_.emplace(std::move(key), cacheValues_.size());
+  const std::vector<double>& cache(const CacheKey& key, std::vector<double> values) {
+    const auto placed = cacheIndex_.emplace(key, cacheValues_.size());
     if (placed.second) cacheValues_.push_back(std::move(values));
     return cacheValues_[placed.first->second];
   }
@@ -216,7 +229,7 @@ class SearchContext {
   // Gaps (keyed by two parts and their relative offset in tolerances) and level differences
   // (keyed by -1, two parts and a direction), in one store: one kind of map keeps the code small.
   // A deque: a reference handed out stays valid while later entries are added.
-  std::map<std::vector<int64_t>, size_t> cacheIndex_;
+  std::unordered_map<CacheKey, size_t, IntegersHash> cacheIndex_;
   std::deque<std::vector<double>> cacheValues_;
   int64_t sweeps_ = 0;
   int64_t work_ = 0;
@@ -420,14 +433,24 @@ class SubAssemblySearch {
 
   // Unions of the closures, each set once (sorted and distinct on entry), as the voxel search
   // makes them: m independent closures have 2^m - 1 unions, so kMostSetsPerMove and the work
-  // bound stop that, each union and its lookup counted.
+  // bound stop that, each union and its lookup counted. Few sets (the common case) are looked up
+  // along the vector, many in an ordered set built once they are many.
   MovesFound addUnions(PartMask all, std::vector<PartMask>* sets) const {
-    std::set<PartMask> known(sets->begin(), sets->end());
+    constexpr size_t kLookAlong = 32;
+    std::set<PartMask> known;
+    const auto isNew = [&](PartMask set) {
+      if (known.empty() && sets->size() > kLookAlong) known.insert(sets->begin(), sets->end());
+      if (known.empty()) {
+        context_.addWork(1 + static_cast<int64_t>(sets->size()) / 8);
+        return std::find(sets->begin(), sets->end(), set) == sets->end();
+      }
+      context_.addWork(1 + static_cast<int64_t>(std::log2(static_cast<double>(known.size()))));
+      return known.insert(set).second;
+    };
     for (size_t a = 0; a < sets->size(); ++a) {
       for (size_t b = 0; b < a; ++b) {
-        context_.addWork(1 + static_cast<int64_t>(std::log2(static_cast<double>(known.size()) + 1)));
         const PartMask joined = (*sets)[a] | (*sets)[b];
-        if (joined == all || !known.insert(joined).second) continue;
+        if (joined == all || !isNew(joined)) continue;
         if (sets->size() >= kMostSetsPerMove) return MovesFound::TooManySets;
         sets->push_back(joined);
       }
@@ -451,7 +474,7 @@ class SubAssemblySearch {
   std::vector<int> parts_;
   int k_;
   std::vector<Position> positions_;
-  std::map<std::vector<int64_t>, size_t> known_;
+  std::unordered_map<std::vector<int64_t>, size_t, IntegersHash> known_;
   std::vector<std::vector<double>> gaps_;
   size_t separationPosition_ = 0;
   SetMove separation_;
