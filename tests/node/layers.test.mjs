@@ -27,7 +27,7 @@ const HEADER_LAYER = {
 // Private headers a layer offers the layers above it: vectors for every layer, the part-motion
 // helpers, the construction search and the session path for the designers, a plate's plane for cut sheets.
 const SHARED_PRIVATE = new Set(['analysis/vec3.h', 'analysis/part_motion.h', 'search/construction_search.h',
-  'search/restarts.h', 'search/session_path.h', 'plate/plane_frame.h']);
+  'search/restarts.h', 'search/session_path.h', 'search/level_notation.h', 'plate/plane_frame.h']);
 
 function layerOfInclude(spelled, includingFolder) {
   if (spelled.startsWith('desia/')) return HEADER_LAYER[spelled.slice('desia/'.length)];
