@@ -13,8 +13,8 @@
 #include "analysis/vec3.h"
 #include "desia/analysis.h"
 #include "desia/tolerances.h"
+#include "mesh/group_search_entry.h"
 #include "mesh/mesh_geometry.h"
-#include "mesh/mesh_group_search.h"
 #include "mesh/mesh_lattice.h"
 
 namespace desia::mesh {
@@ -335,7 +335,7 @@ DisassemblyPlan planWithGeometry(const MeshAssembly& meshes, const std::vector<P
   if (!latticeNote.empty()) return plan;  // on a lattice, the voxel disassembler's search was complete
   // Off any lattice: the search for finite moves of several parts (mesh_group_search.cpp).
   std::string searchNote, limit;
-  std::optional<DisassemblyPlan> byGroups = planByGroupMoves(meshes, geometry, &searchNote, &limit);
+  std::optional<DisassemblyPlan> byGroups = planOffLatticeGroupMoves(meshes, geometry, &searchNote, &limit);
   if (note) *note = searchNote;
   if (byGroups) return *byGroups;
   if (!limit.empty()) {

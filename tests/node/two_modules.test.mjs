@@ -3,7 +3,8 @@
 // package's worker loads the light module (voxels, contacts, meshes) first and the full one the
 // first time a plate or frame comes, and the answers are the CLI's, byte for byte. The light
 // module on its own refuses plates and frames with code 'kind-not-built' and answers the rest as
-// the full one does.
+// the full one does, except a mesh assembly whose plan needs moves of several parts off any lattice
+// (that search is in the full module only).
 //
 //   DESIA_CLI=build/dev/core/cli/desia node --test tests/node/two_modules.test.mjs
 import assert from 'node:assert/strict';
@@ -111,6 +112,50 @@ test('the light module alone refuses plates and frames with kind-not-built, and 
       return 'no error';
     };
     assert.equal(message(light), message(full), text);
+  }
+});
+
+// The OBJ with the vertex farthest along each of the eight diagonals (the first in the file where
+// several are as far) moved `depth` back along it, as tests/core/mesh_group_search_test.cpp dents a
+// puzzle: it then lies on no lattice, and its plan needs the search for moves of several parts.
+function dentedObj(obj, depth) {
+  const lines = obj.split('\n');
+  const vertices = lines.flatMap((line, at) => (line.startsWith('v ') ? [{ at, p: line.slice(2).trim().split(/\s+/).map(Number) }] : []));
+  const along = (p, s) => p[0] * s[0] + p[1] * s[1] + p[2] * s[2];
+  for (let corner = 0; corner < 8; ++corner) {
+    const s = [corner & 1 ? -1 : 1, corner & 2 ? -1 : 1, corner & 4 ? -1 : 1];
+    let farthest = vertices[0].p;
+    for (const { p } of vertices) if (along(p, s) > along(farthest, s)) farthest = p;
+    const dented = farthest.map((value, k) => value - s[k] * depth);
+    for (const vertex of vertices.filter(({ p }) => p.every((value, k) => value === farthest[k]))) {
+      lines[vertex.at] = `v ${dented.join(' ')}`;
+      vertex.p = dented;
+    }
+  }
+  return lines.join('\n');
+}
+
+test('a mesh puzzle off any lattice: the light module refuses its search with kind-not-built, the worker asks the full one, which gives the CLI\'s report', async () => {
+  const exported = path.join(tmp, 'dracula.obj');
+  const puzzle = path.join(root, 'tests/data/burrtools/DraculasDentalDesaster-p0-s0.puz');
+  assert.equal(runCli(['export', puzzle, '--format', 'obj', '--output', exported]).status, 0);
+  const dentedFile = path.join(tmp, 'dented.obj');
+  fs.writeFileSync(dentedFile, dentedObj(fs.readFileSync(exported, 'utf8'), 0.25));
+  const cli = runCli(['check', dentedFile, '--json']);
+  assert.ok(cli.status === 0 || cli.status === 1, cli.stderr);
+  const report = JSON.parse(cli.stdout);
+  assert.deepEqual(report.disassembly.level, [3, 5, 17, 6, 4], 'the voxel kind\'s level, off the lattice');
+  assert.equal(report.disassembly.levelMinimal, false, 'the dents are slanted: not claimed the fewest');
+
+  const document = { files: [{ name: 'dented.obj', text: fs.readFileSync(dentedFile, 'utf8') }] };
+  const light = await loadDesiaModule({ module: 'light' });
+  assert.throws(() => light.check(document), (error) => notBuilt(error) && /moves of several parts off a lattice/.test(error.message));
+  const desia = await createDesia();
+  try {
+    assert.deepEqual(await desia.check(document), report);
+    assert.deepEqual(desia.modules(), ['light', 'full']);
+  } finally {
+    await desia.terminate();
   }
 });
 
