@@ -178,7 +178,7 @@ void writeDisassembly(const Assembly& assembly, const DisassemblyPlan& plan, std
       if (!plan.levelMinimal) out << " (not proven the fewest: " << plan.limit << ")";
     }
   } else {
-    out << (plan.searchLimitReached ? "disassembly: not proven (search limit); " : "disassembly: none found; ")
+    out << (plan.searchLimitReached ? "disassembly: not proven; " : "disassembly: none found; ")
         << (plan.singlePartPaths ? (plan.searchLimitReached ? "removed before stopping:" : "removed before getting stuck:")
                                  : (plan.searchLimitReached ? "moves before stopping:" : "moves before getting stuck:"));
   }
@@ -202,8 +202,8 @@ void writeDisassembly(const Assembly& assembly, const DisassemblyPlan& plan, std
       }
     }
     if (plan.searchLimitReached) {
-      out << "\n  (the search stopped at its limit" << (plan.limit.empty() ? "" : ", " + plan.limit)
-          << ": these parts are not proven stuck)";
+      out << "\n  (the search stopped short" << (plan.limit.empty() ? "" : ": " + plan.limit)
+          << "; these parts are not proven stuck)";
     }
   }
   out << "\n";

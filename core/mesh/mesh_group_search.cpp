@@ -121,18 +121,40 @@ std::vector<Vec3> searchDirections(const Assembly& assembly) {
 bool squareToDirection(const Triangle& t, const Vec3& d) { return std::abs(dot(t.normal, d)) >= 1 - tolerance::kFacingCosine; }
 bool parallelToDirection(const Triangle& t, const Vec3& d) { return std::abs(dot(t.normal, d)) <= tolerance::kDrawnDirectionRad; }
 
-// The first part (index) with a face neither square nor parallel to one of the directions; -1 if
-// none: then the distances tried are complete (see the file's comment) and the search proves.
-int firstSlantedPart(const std::vector<PartGeometry>& geometry, const std::vector<Vec3>& directions) {
+// Why the search cannot prove (see the file's comment), or "" when it can: the directions must be
+// three lines square to each other (fewer leave ways out untried: a part may need to step back
+// along a contact's normal before a move along their cross product), and every face must lie
+// square to one of them, flat along it within the tolerance, and parallel to the other two.
+std::string whyNotProven(const MeshAssembly& meshes, const std::vector<PartGeometry>& geometry,
+                         const std::vector<Vec3>& directions) {
+  const auto squareLines = [](const Vec3& a, const Vec3& b) { return std::abs(dot(a, b)) < tolerance::kSquareCosine; };
+  if (directions.size() != 6 || !squareLines(directions[0], directions[2]) || !squareLines(directions[0], directions[4]) ||
+      !squareLines(directions[2], directions[4])) {
+    return "the contacts give " + std::to_string(directions.size() / 2) +
+           " lines to move along, not three square to each other, and the search does not try every way out";
+  }
   for (size_t part = 0; part < geometry.size(); ++part) {
     for (const Triangle& t : geometry[part].triangles) {
       if (t.twiceArea <= 0) continue;
-      for (const Vec3& d : directions) {
-        if (!squareToDirection(t, d) && !parallelToDirection(t, d)) return static_cast<int>(part);
+      int squareTo = 0;
+      for (size_t line = 0; line < 6; line += 2) {
+        const Vec3& d = directions[line];
+        if (squareToDirection(t, d)) {
+          const double lo = std::min({dot(t.p[0], d), dot(t.p[1], d), dot(t.p[2], d)});
+          const double hi = std::max({dot(t.p[0], d), dot(t.p[1], d), dot(t.p[2], d)});
+          if (hi - lo <= meshes.tolerance) ++squareTo;
+        } else if (!parallelToDirection(t, d)) {
+          squareTo = -1;
+          break;
+        }
+      }
+      if (squareTo != 1) {
+        return "part " + std::to_string(meshes.parts[part].id) +
+               " has faces slanted to the moves tried, and off a lattice the search does not try every distance there";
       }
     }
   }
-  return -1;
+  return "";
 }
 
 // What every sub-assembly's search shares: the directions, each part's levels of faces square to
@@ -146,7 +168,7 @@ class SearchContext {
       directions_.push_back(d);
       directions_.push_back(negated(d));
     }
-    slantedPart_ = firstSlantedPart(geometry, directions_);
+    notProven_ = whyNotProven(meshes, geometry, directions_);
     levels_.resize(geometry.size());
     for (size_t part = 0; part < geometry.size(); ++part) {
       for (const Vec3& d : directions_) levels_[part].push_back(squareLevels(geometry[part], d));
@@ -157,8 +179,8 @@ class SearchContext {
   const std::vector<Vec3>& directions() const { return directions_; }
   int64_t sweeps() const { return sweeps_; }
   const GroupSearchLimits& limits() const { return limits_; }
-  // -1 when every face is square or parallel to every direction (the search is complete).
-  int slantedPart() const { return slantedPart_; }
+  // Why the search cannot prove the fewest moves or stuck parts; "" when it can.
+  const std::string& notProven() const { return notProven_; }
   void addWork(int64_t steps) { work_ += steps; }
   int64_t work() const { return work_; }
   bool outOfWork() const { return work_ > limits_.work; }
@@ -224,7 +246,7 @@ class SearchContext {
   const std::vector<PartGeometry>& geometry_;
   GroupSearchLimits limits_;
   std::vector<Vec3> directions_;
-  int slantedPart_ = -1;
+  std::string notProven_;
   std::vector<std::vector<std::vector<double>>> levels_;
   // Gaps (keyed by two parts and their relative offset in tolerances) and level differences
   // (keyed by -1, two parts and a direction), in one store: one kind of map keeps the code small.
@@ -257,7 +279,7 @@ class SubAssemblySearch {
     positions_.push_back(std::move(start));
     std::vector<SetMove> moves;
     for (size_t at = 0; at < positions_.size(); ++at) {
-      fillGaps(positions_[at]);
+      if (!fillGaps(positions_[at])) return stop(workLimitText(context_.limits()));
       if (findSeparation()) {  // the gaps are all known: a separation found is sound past the bound too
         separationPosition_ = at;
         return Outcome::Separated;
@@ -326,11 +348,13 @@ class SubAssemblySearch {
   }
 
   // gaps_[dir][p * k + q]: how far p travels along direction dir before q stops it.
-  void fillGaps(const Position& position) {
+  // False when the work bound stopped it part-way (the gaps are then not all known).
+  bool fillGaps(const Position& position) {
     const size_t directions = context_.directions().size();
     gaps_.assign(directions, std::vector<double>(static_cast<size_t>(k_ * k_), kFar));
     for (int p = 0; p < k_; ++p) {
       for (int q = p + 1; q < k_; ++q) {
+        if (context_.outOfWork()) return false;
         const Vec3 offset = minus(position.offsets[static_cast<size_t>(p)], position.offsets[static_cast<size_t>(q)]);
         const std::vector<double>& gaps = context_.gaps(parts_[static_cast<size_t>(p)], parts_[static_cast<size_t>(q)], offset);
         for (size_t dir = 0; dir < directions; ++dir) {
@@ -339,6 +363,7 @@ class SubAssemblySearch {
         }
       }
     }
+    return true;
   }
 
   // The least set holding part x that can move `amount` along direction dir (kFar: out).
@@ -401,6 +426,7 @@ class SubAssemblySearch {
         }
       }
     }
+    context_.addWork(static_cast<int64_t>(values.size()));  // gathered and sorted
     return distinctSorted(std::move(values), tolerance);
   }
 
@@ -553,12 +579,11 @@ DisassemblyPlan searchGroupMoves(const MeshAssembly& meshes, const std::vector<P
   plan.complete = plan.unseparated.empty();
   plan.level = levelOf(tree);
   // Proven only where the distances tried are complete (the file's comment): else say why not.
-  const bool proves = context.slantedPart() < 0;
+  const bool proves = context.notProven().empty();
   const bool stoppedAtBound = plan.searchLimitReached;
   plan.levelMinimal = plan.complete && proves;
   if (!proves && !plan.searchLimitReached) {
-    plan.limit = "part " + std::to_string(meshes.parts[static_cast<size_t>(context.slantedPart())].id) +
-                 " has faces slanted to the moves tried, and off a lattice the search does not try every distance there";
+    plan.limit = context.notProven();
     plan.searchLimitReached = !plan.complete;  // the parts left are not proven stuck
   }
   if (stats) *stats = GroupSearchStats{context.sweeps(), context.work(), proves, stoppedAtBound};
@@ -574,13 +599,15 @@ std::optional<DisassemblyPlan> planByGroupMoves(const MeshAssembly& meshes, cons
   if (limit) *limit = plan.searchLimitReached ? plan.limit : "";
   if (!plan.complete) {
     *note = what + (stats.stoppedAtBound ? "stopped at its limit (" + plan.limit + ")"
-                    : stats.proves ? "finds no plan either: every face is square or parallel to the moves, so the parts left are stuck"
+                    : stats.proves ? "finds no plan either: every face is square to one of the three lines moved along and "
+                                     "parallel to the others, so the parts left are stuck for moves along them"
                                    : "finds no plan, and the parts left are not proven stuck: " + plan.limit);
     return std::nullopt;
   }
   const std::string failure = sweepPlan(meshes, geometry, plan);
   if (!failure.empty()) {
     *note = what + "found a plan that fails the sweep: " + failure;
+    if (limit) *limit = "the search's plan failed the sweep: " + failure;  // nothing is shown stuck
     return std::nullopt;
   }
   *note = what + "planned them, each move swept" + (plan.levelMinimal ? "" : " (the level not proven the fewest: " + plan.limit + ")");

@@ -133,6 +133,7 @@ double partTravel(const PartGeometry& mover, const Vec3& moverOffset, const Part
   const Vec3& d = shadow.d;
   const bool moved = moverOffset != Vec3{0, 0, 0};
   double travel = std::numeric_limits<double>::infinity();
+  if (work) ++*work;  // the boxes' test: a pair whose boxes miss costs a step too
   if (!sweptBoxMeets(shifted(mover.box, moverOffset), d, obstacle.box, tolerance)) return travel;
   int64_t pairs = 0;
   for (const Triangle& placed : mover.triangles) {

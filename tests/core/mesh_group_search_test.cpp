@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <random>
 #include <sstream>
@@ -457,6 +458,45 @@ TEST(MeshGroupSearch, OffALatticeOnlyBoxesProveTheLevelAndStuckParts) {
                                                      "off a lattice the search does not try every distance there): the parts "
                                                      "left are not proven stuck");
   }
+}
+
+}  // namespace
+}  // namespace desia
+
+namespace desia {
+namespace {
+
+// The search sweeps a part placed at an offset without building its moved geometry
+// (pairTravelDistance's moverOffset): the same travel as the part's mesh moved and swept anew, at
+// random offsets, for every pair of parts of a dented puzzle and seven directions.
+TEST(MeshGroupSearch, SweepingAtAnOffsetIsSweepingTheMovedPart) {
+  const MeshAssembly meshes = meshesOf({{"dented.obj", dentedPuzzle("DraculasDentalDesaster-p0-s0")}});
+  const std::vector<mesh::PartGeometry>& geometry = mesh::geometryOf(meshes);
+  std::mt19937 random(29);
+  std::uniform_real_distribution<double> cells(-2, 2);
+  const std::vector<Vec3> directions{{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}, normalized(Vec3{1, 2, -0.5})};
+  int finite = 0;
+  for (size_t p = 0; p < geometry.size(); ++p) {
+    for (size_t q = 0; q < geometry.size(); ++q) {
+      if (p == q) continue;
+      // Whole cells keep parts touching (finite travels), fractions test the shift itself.
+      const Vec3 offset{std::round(cells(random)) + (q % 2 ? 0.0 : 0.37), std::round(cells(random)), std::round(cells(random))};
+      TriangleMesh moved = meshes.parts[p].mesh;
+      for (Vec3& v : moved.vertices) v = plus(v, offset);
+      const mesh::PartGeometry movedGeometry(moved);
+      for (const Vec3& d : directions) {
+        const double inPlace = mesh::pairTravelDistance(meshes, geometry[p], offset, geometry[q], d);
+        const double rebuilt = mesh::pairTravelDistance(meshes, movedGeometry, Vec3{0, 0, 0}, geometry[q], d);
+        if (std::isinf(rebuilt)) {
+          EXPECT_TRUE(std::isinf(inPlace)) << p << ' ' << q;
+        } else {
+          ++finite;
+          EXPECT_NEAR(inPlace, rebuilt, 1e-9) << p << ' ' << q;
+        }
+      }
+    }
+  }
+  EXPECT_GT(finite, 50);  // the comparison is not only of parts that never meet
 }
 
 }  // namespace
