@@ -226,6 +226,14 @@ TEST(PlateSlantedDovetails, TheFamilyLetsTheSideOutAlongTheSideOnly) {
   EXPECT_TRUE(family->lets(0, base, negated(s.along)));
   EXPECT_FALSE(family->lets(0, side, negated(s.out)));
   EXPECT_FALSE(family->lets(0, side, negated(s.intoMortise)));
+  // A way 0.03 degrees off the side (a drawn design's shared edge: IBOIS's hexboxes) is let, the
+  // sweep judges it; one degree off is not.
+  auto turned = [&](double degrees) {
+    const double a = degrees * M_PI / 180;
+    return plus(scaled(s.along, std::cos(a)), scaled(s.across, std::sin(a)));
+  };
+  EXPECT_TRUE(family->lets(0, side, turned(0.03)));
+  EXPECT_FALSE(family->lets(0, side, turned(1)));
   // The planner's choice for a slide along the side: the slanted tenon lets it out along its
   // plane only, the slanted dovetail along the side.
   const JointFamilies families(graph, options, JointRealization::Milled);
@@ -287,6 +295,26 @@ TEST(PlateSlantedDovetails, TheLeaningBoxDesignsWithSlantedDovetailsAndATampered
   std::vector<Vec3> reversed = result.directions;
   reversed[0] = negated(reversed[0]);
   EXPECT_NE(verifyJointedPlates(inOrder, reversed).failure, "");
+}
+
+// The base's end bevelled (its bottom face 20 mm longer, as a mitred end of IBOIS's hexboxes'
+// plates): the contact runs out of its top face there, the slot runs on through the bevel.
+TEST(PlateSlantedDovetails, TheSlotRunsOutThroughABevelledEnd) {
+  std::vector<Plate> box = leaningBox().plates;
+  for (Plate& plate : box) {
+    if (plate.id != 1) continue;
+    for (Vec3& p : plate.bottom[0]) p[0] = p[0] > kLength / 2 ? kLength + 20 : p[0];
+  }
+  const BaseAndSide pair = baseAndSide(box);
+  const SlantedDovetailSite& site = pair.site;
+  const int outwards = dot(site.side.along, Vec3{1, 0, 0}) > 0 ? 1 : 0;  // the bevelled end
+  ASSERT_TRUE(site.opens[outwards]);
+  EXPECT_NEAR(site.reach[outwards], 20, 1e-6);
+  const std::vector<Plate> cut = cutJoints(pair.plates, {jointCut(SlantedDovetailCut{site, outwards})}, {});
+  const Vec3 out = outwards == 1 ? site.side.along : negated(site.side.along);
+  EXPECT_FALSE(plateCollidesAlong(cut[1], cut[0], out, tolerance::kContactMm));
+  EXPECT_TRUE(plateCollidesAlong(cut[1], cut[0], negated(out), tolerance::kContactMm));
+  EXPECT_TRUE(plateCollidesAlong(cut[1], cut[0], negated(site.side.intoMortise), tolerance::kContactMm));
 }
 
 // The paper's plan of the box slides plates along their bevelled sides: the joints no family

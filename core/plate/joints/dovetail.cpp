@@ -195,10 +195,14 @@ HousingOpenings housingOpenings(const std::vector<Plate>& plates, const TenonSit
         stripExits(plates, edge, face.everywhere[0], frame, end, low, high);
     const std::optional<std::array<double, 2>> outer =
         squareEnds ? inner : stripExits(plates, edge, face.anywhere[0], frame, end, low, high);
-    if (!inner || !outer || (*inner)[0] <= kFlush) continue;
-    if (squareEnds && (*inner)[1] - (*inner)[0] > tolerance::kSameExitMm) continue;
-    const double reach = squareEnds ? (*inner)[0] : (*outer)[1];
-    if (opensAt(end, (*inner)[0], reach)) {
+    if (squareEnds && (!inner || (*inner)[0] <= kFlush || (*inner)[1] - (*inner)[0] > tolerance::kSameExitMm))
+      continue;
+    if (!squareEnds && (!outer || (*outer)[1] <= kFlush)) continue;
+    // (A bevelled end may leave the plate's every-layer part right at the contact's end: no exit
+    // past it there.)
+    const double inside = inner ? (*inner)[0] : 0;
+    const double reach = squareEnds ? inside : (*outer)[1];
+    if (opensAt(end, inside, reach)) {
       openings.opens[end] = true;
       openings.reach[end] = reach;
     }
