@@ -209,7 +209,8 @@ TEST(PlateSlantedDovetails, TheSweepAgreesWithSteppingTheSideOut) {
   // Without the joint the side also lifts straight off the base.
   EXPECT_FALSE(plateCollidesAlong(pair.plates[1], pair.plates[0], away, tolerance::kContactMm));
   // The joint model says the same: every face normal, from the side into the base, lets +along.
-  for (const Vec3& n : slantedDovetailFaceNormals(openAtTheEnd(s))) EXPECT_LE(dot(n, s.side.along), tolerance::kDirection);
+  for (const Vec3& n : slantedDovetailFaceNormals(openAtTheEnd(s)))
+    EXPECT_LE(dot(n, s.side.along), tolerance::kDirection);
 }
 
 TEST(PlateSlantedDovetails, TheFamilyLetsTheSideOutAlongTheSideOnly) {

@@ -58,9 +58,9 @@ struct HousingOpenings {
   std::array<bool, 2> opens{false, false};
   std::array<double, 2> reach{0, 0};
 };
-HousingOpenings housingOpenings(const std::vector<Plate>& plates, const TenonSite& edge,
-                                std::array<double, 2> strip, double stop, const HousingPlateFace& face,
-                                const JointCutOptions& options, bool squareEnds = true);
+HousingOpenings housingOpenings(const std::vector<Plate>& plates, const TenonSite& edge, std::array<double, 2> strip,
+                                double stop, const HousingPlateFace& face, const JointCutOptions& options,
+                                bool squareEnds = true);
 
 // One dovetail to cut: the site and the end its housing opens at (0: from, 1: to).
 struct DovetailCut {

@@ -74,7 +74,8 @@ class SlantedDovetailJointCut final : public JointCut {
   explicit SlantedDovetailJointCut(const SlantedDovetailCut& cut) : cut_(cut) {}
   void addTo(const std::vector<Plate>& plates, const JointCutOptions& options, PlateCuts& cuts) const override {
     cuts.attached[cut_.site.side.tenonPlate].push_back(slantedDovetailTongue(cut_));
-    cuts.slanted[cut_.site.side.mortisePlate].push_back(slantedDovetailSlot(plates, cut_, options, options.clearance / 2));
+    cuts.slanted[cut_.site.side.mortisePlate].push_back(
+        slantedDovetailSlot(plates, cut_, options, options.clearance / 2));
   }
 
  private:
@@ -90,11 +91,9 @@ std::vector<Vec3> SlantedDovetailSite::exits() const {
   return ways;
 }
 
-std::optional<SlantedDovetailSite> slantedDovetailSiteOf(const std::vector<Plate>& plates,
-                                                         const PlateContact& contact,
+std::optional<SlantedDovetailSite> slantedDovetailSiteOf(const std::vector<Plate>& plates, const PlateContact& contact,
                                                          const JointCutOptions& options) {
-  const std::optional<SlantedSide> side =
-      slantedSideOf(plates, contact, options.slantedDovetail.leastDegrees, options);
+  const std::optional<SlantedSide> side = slantedSideOf(plates, contact, options.slantedDovetail.leastDegrees, options);
   if (!side) return std::nullopt;
   SlantedDovetailSite site;
   site.side = *side;

@@ -31,7 +31,7 @@ namespace desia {
 // n into F along side.intoMortise (an orthonormal frame: the side's edges lie on F's face).
 struct SlantedDovetailSite {
   SlantedSide side;
-  Vec3 width{0, 0, 0};  // unit, on F's face square to the side, from its edge on S's first face to the second's
+  Vec3 width{0, 0, 0};   // unit, on F's face square to the side, from its edge on S's first face to the second's
   double sideWidth = 0;  // the side's width on F's face, along `width`
   double lean = 0;       // how far S's mid-plane runs along `width` per mm into F (cot of the planes' angle)
   double depth = 0;      // F's thickness: the tongue runs through F
@@ -56,8 +56,7 @@ struct SlantedDovetailCut {
 // dovetail.width of S's thickness and at least dovetail.narrowestNeck, flaring by dovetail.slope
 // per mm through F; the slot inside F (on both its faces) from the stop to an end where F's
 // material ends (at the contact's end or, run on past it, at F's edge); nothing otherwise.
-std::optional<SlantedDovetailSite> slantedDovetailSiteOf(const std::vector<Plate>& plates,
-                                                         const PlateContact& contact,
+std::optional<SlantedDovetailSite> slantedDovetailSiteOf(const std::vector<Plate>& plates, const PlateContact& contact,
                                                          const JointCutOptions& options = {});
 
 // The tongue, as a solid attached to S: the section from F's face to its far face, along the

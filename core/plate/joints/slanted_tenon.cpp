@@ -131,8 +131,7 @@ std::optional<SlantedSide> slantedSideOf(const std::vector<Plate>& plates, const
   const bool aOnFace = std::abs(dot(contact.normal, axisA)) > 1 - tolerance::kFacingCosine;
   // Square plates are the square tenon's; flatter than the family's least angle, none.
   const double cosine = std::abs(dot(axisA, axisB));
-  if (cosine <= tolerance::kSquareCosine || cosine > std::cos(leastDegrees * M_PI / 180))
-    return std::nullopt;
+  if (cosine <= tolerance::kSquareCosine || cosine > std::cos(leastDegrees * M_PI / 180)) return std::nullopt;
   SlantedSide site;
   site.tenonPlate = aOnFace ? contact.b : contact.a;
   site.mortisePlate = aOnFace ? contact.a : contact.b;
