@@ -37,7 +37,7 @@ const CASES = [
   ['dodecahedron.json', 'DODECAHEDRON, 12 mitred plates', null, 'milled'],
   ['dodecahedron.json', 'DODECAHEDRON, 12 mitred plates', null, 'planned'],
   ['icosahedron.json', 'ICOSAHEDRON, 20 mitred plates, 41.8-degree planes (step tenons)', null, 'milled'],
-  ['leaning_box.json', 'LEANING BOX, 5 plates, sides leaning out 15 degrees (a slanted tenon)', null, 'milled'],
+  ['leaning_box.json', 'LEANING BOX, 5 plates, sides leaning out 15 degrees (2 slanted dovetails)', null, 'milled'],
   ['lizard.json', 'LIZARD, 38 mitred plates (Fig. 1: 33)', '2.73 s', 'milled'],
   ['lizard.json', 'LIZARD, 38 mitred plates (Fig. 1: 33)', '2.73 s', 'planned'],
   ['bookcase_123.json', 'BOOKCASE, 123 plates', '— (largest: 33)', 'milled'],

@@ -219,6 +219,13 @@ struct SlantedTenonSizes {
                                  // hexboxes: 80..88 degrees)
 };
 
+// A sliding dovetail on a bevelled side (JointType::SlantedDovetail): the side as a slanted
+// tenon's, the tongue sized by DovetailSizes (width: its neck; slope: each wall's flare through
+// the face plate; stop, narrowestNeck).
+struct SlantedDovetailSizes {
+  double leastDegrees = 60;      // the least angle between the plates' planes it joins
+};
+
 // The sizes of the joints cut or milled into the plates. The defaults are the sizes every design
 // has had; each family reads its own and the shared ones.
 struct JointCutOptions {
@@ -240,6 +247,7 @@ struct JointCutOptions {
   FaceTenonSizes faceTenon;
   StepTenonSizes stepTenon;
   SlantedTenonSizes slantedTenon;
+  SlantedDovetailSizes slantedDovetail;
 };
 
 // The joint families' dimensions above as named settings: "dovetail.slope", "stepTenon.width",
@@ -274,10 +282,13 @@ enum class JointType {
                  // axis or in its plane away from the edge
   SlantedTenon,  // milled: a plate's bevelled side on another's face at 45..<90 degrees, tenons
                  // along its plane through slanted mortises; it leaves along its plane, out of them
+  SlantedDovetail,  // milled: a plate's bevelled side on another's face at 60..<90 degrees (as
+                    // SlantedTenon), a dovetail tongue through a slot with slanted walls open at
+                    // one end; it leaves along the shared edge, out through the open end
   Empty,         // the plates only touch
 };
 // "mortise-tenon", "halved", "dovetail", "mitre-tenon", "mitre-slide", "face-tenon",
-// "step-tenon", "slanted-tenon", "empty"
+// "step-tenon", "slanted-tenon", "slanted-dovetail", "empty"
 const char* jointTypeName(JointType type);
 
 // What a design makes of its joints.

@@ -36,11 +36,6 @@ DovetailSection dovetailSection(const std::vector<Plate>& plates, const TenonSit
   return section;
 }
 
-// How far before the contact's closed end the housing stops (wood for the stop).
-double housingStop(const std::vector<Plate>& plates, const TenonSite& edge, const DovetailSizes& sizes) {
-  return std::max(sizes.stop, plateThickness(plates[edge.mortisePlate]));
-}
-
 // The housing's extent along the edge: from the stop to the open end.
 std::pair<double, double> housingSpan(const std::vector<Plate>& plates, const DovetailCut& cut,
                                       const DovetailSizes& sizes) {
@@ -71,11 +66,10 @@ Plate prismAlongEdge(const std::vector<Plate>& plates, const TenonSite& edge, do
   return prism;
 }
 
-// How far past the contact's start (end 0) or end (end 1) a housing strip, [low, high] across the
-// edge plate, runs inside the face plate's outline before it leaves it. Both sides of the strip
-// must leave at the same place (a square end; a slanted one would leave wood in the way or open
-// the housing's side); nothing where they do not, or where the strip never leaves.
-std::optional<double> stripExit(const std::vector<Plate>& plates, const TenonSite& edge, const Loop& outline,
+// How far past the contact's start (end 0) or end (end 1) the two sides of a housing strip,
+// [low, high] across the edge plate, run inside the face plate's outline before they leave it:
+// the nearer and the farther; nothing where one never leaves.
+std::optional<std::array<double, 2>> stripExits(const std::vector<Plate>& plates, const TenonSite& edge, const Loop& outline,
                                 const PlaneFrame& frame, int end, double low, double high) {
   const double sign = end == 1 ? 1 : -1, at = end == 1 ? edge.to : edge.from;
   auto planar = [&](const Vec3& p) { return std::array<double, 2>{dot(frame.offset(p), frame.u), dot(frame.offset(p), frame.v)}; };
@@ -97,9 +91,8 @@ std::optional<double> stripExit(const std::vector<Plate>& plates, const TenonSit
     }
     exits[side] = nearest;
   }
-  if (!std::isfinite(exits[0]) || !std::isfinite(exits[1]) || std::abs(exits[0] - exits[1]) > tolerance::kSameExitMm)
-    return std::nullopt;
-  return std::min(exits[0], exits[1]);
+  if (!std::isfinite(exits[0]) || !std::isfinite(exits[1])) return std::nullopt;
+  return std::array<double, 2>{std::min(exits[0], exits[1]), std::max(exits[0], exits[1])};
 }
 
 // A sliding dovetail made real: the housing, a rectangle on the face plate's face cut through the
@@ -163,6 +156,60 @@ std::vector<Vec3> DovetailSite::exits() const {
   return ways;
 }
 
+double housingStop(const std::vector<Plate>& plates, const TenonSite& edge, const DovetailSizes& sizes) {
+  return std::max(sizes.stop, plateThickness(plates[edge.mortisePlate]));
+}
+
+HousingOpenings housingOpenings(const std::vector<Plate>& plates, const TenonSite& edge,
+                                std::array<double, 2> strip, double stop, const HousingPlateFace& face,
+                                const JointCutOptions& options, bool squareEnds) {
+  const Plate& housingPlate = plates[edge.mortisePlate];
+  const PlaneFrame frame(housingPlate.bottom[0][0], plateThicknessAxis(housingPlate));
+  const auto [low, high] = strip;
+  auto rectangle = [&](double s0, double s1) {
+    return Loop{jointPoint(plates, edge, s0, low, 0), jointPoint(plates, edge, s1, low, 0),
+                jointPoint(plates, edge, s1, high, 0), jointPoint(plates, edge, s0, high, 0)};
+  };
+  constexpr double kFlush = tolerance::kFlushMm;
+  // Open at an end, run on `inside` and `reach` past the contact: the housing from the stop to
+  // `inside` lies inside the face plate, and nothing of it lies just beyond `reach` (where a
+  // slanted end is left behind).
+  auto opensAt = [&](int end, double inside, double reach) {
+    const double sign = end == 1 ? 1 : -1, at = (end == 1 ? edge.to : edge.from) + sign * reach;
+    const double in = (end == 1 ? edge.to : edge.from) + sign * inside;
+    const Loop beyond = rectangle(std::min(at + sign * kFlush, at + sign * options.woodMargin),
+                                  std::max(at + sign * kFlush, at + sign * options.woodMargin));
+    const Loop housing = end == 1 ? rectangle(edge.from + stop, in - kFlush) : rectangle(in + kFlush, edge.to - stop);
+    return areaAgainst({beyond}, face.anywhere, frame, false) < tolerance::kEmptyAreaMm2 &&
+           areaAgainst({housing}, face.everywhere, frame, true) < tolerance::kEmptyAreaMm2;
+  };
+  HousingOpenings openings;
+  for (int end = 0; end < 2; ++end) {
+    openings.opens[end] = opensAt(end, 0, 0);
+    if (openings.opens[end]) continue;
+    // Inside the plate where it has material on every layer up to where the strip's first side
+    // leaves that, and nothing of it beyond where its last side leaves the plate's outline
+    // (the same for a prism; on a plate whose end is bevelled, as a mitre, the slot runs out
+    // through the bevel).
+    const std::optional<std::array<double, 2>> inner =
+        stripExits(plates, edge, face.everywhere[0], frame, end, low, high);
+    const std::optional<std::array<double, 2>> outer =
+        squareEnds ? inner : stripExits(plates, edge, face.anywhere[0], frame, end, low, high);
+    if (squareEnds && (!inner || (*inner)[0] <= kFlush || (*inner)[1] - (*inner)[0] > tolerance::kSameExitMm))
+      continue;
+    if (!squareEnds && (!outer || (*outer)[1] <= kFlush)) continue;
+    // (A bevelled end may leave the plate's every-layer part right at the contact's end: no exit
+    // past it there.)
+    const double inside = inner ? (*inner)[0] : 0;
+    const double reach = squareEnds ? inside : (*outer)[1];
+    if (opensAt(end, inside, reach)) {
+      openings.opens[end] = true;
+      openings.reach[end] = reach;
+    }
+  }
+  return openings;
+}
+
 std::optional<DovetailSite> dovetailSiteOf(const std::vector<Plate>& plates, const PlateContact& contact,
                                            const JointCutOptions& options) {
   const std::optional<TenonSite> edge = squareEdgeSite(plates, contact, options);
@@ -174,32 +221,11 @@ std::optional<DovetailSite> dovetailSiteOf(const std::vector<Plate>& plates, con
   if (section.narrow < options.dovetail.narrowestNeck) return std::nullopt;  // too thin a neck to mill
   const double stop = housingStop(plates, *edge, options.dovetail);
   if (edge->to - edge->from < stop + options.shortestJoint) return std::nullopt;
-  const PlaneFrame frame(housingPlate.bottom[0][0], plateThicknessAxis(housingPlate));
-  const double low = section.centre - section.wide / 2, high = section.centre + section.wide / 2;
-  auto rectangle = [&](double s0, double s1) {
-    return Loop{jointPoint(plates, *edge, s0, low, 0), jointPoint(plates, *edge, s1, low, 0),
-                jointPoint(plates, *edge, s1, high, 0), jointPoint(plates, *edge, s0, high, 0)};
-  };
-  constexpr double kFlush = tolerance::kFlushMm;
-  // Open at an end, `reach` past the contact: the face plate's material ends there (nothing of it
-  // just beyond), and the housing from the stop to there lies inside it.
-  auto opensAt = [&](int end, double reach) {
-    const double sign = end == 1 ? 1 : -1, at = (end == 1 ? edge->to : edge->from) + sign * reach;
-    const Loop beyond = rectangle(std::min(at + sign * kFlush, at + sign * options.woodMargin),
-                                  std::max(at + sign * kFlush, at + sign * options.woodMargin));
-    const Loop housing = end == 1 ? rectangle(edge->from + stop, at - kFlush) : rectangle(at + kFlush, edge->to - stop);
-    return areaAgainst({beyond}, housingPlate.bottom, frame, false) < tolerance::kEmptyAreaMm2 &&
-           areaAgainst({housing}, housingPlate.bottom, frame, true) < tolerance::kEmptyAreaMm2;
-  };
-  for (int end = 0; end < 2; ++end) {
-    site.opens[end] = opensAt(end, 0);
-    if (site.opens[end]) continue;
-    const std::optional<double> reach = stripExit(plates, *edge, housingPlate.bottom[0], frame, end, low, high);
-    if (reach && *reach > kFlush && opensAt(end, *reach)) {
-      site.opens[end] = true;
-      site.reach[end] = *reach;
-    }
-  }
+  const HousingOpenings openings =
+      housingOpenings(plates, *edge, {section.centre - section.wide / 2, section.centre + section.wide / 2}, stop,
+                      {housingPlate.bottom, housingPlate.bottom}, options);
+  site.opens = openings.opens;
+  site.reach = openings.reach;
   if (!site.opens[0] && !site.opens[1]) return std::nullopt;
   return site;
 }

@@ -35,6 +35,33 @@ struct DovetailSite {
   std::vector<Vec3> exits() const;
 };
 
+// How far before the contact's closed end a housing stops (wood for the stop): sizes.stop, and
+// at least the face plate's thickness.
+double housingStop(const std::vector<Plate>& plates, const TenonSite& edge, const DovetailSizes& sizes);
+
+// The face plate as a housing sees it along its axis: where it has material on every layer its
+// housing runs through (`everywhere`), and on any (`anywhere`; the first loop its outline). A
+// prism's face outline is both.
+struct HousingPlateFace {
+  std::vector<Loop> everywhere, anywhere;
+};
+
+// Where a housing along `edge` (a strip from `strip`[0] to [1] across edge.across, on the face
+// edge.tenonPlate stands on), stopped `stop` before one end of the contact, can open at the
+// other: at [0] the contact's start, [1] its end (DovetailSite::opens and reach). Where the
+// contact ends inside the face plate, the housing runs on to its edge: with `squareEnds` only
+// where both sides of the strip leave it at the same place (a blind housing with a slanted end
+// would leave wood in the way or open its side), else to where the later side leaves the plate
+// on any layer (a slot cut through, as the slanted sliding dovetail's, runs out past a slanted
+// or bevelled end whole).
+struct HousingOpenings {
+  std::array<bool, 2> opens{false, false};
+  std::array<double, 2> reach{0, 0};
+};
+HousingOpenings housingOpenings(const std::vector<Plate>& plates, const TenonSite& edge, std::array<double, 2> strip,
+                                double stop, const HousingPlateFace& face, const JointCutOptions& options,
+                                bool squareEnds = true);
+
 // One dovetail to cut: the site and the end its housing opens at (0: from, 1: to).
 struct DovetailCut {
   DovetailSite site;

@@ -14,6 +14,7 @@
 #include "plate/joints/halved.h"
 #include "plate/joints/mitre_slide.h"
 #include "plate/joints/mitre_tenon.h"
+#include "plate/joints/slanted_dovetail.h"
 #include "plate/joints/slanted_tenon.h"
 #include "plate/joints/step_tenon.h"
 #include "plate/joints/tenon.h"
@@ -31,7 +32,8 @@ std::string formatNumber(double value) {
 // whether only a CNC router makes it (JointRealization::Milled), and how to make it for a design.
 // In the order the planner prefers them for a pair: joints that can be cut before milled ones,
 // a tenon across a mitre before a slide along it, a sliding dovetail last (where no tenons let
-// the plate out), a step tenon past a shallow mitre after them (it joins only what they cannot).
+// the plate out), a step tenon past a shallow mitre after them (it joins only what they cannot),
+// on a bevelled side a slanted tenon before a slanted sliding dovetail (as square ones).
 // Halved joints join plates that cross, which no other family does.
 struct FamilyEntry {
   JointType type;
@@ -49,13 +51,14 @@ const FamilyEntry kFamilies[] = {
     {JointType::Dovetail, "dovetail", true, makeDovetailFamily},
     {JointType::StepTenon, "step-tenon", true, makeStepTenonFamily},
     {JointType::SlantedTenon, "slanted-tenon", true, makeSlantedTenonFamily},
+    {JointType::SlantedDovetail, "slanted-dovetail", true, makeSlantedDovetailFamily},
 };
 
 // The order the joints are cut in. Each plate's cut loops and attached solids come in this
 // order, which the bytes of a result depend on: a new family goes at the end.
 const JointType kCutOrder[] = {JointType::Dovetail,  JointType::MitreTenon, JointType::MitreSlide,
                                JointType::FaceTenon, JointType::Halved,     JointType::MortiseTenon,
-                               JointType::StepTenon, JointType::SlantedTenon};
+                               JointType::StepTenon, JointType::SlantedTenon, JointType::SlantedDovetail};
 
 }  // namespace
 
@@ -64,6 +67,15 @@ bool makesJoints(JointRealization realization) { return realization != JointReal
 bool exitsLet(const std::vector<Vec3>& exits, int tenonPlate, int mover, const Vec3& d) {
   for (const Vec3& exit : exits) {
     if (dot(tenonPlate == mover ? exit : negated(exit), d) > 1 - tolerance::kDirection) return true;
+  }
+  return false;
+}
+
+bool exitsLetNear(const std::vector<Vec3>& exits, int tenonPlate, int mover, const Vec3& d) {
+  const Vec3 way = normalized(d);
+  for (const Vec3& exit : exits) {
+    const Vec3 e = tenonPlate == mover ? exit : negated(exit);
+    if (dot(e, way) > 0 && norm(cross(e, way)) < tolerance::kPlannedParallelSine) return true;
   }
   return false;
 }

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "analysis/vec3.h"
 #include "desia/tolerances.h"
@@ -49,6 +50,17 @@ int facesOnContact(const std::vector<Plate>& plates, const PlateContact& contact
   for (int plate : {contact.a, contact.b})
     faces += std::abs(dot(contact.normal, plateThicknessAxis(plates[plate]))) > 1 - tolerance::kFacingCosine ? 1 : 0;
   return faces;
+}
+
+Plate solidOf(Loop first, Loop second) {
+  if (dot(loopNormal(first), minus(second[0], first[0])) < 0) {
+    std::reverse(first.begin(), first.end());
+    std::reverse(second.begin(), second.end());
+  }
+  Plate solid;
+  solid.bottom = {std::move(first)};
+  solid.top = {std::move(second)};
+  return solid;
 }
 
 }  // namespace desia

@@ -33,4 +33,8 @@ std::optional<int> touchingPartnerOf(const PlateContact& contact, int plate);
 // mitre), 2 where they lie face to face (a lap), 1 for an edge on a face (T and L joints).
 int facesOnContact(const std::vector<Plate>& plates, const PlateContact& contact);
 
+// A solid from its first loop and its second (vertex for vertex), its first loop turned so that
+// its normal points to the second (the milled pieces every family attaches to a plate).
+Plate solidOf(Loop first, Loop second);
+
 }  // namespace desia

@@ -77,6 +77,8 @@ const std::vector<Entry>& entries() {
                &JointCutOptions::stepTenon, &StepTenonSizes::mostDegrees),
       numberIn("slantedTenon.leastDegrees", "the least angle between the plates' planes it joins (60)", 1, 89,
                &JointCutOptions::slantedTenon, &SlantedTenonSizes::leastDegrees),
+      numberIn("slantedDovetail.leastDegrees", "the least angle between the plates' planes it joins (60)", 1, 89,
+               &JointCutOptions::slantedDovetail, &SlantedDovetailSizes::leastDegrees),
   };
   return table;
 }

@@ -26,12 +26,15 @@ std::string degrees(double value) {
   return text;
 }
 
-// The pair's largest contact (the one the planner's edge comes from), or null.
-const PlateContact* largestContact(const PlateGraph& graph, int p, int q) {
-  const PlateContact* best = nullptr;
+// The index (into graph.contacts) of the pair's largest contact (the one the planner's edge
+// comes from), or -1.
+int largestContact(const PlateGraph& graph, int p, int q) {
+  int best = -1;
   for (int c : graph.contactsOf[static_cast<size_t>(p)]) {
     const PlateContact& contact = graph.contacts[static_cast<size_t>(c)];
-    if ((contact.a == q || contact.b == q) && (!best || contact.area > best->area)) best = &contact;
+    if ((contact.a == q || contact.b == q) &&
+        (best < 0 || contact.area > graph.contacts[static_cast<size_t>(best)].area))
+      best = c;
   }
   return best;
 }
@@ -50,10 +53,10 @@ std::string howTheyMeet(const PlateContact& contact, const Vec3& axisA, const Ve
 // Where a slanted tenon fits the pair's contact but lets the mover out another way than the
 // plan's (IBOIS's hexboxes: the plan slides plates along their edges, a tenon lets them out
 // along the tenon plate's plane only): that way and how far it is from the plan's, else "".
-std::string slantedTenonElsewhere(const PlateGraph& graph, const PlateContact& contact, const PlateJoint& joint,
+std::string slantedTenonElsewhere(const PlateGraph& graph, int contact, const PlateJoint& joint,
                                   const JointCutOptions& options) {
-  const size_t index = static_cast<size_t>(&contact - graph.contacts.data());
-  const std::optional<SlantedTenonSite> site = slantedTenonSiteOf(graph.plates, graph.computedContacts[index], options);
+  const std::optional<SlantedTenonSite> site =
+      slantedTenonSiteOf(graph.plates, graph.computedContacts[static_cast<size_t>(contact)], options);
   if (!site) return "";
   const Vec3 exit = site->tenonPlate == joint.mover ? negated(site->out) : site->out;
   const double cosine = std::max(-1.0, std::min(1.0, dot(exit, normalized(joint.direction))));
@@ -73,21 +76,22 @@ std::vector<std::string> jointsNothingMakes(const std::vector<Plate>& plates, co
     if (joint.type == JointType::Empty) continue;  // the plan needs no joint there
     const std::optional<PlateJoint> madeJoint = made.jointFor(joint.mover, joint.other, joint.direction);
     if (madeJoint && madeJoint->type != JointType::Empty) continue;
-    const PlateContact* contact = largestContact(graph, joint.mover, joint.other);
+    const int largest = largestContact(graph, joint.mover, joint.other);
     const Plate& mover = plates[static_cast<size_t>(joint.mover)];
     const Plate& other = plates[static_cast<size_t>(joint.other)];
     std::string said = geometry::plateName(mover) + " and " + geometry::plateName(other);
-    if (contact) {
+    if (largest >= 0) {
+      const PlateContact& contact = graph.contacts[static_cast<size_t>(largest)];
       const Vec3& axisMover = graph.thicknessAxis[static_cast<size_t>(joint.mover)];
       const Vec3& axisOther = graph.thicknessAxis[static_cast<size_t>(joint.other)];
-      said += ": " + howTheyMeet(*contact, axisMover, axisOther) + ", their planes " +
+      said += ": " + howTheyMeet(contact, axisMover, axisOther) + ", their planes " +
               degrees(degreesBetweenLines(axisMover, axisOther)) + " apart, " + geometry::plateName(mover) +
-              " leaving at " + degrees(degreesBetweenLines(contact->edgeDirection, joint.direction)) + " to their " +
-              (contact->crossing ? "crossing line" : "edge");
+              " leaving at " + degrees(degreesBetweenLines(contact.edgeDirection, joint.direction)) + " to their " +
+              (contact.crossing ? "crossing line" : "edge");
       // Tenons leave their mortises across the face they stand on (square to it), slides along the edge.
-      if (!contact->crossing)
-        said += " and " + degrees(degreesBetweenLines(contact->normal, joint.direction)) + " to the contact's normal";
-      said += slantedTenonElsewhere(graph, *contact, joint, options);
+      if (!contact.crossing)
+        said += " and " + degrees(degreesBetweenLines(contact.normal, joint.direction)) + " to the contact's normal";
+      said += slantedTenonElsewhere(graph, largest, joint, options);
       said += std::string(" (the plan's ") + jointTypeName(joint.type) + ")";
     }
     missing.push_back(said);

@@ -19,19 +19,6 @@
 namespace desia {
 namespace {
 
-// A solid from its first loop and its second (vertex for vertex), its first loop turned so that
-// its normal points to the second.
-Plate solidOf(Loop first, Loop second) {
-  if (dot(loopNormal(first), minus(second[0], first[0])) < 0) {
-    std::reverse(first.begin(), first.end());
-    std::reverse(second.begin(), second.end());
-  }
-  Plate solid;
-  solid.bottom = {std::move(first)};
-  solid.top = {std::move(second)};
-  return solid;
-}
-
 // Height of a point above F's first face, along F's axis.
 double heightIn(const Plate& mortisePlate, const Vec3& point) {
   return dot(minus(point, mortisePlate.bottom[0][0]), plateThicknessAxis(mortisePlate));
@@ -64,7 +51,7 @@ bool sideLiesOnFace(const Plate& tenonPlate, size_t k, const Vec3& onFace, const
 
 // The side k of S's outline as the site's edge: its direction, the way out and the two edges'
 // origins; false where the side has no length or its two edges are not parallel.
-bool placeOnSide(const Plate& tenonPlate, size_t k, SlantedTenonSite& site) {
+bool placeOnSide(const Plate& tenonPlate, size_t k, SlantedSide& site) {
   const size_t next = (k + 1) % tenonPlate.bottom[0].size();
   const Vec3 first = minus(tenonPlate.bottom[0][next], tenonPlate.bottom[0][k]);
   const Vec3 second = minus(tenonPlate.top[0][next], tenonPlate.top[0][k]);
@@ -82,7 +69,7 @@ bool placeOnSide(const Plate& tenonPlate, size_t k, SlantedTenonSite& site) {
 
 // The stretch of the side on the face: the contact's extent along it, within both edges; false
 // unless the contact covers the side's whole width (from one edge to the other) over it.
-bool stretchOnContact(const Plate& tenonPlate, const PlateContact& contact, SlantedTenonSite& site) {
+bool stretchOnContact(const Plate& tenonPlate, const PlateContact& contact, SlantedSide& site) {
   const size_t k = static_cast<size_t>(site.edge), next = (k + 1) % tenonPlate.bottom[0].size();
   const Vec3& base = site.origin[0];
   const auto [regionStart, regionEnd] = extentAlong(contact.region, base, site.along);
@@ -137,16 +124,15 @@ class SlantedTenonCut final : public JointCut {
 
 }  // namespace
 
-std::optional<SlantedTenonSite> slantedTenonSiteOf(const std::vector<Plate>& plates, const PlateContact& contact,
-                                                   const JointCutOptions& options) {
+std::optional<SlantedSide> slantedSideOf(const std::vector<Plate>& plates, const PlateContact& contact,
+                                         double leastDegrees, const JointCutOptions& options) {
   if (contact.crossing || contact.region.size() < 3 || facesOnContact(plates, contact) != 1) return std::nullopt;
   const Vec3 axisA = plateThicknessAxis(plates[contact.a]), axisB = plateThicknessAxis(plates[contact.b]);
   const bool aOnFace = std::abs(dot(contact.normal, axisA)) > 1 - tolerance::kFacingCosine;
   // Square plates are the square tenon's; flatter than the family's least angle, none.
   const double cosine = std::abs(dot(axisA, axisB));
-  if (cosine <= tolerance::kSquareCosine || cosine > std::cos(options.slantedTenon.leastDegrees * M_PI / 180))
-    return std::nullopt;
-  SlantedTenonSite site;
+  if (cosine <= tolerance::kSquareCosine || cosine > std::cos(leastDegrees * M_PI / 180)) return std::nullopt;
+  SlantedSide site;
   site.tenonPlate = aOnFace ? contact.b : contact.a;
   site.mortisePlate = aOnFace ? contact.a : contact.b;
   site.intoMortise = aOnFace ? negated(contact.normal) : contact.normal;
@@ -156,12 +142,21 @@ std::optional<SlantedTenonSite> slantedTenonSiteOf(const std::vector<Plate>& pla
     if (!sideLiesOnFace(tenonPlate, k, contact.region[0], site.intoMortise)) continue;
     if (!placeOnSide(tenonPlate, k, site) || !stretchOnContact(tenonPlate, contact, site)) return std::nullopt;
     if (site.to - site.from < options.shortestJoint) return std::nullopt;
-    site.reach = plateThickness(plates[static_cast<size_t>(site.mortisePlate)]) / dot(site.out, site.intoMortise);
-    site.spans = spansOf(plates, site, options);
-    if (site.spans.empty() || !mortisesInside(plates, site, options)) return std::nullopt;
     return site;
   }
   return std::nullopt;
+}
+
+std::optional<SlantedTenonSite> slantedTenonSiteOf(const std::vector<Plate>& plates, const PlateContact& contact,
+                                                   const JointCutOptions& options) {
+  const std::optional<SlantedSide> side = slantedSideOf(plates, contact, options.slantedTenon.leastDegrees, options);
+  if (!side) return std::nullopt;
+  SlantedTenonSite site;
+  static_cast<SlantedSide&>(site) = *side;
+  site.reach = plateThickness(plates[static_cast<size_t>(site.mortisePlate)]) / dot(site.out, site.intoMortise);
+  site.spans = spansOf(plates, site, options);
+  if (site.spans.empty() || !mortisesInside(plates, site, options)) return std::nullopt;
+  return site;
 }
 
 std::vector<Plate> slantedTenonSolids(const SlantedTenonSite& site) {
@@ -242,7 +237,7 @@ class SlantedTenonFamily final : public JointFamily {
 
   bool lets(int contact, int mover, const Vec3& d) const override {
     const std::optional<SlantedTenonSite>& site = sites_[static_cast<size_t>(contact)];
-    return site && exitsLet({negated(site->out)}, site->tenonPlate, mover, d);
+    return site && exitsLetNear({negated(site->out)}, site->tenonPlate, mover, d);
   }
 
   // The one way its tenons leave their mortises.

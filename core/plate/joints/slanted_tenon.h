@@ -21,8 +21,9 @@
 
 namespace desia {
 
-// Where a slanted mortise-and-tenon joint can be cut for one contact (internal plate indices).
-struct SlantedTenonSite {
+// A plate's side bevelled to lie on another plate's face (internal plate indices): the site
+// every joint on such a side starts from (slanted tenons, slanted sliding dovetails).
+struct SlantedSide {
   int tenonPlate = 0;         // S, standing on its side
   int mortisePlate = 0;       // F, whose face it stands on
   int edge = 0;               // S's side on the face (between vertices edge, edge + 1 of its outline)
@@ -33,15 +34,24 @@ struct SlantedTenonSite {
   // The side's edge on S's first face [0] and second [1] at along = 0 (distances along the side
   // are measured from there on both faces, so that the tenons' ends are square to the side).
   std::array<Vec3, 2> origin{};
-  double from = 0, to = 0;                       // the stretch of the side on the face, along it
+  double from = 0, to = 0;  // the stretch of the side on the face, along it
+};
+
+// Where a slanted mortise-and-tenon joint can be cut for one contact: the side, and its tenons.
+struct SlantedTenonSite : SlantedSide {
   double reach = 0;                              // how far along `out` the tenons run to F's far face
   std::vector<std::pair<double, double>> spans;  // the tenons along the side: [start, end)
 };
 
-// The site on `contact` when the geometry allows one: S's side lying on F's face (its edges on
-// both of S's faces in F's face plane) over its whole thickness, their planes from
-// options.slantedTenon.leastDegrees to less than square apart, tenons as the square tenon's
-// (tenonWidth, tenonCount, twoTenonsFrom), the mortises inside F's outline on both its faces with
+// The side on `contact` when the geometry has one: S's side lying on F's face (its edges on both
+// of S's faces in F's face plane) over its whole thickness and at least options.shortestJoint
+// long, their planes from `leastDegrees` (the family's) to less than square apart; nothing
+// otherwise.
+std::optional<SlantedSide> slantedSideOf(const std::vector<Plate>& plates, const PlateContact& contact,
+                                         double leastDegrees, const JointCutOptions& options);
+
+// The site on `contact` when the geometry allows one: a slanted side (slantedSideOf), tenons as
+// the square tenon's (tenonWidth, tenonCount, twoTenonsFrom), the mortises inside F's outline on both its faces with
 // options.woodMargin of wood round them; nothing otherwise.
 std::optional<SlantedTenonSite> slantedTenonSiteOf(const std::vector<Plate>& plates, const PlateContact& contact,
                                                    const JointCutOptions& options = {});

@@ -50,19 +50,6 @@ std::pair<double, double> faceHeights(const Plate& plate, const Vec3& origin, co
   return {std::min(first, second), std::max(first, second)};
 }
 
-// A solid from its first loop and its second (vertex for vertex), its first loop turned so that
-// its normal points to the second.
-Plate solidOf(Loop first, Loop second) {
-  if (dot(loopNormal(first), minus(second[0], first[0])) < 0) {
-    std::reverse(first.begin(), first.end());
-    std::reverse(second.begin(), second.end());
-  }
-  Plate solid;
-  solid.bottom = {std::move(first)};
-  solid.top = {std::move(second)};
-  return solid;
-}
-
 // A section swept along the edge from s0 to s1.
 Plate prismAlongEdge(const StepTenon& tenon, const Section& section, double s0, double s1) {
   Loop first, second;
