@@ -54,12 +54,12 @@ Vec3 squaredTo(const Vec3& v, const std::vector<Vec3>& basis) {
 // within tolerance::kSquareCosine of square to plan directions is made exactly square to them; one
 // that blocks a way out by more is kept, and the swept check of every plate judges the shapes
 // themselves.
-Vec3 squaredToNearlySquare(const Vec3& v, const std::vector<Vec3>& others) {
+Vec3 squaredToNearlySquare(const Vec3& v, const std::vector<Vec3>& others, const Vec3* first) {
   std::vector<Vec3> nearlySquare;
   for (const Vec3& other : others) {
     if (std::abs(dot(v, other)) < tolerance::kSquareCosine) nearlySquare.push_back(other);
   }
-  return normalized(squaredTo(v, spanningBasis(nearlySquare)));
+  return normalized(squaredTo(v, spanningBasis(nearlySquare, first)));
 }
 
 Vec3 squaredToPlan(Vec3 normal, const std::vector<Vec3>& directions) { return squaredToNearlySquare(normal, directions); }
@@ -75,11 +75,7 @@ namespace {
 Vec3 squaredToPlanFirstTo(const Vec3& normal, const std::vector<Vec3>& directions, size_t firstLeaving) {
   if (firstLeaving >= directions.size() || std::abs(dot(normal, directions[firstLeaving])) >= tolerance::kSquareCosine)
     return squaredToPlan(normal, directions);
-  std::vector<Vec3> nearlySquare;
-  for (const Vec3& other : directions) {
-    if (std::abs(dot(normal, other)) < tolerance::kSquareCosine) nearlySquare.push_back(other);
-  }
-  return normalized(squaredTo(normal, spanningBasis(nearlySquare, &directions[firstLeaving])));
+  return squaredToNearlySquare(normal, directions, &directions[firstLeaving]);
 }
 
 }  // namespace

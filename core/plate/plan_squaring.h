@@ -27,8 +27,8 @@ Assembly squaredPlanAssembly(Assembly assembly, std::vector<Vec3>* directions);
 
 // The unit vector `v` made exactly square to every one of `others` it is within
 // tolerance::kSquareCosine of square to (those furthest apart first; `v` itself when they span all
-// of space).
-Vec3 squaredToNearlySquare(const Vec3& v, const std::vector<Vec3>& others);
+// of space). `first` (if given, one of `others`) leads: v is squared to it before any other.
+Vec3 squaredToNearlySquare(const Vec3& v, const std::vector<Vec3>& others, const Vec3* first = nullptr);
 
 // `normal` made exactly square to every way out it is within tolerance::kSquareCosine of square to.
 Vec3 squaredToPlan(Vec3 normal, const std::vector<Vec3>& directions);

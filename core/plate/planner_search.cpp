@@ -180,6 +180,8 @@ PlateDesignResult PlateJointPlanner::run(const std::vector<PlanStep>& prefix) {
                          degreesText(options_.joints.stepTenon.mostDegrees) +
                          " degrees apart, slanted tenons where a bevelled side lies on a face " +
                          degreesText(options_.joints.slantedTenon.leastDegrees) +
+                         " to 90 degrees apart, slanted sliding dovetails along such a side " +
+                         degreesText(options_.joints.slantedDovetail.leastDegrees) +
                          " to 90 degrees apart); joints 'planned' gives the paper's graph design alone"
                    : "") +
         (prefix.empty() && progress.bestDepth == 0 ? " (" + whyNoPlateLeavesFirst() + ")"

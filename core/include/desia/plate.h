@@ -280,8 +280,9 @@ enum class JointType {
   StepTenon,     // milled: plates meeting edge to edge at a shallow angle, the tenon plate running
                  // on square past the mitre into a pocket in the other's edge; it leaves along its
                  // axis or in its plane away from the edge
-  SlantedTenon,  // milled: a plate's bevelled side on another's face at 45..<90 degrees, tenons
-                 // along its plane through slanted mortises; it leaves along its plane, out of them
+  SlantedTenon,  // milled: a plate's bevelled side on another's face at 60..<90 degrees (by default:
+                 // slantedTenon.leastDegrees), tenons along its plane through slanted mortises; it
+                 // leaves along its plane, out of them
   SlantedDovetail,  // milled: a plate's bevelled side on another's face at 60..<90 degrees (as
                     // SlantedTenon), a dovetail tongue through a slot with slanted walls open at
                     // one end; it leaves along the shared edge, out through the open end

@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Slanted mortise-and-tenon joints (milled; issue 26): the tenon plate S stands with its side
-// (bevelled to lie on the face) on a face of the mortise plate F, their planes 45..<90 degrees
-// apart (IBOIS's hexboxes: 80..88). Tenons grow out of that side inside S's own slab, along S's
-// plane square to the side, through F, their ends flush with F's far face; the mortises through F
-// are slanted: their cheek walls are S's face planes, their end walls square to the side. S then
+// (bevelled to lie on the face) on a face of the mortise plate F, their planes 60..<90 degrees
+// apart by default (slantedTenon.leastDegrees; IBOIS's hexboxes: 80..88). Tenons grow out of that
+// side inside S's own slab, along S's plane square to the side, through F, their ends flush with
+// F's far face; the mortises through F are slanted: their cheek walls are S's face planes, their
+// end walls square to the side. S then
 // leaves only along its own plane, straight out of the mortises (the paper's mortise-and-tenon,
 // Section 5.2, Fig. 2 left, at an angle; a laser cuts square to the sheet, so only a router makes it).
 #pragma once
