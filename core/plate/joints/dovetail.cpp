@@ -165,7 +165,7 @@ HousingOpenings housingOpenings(const std::vector<Plate>& plates, const TenonSit
                                 const JointCutOptions& options, bool squareEnds) {
   const Plate& housingPlate = plates[edge.mortisePlate];
   const PlaneFrame frame(housingPlate.bottom[0][0], plateThicknessAxis(housingPlate));
-  const auto [low, high] = strip;
+  const double low = strip[0], high = strip[1];  // not a structured binding: C++17 lambdas cannot capture one
   auto rectangle = [&](double s0, double s1) {
     return Loop{jointPoint(plates, edge, s0, low, 0), jointPoint(plates, edge, s1, low, 0),
                 jointPoint(plates, edge, s1, high, 0), jointPoint(plates, edge, s0, high, 0)};

@@ -140,7 +140,8 @@ Plate slantedDovetailTongue(const SlantedDovetailCut& cut) {
 std::array<Loop, 2> slantedDovetailSlot(const std::vector<Plate>& plates, const SlantedDovetailCut& cut,
                                         const JointCutOptions& options, double grow) {
   const SlantedDovetailSite& site = cut.site;
-  const auto [s0, s1] = slotSpan(cut, options, grow);
+  const std::pair<double, double> span = slotSpan(cut, options, grow);
+  const double s0 = span.first, s1 = span.second;  // not a structured binding: C++17 lambdas cannot capture one
   auto outline = [&](double n) {
     const std::array<Vec3, 2> start = cornersAt(site, s0, n, grow), end = cornersAt(site, s1, n, grow);
     return Loop{start[0], end[0], end[1], start[1]};
