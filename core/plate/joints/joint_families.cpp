@@ -71,14 +71,6 @@ bool exitsLet(const std::vector<Vec3>& exits, int tenonPlate, int mover, const V
   return false;
 }
 
-bool exitsLetNear(const std::vector<Vec3>& exits, int tenonPlate, int mover, const Vec3& d) {
-  const Vec3 way = normalized(d);
-  for (const Vec3& exit : exits) {
-    const Vec3 e = tenonPlate == mover ? exit : negated(exit);
-    if (dot(e, way) > 0 && norm(cross(e, way)) < tolerance::kPlannedParallelSine) return true;
-  }
-  return false;
-}
 
 void requireAtLeast(double value, double least, const char* setting) {
   if (!(value >= least)) {

@@ -63,12 +63,10 @@ bool makesJoints(JointRealization realization);
 // Does a joint whose tenon plate may leave along `exits` let `mover` leave along d (the tenon
 // plate along an exit, the other plate against one)?
 bool exitsLet(const std::vector<Vec3>& exits, int tenonPlate, int mover, const Vec3& d);
-
-// As exitsLet, d within tolerance::kPlannedParallelSine of an exit: for joints on a drawn
-// design's bevelled sides, whose own directions lie a little off the shared edges and the
-// normals the planner tries (IBOIS's hexboxes: up to 0.03 degrees; the planner takes ways within
-// that sine as one). The jointed plates' checks (the sweep on the real cuts) judge the way.
-bool exitsLetNear(const std::vector<Vec3>& exits, int tenonPlate, int mover, const Vec3& d);
+// Exactly (within tolerance::kDirection): a joint cut along its own way and verified at clearance
+// 0 binds on a way even 0.03 degrees off it (a drawn design's shared edge beside its bevelled
+// side: IBOIS's hexboxes), so letting such ways in (tried: up to kPlannedParallelSine) only gave
+// the search joints that failed on the jointed plates.
 
 // Throw BadInput naming the setting (e.g. "dovetail.slope") unless it is a number of at least
 // `least`, or a share above 0 and below 1 (at most 1 where `whole` may be taken).

@@ -188,11 +188,10 @@ class SlantedDovetailFamily final : public JointFamily {
       sites_.push_back(slantedDovetailSiteOf(plates(), contact, options()));
   }
 
-  // Along the side towards an open end; the planner tries the shared edge, which on a drawn
-  // design may lie a little off the side (exitsLetNear).
+  // Along the side towards an open end (exactly: see exitsLet).
   bool lets(int contact, int mover, const Vec3& d) const override {
     const std::optional<SlantedDovetailSite>& site = sites_[static_cast<size_t>(contact)];
-    return site && exitsLetNear(site->exits(), site->side.tenonPlate, mover, d);
+    return site && exitsLet(site->exits(), site->side.tenonPlate, mover, d);
   }
 
   std::vector<Vec3> faceNormals(const PlateJoint& joint) const override {

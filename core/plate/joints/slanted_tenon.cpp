@@ -237,7 +237,7 @@ class SlantedTenonFamily final : public JointFamily {
 
   bool lets(int contact, int mover, const Vec3& d) const override {
     const std::optional<SlantedTenonSite>& site = sites_[static_cast<size_t>(contact)];
-    return site && exitsLetNear({negated(site->out)}, site->tenonPlate, mover, d);
+    return site && exitsLet({negated(site->out)}, site->tenonPlate, mover, d);
   }
 
   // The one way its tenons leave their mortises.
