@@ -215,7 +215,8 @@ export function createCoreHost(loadCore, post, { isCancelled = () => false } = {
       try {
         value = runOperation(core, op, args, id);
       } catch (error) {
-        // The light module refuses a plate or frame before doing any work: ask the full one.
+        // The light module refuses a plate or frame (before any work), or a mesh whose plan needs
+        // the off-lattice group search (mesh/group_search_entry.h), with kind-not-built: ask the full one.
         if (error?.code !== 'kind-not-built' || core.module() === 'full') throw error;
         core = await loadFull();
         post({ type: 'module', module: core.module() }, []);
