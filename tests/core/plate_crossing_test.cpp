@@ -20,6 +20,7 @@
 #include "plate/joints/halved.h"
 #include "plate/joints/plate_cuts.h"
 #include "plate/swept_collision.h"
+#include "plate_test_support.h"
 #include "test_support.h"
 
 namespace desia {
@@ -66,12 +67,7 @@ std::vector<Plate> xStand(double degrees) {
                kThickness)};
 }
 
-double meshVolume(const TriangleMesh& mesh) {
-  double volume = 0;
-  for (const auto& t : mesh.triangles)
-    volume += dot(mesh.vertices[t[0]], cross(mesh.vertices[t[1]], mesh.vertices[t[2]])) / 6.0;
-  return volume;
-}
+using testing::meshVolume;
 
 double totalVolume(const std::vector<Plate>& plates) {
   double volume = 0;
@@ -143,10 +139,7 @@ TEST_P(CrossingAtAngle, EachNotchedLegLosesExactlyItsNotch) {
 
 INSTANTIATE_TEST_SUITE_P(Angles, CrossingAtAngle, ::testing::Values(60.0, 75.0, 90.0));
 
-AssemblyDocument loadExample(const std::string& name) {
-  const std::string path = "examples/plate/" + name;
-  return parseAssemblyText(testing::readFileText(testing::projectPath(path)), path);
-}
+AssemblyDocument loadExample(const std::string& name) { return testing::loadPlateExample(name); }
 
 // The TABLE (examples/plate/table.json) with its shelf tilted about x and a divider turned in plan,
 // crossing at `degrees` (as examples/plate/make_crossing_examples.py writes them).
@@ -292,59 +285,14 @@ TEST(PlateCrossingAtAngle, TheExampleIsTheTableAtSixtyDegrees) {
   }
 }
 
-// The independent check: any plate's inside as a point test (between its face planes, inside the
-// section there: each side is planar, so the section is its loops' vertices interpolated from the
-// first face to the second), and a move step by step, sampling the mover against the obstacle.
-struct SolidInside {
-  explicit SolidInside(const Plate& plate)
-      : plate(plate),
-        axis(plateThicknessAxis(plate)),
-        base(plate.bottom[0][0]),
-        u(normalized(cross(axis, std::abs(axis[0]) < 0.6 ? Vec3{1, 0, 0} : Vec3{0, 1, 0}))),
-        v(cross(axis, u)),
-        thickness(dot(minus(plate.top[0][0], base), axis)) {}
-  bool contains(const Vec3& point) const {
-    const Vec3 d = minus(point, base);
-    const double height = dot(d, axis);
-    if (height <= 0 || height >= thickness) return false;
-    const double f = height / thickness, px = dot(d, u), py = dot(d, v);
-    bool inside = false;
-    for (size_t l = 0; l < plate.bottom.size(); ++l) {
-      std::vector<std::array<double, 2>> loop;
-      for (size_t i = 0; i < plate.bottom[l].size(); ++i) {
-        const Vec3 q = minus(plus(plate.bottom[l][i], scaled(minus(plate.top[l][i], plate.bottom[l][i]), f)), base);
-        loop.push_back({dot(q, u), dot(q, v)});
-      }
-      for (size_t i = 0, j = loop.size() - 1; i < loop.size(); j = i++) {
-        const auto& a = loop[i];
-        const auto& b = loop[j];
-        if ((a[1] > py) != (b[1] > py) && px < (b[0] - a[0]) * (py - a[1]) / (b[1] - a[1]) + a[0]) inside = !inside;
-      }
-    }
-    return inside;
-  }
-  const Plate& plate;
-  Vec3 axis, base, u, v;
-  double thickness;
-};
-
+// The independent check (plate_test_support.h): the mover's inside sampled on a grid, moved step by
+// step against the obstacle's.
 bool steppedCollision(const Plate& mover, const Plate& obstacle, const Vec3& d) {
-  const SolidInside moving(mover), standing(obstacle);
   constexpr double kStep = 2.3;  // mm, finer than the 18 mm legs
-  std::vector<Vec3> samples;
-  for (double x = -kLength / 2 + 0.37; x < kLength / 2; x += kStep) {
-    for (double y = -kLength / 2 + 0.41; y < kLength / 2; y += kStep) {
-      for (double z = 0.43; z < kHeight; z += 7 * kStep) {
-        if (moving.contains({x, y, z})) samples.push_back({x, y, z});
-      }
-    }
-  }
-  for (double t = 0.5; t < 2 * kLength; t += kStep) {
-    for (const Vec3& p : samples) {
-      if (standing.contains(plus(p, scaled(d, t)))) return true;
-    }
-  }
-  return false;
+  const std::vector<Vec3> samples =
+      testing::samplesInside(mover, {-kLength / 2 + 0.36, -kLength / 2 + 0.39, 0.42},
+                             {{{{1, 0, 0}, 0, kLength, kStep}, {{0, 1, 0}, 0, kLength, kStep}, {{0, 0, 1}, 0, kHeight, 7 * kStep}}});
+  return testing::steppedCollision(samples, obstacle, d, kStep, 2 * kLength);
 }
 
 TEST(PlateCrossingAtAngle, TheSweepOfTheNotchedLegsAgreesWithSteppingThemThrough) {

@@ -30,6 +30,7 @@
 #include "desia/export.h"
 #include "desia/formats.h"
 #include "desia/plate.h"
+#include "plate_test_support.h"
 #include "test_support.h"
 
 namespace desia {
@@ -68,12 +69,7 @@ std::vector<Plate> jointedInRemovalOrder(const PlateDesignResult& result) {
   return inOrder;
 }
 
-double meshVolume(const TriangleMesh& mesh) {
-  double volume = 0;
-  for (const auto& t : mesh.triangles)
-    volume += dot(mesh.vertices[t[0]], cross(mesh.vertices[t[1]], mesh.vertices[t[2]])) / 6.0;
-  return volume;
-}
+using testing::meshVolume;
 
 double totalVolume(const std::vector<Plate>& plates) {
   double volume = 0;

@@ -25,6 +25,7 @@
 #include "plate/joints/slanted_dovetail.h"
 #include "plate/plate_graph.h"
 #include "plate/swept_collision.h"
+#include "plate_test_support.h"
 #include "test_support.h"
 
 namespace desia {
@@ -34,49 +35,9 @@ constexpr double kLeanDegrees = 15;  // the box's sides from upright: planes 75 
 constexpr double kThickness = 18;    // every board's, mm
 constexpr double kLength = 400;      // the sides' and the base's, mm
 
-AssemblyDocument leaningBox() {
-  const std::string path = "examples/plate/leaning_box.json";
-  return parseAssemblyText(testing::readFileText(testing::projectPath(path)), path);
-}
+AssemblyDocument leaningBox() { return testing::loadPlateExample("leaning_box.json"); }
 
-double meshVolume(const TriangleMesh& mesh) {
-  double volume = 0;
-  for (const auto& t : mesh.triangles)
-    volume += dot(mesh.vertices[t[0]], cross(mesh.vertices[t[1]], mesh.vertices[t[2]])) / 6.0;
-  return volume;
-}
-
-// A plate's volume with its attached solids (its mesh holds them; they touch it, never overlap it).
-double volumeOf(const Plate& plate) { return meshVolume(plateMesh(plate)); }
-
-// Any plate's inside as a point test, written apart from the core: between its face planes and
-// inside the section there (the loops' vertices interpolated from the first face to the second),
-// or inside one of its attached solids.
-bool inside(const Plate& plate, const Vec3& point) {
-  for (const Plate& piece : plate.attached) {
-    if (inside(piece, point)) return true;
-  }
-  const Vec3 axis = normalized(loopNormal(plate.bottom[0]));
-  const Vec3 base = plate.bottom[0][0];
-  const Vec3 u = normalized(cross(axis, std::abs(axis[0]) < 0.6 ? Vec3{1, 0, 0} : Vec3{0, 1, 0})), v = cross(axis, u);
-  const double thickness = dot(minus(plate.top[0][0], base), axis), height = dot(minus(point, base), axis);
-  if (height * thickness <= 0 || std::abs(height) >= std::abs(thickness)) return false;
-  const double f = height / thickness, px = dot(minus(point, base), u), py = dot(minus(point, base), v);
-  bool in = false;
-  for (size_t l = 0; l < plate.bottom.size(); ++l) {
-    std::vector<std::array<double, 2>> loop;
-    for (size_t i = 0; i < plate.bottom[l].size(); ++i) {
-      const Vec3 q = minus(plus(plate.bottom[l][i], scaled(minus(plate.top[l][i], plate.bottom[l][i]), f)), base);
-      loop.push_back({dot(q, u), dot(q, v)});
-    }
-    for (size_t i = 0, j = loop.size() - 1; i < loop.size(); j = i++) {
-      const auto& a = loop[i];
-      const auto& b = loop[j];
-      if ((a[1] > py) != (b[1] > py) && px < (b[0] - a[0]) * (py - a[1]) / (b[1] - a[1]) + a[0]) in = !in;
-    }
-  }
-  return in;
-}
+double volumeOf(const Plate& plate) { return testing::plateVolume(plate); }
 
 // The base and the front side (plates[0], plates[1]) and the site of the slanted dovetail on
 // their contact.
@@ -174,23 +135,13 @@ TEST(PlateSlantedDovetails, TheSideGainsItsTongueAndTheBaseLosesItsSlotPlusTheCl
 // inside the base?
 bool steppedCollision(const SlantedDovetailSite& site, const Plate& mover, const Plate& obstacle, const Vec3& d) {
   constexpr double kStep = 0.7, kMargin = 4, kReach = 25;  // mm
-  std::vector<Vec3> samples;
   const SlantedSide& side = site.side;
-  for (double n = -kMargin + 0.013; n < site.depth + kMargin; n += kStep) {
-    for (double c = -kMargin - 0.017; c < site.sideWidth + kThickness / 2 + kMargin; c += kStep) {
-      for (double s = side.from + site.stop - 6 + 0.011; s < side.from + site.stop + 60; s += 3) {
-        const Vec3 p =
-            plus(side.origin[0], plus(scaled(side.along, s), plus(scaled(site.width, c), scaled(side.intoMortise, n))));
-        if (inside(mover, p)) samples.push_back(p);
-      }
-    }
-  }
-  for (double t = kStep / 2; t < kReach; t += kStep) {
-    for (const Vec3& p : samples) {
-      if (inside(obstacle, plus(p, scaled(d, t)))) return true;
-    }
-  }
-  return false;
+  const std::vector<Vec3> samples = testing::samplesInside(
+      mover, side.origin[0],
+      {{{side.intoMortise, -kMargin, site.depth + kMargin, kStep},
+        {site.width, -kMargin - 0.034, site.sideWidth + kThickness / 2 + kMargin, kStep},
+        {side.along, side.from + site.stop - 6, side.from + site.stop + 60, 3}}});
+  return testing::steppedCollision(samples, obstacle, d, kStep, kReach);
 }
 
 TEST(PlateSlantedDovetails, TheSweepAgreesWithSteppingTheSideOut) {

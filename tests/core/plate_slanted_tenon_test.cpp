@@ -22,6 +22,7 @@
 #include "plate/joints/slanted_tenon.h"
 #include "plate/plate_graph.h"
 #include "plate/swept_collision.h"
+#include "plate_test_support.h"
 #include "test_support.h"
 
 namespace desia {
@@ -30,49 +31,9 @@ namespace {
 constexpr double kLeanDegrees = 15;  // the box's sides from upright: planes 75 degrees apart
 constexpr double kThickness = 18;    // every board's, mm
 
-AssemblyDocument leaningBox() {
-  const std::string path = "examples/plate/leaning_box.json";
-  return parseAssemblyText(testing::readFileText(testing::projectPath(path)), path);
-}
+AssemblyDocument leaningBox() { return testing::loadPlateExample("leaning_box.json"); }
 
-double meshVolume(const TriangleMesh& mesh) {
-  double volume = 0;
-  for (const auto& t : mesh.triangles)
-    volume += dot(mesh.vertices[t[0]], cross(mesh.vertices[t[1]], mesh.vertices[t[2]])) / 6.0;
-  return volume;
-}
-
-// A plate's volume with its attached solids (its mesh holds them; they touch it, never overlap it).
-double volumeOf(const Plate& plate) { return meshVolume(plateMesh(plate)); }
-
-// Any plate's inside as a point test, written apart from the core: between its face planes and
-// inside the section there (the loops' vertices interpolated from the first face to the second),
-// or inside one of its attached solids.
-bool inside(const Plate& plate, const Vec3& point) {
-  for (const Plate& piece : plate.attached) {
-    if (inside(piece, point)) return true;
-  }
-  const Vec3 axis = normalized(loopNormal(plate.bottom[0]));
-  const Vec3 base = plate.bottom[0][0];
-  const Vec3 u = normalized(cross(axis, std::abs(axis[0]) < 0.6 ? Vec3{1, 0, 0} : Vec3{0, 1, 0})), v = cross(axis, u);
-  const double thickness = dot(minus(plate.top[0][0], base), axis), height = dot(minus(point, base), axis);
-  if (height * thickness <= 0 || std::abs(height) >= std::abs(thickness)) return false;
-  const double f = height / thickness, px = dot(minus(point, base), u), py = dot(minus(point, base), v);
-  bool in = false;
-  for (size_t l = 0; l < plate.bottom.size(); ++l) {
-    std::vector<std::array<double, 2>> loop;
-    for (size_t i = 0; i < plate.bottom[l].size(); ++i) {
-      const Vec3 q = minus(plus(plate.bottom[l][i], scaled(minus(plate.top[l][i], plate.bottom[l][i]), f)), base);
-      loop.push_back({dot(q, u), dot(q, v)});
-    }
-    for (size_t i = 0, j = loop.size() - 1; i < loop.size(); j = i++) {
-      const auto& a = loop[i];
-      const auto& b = loop[j];
-      if ((a[1] > py) != (b[1] > py) && px < (b[0] - a[0]) * (py - a[1]) / (b[1] - a[1]) + a[0]) in = !in;
-    }
-  }
-  return in;
-}
+double volumeOf(const Plate& plate) { return testing::plateVolume(plate); }
 
 // The base and the left side, and the site of the slanted tenon on their contact.
 struct BaseAndSide {
@@ -100,22 +61,12 @@ BaseAndSide baseAndSide() {
 // and along `out`, 3 mm along it), stepped along d: does one land inside the base?
 bool steppedCollision(const SlantedTenonSite& site, const Plate& mover, const Plate& obstacle, const Vec3& d) {
   constexpr double kStep = 0.7, kMargin = 3;  // mm
-  std::vector<Vec3> samples;
-  for (double r = -kMargin + 0.013; r < site.reach + kMargin; r += kStep) {
-    for (double h = -kMargin + 0.017; h < kThickness + kMargin; h += kStep) {
-      for (double s = site.from + 0.011; s < site.to; s += 3) {
-        const Vec3 p =
-            plus(site.origin[0], plus(scaled(site.out, r), plus(scaled(site.across, h), scaled(site.along, s))));
-        if (inside(mover, p)) samples.push_back(p);
-      }
-    }
-  }
-  for (double t = kStep / 2; t < site.reach + kMargin; t += kStep) {
-    for (const Vec3& p : samples) {
-      if (inside(obstacle, plus(p, scaled(d, t)))) return true;
-    }
-  }
-  return false;
+  const std::vector<Vec3> samples =
+      testing::samplesInside(mover, site.origin[0],
+                             {{{site.out, -kMargin, site.reach + kMargin, kStep},
+                               {site.across, -kMargin, kThickness + kMargin, kStep},
+                               {site.along, site.from, site.to, 3}}});
+  return testing::steppedCollision(samples, obstacle, d, kStep, site.reach + kMargin);
 }
 
 TEST(PlateSlantedTenons, TheSideStandsOnTheBaseAt75DegreesWithTwoTenonsThroughIt) {

@@ -19,73 +19,28 @@
 #include "plate/joints/step_tenon.h"
 #include "plate/plate_graph.h"
 #include "plate/swept_collision.h"
+#include "plate_test_support.h"
 #include "test_support.h"
 
 namespace desia {
 namespace {
 
-AssemblyDocument loadPlateExample(const std::string& name) {
-  const std::string path = "examples/plate/" + name;
-  return parseAssemblyText(testing::readFileText(testing::projectPath(path)), path);
-}
+using testing::loadPlateExample;
+using testing::PlateInside;
 
-double meshVolume(const TriangleMesh& mesh) {
-  double volume = 0;
-  for (const auto& t : mesh.triangles)
-    volume += dot(mesh.vertices[t[0]], cross(mesh.vertices[t[1]], mesh.vertices[t[2]])) / 6.0;
-  return volume;
-}
-
-double volumeOf(const Plate& plate) { return meshVolume(plateMesh(plate)); }
-
-// Any plate's inside as a point test, written apart from the core: between its face planes and
-// inside the section there (each side planar: the loops' vertices interpolated from the first
-// face to the second), or inside one of its attached solids.
-bool inside(const Plate& plate, const Vec3& point) {
-  for (const Plate& piece : plate.attached) {
-    if (inside(piece, point)) return true;
-  }
-  const Vec3 axis = plateThicknessAxis(plate), base = plate.bottom[0][0];
-  const Vec3 u = normalized(cross(axis, std::abs(axis[0]) < 0.6 ? Vec3{1, 0, 0} : Vec3{0, 1, 0})), v = cross(axis, u);
-  const double thickness = dot(minus(plate.top[0][0], base), axis), height = dot(minus(point, base), axis);
-  if (height <= 0 || height >= thickness) return false;
-  const double f = height / thickness, px = dot(minus(point, base), u), py = dot(minus(point, base), v);
-  bool in = false;
-  for (size_t l = 0; l < plate.bottom.size(); ++l) {
-    std::vector<std::array<double, 2>> loop;
-    for (size_t i = 0; i < plate.bottom[l].size(); ++i) {
-      const Vec3 q = minus(plus(plate.bottom[l][i], scaled(minus(plate.top[l][i], plate.bottom[l][i]), f)), base);
-      loop.push_back({dot(q, u), dot(q, v)});
-    }
-    for (size_t i = 0, j = loop.size() - 1; i < loop.size(); j = i++) {
-      const auto& a = loop[i];
-      const auto& b = loop[j];
-      if ((a[1] > py) != (b[1] > py) && px < (b[0] - a[0]) * (py - a[1]) / (b[1] - a[1]) + a[0]) in = !in;
-    }
-  }
-  return in;
-}
+double volumeOf(const Plate& plate) { return testing::plateVolume(plate); }
 
 // The tenon plate's points around its tenons (a grid in the joint's frame, 0.6 mm
 // apart across the edge, a millimetre along it), stepped along d: does one land inside the pocket
 // plate?
 bool steppedCollision(const StepTenon& tenon, const Plate& mover, const Plate& obstacle, const Vec3& d) {
   constexpr double kStep = 0.6, kMargin = 2;  // mm
-  std::vector<Vec3> samples;
-  for (double x = tenon.wall - kMargin + 0.013; x < tenon.root + kMargin; x += kStep) {
-    for (double y = tenon.floor - kMargin + 0.017; y < tenon.tenonTop + kMargin; y += kStep) {
-      for (double s = -tenon.notchHalf + 0.011; s < tenon.notchHalf; s += 1.7 * kStep) {
-        const Vec3 p = plus(tenon.origin, plus(scaled(tenon.inward, x), plus(scaled(tenon.up, y), scaled(tenon.line, s))));
-        if (inside(mover, p)) samples.push_back(p);
-      }
-    }
-  }
-  for (double t = kStep / 2; t < tenon.root - tenon.wall + kMargin; t += kStep) {
-    for (const Vec3& p : samples) {
-      if (inside(obstacle, plus(p, scaled(d, t)))) return true;
-    }
-  }
-  return false;
+  const std::vector<Vec3> samples =
+      testing::samplesInside(mover, tenon.origin,
+                             {{{tenon.inward, tenon.wall - kMargin, tenon.root + kMargin, kStep},
+                               {tenon.up, tenon.floor - kMargin, tenon.tenonTop + kMargin, kStep},
+                               {tenon.line, -tenon.notchHalf, tenon.notchHalf, 1.7 * kStep}}});
+  return testing::steppedCollision(samples, obstacle, d, kStep, tenon.root - tenon.wall + kMargin);
 }
 
 // The step tenon's angles widened to 30..50 degrees (the slanted box's sides and its lid and
@@ -137,11 +92,12 @@ TEST(PlateStepTenons, TheTenonPlateGainsItsTenonsAndThePocketPlateLosesThemAndTh
   const double lost = volumeOf(pair.plates[0]) - volumeOf(cut[0]);
   const StepTenon& t = pair.tenon;
   const double step = 0.25;
+  const PlateInside pocketPlate(pair.plates[0]);
   int above = 0;
   for (double x = t.wall - 20; x < t.root + 20; x += step) {
     for (double y = t.tenonTop + step / 2; y < t.top + 20; y += step) {
       const Vec3 p = plus(t.origin, plus(scaled(t.inward, x), scaled(t.up, y)));
-      above += x > t.wall && inside(pair.plates[0], p) ? 1 : 0;
+      above += x > t.wall && pocketPlate.contains(p) ? 1 : 0;
     }
   }
   const double openAbove = above * step * step * 2 * t.notchHalf;
