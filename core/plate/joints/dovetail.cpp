@@ -40,9 +40,7 @@ DovetailSection dovetailSection(const std::vector<Plate>& plates, const TenonSit
 std::pair<double, double> housingSpan(const std::vector<Plate>& plates, const DovetailCut& cut,
                                       const DovetailSizes& sizes) {
   const TenonSite& edge = cut.site.edge;
-  const double stop = housingStop(plates, edge, sizes);
-  return cut.openEnd == 1 ? std::make_pair(edge.from + stop, edge.to + cut.site.reach[1])
-                          : std::make_pair(edge.from - cut.site.reach[0], edge.to - stop);
+  return housingRun(edge.from, edge.to, housingStop(plates, edge, sizes), cut.site.reach, cut.openEnd);
 }
 
 // A point of the joint: `s` along the edge, `c` across the edge plate, `n` into the face plate.
@@ -95,6 +93,14 @@ std::optional<std::array<double, 2>> stripExits(const std::vector<Plate>& plates
   return std::array<double, 2>{std::min(exits[0], exits[1]), std::max(exits[0], exits[1])};
 }
 
+// The outline of a face's loops: the one enclosing the largest area (a plate's own loops list it
+// first, but a face region Clipper gives may list a hole first).
+const Loop& outlineOf(const std::vector<Loop>& loops) {
+  return *std::max_element(loops.begin(), loops.end(), [](const Loop& a, const Loop& b) {
+    return norm(loopNormal(a)) < norm(loopNormal(b));
+  });
+}
+
 // A sliding dovetail made real: the housing, a rectangle on the face plate's face cut through the
 // face layer it enters (as deep as the dovetail, run out past the open end), the two lips that
 // overhang the tongue there, and the tongue on the edge plate. The clearance narrows and shortens
@@ -111,14 +117,14 @@ DovetailPieces dovetailPieces(const std::vector<Plate>& plates, const DovetailCu
   const TenonSite& edge = cut.site.edge;
   const DovetailSection d = dovetailSection(plates, edge, options.dovetail);
   const auto [s0, s1] = housingSpan(plates, cut, options.dovetail);
-  const double runOut = options.woodMargin + plateThickness(plates[edge.mortisePlate]);
+  const double runOut = housingRunOut(plates[edge.mortisePlate], options);
   const double cut0 = cut.openEnd == 0 ? s0 - runOut : s0, cut1 = cut.openEnd == 1 ? s1 + runOut : s1;
   const double low = d.centre - d.wide / 2, high = d.centre + d.wide / 2;
   const double narrowLow = d.centre - d.narrow / 2, narrowHigh = d.centre + d.narrow / 2;
   DovetailPieces pieces;
   pieces.housing = {jointPoint(plates, edge, cut0, low, 0), jointPoint(plates, edge, cut1, low, 0),
                     jointPoint(plates, edge, cut1, high, 0), jointPoint(plates, edge, cut0, high, 0)};
-  pieces.fromFirstFace = dot(edge.intoMortise, plateThicknessAxis(plates[edge.mortisePlate])) > 0;
+  pieces.fromFirstFace = entersFromFirstFace(plates[edge.mortisePlate], edge.intoMortise);
   pieces.lips = {prismAlongEdge(plates, edge, s0, s1, {{low, 0}, {narrowLow, 0}, {low, d.depth}}),
                  prismAlongEdge(plates, edge, s0, s1, {{narrowHigh, 0}, {high, 0}, {high, d.depth}})};
   const double play = clearance / 2;
@@ -160,6 +166,17 @@ double housingStop(const std::vector<Plate>& plates, const TenonSite& edge, cons
   return std::max(sizes.stop, plateThickness(plates[edge.mortisePlate]));
 }
 
+std::pair<double, double> housingRun(double from, double to, double stop, const std::array<double, 2>& reach,
+                                     int openEnd) {
+  return openEnd == 1 ? std::make_pair(from + stop, to + reach[1]) : std::make_pair(from - reach[0], to - stop);
+}
+
+double housingRunOut(const Plate& facePlate, const JointCutOptions& options) {
+  return options.woodMargin + plateThickness(facePlate);
+}
+
+bool entersFromFirstFace(const Plate& plate, const Vec3& into) { return dot(into, plateThicknessAxis(plate)) > 0; }
+
 HousingOpenings housingOpenings(const std::vector<Plate>& plates, const TenonSite& edge,
                                 std::array<double, 2> strip, double stop, const HousingPlateFace& face,
                                 const JointCutOptions& options, bool squareEnds) {
@@ -192,9 +209,9 @@ HousingOpenings housingOpenings(const std::vector<Plate>& plates, const TenonSit
     // (the same for a prism; on a plate whose end is bevelled, as a mitre, the slot runs out
     // through the bevel).
     const std::optional<std::array<double, 2>> inner =
-        stripExits(plates, edge, face.everywhere[0], frame, end, low, high);
+        stripExits(plates, edge, outlineOf(face.everywhere), frame, end, low, high);
     const std::optional<std::array<double, 2>> outer =
-        squareEnds ? inner : stripExits(plates, edge, face.anywhere[0], frame, end, low, high);
+        squareEnds ? inner : stripExits(plates, edge, outlineOf(face.anywhere), frame, end, low, high);
     if (squareEnds && (!inner || (*inner)[0] <= kFlush || (*inner)[1] - (*inner)[0] > tolerance::kSameExitMm))
       continue;
     if (!squareEnds && (!outer || (*outer)[1] <= kFlush)) continue;

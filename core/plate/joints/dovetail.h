@@ -10,6 +10,7 @@
 #include <array>
 #include <memory>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "desia/plate.h"
@@ -39,8 +40,20 @@ struct DovetailSite {
 // at least the face plate's thickness.
 double housingStop(const std::vector<Plate>& plates, const TenonSite& edge, const DovetailSizes& sizes);
 
+// A housing's run along the edge, from `stop` past the closed end's start of the contact
+// [from, to] on to the open end (`openEnd` 1: `to`, 0: `from`), `reach` past the contact there
+// (DovetailSite::reach). Cut, it runs out `housingRunOut` further, past the face plate's edge.
+std::pair<double, double> housingRun(double from, double to, double stop, const std::array<double, 2>& reach,
+                                     int openEnd);
+// How far a housing's cut runs on past its open end: the face plate's thickness and the wood
+// margin, so that the cutter leaves the plate whole.
+double housingRunOut(const Plate& facePlate, const JointCutOptions& options);
+// Does a cut going `into` the plate enter it from its first face?
+bool entersFromFirstFace(const Plate& plate, const Vec3& into);
+
 // The face plate as a housing sees it along its axis: where it has material on every layer its
-// housing runs through (`everywhere`), and on any (`anywhere`; the first loop its outline). A
+// housing runs through (`everywhere`), and on any (`anywhere`); each one outline (the loop of the
+// largest area) and its holes, in any order. A
 // prism's face outline is both.
 struct HousingPlateFace {
   std::vector<Loop> everywhere, anywhere;

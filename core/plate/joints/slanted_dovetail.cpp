@@ -28,7 +28,9 @@ Vec3 jointPoint(const SlantedDovetailSite& site, double s, double c, double n) {
 }
 
 // The site in the frame the square sliding dovetail measures its housing in (its across is
-// `width`: c), to ask where the slot may open.
+// `width`: c), to ask where the slot may open. That frame starts at S's vertex `edge` on its first
+// face, which is the side's origin[0] (placeOnSide in slanted_tenon.cpp), so both measure s and c
+// from the same point.
 TenonSite housingFrame(const SlantedDovetailSite& site) {
   TenonSite edge;
   edge.tenonPlate = site.side.tenonPlate;
@@ -56,17 +58,14 @@ std::array<Vec3, 2> cornersAt(const SlantedDovetailSite& site, double s, double 
 }
 
 // The slot's extent along the side: from the stop (moved back by `grow`) on past the open end's
-// edge of F, as far as a square housing runs out (the wood margin and F's thickness).
-std::pair<double, double> slotSpan(const SlantedDovetailCut& cut, const JointCutOptions& options, double grow) {
+// edge of F, as far as a square housing runs out.
+std::pair<double, double> slotSpan(const std::vector<Plate>& plates, const SlantedDovetailCut& cut,
+                                   const JointCutOptions& options, double grow) {
   const SlantedDovetailSite& site = cut.site;
-  const double runOut = options.woodMargin + site.depth;
-  return cut.openEnd == 1 ? std::make_pair(site.side.from + site.stop - grow, site.side.to + site.reach[1] + runOut)
-                          : std::make_pair(site.side.from - site.reach[0] - runOut, site.side.to - site.stop + grow);
-}
-
-// Does S stand on F's first face (n = 0 there)?
-bool onFirstFace(const std::vector<Plate>& plates, const SlantedDovetailSite& site) {
-  return dot(site.side.intoMortise, plateThicknessAxis(plates[static_cast<size_t>(site.side.mortisePlate)])) > 0;
+  const auto run = housingRun(site.side.from, site.side.to, site.stop, site.reach, cut.openEnd);
+  const double runOut = housingRunOut(plates[static_cast<size_t>(site.side.mortisePlate)], options);
+  return cut.openEnd == 1 ? std::make_pair(run.first - grow, run.second + runOut)
+                          : std::make_pair(run.first - runOut, run.second + grow);
 }
 
 class SlantedDovetailJointCut final : public JointCut {
@@ -140,13 +139,14 @@ Plate slantedDovetailTongue(const SlantedDovetailCut& cut) {
 std::array<Loop, 2> slantedDovetailSlot(const std::vector<Plate>& plates, const SlantedDovetailCut& cut,
                                         const JointCutOptions& options, double grow) {
   const SlantedDovetailSite& site = cut.site;
-  const std::pair<double, double> span = slotSpan(cut, options, grow);
+  const std::pair<double, double> span = slotSpan(plates, cut, options, grow);
   const double s0 = span.first, s1 = span.second;  // not a structured binding: C++17 lambdas cannot capture one
   auto outline = [&](double n) {
     const std::array<Vec3, 2> start = cornersAt(site, s0, n, grow), end = cornersAt(site, s1, n, grow);
     return Loop{start[0], end[0], end[1], start[1]};
   };
-  if (onFirstFace(plates, site)) return {outline(0), outline(site.depth)};
+  const Plate& housingPlate = plates[static_cast<size_t>(site.side.mortisePlate)];
+  if (entersFromFirstFace(housingPlate, site.side.intoMortise)) return {outline(0), outline(site.depth)};
   return {outline(site.depth), outline(0)};
 }
 
@@ -165,7 +165,7 @@ CutFootprint slantedDovetailFootprint(const std::vector<Plate>& plates, const Sl
   const SlantedDovetailSite& site = cut.site;
   const Plate& housingPlate = plates[static_cast<size_t>(site.side.mortisePlate)];
   const Vec3 axis = plateThicknessAxis(housingPlate);
-  const auto [s0, s1] = slotSpan(cut, options, 0);
+  const auto [s0, s1] = slotSpan(plates, cut, options, 0);
   const double low = std::min(site.walls[0][0], site.walls[1][0]), high = std::max(site.walls[0][1], site.walls[1][1]);
   auto onFirst = [&](double s, double c) {
     const Vec3 p = jointPoint(site, s, c, 0);
