@@ -18,6 +18,7 @@
 #include "desia/mesh.h"
 #include "mesh/mesh_geometry.h"
 #include "mesh/mesh_group_search.h"
+#include "obj_edits.h"  // tests/core: the dents the mesh tests make
 
 namespace {
 
@@ -109,38 +110,6 @@ void run(int requested) {
               report.disassembly && report.disassembly->complete ? "complete" : "INCOMPLETE");
 }
 
-// The OBJ with the vertex farthest along each diagonal moved `depth` mm back along it.
-std::string dentedObj(const std::string& obj, double depth) {
-  std::vector<std::string> lines;
-  std::vector<std::pair<size_t, desia::Vec3>> vertices;
-  std::istringstream in(obj);
-  for (std::string line; std::getline(in, line);) {
-    if (line.rfind("v ", 0) == 0) {
-      desia::Vec3 p{};
-      std::istringstream(line.substr(2)) >> p[0] >> p[1] >> p[2];
-      vertices.push_back({lines.size(), p});
-    }
-    lines.push_back(line);
-  }
-  for (int corner = 0; corner < 8 && !vertices.empty(); ++corner) {
-    const desia::Vec3 s{corner & 1 ? -1.0 : 1.0, corner & 2 ? -1.0 : 1.0, corner & 4 ? -1.0 : 1.0};
-    const auto along = [&](const desia::Vec3& p) { return p[0] * s[0] + p[1] * s[1] + p[2] * s[2]; };
-    desia::Vec3 farthest = vertices.front().second;
-    for (const auto& vertex : vertices) {
-      if (along(vertex.second) > along(farthest)) farthest = vertex.second;
-    }
-    char text[128];
-    std::snprintf(text, sizeof text, "v %.17g %.17g %.17g", farthest[0] - depth * s[0], farthest[1] - depth * s[1],
-                  farthest[2] - depth * s[2]);
-    for (const auto& vertex : vertices) {
-      if (vertex.second == farthest) lines[vertex.first] = text;
-    }
-  }
-  std::string out;
-  for (const std::string& line : lines) out += line + "\n";
-  return out;
-}
-
 // A mesh assembly from a file (PelikanBurr exported as OBJ: its plan needs the voxel disassembler;
 // dented, the search for moves of several parts off any lattice).
 void runFile(const std::string& path, bool dented) {
@@ -153,7 +122,7 @@ void runFile(const std::string& path, bool dented) {
   char buffer[65536];
   for (size_t n; (n = std::fread(buffer, 1, sizeof buffer, file)) > 0;) bytes.append(buffer, n);
   std::fclose(file);
-  if (dented) bytes = dentedObj(bytes, kDentMm);
+  if (dented) bytes = desia::testing::dentedObj(bytes, kDentMm);
   const auto start = std::chrono::steady_clock::now();
   const desia::MeshAssembly meshes = desia::buildMeshAssembly(desia::readMeshParts({{path, bytes}}));
   const auto built = std::chrono::steady_clock::now();

@@ -25,6 +25,7 @@
 #include "mesh/mesh_group_search.h"
 #include "mesh/mesh_lattice.h"
 #include "mesh_test_support.h"
+#include "obj_edits.h"
 #include "test_support.h"
 
 namespace desia {
@@ -38,37 +39,7 @@ using testing::readDocument;
 using testing::replayMovesFailure;
 using testing::transformedObj;
 
-// The OBJ with the vertex farthest along each of the eight diagonals (the first in the file where
-// several are as far) moved `depth` back along it, in every record that has it.
-std::string dentedObj(const std::string& obj, double depth) {
-  std::vector<std::string> lines;
-  std::vector<std::pair<size_t, Vec3>> vertices;
-  std::istringstream in(obj);
-  for (std::string line; std::getline(in, line);) {
-    if (line.rfind("v ", 0) == 0) {
-      Vec3 p{};
-      std::istringstream(line.substr(2)) >> p[0] >> p[1] >> p[2];
-      vertices.push_back({lines.size(), p});
-    }
-    lines.push_back(line);
-  }
-  for (int corner = 0; corner < 8; ++corner) {
-    const Vec3 s{corner & 1 ? -1.0 : 1.0, corner & 2 ? -1.0 : 1.0, corner & 4 ? -1.0 : 1.0};
-    Vec3 farthest = vertices.front().second;
-    for (const auto& vertex : vertices) {
-      if (dot(vertex.second, s) > dot(farthest, s)) farthest = vertex.second;
-    }
-    const Vec3 dented = minus(farthest, scaled(s, depth));
-    char text[128];
-    std::snprintf(text, sizeof text, "v %.17g %.17g %.17g", dented[0], dented[1], dented[2]);
-    for (const auto& vertex : vertices) {
-      if (vertex.second == farthest) lines[vertex.first] = text;
-    }
-  }
-  std::string out;
-  for (const std::string& line : lines) out += line + "\n";
-  return out;
-}
+using testing::dentedObj;
 
 constexpr double kDentCells = 0.25;  // the exports' cells are 1 mm
 constexpr double kNotchCells = 0.2718;  // on no lattice with the cells' 1 mm
