@@ -14,7 +14,7 @@ import { fileURLToPath } from 'node:url';
 import { loadDesiaModule } from '../../wasm/index.js';
 
 const root = fileURLToPath(new URL('../../', import.meta.url));
-const cli = path.join(root, 'build/native/core/cli/desia');
+const cli = process.env.DESIA_CLI ?? path.join(root, 'build/native/core/cli/desia');
 const runsArgument = process.argv.indexOf('--runs');
 const runs = runsArgument > 0 ? Number(process.argv[runsArgument + 1]) : 3;
 

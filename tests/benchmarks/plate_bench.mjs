@@ -3,7 +3,7 @@
 // own timing covers the planning and its verification) and in WebAssembly (node, the package's
 // synchronous core, timed around designPlate). Medians of --runs runs (default 5).
 //
-//   node tests/benchmarks/plate_bench.mjs [--runs N]
+//   node tests/benchmarks/plate_bench.mjs [--runs N]   (DESIA_CLI: another native CLI than build/native's)
 import { spawnSync } from 'node:child_process';
 import fs from 'node:fs';
 import os from 'node:os';
@@ -13,7 +13,7 @@ import { fileURLToPath } from 'node:url';
 import { loadDesiaModule } from '../../wasm/index.js';
 
 const root = fileURLToPath(new URL('../../', import.meta.url));
-const cli = path.join(root, 'build/native/core/cli/desia');
+const cli = process.env.DESIA_CLI ?? path.join(root, 'build/native/core/cli/desia');
 const runsArgument = process.argv.indexOf('--runs');
 const runs = runsArgument > 0 ? Number(process.argv[runsArgument + 1]) : 5;
 
