@@ -125,23 +125,16 @@ bool setSlideFrame(MitreSlide& slide, const PlateContact& contact, const Plate& 
   return !(dot(slide.into, slide.mitreNormal) < tolerance::kGlancingCosine);
 }
 
-// The groove as deep as the slide plate holds it with the margin of wood on both faces: from the
-// plate's thickness down by a fifth at a time; false below the shallowest groove.
-bool setDeepestGroove(MitreSlide& slide, const Plate& plate, const JointCutOptions& options) {
+// Does the slide plate hold the groove at slide.depth with the margin of wood on both faces?
+bool grooveHeldByFaces(const MitreSlide& slide, const Plate& plate, const JointCutOptions& options) {
   const Vec3 axis = plateThicknessAxis(plate);
   const double thickness = plateThickness(plate);
-  auto fits = [&](double depth) {
-    slide.depth = depth;
-    for (const Flat& q : slideSection(slide, 0)) {
-      const Vec3 point = plus(slide.middle, plus(scaled(slide.across, q[0]), scaled(slide.mitreNormal, q[1])));
-      const double height = dot(minus(point, plate.bottom[0][0]), axis);
-      if (height < options.woodMargin || height > thickness - options.woodMargin) return false;
-    }
-    return true;
-  };
-  double depth = thickness;
-  while (depth >= options.mitreSlide.shallowestGroove && !fits(depth)) depth *= 0.8;
-  return !(depth < options.mitreSlide.shallowestGroove);
+  for (const Flat& q : slideSection(slide, 0)) {
+    const Vec3 point = plus(slide.middle, plus(scaled(slide.across, q[0]), scaled(slide.mitreNormal, q[1])));
+    const double height = dot(minus(point, plate.bottom[0][0]), axis);
+    if (height < options.woodMargin || height > thickness - options.woodMargin) return false;
+  }
+  return true;
 }
 
 // The side of the loop through which the notch band's inner edge (at notchReach) leaves the plate
@@ -185,6 +178,50 @@ bool notchCutsCleanly(const MitreSlide& slide, const Plate& plate, const Vec3& i
            tolerance::kEmptyAreaMm2);
 }
 
+// With slide.depth set: the notch and the groove's extent along the edge. False where the plate
+// leaves no groove of the shortest length with wood all round it, or the notch would not cut it
+// cleanly (notchCutsCleanly).
+bool placeNotch(const std::vector<Plate>& plates, const PlateContact& contact, MitreSlide& slide,
+                const JointCutOptions& options) {
+  const Plate& plate = plates[slide.slidePlate];
+  const MitreSlideSizes& sizes = options.mitreSlide;
+  const auto [s0, s1] = extentAlong(contact.region, contact.region[0], slide.line);
+  const double halfLength = (s1 - s0) / 2;
+  const double thickness = plateThickness(plate);
+  // The notch runs past the groove and past the mitre.
+  const MitreTenon view = grooveView(slide);
+  const Vec3 inward = pocketInward(plates, view);
+  const MitreFrame frame = mitreFrame(view);
+  double mitreFrom = HUGE_VAL, mitreTo = -HUGE_VAL;  // the mitre's outer and inner lines
+  for (const Vec3& p : contact.region) {
+    mitreFrom = std::min(mitreFrom, dot(minus(p, slide.middle), inward));
+    mitreTo = std::max(mitreTo, dot(minus(p, slide.middle), inward));
+  }
+  double reach = mitreTo;  // past the groove's section and the mitre
+  for (const Flat& q : slideSection(slide, 0)) reach = std::max(reach, dot(minus(frame.at(q, 0), slide.middle), inward));
+  slide.notchReach = reach + options.woodMargin;
+  // Along the edge: the wood around the groove only where the plate's other sides are clear of the
+  // notch; the groove stopped a plate thickness (sizes.stop at least) short of the end ahead.
+  const auto [behind, ahead] = cornersAlongEdge(plate, slide, inward, mitreFrom, mitreTo);
+  slide.woodFrom = std::max(behind, -halfLength) + options.woodMargin;
+  slide.tongueFrom = slide.woodFrom;
+  slide.tongueTo = std::min(halfLength - std::max(sizes.stop, thickness), ahead - options.woodMargin);
+  if (slide.tongueTo - slide.woodFrom < sizes.shortestGroove) return false;
+  // The notch: the band at the mitre from the groove's stop back past all of the plate, out
+  // through its side behind the corner (the tongue leaves through it; where the band's inner edge
+  // crosses that mitred side, the cut's wall meets it along the edge: secondFacePartner).
+  double rearmost = 0;
+  for (const std::vector<Loop>* face : {&plate.bottom, &plate.top})
+    for (const Loop& loop : *face)
+      for (const Vec3& p : loop) rearmost = std::min(rearmost, dot(minus(p, slide.middle), slide.line));
+  constexpr double kPastTheRear = 10;  // mm: the notch runs out of the plate behind by this much
+  slide.notchFrom = rearmost - kPastTheRear;
+  const double out = -2 * (thickness + slide.depth);
+  slide.notch = {at0(slide, inward, slide.notchFrom, out), at0(slide, inward, slide.tongueTo, out),
+                 at0(slide, inward, slide.tongueTo, slide.notchReach), at0(slide, inward, slide.notchFrom, slide.notchReach)};
+  return notchCutsCleanly(slide, plate, inward, mitreTo);
+}
+
 }  // namespace
 
 std::optional<MitreSlide> mitreSlideOf(const std::vector<Plate>& plates, const PlateContact& contact, int slidePlate,
@@ -203,46 +240,19 @@ std::optional<MitreSlide> mitreSlideOf(const std::vector<Plate>& plates, const P
   const auto [s0, s1] = extentAlong(contact.region, contact.region[0], slide.line);
   const auto [x0, x1] = extentAlong(contact.region, contact.region[0], slide.across);
   slide.middle = plus(contact.region[0], plus(scaled(slide.line, (s0 + s1) / 2), scaled(slide.across, (x0 + x1) / 2)));
-  const double halfLength = (s1 - s0) / 2;
   const MitreSlideSizes& sizes = options.mitreSlide;
   slide.halfHeight = sizes.height.of(x1 - x0) / 2;
   slide.lean = sizes.slope;
   if (2 * slide.halfHeight < sizes.lowestRoot) return std::nullopt;
-  if (!setDeepestGroove(slide, plate, options)) return std::nullopt;
-  const double thickness = plateThickness(plate);
-  // The notch runs past the groove and past the mitre.
-  const MitreTenon view = grooveView(slide);
-  const Vec3 inward = pocketInward(plates, view);
-  const MitreFrame frame = mitreFrame(view);
-  double mitreFrom = HUGE_VAL, mitreTo = -HUGE_VAL;  // the mitre's outer and inner lines
-  for (const Vec3& p : contact.region) {
-    mitreFrom = std::min(mitreFrom, dot(minus(p, slide.middle), inward));
-    mitreTo = std::max(mitreTo, dot(minus(p, slide.middle), inward));
+  // The deepest groove the faces hold whose notch cuts the plate cleanly: from the plate's
+  // thickness down by a fifth at a time. In thin plates a groove as deep as the plate takes its
+  // notch past the short sides at the mitre's ends, on one face past one side and on the other
+  // past the next (IBOIS's folded plates: 6 mm plates, notches 8 mm in); a shallower one holds
+  // as well and cuts cleanly.
+  for (slide.depth = plateThickness(plate); slide.depth >= sizes.shallowestGroove; slide.depth *= 0.8) {
+    if (grooveHeldByFaces(slide, plate, options) && placeNotch(plates, contact, slide, options)) return slide;
   }
-  for (const Flat& q : slideSection(slide, 0))
-    slide.notchReach = std::max(slide.notchReach, dot(minus(frame.at(q, 0), slide.middle), inward));
-  slide.notchReach = std::max(slide.notchReach, mitreTo) + options.woodMargin;
-  // Along the edge: the wood around the groove only where the plate's other sides are clear of the
-  // notch; the groove stopped a plate thickness (sizes.stop at least) short of the end ahead.
-  const auto [behind, ahead] = cornersAlongEdge(plate, slide, inward, mitreFrom, mitreTo);
-  slide.woodFrom = std::max(behind, -halfLength) + options.woodMargin;
-  slide.tongueFrom = slide.woodFrom;
-  slide.tongueTo = std::min(halfLength - std::max(sizes.stop, thickness), ahead - options.woodMargin);
-  if (slide.tongueTo - slide.woodFrom < sizes.shortestGroove) return std::nullopt;
-  // The notch: the band at the mitre from the groove's stop back past all of the plate, out
-  // through its side behind the corner (the tongue leaves through it; where the band's inner edge
-  // crosses that mitred side, the cut's wall meets it along the edge: secondFacePartner).
-  double rearmost = 0;
-  for (const std::vector<Loop>* face : {&plate.bottom, &plate.top})
-    for (const Loop& loop : *face)
-      for (const Vec3& p : loop) rearmost = std::min(rearmost, dot(minus(p, slide.middle), slide.line));
-  constexpr double kPastTheRear = 10;  // mm: the notch runs out of the plate behind by this much
-  slide.notchFrom = rearmost - kPastTheRear;
-  const double out = -2 * (thickness + slide.depth);
-  slide.notch = {at0(slide, inward, slide.notchFrom, out), at0(slide, inward, slide.tongueTo, out),
-                 at0(slide, inward, slide.tongueTo, slide.notchReach), at0(slide, inward, slide.notchFrom, slide.notchReach)};
-  if (!notchCutsCleanly(slide, plate, inward, mitreTo)) return std::nullopt;
-  return slide;
+  return std::nullopt;
 }
 
 std::vector<Vec3> mitreSlideFaceNormals(const MitreSlide& slide) {
