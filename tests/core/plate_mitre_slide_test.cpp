@@ -13,6 +13,7 @@
 #include "plate/joints/mitre_slide.h"
 #include "plate/joints/plate_cuts.h"
 #include "plate/swept_collision.h"
+#include "plate_test_support.h"
 #include "test_support.h"
 
 namespace desia {
@@ -20,14 +21,7 @@ namespace {
 
 constexpr double kThickness = 6, kLength = 120, kWidth = 40;
 
-// The plate's volume from its mesh (the divergence theorem), written apart from the core.
-double volumeOf(const Plate& plate) {
-  const TriangleMesh mesh = plateMesh(plate);
-  double volume = 0;
-  for (const auto& t : mesh.triangles)
-    volume += dot(mesh.vertices[t[0]], cross(mesh.vertices[t[1]], mesh.vertices[t[2]])) / 6.0;
-  return volume;
-}
+double volumeOf(const Plate& plate) { return testing::plateVolume(plate); }
 
 // Two 6 mm plates folded along the x axis, their planes `degrees` apart, meeting along a mitre.
 // Plate A (the first) ends at x = 0 in a side bevelled 45 degrees (x = 0 on its outer face, 6 on
