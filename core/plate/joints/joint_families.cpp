@@ -12,6 +12,7 @@
 #include "plate/joints/dovetail.h"
 #include "plate/joints/face_tenon.h"
 #include "plate/joints/halved.h"
+#include "plate/joints/inplane_dovetail.h"
 #include "plate/joints/mitre_slide.h"
 #include "plate/joints/mitre_tenon.h"
 #include "plate/joints/slanted_dovetail.h"
@@ -33,7 +34,8 @@ std::string formatNumber(double value) {
 // In the order the planner prefers them for a pair: joints that can be cut before milled ones,
 // a tenon across a mitre before a slide along it, a sliding dovetail last (where no tenons let
 // the plate out), a step tenon past a shallow mitre after them (it joins only what they cannot),
-// on a bevelled side a slanted tenon before a slanted sliding dovetail (as square ones).
+// on a bevelled side a slanted tenon before a slanted sliding dovetail (as square ones). In-plane
+// dovetails join only plates lying in one plane edge to edge, which no other family joins.
 // Halved joints join plates that cross, which no other family does.
 struct FamilyEntry {
   JointType type;
@@ -45,6 +47,7 @@ struct FamilyEntry {
 const FamilyEntry kFamilies[] = {
     {JointType::Halved, "halved", false, makeHalvedFamily},
     {JointType::MortiseTenon, "mortise-tenon", false, makeTenonFamily},
+    {JointType::InplaneDovetail, "inplane-dovetail", false, makeInplaneDovetailFamily},
     {JointType::MitreTenon, "mitre-tenon", true, makeMitreTenonFamily},
     {JointType::MitreSlide, "mitre-slide", true, makeMitreSlideFamily},
     {JointType::FaceTenon, "face-tenon", true, makeFaceTenonFamily},
@@ -58,7 +61,8 @@ const FamilyEntry kFamilies[] = {
 // order, which the bytes of a result depend on: a new family goes at the end.
 const JointType kCutOrder[] = {JointType::Dovetail,  JointType::MitreTenon, JointType::MitreSlide,
                                JointType::FaceTenon, JointType::Halved,     JointType::MortiseTenon,
-                               JointType::StepTenon, JointType::SlantedTenon, JointType::SlantedDovetail};
+                               JointType::StepTenon, JointType::SlantedTenon, JointType::SlantedDovetail,
+                               JointType::InplaneDovetail};
 
 }  // namespace
 
