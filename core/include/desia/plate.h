@@ -298,10 +298,14 @@ enum class JointType {
   InplaneDovetail,  // plates lying in one plane edge to edge: a dovetail-shaped tab on one in a
                     // socket through the other, cut square through the sheet (a jigsaw key); it
                     // leaves along the sheets' thickness axis, either way
+  ThroughSlot,   // a plate crossing another square and ending inside the crossing both ways, seated
+                 // whole in a slot through the other (open where that one ends); it leaves along
+                 // the other's axis, either way
   Empty,         // the plates only touch
 };
 // "mortise-tenon", "halved", "dovetail", "mitre-tenon", "mitre-slide", "face-tenon",
-// "step-tenon", "slanted-tenon", "slanted-dovetail", "inplane-dovetail", "empty"
+// "step-tenon", "slanted-tenon", "slanted-dovetail", "inplane-dovetail", "through-slot",
+// "empty"
 const char* jointTypeName(JointType type);
 
 // What a design makes of its joints.

@@ -18,6 +18,7 @@
 #include "plate/joints/slanted_dovetail.h"
 #include "plate/joints/slanted_tenon.h"
 #include "plate/joints/step_tenon.h"
+#include "plate/joints/through_slot.h"
 #include "plate/joints/tenon.h"
 
 namespace desia {
@@ -36,7 +37,8 @@ std::string formatNumber(double value) {
 // the plate out), a step tenon past a shallow mitre after them (it joins only what they cannot),
 // on a bevelled side a slanted tenon before a slanted sliding dovetail (as square ones). In-plane
 // dovetails join only plates lying in one plane edge to edge, which no other family joins.
-// Halved joints join plates that cross, which no other family does.
+// Halved joints join plates that cross, and after them through slots (only where a plate ends
+// inside the crossing both ways and the other not).
 struct FamilyEntry {
   JointType type;
   const char* name;
@@ -46,6 +48,7 @@ struct FamilyEntry {
 
 const FamilyEntry kFamilies[] = {
     {JointType::Halved, "halved", false, makeHalvedFamily},
+    {JointType::ThroughSlot, "through-slot", false, makeThroughSlotFamily},
     {JointType::MortiseTenon, "mortise-tenon", false, makeTenonFamily},
     {JointType::InplaneDovetail, "inplane-dovetail", false, makeInplaneDovetailFamily},
     {JointType::MitreTenon, "mitre-tenon", true, makeMitreTenonFamily},
@@ -62,7 +65,7 @@ const FamilyEntry kFamilies[] = {
 const JointType kCutOrder[] = {JointType::Dovetail,  JointType::MitreTenon, JointType::MitreSlide,
                                JointType::FaceTenon, JointType::Halved,     JointType::MortiseTenon,
                                JointType::StepTenon, JointType::SlantedTenon, JointType::SlantedDovetail,
-                               JointType::InplaneDovetail};
+                               JointType::InplaneDovetail, JointType::ThroughSlot};
 
 }  // namespace
 
