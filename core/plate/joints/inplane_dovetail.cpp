@@ -126,7 +126,7 @@ class InplaneDovetailFamily final : public JointFamily {
     const InplaneDovetailSizes& sizes = options().inplaneDovetail;
     requireShare(sizes.width, "inplaneDovetail.width");
     requireShare(sizes.depth, "inplaneDovetail.depth", true);
-    requireAtLeast(sizes.slope, 0.01, "inplaneDovetail.slope");
+    requireAtLeast(sizes.slope, 0, "inplaneDovetail.slope");  // 0: a straight tab (its faces say so)
     for (const PlateContact& contact : graph().computedContacts)
       sites_.push_back(inplaneDovetailSiteOf(plates(), contact, options()));
   }
