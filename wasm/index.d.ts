@@ -418,7 +418,7 @@ export interface DesignSessionState {
 }
 
 /** The joint between two plates ('dovetail': a sliding dovetail; 'mitre-tenon': a tenon across a mitre into a pocket, paper Fig. 16a; both made with joints 'milled'). */
-export type PlateJointType = 'mortise-tenon' | 'halved' | 'dovetail' | 'mitre-tenon' | 'mitre-slide' | 'face-tenon' | 'step-tenon' | 'slanted-tenon' | 'slanted-dovetail' | 'empty';
+export type PlateJointType = 'mortise-tenon' | 'halved' | 'dovetail' | 'mitre-tenon' | 'mitre-slide' | 'face-tenon' | 'step-tenon' | 'slanted-tenon' | 'slanted-dovetail' | 'inplane-dovetail' | 'through-slot' | 'empty';
 
 /** How a plate design result's joints were made: its `jointGeometry` (see {@link PlateDesignOptions.joints}). */
 export type PlateJointGeometry = 'cut' | 'milled' | 'planned';

@@ -244,7 +244,7 @@ function renderCutPoints(cutPoints, noun = 'plate') {
 }
 
 const JOINT_TYPES = {
-  halved: 'halved', 'mortise-tenon': 'mortise and tenon', dovetail: 'sliding dovetail', 'mitre-tenon': 'tenon across the mitre', 'mitre-slide': 'tongue sliding along the mitre', 'face-tenon': 'stub tenon on a lap', 'step-tenon': 'step tenons past the mitre', 'slanted-tenon': 'mortise and tenon at an angle', 'slanted-dovetail': 'sliding dovetail along a bevelled side',
+  halved: 'halved', 'mortise-tenon': 'mortise and tenon', dovetail: 'sliding dovetail', 'mitre-tenon': 'tenon across the mitre', 'mitre-slide': 'tongue sliding along the mitre', 'face-tenon': 'stub tenon on a lap', 'step-tenon': 'step tenons past the mitre', 'slanted-tenon': 'mortise and tenon at an angle', 'slanted-dovetail': 'sliding dovetail along a bevelled side', 'inplane-dovetail': 'dovetail key in the plane', 'through-slot': 'seated whole in a slot through the other',
   empty: 'no joint (empty)',
 };
 

@@ -226,6 +226,14 @@ struct SlantedDovetailSizes {
   double leastDegrees = 60;      // the least angle between the plates' planes it joins
 };
 
+// A dovetail-shaped tab in the plane of two plates meeting edge to edge in one plane, cut through
+// the sheet (JointType::InplaneDovetail, a jigsaw key).
+struct InplaneDovetailSizes {
+  LengthShare width{1, 3};       // the tab's root, of the shared side's length (in its middle)
+  LengthShare depth{1, 2};       // how far it reaches into the socket plate, of its root's width
+  double slope = 1.0 / 6;        // how far each flank leans out, mm per mm of depth (1 in 6)
+};
+
 // The sizes of the joints cut or milled into the plates. The defaults are the sizes every design
 // has had; each family reads its own and the shared ones.
 struct JointCutOptions {
@@ -248,6 +256,7 @@ struct JointCutOptions {
   StepTenonSizes stepTenon;
   SlantedTenonSizes slantedTenon;
   SlantedDovetailSizes slantedDovetail;
+  InplaneDovetailSizes inplaneDovetail;
 };
 
 // The joint families' dimensions above as named settings: "dovetail.slope", "stepTenon.width",
@@ -286,10 +295,17 @@ enum class JointType {
   SlantedDovetail,  // milled: a plate's bevelled side on another's face at 60..<90 degrees (as
                     // SlantedTenon), a dovetail tongue through a slot with slanted walls open at
                     // one end; it leaves along the shared edge, out through the open end
+  InplaneDovetail,  // plates lying in one plane edge to edge: a dovetail-shaped tab on one in a
+                    // socket through the other, cut square through the sheet (a jigsaw key); it
+                    // leaves along the sheets' thickness axis, either way
+  ThroughSlot,   // a plate crossing another square and ending inside the crossing both ways, seated
+                 // whole in a slot through the other (open where that one ends); it leaves along
+                 // the other's axis, either way
   Empty,         // the plates only touch
 };
 // "mortise-tenon", "halved", "dovetail", "mitre-tenon", "mitre-slide", "face-tenon",
-// "step-tenon", "slanted-tenon", "slanted-dovetail", "empty"
+// "step-tenon", "slanted-tenon", "slanted-dovetail", "inplane-dovetail", "through-slot",
+// "empty"
 const char* jointTypeName(JointType type);
 
 // What a design makes of its joints.

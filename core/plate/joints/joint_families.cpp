@@ -12,11 +12,13 @@
 #include "plate/joints/dovetail.h"
 #include "plate/joints/face_tenon.h"
 #include "plate/joints/halved.h"
+#include "plate/joints/inplane_dovetail.h"
 #include "plate/joints/mitre_slide.h"
 #include "plate/joints/mitre_tenon.h"
 #include "plate/joints/slanted_dovetail.h"
 #include "plate/joints/slanted_tenon.h"
 #include "plate/joints/step_tenon.h"
+#include "plate/joints/through_slot.h"
 #include "plate/joints/tenon.h"
 
 namespace desia {
@@ -33,8 +35,10 @@ std::string formatNumber(double value) {
 // In the order the planner prefers them for a pair: joints that can be cut before milled ones,
 // a tenon across a mitre before a slide along it, a sliding dovetail last (where no tenons let
 // the plate out), a step tenon past a shallow mitre after them (it joins only what they cannot),
-// on a bevelled side a slanted tenon before a slanted sliding dovetail (as square ones).
-// Halved joints join plates that cross, which no other family does.
+// on a bevelled side a slanted tenon before a slanted sliding dovetail (as square ones). In-plane
+// dovetails join only plates lying in one plane edge to edge, which no other family joins.
+// Halved joints join plates that cross, and after them through slots (only where a plate ends
+// inside the crossing both ways and the other not).
 struct FamilyEntry {
   JointType type;
   const char* name;
@@ -44,7 +48,9 @@ struct FamilyEntry {
 
 const FamilyEntry kFamilies[] = {
     {JointType::Halved, "halved", false, makeHalvedFamily},
+    {JointType::ThroughSlot, "through-slot", false, makeThroughSlotFamily},
     {JointType::MortiseTenon, "mortise-tenon", false, makeTenonFamily},
+    {JointType::InplaneDovetail, "inplane-dovetail", false, makeInplaneDovetailFamily},
     {JointType::MitreTenon, "mitre-tenon", true, makeMitreTenonFamily},
     {JointType::MitreSlide, "mitre-slide", true, makeMitreSlideFamily},
     {JointType::FaceTenon, "face-tenon", true, makeFaceTenonFamily},
@@ -58,7 +64,8 @@ const FamilyEntry kFamilies[] = {
 // order, which the bytes of a result depend on: a new family goes at the end.
 const JointType kCutOrder[] = {JointType::Dovetail,  JointType::MitreTenon, JointType::MitreSlide,
                                JointType::FaceTenon, JointType::Halved,     JointType::MortiseTenon,
-                               JointType::StepTenon, JointType::SlantedTenon, JointType::SlantedDovetail};
+                               JointType::StepTenon, JointType::SlantedTenon, JointType::SlantedDovetail,
+                               JointType::InplaneDovetail, JointType::ThroughSlot};
 
 }  // namespace
 

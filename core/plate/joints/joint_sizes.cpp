@@ -79,6 +79,12 @@ const std::vector<Entry>& entries() {
                &JointCutOptions::slantedTenon, &SlantedTenonSizes::leastDegrees),
       numberIn("slantedDovetail.leastDegrees", "the least angle between the plates' planes it joins (60)", 1, 89,
                &JointCutOptions::slantedDovetail, &SlantedDovetailSizes::leastDegrees),
+      shareIn("inplaneDovetail.width", "the tab's root, of the shared side's length (1/3)",
+              &JointCutOptions::inplaneDovetail, &InplaneDovetailSizes::width),
+      shareIn("inplaneDovetail.depth", "how far the tab reaches into the other plate, of its root (1/2)",
+              &JointCutOptions::inplaneDovetail, &InplaneDovetailSizes::depth),
+      numberIn("inplaneDovetail.slope", "how far each flank leans out, mm per mm of depth (1 in 6)", kLeastFraction, 1,
+               &JointCutOptions::inplaneDovetail, &InplaneDovetailSizes::slope),
   };
   return table;
 }
