@@ -170,12 +170,13 @@ PlateDesignResult PlateJointPlanner::run(const std::vector<PlanStep>& prefix) {
                                 : "; the last complete plan failed on its jointed plates: " + lastRejection_ + ")") +
         (options_.realization == JointRealization::Cut
              ? " with the joints that can be cut (through and open mortise-and-tenon on square edges standing on a "
-               "face at a right angle, halved joints where plates cross); joints 'milled' adds sliding dovetails "
-               "(CNC), joints 'planned' gives the paper's graph design alone"
+               "face at a right angle, halved joints where plates cross, through slots where halved slots cannot "
+               "open, in-plane dovetails where plates meet edge to edge in one plane); joints "
+               "'milled' adds sliding dovetails (CNC), joints 'planned' gives the paper's graph design alone"
              : options_.realization == JointRealization::Milled
                    ? " with the joints that can be cut or milled (mortise-and-tenon, halved and sliding dovetail "
-                     "joints on square edges at right angles, halved joints where plates cross, tenons across "
-                     "mitres, step tenons where plates meet edge to edge with their planes " +
+                     "joints on square edges at right angles, halved joints where plates cross, through slots, "
+                     "in-plane dovetails, tenons across mitres, step tenons where plates meet edge to edge with their planes " +
                          degreesText(options_.joints.stepTenon.leastDegrees) + " to " +
                          degreesText(options_.joints.stepTenon.mostDegrees) +
                          " degrees apart, slanted tenons where a bevelled side lies on a face " +
