@@ -22,6 +22,7 @@
 #include "plate/joints/joint_families.h"
 #include "plate/plate_graph.h"
 #include "plate/swept_collision.h"
+#include "plate_test_support.h"
 #include "test_support.h"
 
 namespace desia {
@@ -53,14 +54,7 @@ Plate board(int id, const Vec3& lo, const Vec3& hi) {
   return plate;
 }
 
-double meshVolume(const TriangleMesh& mesh) {
-  double volume = 0;
-  for (const auto& t : mesh.triangles)
-    volume += dot(mesh.vertices[t[0]], cross(mesh.vertices[t[1]], mesh.vertices[t[2]])) / 6.0;
-  return volume;
-}
-
-double volumeOf(const Plate& plate) { return meshVolume(plateMesh(plate)); }
+double volumeOf(const Plate& plate) { return testing::plateVolume(plate); }
 
 // Two boards 300 mm deep side by side, meeting at x = 200.
 struct SideBySide {
@@ -81,39 +75,14 @@ SideBySide sideBySide() {
   return pair;
 }
 
-// A z-prism's inside, written apart from the core: between its faces and inside its outline.
-bool inside(const Plate& plate, const Vec3& p) {
-  const double z0 = std::min(plate.bottom[0][0][2], plate.top[0][0][2]);
-  const double z1 = std::max(plate.bottom[0][0][2], plate.top[0][0][2]);
-  if (p[2] <= z0 || p[2] >= z1) return false;
-  bool in = false;
-  const Loop& loop = plate.bottom[0];
-  for (size_t i = 0, j = loop.size() - 1; i < loop.size(); j = i++) {
-    const Vec3& a = loop[i];
-    const Vec3& b = loop[j];
-    if ((a[1] > p[1]) != (b[1] > p[1]) && p[0] < (b[0] - a[0]) * (p[1] - a[1]) / (b[1] - a[1]) + a[0]) in = !in;
-  }
-  return in;
-}
-
-// The mover's points round the joint (a grid 0.7 mm apart over the tab and its socket), stepped
-// along d up to 30 mm: does one land inside the obstacle?
+// The mover's points round the joint (a grid 0.7 mm apart over the tab and its socket; the
+// independent point test of plate_test_support.h), stepped along d up to 30 mm: does one land
+// inside the obstacle?
 bool steppedCollision(const Plate& mover, const Plate& obstacle, const Vec3& d) {
   constexpr double kStep = 0.7, kReach = 30;
-  std::vector<Vec3> samples;
-  for (double x = 140.013; x < 280; x += kStep) {
-    for (double y = 80.011; y < 220; y += kStep) {
-      for (double z = 0.5; z < kThickness; z += 4.25) {
-        if (inside(mover, {x, y, z})) samples.push_back({x, y, z});
-      }
-    }
-  }
-  for (double t = kStep / 2; t < kReach; t += kStep) {
-    for (const Vec3& p : samples) {
-      if (inside(obstacle, plus(p, scaled(d, t)))) return true;
-    }
-  }
-  return false;
+  const std::vector<Vec3> samples = testing::samplesInside(
+      mover, {0, 0, 0}, {{{{1, 0, 0}, 140, 280, kStep}, {{0, 1, 0}, 80, 220, kStep}, {{0, 0, 1}, 0.49, kThickness, 4.25}}});
+  return testing::steppedCollision(samples, obstacle, d, kStep, kReach);
 }
 
 TEST(PlateInplaneDovetails, TheSiteIsAThirdOfTheSideInItsMiddleHalfAsDeep) {

@@ -18,6 +18,7 @@
 #include "plate/joints/through_slot.h"
 #include "plate/plate_graph.h"
 #include "plate/swept_collision.h"
+#include "plate_test_support.h"
 #include "test_support.h"
 
 namespace desia {
@@ -53,12 +54,7 @@ std::vector<Plate> layerAndBar() {
           board(3, {150, 141, -100}, {250, 141 + kThickness, 100})};
 }
 
-double meshVolume(const TriangleMesh& mesh) {
-  double volume = 0;
-  for (const auto& t : mesh.triangles)
-    volume += dot(mesh.vertices[t[0]], cross(mesh.vertices[t[1]], mesh.vertices[t[2]])) / 6.0;
-  return volume;
-}
+using testing::meshVolume;
 
 int crossingOf(const std::vector<PlateContact>& contacts, int p, int q) {
   for (size_t c = 0; c < contacts.size(); ++c) {
@@ -69,41 +65,12 @@ int crossingOf(const std::vector<PlateContact>& contacts, int p, int q) {
   return -1;
 }
 
-// Inside a prism plate, written apart from the core: between its face planes, inside its outline.
-bool inside(const Plate& plate, const Vec3& point) {
-  const Vec3 axis = normalized(loopNormal(plate.bottom[0]));
-  const Vec3 base = plate.bottom[0][0];
-  const Vec3 u = normalized(cross(axis, std::abs(axis[0]) < 0.6 ? Vec3{1, 0, 0} : Vec3{0, 1, 0})), v = cross(axis, u);
-  const double thickness = dot(minus(plate.top[0][0], base), axis), height = dot(minus(point, base), axis);
-  if (height * thickness <= 0 || std::abs(height) >= std::abs(thickness)) return false;
-  const double px = dot(minus(point, base), u), py = dot(minus(point, base), v);
-  bool in = false;
-  for (const Loop& loop : plate.bottom) {
-    for (size_t i = 0, j = loop.size() - 1; i < loop.size(); j = i++) {
-      const double ax = dot(minus(loop[i], base), u), ay = dot(minus(loop[i], base), v);
-      const double bx = dot(minus(loop[j], base), u), by = dot(minus(loop[j], base), v);
-      if ((ay > py) != (by > py) && px < (bx - ax) * (py - ay) / (by - ay) + ax) in = !in;
-    }
-  }
-  return in;
-}
-
-// The bar's points where it passes the layer (0.7 mm apart), stepped along d up to 30 mm.
+// The bar's points where it passes the layer (0.7 mm apart; the independent point test of
+// plate_test_support.h), stepped along d up to 30 mm.
 bool steppedCollision(const Plate& bar, const Plate& obstacle, const Vec3& d) {
-  std::vector<Vec3> samples;
-  for (double x = 150.013; x < 250; x += 0.7) {
-    for (double y = 141.011; y < 159; y += 0.7) {
-      for (double z = -20.5; z < 40; z += 2.5) {
-        if (inside(bar, {x, y, z})) samples.push_back({x, y, z});
-      }
-    }
-  }
-  for (double t = 0.35; t < 30; t += 0.7) {
-    for (const Vec3& p : samples) {
-      if (inside(obstacle, plus(p, scaled(d, t)))) return true;
-    }
-  }
-  return false;
+  const std::vector<Vec3> samples = testing::samplesInside(
+      bar, {0, 0, 0}, {{{{1, 0, 0}, 150, 250, 0.7}, {{0, 1, 0}, 141, 159, 0.7}, {{0, 0, 1}, -20.511, 40, 2.5}}});
+  return testing::steppedCollision(samples, obstacle, d, 0.7, 30);
 }
 
 TEST(PlateThroughSlots, TheBarIsSeatedInBothBoardsAndNotTheOtherWayRound) {
