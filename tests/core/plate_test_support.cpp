@@ -13,6 +13,28 @@ AssemblyDocument loadPlateExample(const std::string& name) {
   return parseAssemblyText(readFileText(projectPath(path)), path);
 }
 
+Plate board(int id, const Vec3& lo, const Vec3& hi) {
+  int axis = 0;
+  for (int k = 1; k < 3; ++k) axis = hi[k] - lo[k] < hi[axis] - lo[axis] ? k : axis;
+  const int u = (axis + 1) % 3, w = (axis + 2) % 3;  // (u, w, axis) right-handed
+  Plate plate;
+  plate.id = id;
+  Loop bottom, top;
+  const std::array<std::array<double, 2>, 4> corners{{{lo[u], lo[w]}, {hi[u], lo[w]}, {hi[u], hi[w]}, {lo[u], hi[w]}}};
+  for (const std::array<double, 2>& corner : corners) {
+    Vec3 p{0, 0, 0};
+    p[u] = corner[0];
+    p[w] = corner[1];
+    p[axis] = lo[axis];
+    bottom.push_back(p);
+    p[axis] = hi[axis];
+    top.push_back(p);
+  }
+  plate.bottom = {bottom};
+  plate.top = {top};
+  return plate;
+}
+
 double meshVolume(const TriangleMesh& mesh) {
   double volume = 0;
   for (const auto& t : mesh.triangles)

@@ -17,6 +17,10 @@ namespace desia::testing {
 // An example design of examples/plate/, read as the CLI reads it.
 AssemblyDocument loadPlateExample(const std::string& name);
 
+// An axis-aligned board from corner lo to corner hi; its thinnest extent is its thickness (as
+// examples/plate/make_examples.py writes them).
+Plate board(int id, const Vec3& lo, const Vec3& hi);
+
 // The signed volume a closed, outward mesh encloses.
 double meshVolume(const TriangleMesh& mesh);
 // A plate's volume with its attached solids (its mesh holds them; they touch it, never overlap it).

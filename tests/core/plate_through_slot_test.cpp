@@ -26,28 +26,7 @@ namespace {
 
 constexpr double kThickness = 18;
 
-Plate board(int id, const Vec3& lo, const Vec3& hi) {
-  int axis = 0;
-  for (int k = 1; k < 3; ++k) axis = hi[k] - lo[k] < hi[axis] - lo[axis] ? k : axis;
-  const int u = (axis + 1) % 3, w = (axis + 2) % 3;
-  Plate plate;
-  plate.id = id;
-  Loop bottom, top;
-  const std::array<std::pair<double, double>, 4> corners{
-      {{lo[u], lo[w]}, {hi[u], lo[w]}, {hi[u], hi[w]}, {lo[u], hi[w]}}};
-  for (const std::pair<double, double>& corner : corners) {
-    Vec3 p{0, 0, 0};
-    p[u] = corner.first;
-    p[w] = corner.second;
-    p[axis] = lo[axis];
-    bottom.push_back(p);
-    p[axis] = hi[axis];
-    top.push_back(p);
-  }
-  plate.bottom = {bottom};
-  plate.top = {top};
-  return plate;
-}
+using testing::board;
 
 std::vector<Plate> layerAndBar() {
   return {board(1, {0, 0, 0}, {200, 300, kThickness}), board(2, {200, 0, 0}, {400, 300, kThickness}),
