@@ -4,14 +4,19 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "analysis/part_motion.h"
 #include "analysis/vec3.h"
+#include "desia/error.h"
 #include "desia/model.h"
 #include "desia/plate.h"
 #include "plate/joints/mitre_slide.h"
 #include "plate/joints/plate_cuts.h"
+#include "plate/plate_graph.h"
 #include "plate/swept_collision.h"
 #include "plate_test_support.h"
 #include "test_support.h"
@@ -98,6 +103,54 @@ TEST(PlateMitreSlides, AThinPlateWithAShortBevelledEndGetsAShallowerGrooveThatCu
     tampered[1].attached.clear();
     EXPECT_FALSE(plateCollidesAlong(tampered[0], tampered[1], negated(contact.normal), 0.05)) << degrees;
   }
+}
+
+// The family works each answer out once (per contact, mover and way along the edge): its answers
+// are mitreSlideOf's, along the edge only, and sizes that would make no groove (straight flanks,
+// a shallowest groove of 0, which would never end the depths tried) are refused by name.
+TEST(PlateMitreSlides, TheFamilyAnswersAsMitreSlideOfAndRefusesGroovesThatCannotHold) {
+  const std::vector<Plate> plates = foldedPair(62.2, 7.4);
+  const std::vector<PlateContact> contacts = computePlateContacts(plates, {});
+  ASSERT_EQ(contacts.size(), 1u);
+  const PlateGraph graph = buildPlateGraph(plates, contacts, JointRealization::Milled);
+  const JointCutOptions options;
+  const std::unique_ptr<JointFamily> family =
+      makeMitreSlideFamily(JointSetting{graph, options, JointRealization::Milled});
+  const Vec3 edge = normalized(contacts[0].edgeDirection);
+  const std::vector<Vec3> ways{edge, negated(edge), contacts[0].normal, normalized(plus(edge, Vec3{0, 0, 1e-3}))};
+  int lets = 0;
+  for (int pass = 0; pass < 2; ++pass) {  // the second pass is answered from what the first worked out
+    for (const int mover : {0, 1}) {
+      for (const Vec3& d : ways) {
+        const bool expected = mitreSlideOf(plates, contacts[0], mover, d, options).has_value();
+        EXPECT_EQ(family->lets(0, mover, d), expected) << pass << " " << mover << ": " << d[0] << "," << d[1] << "," << d[2];
+        lets += expected ? 1 : 0;
+      }
+    }
+  }
+  EXPECT_GE(lets, 2) << "plate A leaves along +x on a slide (the test above)";
+  // Asked off the edge first, then along it: the answer along it is still a slide.
+  const std::unique_ptr<JointFamily> fresh = makeMitreSlideFamily(JointSetting{graph, options, JointRealization::Milled});
+  EXPECT_FALSE(fresh->lets(0, 0, normalized(plus(Vec3{1, 0, 0}, Vec3{0, 0, 1e-3}))));
+  EXPECT_TRUE(fresh->lets(0, 0, {1, 0, 0}));
+  for (const auto& [setting, change] :
+       std::vector<std::pair<std::string, void (*)(JointCutOptions&)>>{
+           {"mitreSlide.slope", [](JointCutOptions& o) { o.mitreSlide.slope = 0; }},
+           {"mitreSlide.shallowestGroove", [](JointCutOptions& o) { o.mitreSlide.shallowestGroove = 0; }}}) {
+    JointCutOptions bad;
+    change(bad);
+    try {
+      makeMitreSlideFamily(JointSetting{graph, bad, JointRealization::Milled});
+      ADD_FAILURE() << setting << " accepted";
+    } catch (const Error& error) {
+      EXPECT_EQ(error.code(), ErrorCode::BadInput);
+      EXPECT_NE(std::string(error.what()).find(setting), std::string::npos) << error.what();
+    }
+  }
+  // The free function ends too with such a least (depths tried down to 0.1 mm).
+  JointCutOptions zero;
+  zero.mitreSlide.shallowestGroove = 0;
+  EXPECT_TRUE(mitreSlideOf(plates, contacts[0], 0, {1, 0, 0}, zero).has_value());
 }
 
 }  // namespace

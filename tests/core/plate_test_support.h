@@ -55,8 +55,8 @@ struct SampleAxis {
 // face drawn at a round number.
 std::vector<Vec3> samplesInside(const Plate& plate, const Vec3& origin, const std::array<SampleAxis, 3>& axes);
 
-// The independent check of a sweep: the samples moved along d by step, 2 step, ... up to reach;
-// does any land inside the obstacle?
+// The independent check of a sweep: the samples moved along d by half a step, then a step further
+// each time, below reach; does any land inside the obstacle?
 bool steppedCollision(const std::vector<Vec3>& samples, const Plate& obstacle, const Vec3& d, double step, double reach);
 
 }  // namespace desia::testing

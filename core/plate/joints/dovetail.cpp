@@ -94,7 +94,7 @@ std::optional<std::array<double, 2>> stripExits(const std::vector<Plate>& plates
 }
 
 // The outline of a face's loops: the one enclosing the largest area (a plate's own loops list it
-// first, but a face region Clipper gives may list a hole first).
+// first, but a face region Clipper gives may list a hole first). `loops` is not empty.
 const Loop& outlineOf(const std::vector<Loop>& loops) {
   return *std::max_element(loops.begin(), loops.end(), [](const Loop& a, const Loop& b) {
     return norm(loopNormal(a)) < norm(loopNormal(b));
@@ -208,10 +208,13 @@ HousingOpenings housingOpenings(const std::vector<Plate>& plates, const TenonSit
     // leaves that, and nothing of it beyond where its last side leaves the plate's outline
     // (the same for a prism; on a plate whose end is bevelled, as a mitre, the slot runs out
     // through the bevel).
-    const std::optional<std::array<double, 2>> inner =
-        stripExits(plates, edge, outlineOf(face.everywhere), frame, end, low, high);
-    const std::optional<std::array<double, 2>> outer =
-        squareEnds ? inner : stripExits(plates, edge, outlineOf(face.anywhere), frame, end, low, high);
+    // (No region, as where the layers share no part of the face: no exit through it.)
+    auto exitsThrough = [&](const std::vector<Loop>& region) -> std::optional<std::array<double, 2>> {
+      if (region.empty()) return std::nullopt;
+      return stripExits(plates, edge, outlineOf(region), frame, end, low, high);
+    };
+    const std::optional<std::array<double, 2>> inner = exitsThrough(face.everywhere);
+    const std::optional<std::array<double, 2>> outer = squareEnds ? inner : exitsThrough(face.anywhere);
     if (squareEnds && (!inner || (*inner)[0] <= kFlush || (*inner)[1] - (*inner)[0] > tolerance::kSameExitMm))
       continue;
     if (!squareEnds && (!outer || (*outer)[1] <= kFlush)) continue;
@@ -272,7 +275,7 @@ class DovetailFamily final : public JointFamily {
  public:
   explicit DovetailFamily(const JointSetting& setting) : JointFamily(setting) {
     const DovetailSizes& sizes = options().dovetail;
-    requireAtLeast(sizes.slope, 0, "dovetail.slope");
+    requireAtLeast(sizes.slope, kLeastFlankSlope, "dovetail.slope");
     requireShare(sizes.depth, "dovetail.depth");
     requireShare(sizes.width, "dovetail.width", true);
     requireAtLeast(sizes.narrowestNeck, 0, "dovetail.narrowestNeck");

@@ -68,6 +68,10 @@ bool exitsLet(const std::vector<Vec3>& exits, int tenonPlate, int mover, const V
 // side: IBOIS's hexboxes), so letting such ways in (tried: up to kPlannedParallelSine) only gave
 // the search joints that failed on the jointed plates.
 
+// The least slope (mm per mm of depth) a dovetail's flanks are given: straight flanks would let
+// the tongue or tab out across them, which the families' ways out do not say.
+constexpr double kLeastFlankSlope = 1.0 / 100;
+
 // Throw BadInput naming the setting (e.g. "dovetail.slope") unless it is a number of at least
 // `least`, or a share above 0 and below 1 (at most 1 where `whole` may be taken).
 void requireAtLeast(double value, double least, const char* setting);

@@ -15,6 +15,10 @@
 namespace desia {
 namespace {
 
+// mm: the shallowest groove tried, whatever mitreSlide.shallowestGroove says (the depths tried
+// shrink by a fifth each time: a least of 0 would never end the loop).
+constexpr double kShallowestGrooveMm = 0.1;
+
 // The slide seen as a pocket in the slide plate (the tongue plate holding the "tenon"): the frame,
 // the inward direction and the wood around the groove are a mitre tenon's.
 MitreTenon grooveView(const MitreSlide& slide) {
@@ -249,7 +253,8 @@ std::optional<MitreSlide> mitreSlideOf(const std::vector<Plate>& plates, const P
   // notch past the short sides at the mitre's ends, on one face past one side and on the other
   // past the next (IBOIS's folded plates: 6 mm plates, notches 8 mm in); a shallower one holds
   // as well and cuts cleanly.
-  for (slide.depth = plateThickness(plate); slide.depth >= sizes.shallowestGroove; slide.depth *= 0.8) {
+  const double shallowest = std::max(sizes.shallowestGroove, kShallowestGrooveMm);  // the loop ends
+  for (slide.depth = plateThickness(plate); slide.depth >= shallowest; slide.depth *= 0.8) {
     if (grooveHeldByFaces(slide, plate, options) && placeNotch(plates, contact, slide, options)) return slide;
   }
   return std::nullopt;
@@ -276,17 +281,17 @@ class MitreSlideFamily final : public JointFamily {
  public:
   explicit MitreSlideFamily(const JointSetting& setting) : JointFamily(setting) {
     const MitreSlideSizes& sizes = options().mitreSlide;
-    requireAtLeast(sizes.slope, 0, "mitreSlide.slope");
+    // A groove with straight flanks would let the tongue out across the mitre too.
+    requireAtLeast(sizes.slope, kLeastFlankSlope, "mitreSlide.slope");
     requireShare(sizes.height, "mitreSlide.height");
     requireAtLeast(sizes.lowestRoot, 0, "mitreSlide.lowestRoot");
-    requireAtLeast(sizes.shallowestGroove, 0, "mitreSlide.shallowestGroove");
+    requireAtLeast(sizes.shallowestGroove, kShallowestGrooveMm, "mitreSlide.shallowestGroove");
     requireAtLeast(sizes.stop, 0, "mitreSlide.stop");
     requireAtLeast(sizes.shortestGroove, 0, "mitreSlide.shortestGroove");
+    slides_.resize(graph().contacts.size());
   }
 
-  bool lets(int contact, int mover, const Vec3& d) const override {
-    return mitreSlideOf(plates(), this->contact(contact), mover, d, options()).has_value();
-  }
+  bool lets(int contact, int mover, const Vec3& d) const override { return slideFor(contact, mover, d) != nullptr; }
 
   std::vector<Vec3> faceNormals(const PlateJoint& joint) const override {
     return mitreSlideFaceNormals(slideOf(joint));
@@ -301,9 +306,37 @@ class MitreSlideFamily final : public JointFamily {
   }
 
  private:
-  MitreSlide slideOf(const PlateJoint& joint) const {
-    return *mitreSlideOf(plates(), contact(joint.contact), joint.mover, joint.direction, options());
+  // The planner asks the same pair the same way at many nodes, and each answer clips the plates
+  // several times (a groove tried at each depth): each is worked out once, per contact, mover
+  // and way along the edge (the only ways a slide lets).
+  struct Asked {
+    int mover = -1;
+    bool forwards = false;
+    std::optional<MitreSlide> slide;
+  };
+
+  const MitreSlide* slideFor(int contact, int mover, const Vec3& d) const {
+    const PlateContact& mitre = this->contact(contact);
+    if (std::abs(std::abs(dot(normalized(mitre.edgeDirection), normalized(d))) - 1) > tolerance::kExactCosine)
+      return nullptr;  // along the edge only (as mitreSlideOf), before the answers kept per way
+    const bool forwards = dot(d, mitre.edgeDirection) > 0;
+    std::vector<Asked>& asked = slides_[static_cast<size_t>(contact)];
+    for (const Asked& answer : asked) {
+      if (answer.mover == mover && answer.forwards == forwards) return answer.slide ? &*answer.slide : nullptr;
+    }
+    asked.push_back({mover, forwards, mitreSlideOf(plates(), mitre, mover, d, options())});
+    return asked.back().slide ? &*asked.back().slide : nullptr;
   }
+
+  const MitreSlide& slideOf(const PlateJoint& joint) const {
+    const MitreSlide* slide = slideFor(joint.contact, joint.mover, joint.direction);
+    if (slide == nullptr) throw Error(ErrorCode::Internal, "a mitre slide joint where no slide fits");
+    return *slide;
+  }
+
+  // Per contact, the answers so far (at most four: each plate, each way). Filled as the planner
+  // asks, on the one thread a design runs on (each design has families of its own).
+  mutable std::vector<std::vector<Asked>> slides_;
 };
 
 }  // namespace
