@@ -16,6 +16,7 @@
 #include "analysis/vec3.h"
 #include "desia/design_io.h"
 #include "desia/document.h"
+#include "desia/error.h"
 #include "desia/plate.h"
 #include "desia/tolerances.h"
 #include "plate/joints/inplane_dovetail.h"
@@ -91,14 +92,54 @@ TEST(PlateInplaneDovetails, OnlyPlatesInOneSheetEdgeToEdgeGetOne) {
                             board(2, {50, 0, kThickness}, {50 + kThickness, 300, 200})};
   for (const PlateContact& contact : computePlateContacts(tee, {}))
     EXPECT_FALSE(inplaneDovetailSiteOf(tee, contact).has_value());
-  // The socket plate too narrow for the tab and its margin (40 mm: the tab reaches 50).
+  // The second plate too narrow for the socket and its margin (40 mm: the tab reaches 50): the
+  // tab goes on it instead, its socket in the first.
   std::vector<Plate> narrow = {board(1, {0, 0, 0}, {200, 300, kThickness}), board(2, {200, 0, 0}, {240, 300, kThickness})};
   const std::vector<PlateContact> contacts = computePlateContacts(narrow, {});
   ASSERT_EQ(contacts.size(), 1u);
-  EXPECT_FALSE(inplaneDovetailSiteOf(narrow, contacts[0]).has_value());
+  const std::optional<InplaneDovetailSite> turned = inplaneDovetailSiteOf(narrow, contacts[0]);
+  ASSERT_TRUE(turned.has_value());
+  EXPECT_EQ(turned->tabPlate, contacts[0].b);
+  EXPECT_EQ(turned->socketPlate, contacts[0].a);
+  EXPECT_NEAR(dot(turned->intoSocket, contacts[0].normal), -1, 1e-12) << "into the first plate";
+  const std::vector<Plate> cut = cutJoints(narrow, {jointCut(*turned)}, {});
+  const int tab = turned->tabPlate, socket = turned->socketPlate;
+  const double tabVolume = (100 + 50.0 / 6) * 50 * kThickness;
+  EXPECT_NEAR(volumeOf(cut[tab]) - volumeOf(narrow[tab]), tabVolume, 1e-6 * tabVolume);
+  EXPECT_NEAR(volumeOf(narrow[socket]) - volumeOf(cut[socket]), tabVolume, 1e-6 * tabVolume);
+  // Both too narrow: no site either way.
+  std::vector<Plate> bothNarrow = {board(1, {160, 0, 0}, {200, 300, kThickness}), narrow[1]};
+  const std::vector<PlateContact> bothContacts = computePlateContacts(bothNarrow, {});
+  ASSERT_EQ(bothContacts.size(), 1u);
+  EXPECT_FALSE(inplaneDovetailSiteOf(bothNarrow, bothContacts[0]).has_value());
   JointCutOptions shallow;
   shallow.inplaneDovetail.depth = LengthShare{1, 4};  // 25 mm deep: fits with the margin
-  EXPECT_TRUE(inplaneDovetailSiteOf(narrow, contacts[0], shallow).has_value());
+  const std::optional<InplaneDovetailSite> shallowSite = inplaneDovetailSiteOf(bothNarrow, bothContacts[0], shallow);
+  ASSERT_TRUE(shallowSite.has_value());
+  EXPECT_EQ(shallowSite->tabPlate, bothContacts[0].a);
+}
+
+// Straight flanks (slope 0) would let the tab plate out backwards, which the family's ways out
+// (the sheets' axis only) do not say: the family refuses them, naming the setting.
+TEST(PlateInplaneDovetails, TheFamilyRefusesStraightFlanks) {
+  const SideBySide pair = sideBySide();
+  const PlateGraph graph = buildPlateGraph(pair.plates, {pair.contact}, JointRealization::Cut);
+  JointCutOptions straight;
+  straight.inplaneDovetail.slope = 0;
+  try {
+    makeInplaneDovetailFamily(JointSetting{graph, straight, JointRealization::Cut});
+    ADD_FAILURE() << "slope 0 accepted";
+  } catch (const Error& error) {
+    EXPECT_EQ(error.code(), ErrorCode::BadInput);
+    EXPECT_NE(std::string(error.what()).find("inplaneDovetail.slope"), std::string::npos) << error.what();
+  }
+  // What it would have let: the straight tab slides out of its socket backwards.
+  const std::optional<InplaneDovetailSite> site = inplaneDovetailSiteOf(pair.plates, pair.contact, straight);
+  ASSERT_TRUE(site.has_value());
+  const std::vector<Plate> cut = cutJoints(pair.plates, {jointCut(*site)}, straight);
+  EXPECT_FALSE(plateCollidesAlong(cut[0], cut[1], negated(site->intoSocket), tolerance::kContactMm));
+  const std::vector<Plate> dovetailed = cutJoints(pair.plates, {jointCut(pair.site)}, {});
+  EXPECT_TRUE(plateCollidesAlong(dovetailed[0], dovetailed[1], negated(pair.site.intoSocket), tolerance::kContactMm));
 }
 
 TEST(PlateInplaneDovetails, TheTabPlateGainsTheTabAndTheSocketPlateLosesItPlusTheClearance) {
@@ -179,7 +220,9 @@ TEST(PlateInplaneDovetails, TheFamilyLetsEitherPlateOutOfTheSheetBothWaysOnly) {
   ASSERT_TRUE(joint.has_value());
   EXPECT_EQ(joint->type, JointType::InplaneDovetail);
   EXPECT_STREQ(jointTypeName(joint->type), "inplane-dovetail");
-  EXPECT_EQ(families.jointFor(1, 0, {1, 0, 0})->type, JointType::Empty);
+  const std::optional<PlateJoint> across = families.jointFor(1, 0, {1, 0, 0});
+  ASSERT_TRUE(across.has_value());
+  EXPECT_EQ(across->type, JointType::Empty);
 }
 
 // The TABLE (examples/plate/make_examples.py) with its left side panel in two halves, front and

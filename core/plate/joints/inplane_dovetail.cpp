@@ -60,22 +60,19 @@ Loop InplaneDovetailSite::tab(double grow, double back) const {
   return {at(left(-back), -back), at(right(-back), -back), at(right(tip), tip), at(left(tip), tip)};
 }
 
-std::optional<InplaneDovetailSite> inplaneDovetailSiteOf(const std::vector<Plate>& plates, const PlateContact& contact,
-                                                         const JointCutOptions& options) {
-  if (contact.crossing || contact.region.size() < 3 || facesOnContact(plates, contact) != 0) return std::nullopt;
-  const Plate& tabPlate = plates[contact.a];
-  const Plate& socketPlate = plates[contact.b];
-  if (!isPrism(tabPlate) || !isPrism(socketPlate)) return std::nullopt;
+namespace {
+
+// The site with the tab on `tab` and the socket in `socket` (the plates of `contact`), or nothing.
+std::optional<InplaneDovetailSite> siteWithTabOn(const std::vector<Plate>& plates, const PlateContact& contact,
+                                                 int tab, int socket, const JointCutOptions& options) {
+  const Plate& tabPlate = plates[static_cast<size_t>(tab)];
+  const Plate& socketPlate = plates[static_cast<size_t>(socket)];
   const Vec3 axis = plateThicknessAxis(tabPlate);
-  // One plane: the axes parallel, the contact square to them (square sides), the faces level.
-  if (std::abs(dot(axis, plateThicknessAxis(socketPlate))) < 1 - tolerance::kFacingCosine) return std::nullopt;
-  if (std::abs(dot(axis, contact.normal)) > tolerance::kSquareCosine) return std::nullopt;
-  if (!inOneSheet(tabPlate, socketPlate, axis)) return std::nullopt;
   InplaneDovetailSite site;
-  site.tabPlate = contact.a;
-  site.socketPlate = contact.b;
+  site.tabPlate = tab;
+  site.socketPlate = socket;
   site.axis = axis;
-  site.intoSocket = normalized(contact.normal);
+  site.intoSocket = normalized(tab == contact.a ? contact.normal : negated(contact.normal));  // normal: a into b
   site.along = normalized(cross(axis, site.intoSocket));
   const Vec3& corner = contact.region[0];
   site.origin = minus(corner, scaled(axis, dot(minus(corner, tabPlate.bottom[0][0]), axis)));
@@ -91,6 +88,7 @@ std::optional<InplaneDovetailSite> inplaneDovetailSiteOf(const std::vector<Plate
   site.root1 = (from + to + width) / 2;
   site.depth = sizes.depth.of(width);
   site.flare = sizes.slope * site.depth;
+  if (site.depth < tolerance::kZeroLengthMm) return std::nullopt;  // no tab (tab() divides by it)
   // Wood beside the tab on the shared side, and the socket inside the socket plate with the wood
   // margin all round (from just inside its side: the socket opens there).
   const double margin = options.woodMargin + options.clearance / 2;
@@ -100,6 +98,24 @@ std::optional<InplaneDovetailSite> inplaneDovetailSiteOf(const std::vector<Plate
   if (areaAgainst({room}, faceRegion(socketPlate, ClipperLib::ctIntersection), frame, true) > tolerance::kEmptyAreaMm2)
     return std::nullopt;
   return site;
+}
+
+}  // namespace
+
+std::optional<InplaneDovetailSite> inplaneDovetailSiteOf(const std::vector<Plate>& plates, const PlateContact& contact,
+                                                         const JointCutOptions& options) {
+  if (contact.crossing || contact.region.size() < 3 || facesOnContact(plates, contact) != 0) return std::nullopt;
+  const Plate& a = plates[static_cast<size_t>(contact.a)];
+  const Plate& b = plates[static_cast<size_t>(contact.b)];
+  if (!isPrism(a) || !isPrism(b)) return std::nullopt;
+  const Vec3 axis = plateThicknessAxis(a);
+  // One plane: the axes parallel, the contact square to them (square sides), the faces level.
+  if (std::abs(dot(axis, plateThicknessAxis(b))) < 1 - tolerance::kFacingCosine) return std::nullopt;
+  if (std::abs(dot(axis, contact.normal)) > tolerance::kSquareCosine) return std::nullopt;
+  if (!inOneSheet(a, b, axis)) return std::nullopt;
+  // The tab on plate a, else (no room for its socket in b: a narrow plate, a hole) on plate b.
+  std::optional<InplaneDovetailSite> site = siteWithTabOn(plates, contact, contact.a, contact.b, options);
+  return site ? site : siteWithTabOn(plates, contact, contact.b, contact.a, options);
 }
 
 std::vector<Vec3> inplaneDovetailFaceNormals(const InplaneDovetailSite& site) {
@@ -126,7 +142,7 @@ class InplaneDovetailFamily final : public JointFamily {
     const InplaneDovetailSizes& sizes = options().inplaneDovetail;
     requireShare(sizes.width, "inplaneDovetail.width");
     requireShare(sizes.depth, "inplaneDovetail.depth", true);
-    requireAtLeast(sizes.slope, 0, "inplaneDovetail.slope");  // 0: a straight tab (its faces say so)
+    requireAtLeast(sizes.slope, kLeastFlankSlope, "inplaneDovetail.slope");
     for (const PlateContact& contact : graph().computedContacts)
       sites_.push_back(inplaneDovetailSiteOf(plates(), contact, options()));
   }

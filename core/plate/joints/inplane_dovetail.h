@@ -23,8 +23,8 @@ namespace desia {
 // along `along` from `origin`), its tip `depth` into the socket plate and wider by `flare` on each
 // side.
 struct InplaneDovetailSite {
-  int tabPlate = 0;          // the plate with the tab (the contact's plate a)
-  int socketPlate = 0;       // the plate with the socket (plate b)
+  int tabPlate = 0;          // the plate with the tab (the contact's plate a, else b)
+  int socketPlate = 0;       // the plate with the socket (the other)
   Vec3 origin{0, 0, 0};      // on the shared side, on the tab plate's first face
   Vec3 intoSocket{0, 0, 0};  // unit: the contact's normal, from the tab plate into the socket plate
   Vec3 along{0, 0, 0};       // unit: along the shared side, in the plane
@@ -41,7 +41,8 @@ struct InplaneDovetailSite {
 // The site of an in-plane dovetail on `contact`: two prisms whose faces lie in the same two planes,
 // meeting edge to edge on square sides over their whole thickness, the tab (sized by
 // options.inplaneDovetail) in the middle of the shared side with wood left beside it and its
-// socket inside the socket plate with the wood margin all round; nothing otherwise.
+// socket inside the socket plate with the wood margin all round: the tab on the contact's plate
+// a where its socket fits in b, else on b; nothing otherwise.
 std::optional<InplaneDovetailSite> inplaneDovetailSiteOf(const std::vector<Plate>& plates, const PlateContact& contact,
                                                          const JointCutOptions& options = {});
 
