@@ -6,6 +6,7 @@
 // and a bar 18 mm thick (y 141..159) from x = 150 to 250 and z = -100 to 100.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <memory>
@@ -81,7 +82,41 @@ TEST(PlateThroughSlots, TheBarIsSeatedInBothBoardsAndNotTheOtherWayRound) {
   EXPECT_FALSE(throughSlotSiteOf(outOfA, outContacts, d, 2).has_value());
 }
 
-TEST(PlateThroughSlots, TheBoardsLoseTheBarsSectionPlusTheClearanceAndTheBarSlidesOutAlongZOnly) {
+// The boards keep options.woodMargin (1 mm) of wood beside the slot at the clearance: a bar 1.1 mm
+// from their side (y = 0) gets a slot at clearance 0, none at 0.4 (0.9 mm of wood) nor 0.3 mm
+// from it (a 0.1 mm wall at 0.4, which would break off).
+TEST(PlateThroughSlots, TheSlottedPlatesKeepTheWoodMarginBesideTheSlot) {
+  for (const double from : {1.1, 0.3}) {
+    const std::vector<Plate> plates = {board(1, {0, 0, 0}, {200, 300, kThickness}),
+                                       board(2, {200, 0, 0}, {400, 300, kThickness}),
+                                       board(3, {150, from, -100}, {250, from + kThickness, 100})};
+    const std::vector<PlateContact> contacts = computePlateContacts(plates, {});
+    for (int board : {0, 1}) {
+      const int c = crossingOf(contacts, board, 2);
+      ASSERT_GE(c, 0);
+      for (const double clearance : {0.0, 0.4}) {
+        JointCutOptions options;
+        options.clearance = clearance;
+        const double wall = from - clearance / 2;
+        EXPECT_EQ(throughSlotSiteOf(plates, contacts, c, 2, options).has_value(), wall >= options.woodMargin)
+            << from << " mm from the side, clearance " << clearance << ", board " << board;
+      }
+    }
+  }
+  // The closed end too: a bar ending 0.8 mm inside board A's far side (x = 0) at clearance 0.
+  const std::vector<Plate> plates = {board(1, {0, 0, 0}, {200, 300, kThickness}),
+                                     board(2, {200, 0, 0}, {400, 300, kThickness}),
+                                     board(3, {0.8, 141, -100}, {250, 141 + kThickness, 100})};
+  const std::vector<PlateContact> contacts = computePlateContacts(plates, {});
+  const int c = crossingOf(contacts, 0, 2);
+  ASSERT_GE(c, 0);
+  EXPECT_FALSE(throughSlotSiteOf(plates, contacts, c, 2).has_value());
+}
+
+// Each board holds the bar along y (the slot's walls) and on the slot's closed end: the bar leaves
+// each along z, either way, or out of the slot's open end (towards the other board), and the
+// joint model's faces (the family's face normals) say the same as the sweep.
+TEST(PlateThroughSlots, TheBoardsLoseTheBarsSectionPlusTheClearanceAndTheBarLeavesAlongZOrOutOfTheOpenEnd) {
   const std::vector<Plate> plates = layerAndBar();
   const std::vector<PlateContact> contacts = computePlateContacts(plates, {});
   for (const double clearance : {0.0, 0.4}) {
@@ -107,10 +142,14 @@ TEST(PlateThroughSlots, TheBoardsLoseTheBarsSectionPlusTheClearanceAndTheBarSlid
     EXPECT_NEAR(meshVolume(plateMesh(cut[2])), meshVolume(plateMesh(plates[2])), 1e-6);
     if (clearance > 0) continue;
     for (int board : {0, 1}) {
+      const std::vector<Vec3> normals = families.faceNormals(joints[static_cast<size_t>(board)]);
       int free = 0;
       for (const Vec3& d : std::vector<Vec3>{{0, 0, 1}, {0, 0, -1}, {1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}}) {
         const bool swept = plateCollidesAlong(cut[2], cut[board], d, tolerance::kContactMm);
         EXPECT_EQ(swept, steppedCollision(cut[2], cut[board], d)) << board << ": " << d[0] << "," << d[1] << "," << d[2];
+        // The joint's faces, from the bar (the mover) into the board: one facing d stops it.
+        const bool faced = std::any_of(normals.begin(), normals.end(), [&](const Vec3& n) { return dot(n, d) > 1e-9; });
+        EXPECT_EQ(faced, swept) << "faces, board " << board << ": " << d[0] << "," << d[1] << "," << d[2];
         free += swept ? 0 : 1;
       }
       // Out of board A's slot +x (into B) is free of A, and -x of B: the two together hold it.
@@ -134,7 +173,9 @@ TEST(PlateThroughSlots, OnlyMadeJointsOfferIt) {
   const JointFamilies families(graph, options, JointRealization::Cut);
   EXPECT_FALSE(families.jointFor(2, 0, {0, 1, 0}).has_value());
   // The halved joint still comes first where it opens: the board slides off the bar along -x.
-  EXPECT_EQ(families.jointFor(0, 2, {-1, 0, 0})->type, JointType::Halved);
+  const std::optional<PlateJoint> halved = families.jointFor(0, 2, {-1, 0, 0});
+  ASSERT_TRUE(halved.has_value());
+  EXPECT_EQ(halved->type, JointType::Halved);
 }
 
 }  // namespace

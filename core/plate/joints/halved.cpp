@@ -2,6 +2,7 @@
 #include "plate/joints/halved.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -84,6 +85,13 @@ std::vector<SlotCut> halvedSlots(const std::vector<Plate>& plates, const PlateCo
   return {slot(mover, other, -sign), slot(other, mover, sign)};
 }
 
+bool halvedSlotsOpen(const PlateContact& crossing, int mover, const Vec3& d) {
+  const bool ahead = dot(d, crossing.edgeDirection) > 0;  // which end of the line d points to
+  const std::array<bool, 2>& moverOpens = crossing.a == mover ? crossing.aOpens : crossing.bOpens;
+  const std::array<bool, 2>& otherOpens = crossing.a == mover ? crossing.bOpens : crossing.aOpens;
+  return moverOpens[ahead ? 0 : 1] && otherOpens[ahead ? 1 : 0];
+}
+
 bool needsSlantedNotchWalls(const std::vector<Plate>& plates, const PlateContact& crossing) {
   const double cosine = dot(plateThicknessAxis(plates[static_cast<size_t>(crossing.a)]),
                             plateThicknessAxis(plates[static_cast<size_t>(crossing.b)]));
@@ -138,18 +146,14 @@ class HalvedFamily final : public JointFamily {
 
   bool joinsCrossings() const override { return true; }
 
-  // Along the crossing line, and where slots are cut, towards the side where the mover's outline
-  // ends at the crossing ahead of it and the other's behind it (its slot opening behind it and
-  // the other plate's ahead of it). Any other direction would pull one plate through the other.
+  // Along the crossing line, and where slots are cut, only where they can open (halvedSlotsOpen).
+  // Any other direction would pull one plate through the other.
   bool lets(int crossing, int mover, const Vec3& d) const override {
     const PlateContact& contact = this->contact(crossing);
     if (!parallel(contact.edgeDirection, d)) return false;
     if (!makesJoints(realization())) return true;
     if (realization() == JointRealization::Cut && needsSlantedNotchWalls(plates(), contact)) return false;
-    const bool ahead = dot(d, contact.edgeDirection) > 0;  // which end of the line d points to
-    const std::array<bool, 2>& moverOpens = contact.a == mover ? contact.aOpens : contact.bOpens;
-    const std::array<bool, 2>& otherOpens = contact.a == mover ? contact.bOpens : contact.aOpens;
-    return moverOpens[ahead ? 0 : 1] && otherOpens[ahead ? 1 : 0];
+    return halvedSlotsOpen(contact, mover, d);
   }
 
   // The planned model: the plates cross, so they have no faces on one another but the slots'.

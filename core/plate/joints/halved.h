@@ -46,6 +46,11 @@ std::shared_ptr<const JointCut> jointCut(const SlotCut& slot);
 // milling the slanted walls makes such a notch (issue 26, lead's decision).
 bool needsSlantedNotchWalls(const std::vector<Plate>& plates, const PlateContact& crossing);
 
+// Can the slots of a halved joint on `crossing` open so that `mover` leaves the other plate along
+// d (parallel to the crossing line)? The mover's slot opens behind it, the other plate's ahead,
+// so the mover's outline must end at the crossing behind it and the other's ahead of it.
+bool halvedSlotsOpen(const PlateContact& crossing, int mover, const Vec3& d);
+
 // Why no joint of a cut design (JointRealization::Cut) joins the graph's first crossing at an
 // angle: "the crossing of plates 1 and 5 at 60.0 degrees needs slanted notch walls, ...: mill them
 // (joints 'milled')", or "" when every crossing is square.

@@ -4,8 +4,11 @@
 #include <cmath>
 
 #include "analysis/vec3.h"
+#include "desia/error.h"
 #include "desia/tolerances.h"
+#include "plate/joints/joint_geometry.h"
 #include "plate/joints/halved.h"
+#include "plate/plane_frame.h"
 #include "plate/plate_graph.h"
 #include "plate/plate_shape.h"
 
@@ -24,51 +27,65 @@ class ThroughSlotCut final : public JointCut {
   Loop region_;
 };
 
-}  // namespace
-
-namespace {
-
-// Would a halved joint on `crossing` let `mover` leave the other plate along `d` (along the line)?
-// As the halved family: the mover's slot opens behind it, the other's ahead.
-bool halvedOpens(const PlateContact& crossing, int mover, const Vec3& d) {
-  const bool ahead = dot(d, crossing.edgeDirection) > 0;
-  const std::array<bool, 2>& moverOpens = crossing.a == mover ? crossing.aOpens : crossing.bOpens;
-  const std::array<bool, 2>& otherOpens = crossing.a == mover ? crossing.bOpens : crossing.aOpens;
-  return moverOpens[ahead ? 0 : 1] && otherOpens[ahead ? 1 : 0];
-}
-
 // Some crossing of `plate` along the same line direction keeps it from leaving along d with
 // halved joints.
 bool halvedHoldsAlong(const std::vector<PlateContact>& contacts, int plate, const Vec3& d) {
   for (const PlateContact& other : contacts) {
     if (!other.crossing || (other.a != plate && other.b != plate) || !parallel(other.edgeDirection, d)) continue;
-    if (!halvedOpens(other, plate, d)) return true;
+    if (!halvedSlotsOpen(other, plate, d)) return true;
   }
   return false;
+}
+
+// The slot at `clearance` grown by `margin` on its long sides and closed ends; at an open end it
+// stops `margin` short of the crossing's end (where the slotted plate's outline ends, so the slot
+// runs out of it). Where wood must be left round the slot.
+Loop slotSurround(const std::vector<Plate>& plates, const PlateContact& crossing, const ThroughSlotSite& site,
+                  double clearance, double margin) {
+  const Vec3& line = crossing.edgeDirection;
+  const Vec3 axis = plateThicknessAxis(plates[static_cast<size_t>(site.seated)]);
+  const double width = plateThickness(plates[static_cast<size_t>(site.seated)]);
+  const double start = site.opens[0] ? crossing.crossingFrom + margin : crossing.crossingFrom - clearance / 2 - margin;
+  const double end = site.opens[1] ? crossing.crossingTo - margin : crossing.crossingTo + clearance / 2 + margin;
+  auto at = [&](double t, double w) { return plus(crossing.crossingPoint, plus(scaled(line, t), scaled(axis, w))); };
+  return {at(start, -clearance / 2 - margin), at(end, -clearance / 2 - margin), at(end, width + clearance / 2 + margin),
+          at(start, width + clearance / 2 + margin)};
+}
+
+// Does the slotted plate leave options.woodMargin of wood round the slot (at the clearance) on its
+// long sides and closed ends? A slot reaching the plate's side, or a hole, would leave a sliver
+// or cut the plate open where the joint needs it whole.
+bool slotLeavesWood(const std::vector<Plate>& plates, const PlateContact& crossing, const ThroughSlotSite& site,
+                    const JointCutOptions& options) {
+  const Plate& slotted = plates[static_cast<size_t>(site.slotted)];
+  const PlaneFrame frame(slotted.bottom[0][0], plateThicknessAxis(slotted));
+  const Loop surround = slotSurround(plates, crossing, site, options.clearance, options.woodMargin);
+  return areaAgainst({surround}, faceRegion(slotted, ClipperLib::ctIntersection), frame, true) <=
+         tolerance::kEmptyAreaMm2;
 }
 
 }  // namespace
 
 std::optional<ThroughSlotSite> throughSlotSiteOf(const std::vector<Plate>& plates,
                                                  const std::vector<PlateContact>& contacts, int crossingIndex,
-                                                 int seated) {
+                                                 int seated, const JointCutOptions& options) {
   const PlateContact& crossing = contacts[static_cast<size_t>(crossingIndex)];
   if (!crossing.crossing || needsSlantedNotchWalls(plates, crossing)) return std::nullopt;
   ThroughSlotSite site;
   site.seated = seated;
   site.slotted = crossing.a == seated ? crossing.b : crossing.a;
   site.opens = crossing.a == seated ? crossing.bOpens : crossing.aOpens;
-  const std::array<bool, 2>& seatedOpens = crossing.a == seated ? crossing.aOpens : crossing.bOpens;
-  // The slot must not cut the slotted plate in two, and the seated plate must end at the crossing
-  // somewhere (else the crossing spans the slotted plate's width).
-  if ((site.opens[0] && site.opens[1]) || !(seatedOpens[0] || seatedOpens[1])) return std::nullopt;
+  // The slot must not cut the slotted plate in two. (Each end of the crossing is where one of
+  // the two plates ends, so the seated plate then ends at it somewhere.)
+  if (site.opens[0] && site.opens[1]) return std::nullopt;
   // Only where halved joints hold the seated plate along the line both ways (a bar through two
   // plates meeting edge to edge, whose slots open towards each other): elsewhere a through slot
   // frees too much (reciprocal designs, docs/plates.md).
   const Vec3& line = crossing.edgeDirection;
   if (!halvedHoldsAlong(contacts, seated, line) || !halvedHoldsAlong(contacts, seated, negated(line)))
     return std::nullopt;
-  site.out = plateThicknessAxis(plates[site.slotted]);
+  if (!slotLeavesWood(plates, crossing, site, options)) return std::nullopt;
+  site.out = plateThicknessAxis(plates[static_cast<size_t>(site.slotted)]);
   return site;
 }
 
@@ -104,7 +121,8 @@ class ThroughSlotFamily final : public JointFamily {
     sites_.resize(contacts.size());
     for (size_t c = 0; c < contacts.size(); ++c) {
       for (int seated : {contacts[c].a, contacts[c].b}) {
-        std::optional<ThroughSlotSite> site = throughSlotSiteOf(plates(), contacts, static_cast<int>(c), seated);
+        std::optional<ThroughSlotSite> site =
+            throughSlotSiteOf(plates(), contacts, static_cast<int>(c), seated, options());
         if (site) sites_[c].push_back(*site);
       }
     }
@@ -151,7 +169,9 @@ class ThroughSlotFamily final : public JointFamily {
     return nullptr;
   }
   const ThroughSlotSite& siteOf(const PlateJoint& joint) const {
-    return *siteLetting(joint.contact, joint.mover, joint.direction);
+    const ThroughSlotSite* site = siteLetting(joint.contact, joint.mover, joint.direction);
+    if (site == nullptr) throw Error(ErrorCode::Internal, "a through-slot joint where no through slot lets its plate out");
+    return *site;
   }
   std::vector<std::vector<ThroughSlotSite>> sites_;  // per contact: each plate seated, where it may be
 };

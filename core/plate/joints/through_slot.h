@@ -20,7 +20,7 @@
 namespace desia {
 
 struct ThroughSlotSite {
-  int seated = 0;   // the plate sitting whole in the slot (it ends inside the crossing both ways)
+  int seated = 0;   // the plate sitting whole in the slot (the bar: its section is the slot's)
   int slotted = 0;  // the plate the slot goes through
   // Where the slotted plate ends at the crossing: [0] towards -line, [1] towards +line.
   std::array<bool, 2> opens{false, false};
@@ -28,12 +28,13 @@ struct ThroughSlotSite {
 };
 
 // The site on contacts[crossingIndex] with `seated` seated, when the plates cross square, the
-// slotted plate ends at the crossing on one side at most (the slot does not cut it in two), the
-// seated plate on one at least, and halved joints on the seated plate's crossings along that
-// line hold it both ways along it; nothing otherwise.
+// slotted plate ends at the crossing on one side at most (the slot does not cut it in two),
+// halved joints on the seated plate's crossings along that line hold it both ways along it, and
+// the slotted plate leaves options.woodMargin of wood round the slot (at options.clearance) on
+// its long sides and closed ends; nothing otherwise.
 std::optional<ThroughSlotSite> throughSlotSiteOf(const std::vector<Plate>& plates,
                                                  const std::vector<PlateContact>& contacts, int crossingIndex,
-                                                 int seated);
+                                                 int seated, const JointCutOptions& options = {});
 
 // The slot through the slotted plate: the crossing's extent along the line (grown by half the
 // clearance at closed ends, run out past the outline at open ones) across the seated plate's
