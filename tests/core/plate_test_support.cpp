@@ -44,8 +44,24 @@ double meshVolume(const TriangleMesh& mesh) {
 
 double plateVolume(const Plate& plate) { return meshVolume(plateMesh(plate)); }
 
+namespace {
+
+// The first face's outline's normal by Newell's sum over its sides (the core's plateThicknessAxis is
+// what this check is independent of; its sign does not matter to contains()).
+Vec3 outlineNormal(const Loop& loop) {
+  Vec3 sum{0, 0, 0};
+  for (size_t i = 0; i < loop.size(); ++i) {
+    const Vec3& p = loop[i];
+    const Vec3& q = loop[(i + 1) % loop.size()];
+    sum = plus(sum, Vec3{(p[1] - q[1]) * (p[2] + q[2]), (p[2] - q[2]) * (p[0] + q[0]), (p[0] - q[0]) * (p[1] + q[1])});
+  }
+  return normalized(sum);
+}
+
+}  // namespace
+
 PlateInside::PlateInside(const Plate& plate)
-    : axis_(plateThicknessAxis(plate)),
+    : axis_(outlineNormal(plate.bottom[0])),
       base_(plate.bottom[0][0]),
       u_(normalized(cross(axis_, std::abs(axis_[0]) < 0.6 ? Vec3{1, 0, 0} : Vec3{0, 1, 0}))),
       v_(cross(axis_, u_)),
