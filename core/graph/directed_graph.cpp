@@ -2,6 +2,8 @@
 #include "desia/model.h"
 
 #include <algorithm>
+#include <array>
+#include <cstdint>
 
 namespace desia {
 
@@ -87,6 +89,36 @@ StronglyConnectedComponents findStronglyConnectedComponents(const DirectedGraph&
     result.components[target].push_back(node);
   }
   return result;
+}
+
+namespace {
+
+// The nodes reached from node 0 by following `next` (per node, the mask of its neighbours).
+uint64_t reachedFromFirst(const std::array<uint64_t, 64>& next) {
+  uint64_t seen = 1, frontier = 1;
+  while (frontier != 0) {
+    uint64_t grown = 0;
+    for (uint64_t left = frontier; left != 0; left &= left - 1) grown |= next[__builtin_ctzll(left)];  // GCC, Clang
+    frontier = grown & ~seen;
+    seen |= grown;
+  }
+  return seen;
+}
+
+}  // namespace
+
+std::optional<bool> isStronglyConnectedSmall(const DirectedGraph& graph) {
+  const int n = graph.nodeCount();
+  if (n < 1 || n > 64) return std::nullopt;
+  std::array<uint64_t, 64> along{}, against{};  // per node: the nodes it has an edge to / from
+  for (int from = 0; from < n; ++from) {
+    for (int to : graph.successors(from)) {
+      along[static_cast<size_t>(from)] |= uint64_t{1} << to;
+      against[static_cast<size_t>(to)] |= uint64_t{1} << from;
+    }
+  }
+  const uint64_t all = n == 64 ? ~uint64_t{0} : (uint64_t{1} << n) - 1;
+  return reachedFromFirst(along) == all && reachedFromFirst(against) == all;
 }
 
 CondensationDegrees condensationDegrees(const DirectedGraph& graph,
