@@ -11,6 +11,7 @@
 #include "analysis/vec3.h"
 #include "desia/tolerances.h"
 #include "plate/joints/joint_geometry.h"
+#include "plate/joints/side_crossings.h"
 #include "plate/plane_frame.h"
 #include "plate/plate_shape.h"
 
@@ -61,7 +62,8 @@ Loop InplaneDovetailSite::tab(double grow, double back) const {
 }
 
 std::optional<InplaneDovetailSite> inplaneDovetailSiteOf(const std::vector<Plate>& plates, const PlateContact& contact,
-                                                         const JointCutOptions& options) {
+                                                         const JointCutOptions& options,
+                                                         const std::vector<int>& crossers) {
   if (contact.crossing || contact.region.size() < 3 || facesOnContact(plates, contact) != 0) return std::nullopt;
   const Plate& tabPlate = plates[contact.a];
   const Plate& socketPlate = plates[contact.b];
@@ -83,8 +85,14 @@ std::optional<InplaneDovetailSite> inplaneDovetailSiteOf(const std::vector<Plate
   const auto [acrossLow, acrossHigh] = extentAlong(contact.region, site.origin, axis);
   if (acrossLow > tolerance::kContactMm || acrossHigh < plateThickness(tabPlate) - tolerance::kContactMm)
     return std::nullopt;
-  const auto [from, to] = extentAlong(contact.region, site.origin, site.along);
+  const auto [sideFrom, sideTo] = extentAlong(contact.region, site.origin, site.along);
   const InplaneDovetailSizes& sizes = options.inplaneDovetail;
+  // Beside the plates crossing both (the VDA corner's bars, issue 26: their slots are cut where they
+  // pass through the side): in the longest stretch they leave free, as far either side of the side
+  // as the tab on the whole side would reach, with the wood margin and both cuts' clearance between.
+  const double reach = sizes.depth.of(sizes.width.of(sideTo - sideFrom)) + options.woodMargin + options.clearance;
+  const auto [from, to] = clearStretchOfSide(plates, crossers, site.origin, site.along, site.intoSocket, sideFrom,
+                                             sideTo, reach, options.woodMargin + options.clearance);
   const double width = sizes.width.of(to - from);
   if (width < options.shortestJoint) return std::nullopt;
   site.root0 = (from + to - width) / 2;
@@ -128,7 +136,7 @@ class InplaneDovetailFamily final : public JointFamily {
     requireShare(sizes.depth, "inplaneDovetail.depth", true);
     requireAtLeast(sizes.slope, 0, "inplaneDovetail.slope");  // 0: a straight tab (its faces say so)
     for (const PlateContact& contact : graph().computedContacts)
-      sites_.push_back(inplaneDovetailSiteOf(plates(), contact, options()));
+      sites_.push_back(inplaneDovetailSiteOf(plates(), contact, options(), platesCrossingBoth(graph(), contact)));
   }
 
   bool lets(int contact, int mover, const Vec3& d) const override {
