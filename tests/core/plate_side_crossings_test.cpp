@@ -79,8 +79,7 @@ TEST(PlateSideCrossings, TheDovetailSitsBesideTheBarThroughTheSide) {
   EXPECT_NEAR(beside->root1 - beside->root0, 140.0 / 3, 1e-9);
   const auto [low, high] = tabAcrossY(*beside);
   EXPECT_TRUE(high <= 141 - options.woodMargin || low >= 159 + options.woodMargin) << low << ".." << high;
-  EXPECT_TRUE(std::abs((low + high) / 2 - 70) < 1e-6 || std::abs((low + high) / 2 - 230) < 1e-6)
-      << low << ".." << high;
+  EXPECT_TRUE(std::abs((low + high) / 2 - 70) < 1e-6 || std::abs((low + high) / 2 - 230) < 1e-6) << low << ".." << high;
 }
 
 TEST(PlateSideCrossings, AStretchIsTakenAsFarAsTheSlabReachesAcrossTheSideAtAnAngle) {
@@ -88,12 +87,11 @@ TEST(PlateSideCrossings, AStretchIsTakenAsFarAsTheSlabReachesAcrossTheSideAtAnAn
   // of the side either way its 18 mm slab sweeps 18 / sin 60 along it plus 2 x 30 / tan 60.
   const Vec3 w{std::sin(M_PI / 3), std::cos(M_PI / 3), 0}, n{-w[1], w[0], 0};
   const Vec3 start = plus(Vec3{0, 150, -50}, scaled(w, -60));
-  const Plate bar = prism(1, {start, plus(start, {0, 0, 100}), plus(start, plus(scaled(w, 120), {0, 0, 100})),
-                              plus(start, scaled(w, 120))},
-                          scaled(n, kThickness));
+  const Plate bar = prism(
+      1, {start, plus(start, {0, 0, 100}), plus(start, plus(scaled(w, 120), {0, 0, 100})), plus(start, scaled(w, 120))},
+      scaled(n, kThickness));
   const std::vector<Plate> plates = {bar};
-  const auto [from, to] =
-      clearStretchOfSide(plates, {0}, {0, 0, 0}, {0, 1, 0}, {1, 0, 0}, 0, 300, 30, 0);
+  const auto [from, to] = clearStretchOfSide(plates, {0}, {0, 0, 0}, {0, 1, 0}, {1, 0, 0}, 0, 300, 30, 0);
   const double taken = kThickness / std::sin(M_PI / 3) + 2 * 30 / std::tan(M_PI / 3);
   // The slab's first face passes y = 150 at x = 0 and its second lies above it (n has +y): it
   // takes y from 150 - 30 / tan 60 on, leaving 132.7 mm below it and 111.9 above.
@@ -139,8 +137,8 @@ std::vector<Plate> hexagonCorner() {
     const Vec3 p0 = plus(plus(middle, scaled(bar.w, -bar.before)), plus(scaled(n, -kThickness / 2), {0, 0, -85}));
     const Vec3 p1 = plus(p0, scaled(bar.w, bar.before + bar.after));
     // Counter-clockwise about n: p0, up, p1 up, p1.
-    plates.push_back(prism(static_cast<int>(plates.size()) + 1,
-                           {p0, plus(p0, {0, 0, 170}), plus(p1, {0, 0, 170}), p1}, scaled(n, kThickness)));
+    plates.push_back(prism(static_cast<int>(plates.size()) + 1, {p0, plus(p0, {0, 0, 170}), plus(p1, {0, 0, 170}), p1},
+                           scaled(n, kThickness)));
   }
   return plates;
 }

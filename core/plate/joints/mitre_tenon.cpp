@@ -261,7 +261,8 @@ bool setNotchReach(MitreTenon& tenon, const std::vector<Plate>& plates, const Pl
 }  // namespace
 
 std::optional<MitreTenon> mitreTenonOf(const std::vector<Plate>& plates, const PlateContact& contact, int tenonPlate,
-                                       const Vec3& into, const JointCutOptions& options, const std::vector<int>& crossers) {
+                                       const Vec3& into, const JointCutOptions& options,
+                                       const std::vector<int>& crossers) {
   const std::optional<int> partner = touchingPartnerOf(contact, tenonPlate);
   // Edge to edge: neither plate's face lies on the contact (those are T joints, tenonSiteOf).
   if (!partner || facesOnContact(plates, contact) != 0) return std::nullopt;
@@ -329,7 +330,8 @@ class MitreTenonFamily final : public JointFamily {
   }
 
   bool lets(int contact, int mover, const Vec3& d) const override {
-    return mitreTenonOf(plates(), this->contact(contact), mover, negated(d), options(), crossers_[static_cast<size_t>(contact)])
+    return mitreTenonOf(plates(), this->contact(contact), mover, negated(d), options(),
+                        crossers_[static_cast<size_t>(contact)])
         .has_value();
   }
 

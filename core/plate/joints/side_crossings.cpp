@@ -42,8 +42,8 @@ std::pair<double, double> stretchTakenBy(const Plate& crosser, const Vec3& origi
 }  // namespace
 
 std::pair<double, double> clearStretchOfSide(const std::vector<Plate>& plates, const std::vector<int>& crossers,
-                                             const Vec3& origin, const Vec3& along, const Vec3& across,
-                                             double from, double to, double reach, double grow) {
+                                             const Vec3& origin, const Vec3& along, const Vec3& across, double from,
+                                             double to, double reach, double grow) {
   std::vector<std::pair<double, double>> taken;
   for (int crosser : crossers) {
     const std::pair<double, double> stretch =

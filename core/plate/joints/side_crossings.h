@@ -21,7 +21,7 @@ std::vector<int> platesCrossingBoth(const PlateGraph& graph, const PlateContact&
 // the side (`across`: unit, in the plates' plane, square to the side). The whole side without
 // crossers; {from, from} when they cover it.
 std::pair<double, double> clearStretchOfSide(const std::vector<Plate>& plates, const std::vector<int>& crossers,
-                                             const Vec3& origin, const Vec3& along, const Vec3& across,
-                                             double from, double to, double reach, double grow);
+                                             const Vec3& origin, const Vec3& along, const Vec3& across, double from,
+                                             double to, double reach, double grow);
 
 }  // namespace desia
