@@ -10,12 +10,16 @@
 namespace desia {
 
 std::vector<int> platesCrossingBoth(const PlateGraph& graph, const PlateContact& contact) {
+  // The plates crossing a (a few: its crossings), kept where they cross b too.
   std::vector<int> crossers;
-  for (int plate = 0; plate < graph.plateCount; ++plate) {
-    if (plate == contact.a || plate == contact.b) continue;
-    if (crossingBetween(graph, plate, contact.a) >= 0 && crossingBetween(graph, plate, contact.b) >= 0)
-      crossers.push_back(plate);
+  for (int c : graph.contactsOf[static_cast<size_t>(contact.a)]) {
+    const PlateContact& crossing = graph.contacts[static_cast<size_t>(c)];
+    if (!crossing.crossing) continue;
+    const int plate = crossing.a == contact.a ? crossing.b : crossing.a;
+    if (plate != contact.b && crossingBetween(graph, plate, contact.b) >= 0) crossers.push_back(plate);
   }
+  std::sort(crossers.begin(), crossers.end());
+  crossers.erase(std::unique(crossers.begin(), crossers.end()), crossers.end());
   return crossers;
 }
 
