@@ -11,6 +11,7 @@
 #include "analysis/vec3.h"
 #include "desia/tolerances.h"
 #include "plate/joints/joint_geometry.h"
+#include "plate/joints/side_crossings.h"
 #include "plate/plane_frame.h"
 #include "plate/plate_shape.h"
 
@@ -64,7 +65,8 @@ namespace {
 
 // The site with the tab on `tab` and the socket in `socket` (the plates of `contact`), or nothing.
 std::optional<InplaneDovetailSite> siteWithTabOn(const std::vector<Plate>& plates, const PlateContact& contact,
-                                                 int tab, int socket, const JointCutOptions& options) {
+                                                 int tab, int socket, const JointCutOptions& options,
+                                                 const std::vector<int>& crossers) {
   const Plate& tabPlate = plates[static_cast<size_t>(tab)];
   const Plate& socketPlate = plates[static_cast<size_t>(socket)];
   const Vec3 axis = plateThicknessAxis(tabPlate);
@@ -80,8 +82,14 @@ std::optional<InplaneDovetailSite> siteWithTabOn(const std::vector<Plate>& plate
   const auto [acrossLow, acrossHigh] = extentAlong(contact.region, site.origin, axis);
   if (acrossLow > tolerance::kContactMm || acrossHigh < plateThickness(tabPlate) - tolerance::kContactMm)
     return std::nullopt;
-  const auto [from, to] = extentAlong(contact.region, site.origin, site.along);
+  const auto [sideFrom, sideTo] = extentAlong(contact.region, site.origin, site.along);
   const InplaneDovetailSizes& sizes = options.inplaneDovetail;
+  // Beside the plates crossing both (the VDA corner's bars, issue 26: their slots are cut where they
+  // pass through the side): in the longest stretch they leave free, as far either side of the side
+  // as the tab on the whole side would reach, with the wood margin and both cuts' clearance between.
+  const double reach = sizes.depth.of(sizes.width.of(sideTo - sideFrom)) + options.woodMargin + options.clearance;
+  const auto [from, to] = clearStretchOfSide(plates, crossers, site.origin, site.along, site.intoSocket, sideFrom,
+                                             sideTo, reach, options.woodMargin + options.clearance);
   const double width = sizes.width.of(to - from);
   if (width < options.shortestJoint) return std::nullopt;
   site.root0 = (from + to - width) / 2;
@@ -103,7 +111,8 @@ std::optional<InplaneDovetailSite> siteWithTabOn(const std::vector<Plate>& plate
 }  // namespace
 
 std::optional<InplaneDovetailSite> inplaneDovetailSiteOf(const std::vector<Plate>& plates, const PlateContact& contact,
-                                                         const JointCutOptions& options) {
+                                                         const JointCutOptions& options,
+                                                         const std::vector<int>& crossers) {
   if (contact.crossing || contact.region.size() < 3 || facesOnContact(plates, contact) != 0) return std::nullopt;
   const Plate& a = plates[static_cast<size_t>(contact.a)];
   const Plate& b = plates[static_cast<size_t>(contact.b)];
@@ -114,8 +123,8 @@ std::optional<InplaneDovetailSite> inplaneDovetailSiteOf(const std::vector<Plate
   if (std::abs(dot(axis, contact.normal)) > tolerance::kSquareCosine) return std::nullopt;
   if (!inOneSheet(a, b, axis)) return std::nullopt;
   // The tab on plate a, else (no room for its socket in b: a narrow plate, a hole) on plate b.
-  std::optional<InplaneDovetailSite> site = siteWithTabOn(plates, contact, contact.a, contact.b, options);
-  return site ? site : siteWithTabOn(plates, contact, contact.b, contact.a, options);
+  std::optional<InplaneDovetailSite> site = siteWithTabOn(plates, contact, contact.a, contact.b, options, crossers);
+  return site ? site : siteWithTabOn(plates, contact, contact.b, contact.a, options, crossers);
 }
 
 std::vector<Vec3> inplaneDovetailFaceNormals(const InplaneDovetailSite& site) {
@@ -144,7 +153,7 @@ class InplaneDovetailFamily final : public JointFamily {
     requireShare(sizes.depth, "inplaneDovetail.depth", true);
     requireAtLeast(sizes.slope, kLeastFlankSlope, "inplaneDovetail.slope");
     for (const PlateContact& contact : graph().computedContacts)
-      sites_.push_back(inplaneDovetailSiteOf(plates(), contact, options()));
+      sites_.push_back(inplaneDovetailSiteOf(plates(), contact, options(), platesCrossingBoth(graph(), contact)));
   }
 
   bool lets(int contact, int mover, const Vec3& d) const override {

@@ -42,9 +42,11 @@ struct InplaneDovetailSite {
 // meeting edge to edge on square sides over their whole thickness, the tab (sized by
 // options.inplaneDovetail) in the middle of the shared side with wood left beside it and its
 // socket inside the socket plate with the wood margin all round: the tab on the contact's plate
-// a where its socket fits in b, else on b; nothing otherwise.
+// a where its socket fits in b, else on b; nothing otherwise. Where plates `crossers` cross both
+// (side_crossings.h), "the shared side" is the longest stretch of it they leave free.
 std::optional<InplaneDovetailSite> inplaneDovetailSiteOf(const std::vector<Plate>& plates, const PlateContact& contact,
-                                                         const JointCutOptions& options = {});
+                                                         const JointCutOptions& options = {},
+                                                         const std::vector<int>& crossers = {});
 
 // The normals of the joint's faces, from the tab plate into the socket plate: the shoulder and
 // tip (the contact's normal) and the two flanks (leaning back towards the tab plate).

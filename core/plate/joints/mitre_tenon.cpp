@@ -9,6 +9,7 @@
 #include "desia/error.h"
 #include "desia/tolerances.h"
 #include "plate/joints/joint_geometry.h"
+#include "plate/joints/side_crossings.h"
 #include "plate/plan_squaring.h"
 #include "plate/plane_frame.h"
 #include "plate/plate_shape.h"
@@ -260,7 +261,8 @@ bool setNotchReach(MitreTenon& tenon, const std::vector<Plate>& plates, const Pl
 }  // namespace
 
 std::optional<MitreTenon> mitreTenonOf(const std::vector<Plate>& plates, const PlateContact& contact, int tenonPlate,
-                                       const Vec3& into, const JointCutOptions& options) {
+                                       const Vec3& into, const JointCutOptions& options,
+                                       const std::vector<int>& crossers) {
   const std::optional<int> partner = touchingPartnerOf(contact, tenonPlate);
   // Edge to edge: neither plate's face lies on the contact (those are T joints, tenonSiteOf).
   if (!partner || facesOnContact(plates, contact) != 0) return std::nullopt;
@@ -276,9 +278,15 @@ std::optional<MitreTenon> mitreTenonOf(const std::vector<Plate>& plates, const P
       dot(tenon.into, normal) < tolerance::kGlancingCosine)
     return std::nullopt;
   tenon.across = normalized(cross(normal, tenon.line));
-  const auto [s0, s1] = extentAlong(contact.region, contact.region[0], tenon.line);
+  const auto [sideFrom, sideTo] = extentAlong(contact.region, contact.region[0], tenon.line);
   const auto [x0, x1] = extentAlong(contact.region, contact.region[0], tenon.across);
   const MitreTenonSizes& sizes = options.mitreTenon;
+  // Beside the plates crossing both (side_crossings.h; the VDA corner's bars through its hexagons'
+  // sides, whose slots are cut there): in the longest stretch they leave free, as far either side
+  // of the mitre as the tenon on the whole mitre is wide (its pocket's notch reaches about as far).
+  const double reach = sizes.width.of(sideTo - sideFrom) + options.woodMargin + options.clearance;
+  const auto [s0, s1] = clearStretchOfSide(plates, crossers, contact.region[0], tenon.line, tenon.into, sideFrom,
+                                           sideTo, reach, options.woodMargin + options.clearance);
   tenon.halfWidth = sizes.width.of(s1 - s0) / 2;
   tenon.halfHeight = sizes.height.of(x1 - x0) / 2;  // by default a quarter: room for the pocket in thin plates
   if (2 * tenon.halfWidth < options.shortestJoint || 2 * tenon.halfHeight < sizes.lowestRoot) return std::nullopt;
@@ -318,10 +326,13 @@ class MitreTenonFamily final : public JointFamily {
     requireShare(sizes.height, "mitreTenon.height");
     requireAtLeast(sizes.lowestRoot, 0, "mitreTenon.lowestRoot");
     requireAtLeast(sizes.shallowestPocket, 0, "mitreTenon.shallowestPocket");
+    for (const PlateContact& contact : graph().contacts) crossers_.push_back(platesCrossingBoth(graph(), contact));
   }
 
   bool lets(int contact, int mover, const Vec3& d) const override {
-    return mitreTenonOf(plates(), this->contact(contact), mover, negated(d), options()).has_value();
+    return mitreTenonOf(plates(), this->contact(contact), mover, negated(d), options(),
+                        crossers_[static_cast<size_t>(contact)])
+        .has_value();
   }
 
   // Straight away from a plate it meets at a mitre (a mitre tenon's way out; every touching
@@ -351,8 +362,10 @@ class MitreTenonFamily final : public JointFamily {
 
  private:
   MitreTenon tenonOf(const PlateJoint& joint) const {
-    return *mitreTenonOf(plates(), contact(joint.contact), joint.mover, negated(joint.direction), options());
+    return *mitreTenonOf(plates(), contact(joint.contact), joint.mover, negated(joint.direction), options(),
+                         crossers_[static_cast<size_t>(joint.contact)]);
   }
+  std::vector<std::vector<int>> crossers_;  // per contact: the plates crossing both of its plates
 };
 
 }  // namespace

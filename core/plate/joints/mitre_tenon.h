@@ -37,9 +37,11 @@ struct MitreTenon {
 
 // The tenon across the mitre `contact` for `tenonPlate` leaving the other plate along -into, sized
 // by options.mitreTenon, when the other plate is thick enough there to hold its pocket (with
-// options.woodMargin of wood on every side); nothing for other contacts or directions.
+// options.woodMargin of wood on every side); nothing for other contacts or directions. Where plates
+// `crossers` cross both (side_crossings.h), "the mitre" is the longest stretch of it they leave free.
 std::optional<MitreTenon> mitreTenonOf(const std::vector<Plate>& plates, const PlateContact& contact,
-                                       int tenonPlate, const Vec3& into, const JointCutOptions& options = {});
+                                       int tenonPlate, const Vec3& into, const JointCutOptions& options = {},
+                                       const std::vector<int>& crossers = {});
 
 // The normals of a mitre tenon's faces, from the tenon plate into the pocket plate: its tip, its
 // two ends and its two sides (the mitre contact itself stays).

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "plate/joints/through_slot.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "analysis/vec3.h"
@@ -37,16 +38,23 @@ bool halvedHoldsAlong(const std::vector<PlateContact>& contacts, int plate, cons
   return false;
 }
 
-// The slot at `clearance` grown by `margin` on its long sides and closed ends; at an open end it
-// stops `margin` short of the crossing's end (where the slotted plate's outline ends, so the slot
-// runs out of it). Where wood must be left round the slot.
+// The slot at `clearance` grown by `margin` on its long sides and closed end: where wood must be
+// left round it. At an open end the plate's outline crosses the slot, often at an angle (the VDA
+// corner's bars cross the hexagons' sides at 60 degrees: the outline meets the slot's far wall
+// 10.4 mm past its near one across an 18 mm slot), so the wood there tapers to the outline: the
+// region stops short of the crossing's end by the grown slot's width (outlines crossing it 45
+// degrees or more off its line; a sharper one refuses the site, never lets a sliver through).
 Loop slotSurround(const std::vector<Plate>& plates, const PlateContact& crossing, const ThroughSlotSite& site,
                   double clearance, double margin) {
   const Vec3& line = crossing.edgeDirection;
   const Vec3 axis = plateThicknessAxis(plates[static_cast<size_t>(site.seated)]);
   const double width = plateThickness(plates[static_cast<size_t>(site.seated)]);
-  const double start = site.opens[0] ? crossing.crossingFrom + margin : crossing.crossingFrom - clearance / 2 - margin;
-  const double end = site.opens[1] ? crossing.crossingTo - margin : crossing.crossingTo + clearance / 2 + margin;
+  const double pullBack = width + clearance + 2 * margin;
+  double start = site.opens[0] ? crossing.crossingFrom + pullBack : crossing.crossingFrom - clearance / 2 - margin;
+  double end = site.opens[1] ? crossing.crossingTo - pullBack : crossing.crossingTo + clearance / 2 + margin;
+  // A crossing shorter than that: the closed end's wood alone.
+  if (site.opens[0]) start = std::min(start, crossing.crossingTo);
+  if (site.opens[1]) end = std::max(end, crossing.crossingFrom);
   auto at = [&](double t, double w) { return plus(crossing.crossingPoint, plus(scaled(line, t), scaled(axis, w))); };
   return {at(start, -clearance / 2 - margin), at(end, -clearance / 2 - margin), at(end, width + clearance / 2 + margin),
           at(start, width + clearance / 2 + margin)};
