@@ -123,7 +123,8 @@ class FaceTenonFamily final : public JointFamily {
 
  private:
   FaceTenon tenonOf(const PlateJoint& joint) const {
-    return *faceTenonOf(plates(), contact(joint.contact), joint.mover, joint.direction, options());
+    return letJointSite(faceTenonOf(plates(), contact(joint.contact), joint.mover, joint.direction, options()),
+                        "face-tenon");
   }
 };
 

@@ -188,7 +188,7 @@ class InplaneDovetailFamily final : public JointFamily {
 
  private:
   const InplaneDovetailSite& siteOf(const PlateJoint& joint) const {
-    return *sites_[static_cast<size_t>(joint.contact)];
+    return letJointSite(sites_[static_cast<size_t>(joint.contact)], "inplane-dovetail");
   }
   std::vector<std::optional<InplaneDovetailSite>> sites_;  // per contact
 };

@@ -6,8 +6,11 @@
 #pragma once
 
 #include <memory>
+#include <optional>
+#include <string>
 #include <vector>
 
+#include "desia/error.h"
 #include "desia/plate.h"
 #include "plate/joints/plate_cuts.h"
 #include "plate/plate_graph.h"
@@ -67,6 +70,15 @@ bool exitsLet(const std::vector<Vec3>& exits, int tenonPlate, int mover, const V
 // 0 binds on a way even 0.03 degrees off it (a drawn design's shared edge beside its bevelled
 // side: IBOIS's hexboxes), so letting such ways in (tried: up to kPlannedParallelSine) only gave
 // the search joints that failed on the jointed plates.
+
+// The site (or joint) a family worked out for a joint it let: a family is asked for the faces and
+// cuts of its own joints only, so finding none is a bug in the family (Internal), never a
+// missing site read as if it were there.
+template <typename Site>
+const Site& letJointSite(const std::optional<Site>& site, const char* family) {
+  if (!site) throw Error(ErrorCode::Internal, std::string("a ") + family + " joint where no " + family + " fits");
+  return *site;
+}
 
 // The least slope (mm per mm of depth) a dovetail's flanks are given: straight flanks would let
 // the tongue or tab out across them, which the families' ways out do not say.

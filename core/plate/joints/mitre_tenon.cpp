@@ -362,8 +362,9 @@ class MitreTenonFamily final : public JointFamily {
 
  private:
   MitreTenon tenonOf(const PlateJoint& joint) const {
-    return *mitreTenonOf(plates(), contact(joint.contact), joint.mover, negated(joint.direction), options(),
-                         crossers_[static_cast<size_t>(joint.contact)]);
+    return letJointSite(mitreTenonOf(plates(), contact(joint.contact), joint.mover, negated(joint.direction), options(),
+                                     crossers_[static_cast<size_t>(joint.contact)]),
+                        "mitre-tenon");
   }
   std::vector<std::vector<int>> crossers_;  // per contact: the plates crossing both of its plates
 };

@@ -265,7 +265,9 @@ class SlantedTenonFamily final : public JointFamily {
   }
 
  private:
-  const SlantedTenonSite& siteOf(const PlateJoint& joint) const { return *sites_[static_cast<size_t>(joint.contact)]; }
+  const SlantedTenonSite& siteOf(const PlateJoint& joint) const {
+    return letJointSite(sites_[static_cast<size_t>(joint.contact)], "slanted-tenon");
+  }
   std::vector<std::optional<SlantedTenonSite>> sites_;  // per contact
 };
 

@@ -287,7 +287,9 @@ class TenonFamily final : public JointFamily {
   }
 
  private:
-  const TenonSite& siteOf(const PlateJoint& joint) const { return *sites_[static_cast<size_t>(joint.contact)]; }
+  const TenonSite& siteOf(const PlateJoint& joint) const {
+    return letJointSite(sites_[static_cast<size_t>(joint.contact)], "mortise-tenon");
+  }
   std::vector<std::optional<TenonSite>> sites_;  // per contact
 };
 
