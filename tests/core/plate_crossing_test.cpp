@@ -208,8 +208,7 @@ TEST_P(SlantedTable, IsDesignedWithAHalvedJointVerifiedOnItsCutPlates) {
   EXPECT_GT(removed, area * (crossingLength - 2 * slant));
   EXPECT_LT(removed, area * (crossingLength + 2 * slant));
   EXPECT_EQ(crossingCount(computePlateContacts(result.jointedPlates, {})), 0);
-  std::vector<Plate> inOrder;
-  for (int index : result.order) inOrder.push_back(result.jointedPlates[static_cast<size_t>(index)]);
+  const std::vector<Plate> inOrder = testing::jointedInRemovalOrder(result);
   EXPECT_EQ(verifyJointedPlates(inOrder, result.directions).failure, "");
   // Tampered: the shelf or the divider as given (its notch filled back) no longer verifies.
   for (size_t k = 0; k < inOrder.size(); ++k) {
@@ -278,11 +277,8 @@ TEST(PlateCrossingAtAngle, TheExampleIsTheTableAtSixtyDegrees) {
   // Written and read back, the jointed plates have no crossing left and check on their own.
   const AssemblyDocument written = parseJsonDocument(plateDesignToJson(table, result), "slanted table plan");
   EXPECT_EQ(crossingCount(computePlateContacts(written.plates, {})), 0);
-  for (CheckMethod method : {CheckMethod::Graphs, CheckMethod::Inequalities}) {
-    CheckOptions options;
-    options.method = method;
-    EXPECT_EQ(checkAssembly(written, options).result.verdict, Verdict::Interlocking);
-  }
+  for (const CheckReport& report : testing::checkedByBothMethods(written))
+    EXPECT_EQ(report.result.verdict, Verdict::Interlocking) << report.result.reason;
 }
 
 // The independent check (plate_test_support.h): the mover's inside sampled on a grid, moved step by

@@ -235,11 +235,6 @@ std::vector<Plate> tableWithSplitSide() {
           board(7, {0, 0, 300}, {t, 700, 600})};
 }
 
-std::vector<Plate> inRemovalOrder(const PlateDesignResult& result) {
-  std::vector<Plate> inOrder;
-  for (int index : result.order) inOrder.push_back(result.jointedPlates[static_cast<size_t>(index)]);
-  return inOrder;
-}
 
 TEST(PlateInplaneDovetails, TheTableWithASplitSideDesignsWithAnInplaneDovetailAndATamperedPlanFails) {
   const std::vector<Plate> plates = tableWithSplitSide();
@@ -252,18 +247,11 @@ TEST(PlateInplaneDovetails, TheTableWithASplitSideDesignsWithAnInplaneDovetailAn
   int keys = 0;
   for (const PlateJoint& joint : result.joints) keys += joint.type == JointType::InplaneDovetail ? 1 : 0;
   EXPECT_EQ(keys, 1) << result.message;
-  const std::vector<Plate> inOrder = inRemovalOrder(result);
+  const std::vector<Plate> inOrder = testing::jointedInRemovalOrder(result);
   EXPECT_EQ(verifyJointedPlates(inOrder, result.directions).failure, "");
-  AssemblyDocument input;
-  input.kind = AssemblyKind::Plate;
-  input.name = "table with a split side";
-  input.plates = plates;
-  const AssemblyDocument written = parseJsonDocument(plateDesignToJson(input, result), "split side plan");
-  for (CheckMethod method : {CheckMethod::Graphs, CheckMethod::Inequalities}) {
-    CheckOptions check;
-    check.method = method;
-    EXPECT_EQ(checkAssembly(written, check).result.verdict, Verdict::Interlocking);
-  }
+  const AssemblyDocument written = testing::writtenPlateResult(plates, result, "table with a split side");
+  for (const CheckReport& report : testing::checkedByBothMethods(written))
+    EXPECT_EQ(report.result.verdict, Verdict::Interlocking) << report.result.reason;
   // The halves' joint: one leaves the other out of the sheet (along x, the side's axis), the way
   // the plan uses (the tab lets both).
   int halfMoving = -1;

@@ -62,12 +62,6 @@ PlateDesignResult designMilled(const std::vector<Plate>& plates, uint64_t seed =
   return designPlateJoints(plates, computePlateContacts(plates, {}), options);
 }
 
-// A result's jointed plates in removal order (what verifyJointedPlates checks).
-std::vector<Plate> jointedInRemovalOrder(const PlateDesignResult& result) {
-  std::vector<Plate> inOrder;
-  for (int index : result.order) inOrder.push_back(result.jointedPlates[static_cast<size_t>(index)]);
-  return inOrder;
-}
 
 using testing::meshVolume;
 
@@ -737,7 +731,7 @@ TEST(PlateDovetails, TheBookshelfDesignsWithMilledJointsOnlyAndReadsBack) {
   for (const PlateJoint& joint : result.joints) dovetails += joint.type == JointType::Dovetail ? 1 : 0;
   EXPECT_GT(dovetails, 0);
   // Every jointed plate closed, the result verified again in removal order from its own plates.
-  const std::vector<Plate> inOrder = jointedInRemovalOrder(result);
+  const std::vector<Plate> inOrder = testing::jointedInRemovalOrder(result);
   for (const Plate& plate : inOrder) EXPECT_NO_THROW(checkClosedMesh(plateMesh(plate), plate.name));
   EXPECT_EQ(verifyJointedPlates(inOrder, result.directions).failure, "");
   // Clearance narrows the tongues only: the made plates hold less wood than the verified ones.
@@ -782,7 +776,7 @@ TEST(PlateDovetails, TheRepairedChairDesignsWithMilledJointsThroughRunOnHousings
       runOn += site->reach[0] > 0 || site->reach[1] > 0 ? 1 : 0;
     }
     EXPECT_GT(runOn, 0) << "seed " << seed;
-    const std::vector<Plate> inOrder = jointedInRemovalOrder(result);
+    const std::vector<Plate> inOrder = testing::jointedInRemovalOrder(result);
     for (const Plate& plate : inOrder) EXPECT_NO_THROW(checkClosedMesh(plateMesh(plate), plate.name));
     EXPECT_EQ(verifyJointedPlates(inOrder, result.directions).failure, "") << "seed " << seed;
   }
@@ -797,7 +791,7 @@ TEST(PlateDovetails, WaysOutAFewNanoradiansOffTheFacesTheySlideAlongAreSquaredTo
   const AssemblyDocument chair = loadPlateExample("chair_repaired.json");
   const PlateDesignResult result = designMilled(chair.plates);
   ASSERT_EQ(result.status, DesignStatus::Success) << result.message;
-  const std::vector<Plate> inOrder = jointedInRemovalOrder(result);
+  const std::vector<Plate> inOrder = testing::jointedInRemovalOrder(result);
   auto tilted = [&](double by) {
     std::vector<Vec3> directions = result.directions;
     for (Vec3& d : directions) {
@@ -1046,7 +1040,7 @@ TEST(PlateMitreTenons, MitredBoxAndDodecahedronDesignWithMilledJointsAndVerify) 
     ASSERT_EQ(result.status, DesignStatus::Success) << name << ": " << result.message;
     for (const PlateJoint& joint : result.joints)
       EXPECT_TRUE(joint.type == JointType::MitreTenon || joint.type == JointType::MitreSlide) << name;
-    const std::vector<Plate> inOrder = jointedInRemovalOrder(result);
+    const std::vector<Plate> inOrder = testing::jointedInRemovalOrder(result);
     for (const Plate& plate : inOrder) EXPECT_NO_THROW(checkClosedMesh(plateMesh(plate), name));
     EXPECT_EQ(verifyJointedPlates(inOrder, result.directions).failure, "") << name;
     // Reversing the key's way out runs it into its neighbours' pockets.
@@ -1116,7 +1110,7 @@ TEST(PlateJoints, CabinetDesignsWithMilledJointsOnExactFaces) {
       EXPECT_TRUE(along < 1e-12 || along > 1e-4) << "a contact turned by " << along << " rad off a plan direction";
     }
   }
-  const std::vector<Plate> inOrder = jointedInRemovalOrder(result);
+  const std::vector<Plate> inOrder = testing::jointedInRemovalOrder(result);
   for (const Plate& plate : inOrder) EXPECT_NO_THROW(checkClosedMesh(plateMesh(plate), "cabinet"));
   EXPECT_EQ(verifyJointedPlates(inOrder, result.directions).failure, "");
   for (CheckMethod method : {CheckMethod::Graphs, CheckMethod::Inequalities}) {
@@ -1275,7 +1269,7 @@ TEST(PlateMitreTenons, TheLizardDesignsWithMilledJointsVerifiedOnItsPlates) {
   EXPECT_EQ(result.joints.size(), 90u);
   EXPECT_GT(byType[JointType::MitreTenon], 0);
   EXPECT_GT(byType[JointType::MitreSlide], 0);
-  const std::vector<Plate> inOrder = jointedInRemovalOrder(result);
+  const std::vector<Plate> inOrder = testing::jointedInRemovalOrder(result);
   EXPECT_EQ(verifyJointedPlates(inOrder, result.directions).failure, "");
   for (const Plate& plate : inOrder) EXPECT_NO_THROW(checkClosedMesh(plateMesh(plate), plate.name));
 }

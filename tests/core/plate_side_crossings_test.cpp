@@ -159,20 +159,11 @@ std::map<JointType, int> designedHexagonCorner(JointRealization realization) {
     ++types[joint.type];
     EXPECT_FALSE(joint.contact < 0 && joint.type != JointType::Empty) << "a planned joint";
   }
-  std::vector<Plate> inOrder;
-  for (int index : result.order) inOrder.push_back(result.jointedPlates[static_cast<size_t>(index)]);
+  const std::vector<Plate> inOrder = testing::jointedInRemovalOrder(result);
   EXPECT_EQ(verifyJointedPlates(inOrder, result.directions).failure, "");
-  AssemblyDocument input;
-  input.kind = AssemblyKind::Plate;
-  input.name = "hexagon corner";
-  input.plates = plates;
-  const AssemblyDocument written = parseJsonDocument(plateDesignToJson(input, result), "hexagon corner plan");
-  for (CheckMethod method : {CheckMethod::Graphs, CheckMethod::Inequalities}) {
-    CheckOptions check;
-    check.method = method;
-    const CheckReport report = checkDocument(written, check);
+  const AssemblyDocument written = testing::writtenPlateResult(plates, result, "hexagon corner");
+  for (const CheckReport& report : testing::checkedByBothMethods(written))
     EXPECT_EQ(report.result.verdict, Verdict::Interlocking) << report.result.reason;
-  }
   std::vector<Vec3> reversed = result.directions;
   reversed[0] = negated(reversed[0]);
   EXPECT_NE(verifyJointedPlates(inOrder, reversed).failure, "");

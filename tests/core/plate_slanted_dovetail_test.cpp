@@ -212,12 +212,6 @@ PlateDesignResult designBox(const std::vector<Plate>& plates) {
   return designPlateJoints(plates, computePlateContacts(plates, {}), options);
 }
 
-// The plates of a result in removal order.
-std::vector<Plate> inRemovalOrder(const PlateDesignResult& result) {
-  std::vector<Plate> inOrder;
-  for (int index : result.order) inOrder.push_back(result.jointedPlates[static_cast<size_t>(index)]);
-  return inOrder;
-}
 
 void expectSlidAndVerified(const AssemblyDocument& box, const PlateDesignResult& result) {
   ASSERT_EQ(result.status, DesignStatus::Success) << result.message;
@@ -225,13 +219,10 @@ void expectSlidAndVerified(const AssemblyDocument& box, const PlateDesignResult&
   int slides = 0;
   for (const PlateJoint& joint : result.joints) slides += joint.type == JointType::SlantedDovetail ? 1 : 0;
   EXPECT_GE(slides, 1) << result.message;
-  EXPECT_EQ(verifyJointedPlates(inRemovalOrder(result), result.directions).failure, "");
+  EXPECT_EQ(verifyJointedPlates(testing::jointedInRemovalOrder(result), result.directions).failure, "");
   const AssemblyDocument written = parseJsonDocument(plateDesignToJson(box, result), "leaning box plan");
-  for (CheckMethod method : {CheckMethod::Graphs, CheckMethod::Inequalities}) {
-    CheckOptions check;
-    check.method = method;
-    EXPECT_EQ(checkAssembly(written, check).result.verdict, Verdict::Interlocking);
-  }
+  for (const CheckReport& report : testing::checkedByBothMethods(written))
+    EXPECT_EQ(report.result.verdict, Verdict::Interlocking) << report.result.reason;
 }
 
 // The leaning box: the back side, the key, slides out along its bottom and top on two slanted
@@ -243,7 +234,7 @@ TEST(PlateSlantedDovetails, TheLeaningBoxDesignsWithSlantedDovetailsAndATampered
   expectSlidAndVerified(box, result);
   // The key is the back side (plate 3), sliding out along its bottom and top on the tongues
   // that hold the base and the lid to it.
-  const std::vector<Plate> inOrder = inRemovalOrder(result);
+  const std::vector<Plate> inOrder = testing::jointedInRemovalOrder(result);
   ASSERT_EQ(inOrder[0].id, 3);
   ASSERT_EQ(inOrder[0].attached.size(), 2u);
   // Tampered: its tongues taken off (the base then drops away from it too), or its way reversed

@@ -159,15 +159,11 @@ void expectMadeAndVerified(const AssemblyDocument& box, const PlateDesignResult&
   std::map<JointType, int> byType;
   for (const PlateJoint& joint : result.joints) ++byType[joint.type];
   EXPECT_GE(byType[JointType::SlantedTenon], 1) << result.message;
-  std::vector<Plate> inOrder;
-  for (int index : result.order) inOrder.push_back(result.jointedPlates[static_cast<size_t>(index)]);
+  const std::vector<Plate> inOrder = testing::jointedInRemovalOrder(result);
   EXPECT_EQ(verifyJointedPlates(inOrder, result.directions).failure, "");
   const AssemblyDocument written = parseJsonDocument(plateDesignToJson(box, result), "leaning box plan");
-  for (CheckMethod method : {CheckMethod::Graphs, CheckMethod::Inequalities}) {
-    CheckOptions check;
-    check.method = method;
-    EXPECT_EQ(checkAssembly(written, check).result.verdict, Verdict::Interlocking);
-  }
+  for (const CheckReport& report : testing::checkedByBothMethods(written))
+    EXPECT_EQ(report.result.verdict, Verdict::Interlocking) << report.result.reason;
 }
 
 TEST(PlateSlantedTenons, TheLeaningBoxDesignsMilledAndAutoWithSlantedTenons) {

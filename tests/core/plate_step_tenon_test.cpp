@@ -158,15 +158,11 @@ TEST(PlateStepTenons, TheIcosahedronDesignsWithMadeJointsVerifiedOnItsJointedPla
   for (const PlateJoint& joint : result.joints) ++byType[joint.type];
   EXPECT_GT(byType[JointType::StepTenon], 0);
   EXPECT_EQ(byType[JointType::Empty], 0);
-  std::vector<Plate> inOrder;
-  for (int index : result.order) inOrder.push_back(result.jointedPlates[static_cast<size_t>(index)]);
+  const std::vector<Plate> inOrder = testing::jointedInRemovalOrder(result);
   EXPECT_EQ(verifyJointedPlates(inOrder, result.directions).failure, "");
   const AssemblyDocument written = parseJsonDocument(plateDesignToJson(icosahedron, result), "icosahedron plan");
-  for (CheckMethod method : {CheckMethod::Graphs, CheckMethod::Inequalities}) {
-    CheckOptions check;
-    check.method = method;
-    EXPECT_EQ(checkAssembly(written, check).result.verdict, Verdict::Interlocking);
-  }
+  for (const CheckReport& report : testing::checkedByBothMethods(written))
+    EXPECT_EQ(report.result.verdict, Verdict::Interlocking) << report.result.reason;
   // Tampered: a plate's tenons taken off, the plan no longer verifies.
   int tampered = 0;
   for (size_t k = 0; k + 1 < inOrder.size() && tampered == 0; ++k) {

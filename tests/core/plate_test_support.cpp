@@ -130,4 +130,30 @@ bool steppedCollision(const std::vector<Vec3>& samples, const Plate& obstacle, c
   return false;
 }
 
+std::vector<Plate> jointedInRemovalOrder(const PlateDesignResult& result) {
+  std::vector<Plate> inOrder;
+  for (int index : result.order) inOrder.push_back(result.jointedPlates.at(static_cast<size_t>(index)));
+  return inOrder;
+}
+
+AssemblyDocument writtenPlateResult(const std::vector<Plate>& plates, const PlateDesignResult& result,
+                                    const std::string& name) {
+  AssemblyDocument input;
+  input.kind = AssemblyKind::Plate;
+  input.name = name;
+  input.plates = plates;
+  return parseJsonDocument(plateDesignToJson(input, result), name + " plan");
+}
+
+std::array<CheckReport, 2> checkedByBothMethods(const AssemblyDocument& document) {
+  std::array<CheckReport, 2> reports;
+  const CheckMethod methods[] = {CheckMethod::Graphs, CheckMethod::Inequalities};
+  for (size_t k = 0; k < reports.size(); ++k) {
+    CheckOptions options;
+    options.method = methods[k];
+    reports[k] = checkDocument(document, options);
+  }
+  return reports;
+}
+
 }  // namespace desia::testing

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "analysis/vec3.h"
+#include "desia/analysis.h"
 #include "desia/document.h"
 #include "desia/plate.h"
 
@@ -43,6 +44,19 @@ class PlateInside {
   std::vector<ProjectedLoop> loops_;
   std::vector<PlateInside> attached_;
 };
+
+// The jointed plates of a design's result in the order its plan takes them out (as
+// verifyJointedPlates takes them).
+std::vector<Plate> jointedInRemovalOrder(const PlateDesignResult& result);
+
+// A design of `plates` (named `name`) and its result, written as the CLI writes them
+// (plateDesignToJson) and read back.
+AssemblyDocument writtenPlateResult(const std::vector<Plate>& plates, const PlateDesignResult& result,
+                                    const std::string& name);
+
+// `desia check` of a document (a result as written and read back), by the DBG test [0] and by the
+// LP test [1].
+std::array<CheckReport, 2> checkedByBothMethods(const AssemblyDocument& document);
 
 // One axis of a sampling grid: points at from + offset, + step, ... below `to`.
 struct SampleAxis {
