@@ -59,7 +59,10 @@ test('the tarball holds the package and nothing else', () => {
     assert.equal(sizes[module], fs.statSync(path.join(root, module)).size, `the packed ${module} is the built one`);
     assert.ok(sizes[module] > 100 * 1024, `the packed ${module} has ${sizes[module]} bytes`);
   }
-  assert.ok(packed.unpackedSize < 4 * 1024 * 1024, `unpacked size ${packed.unpackedSize}`);
+  // A guard against files that do not belong, not a download budget (the wasm travels compressed:
+  // docs/benchmarks.md, "The core's size against its speed"). 4 MiB until session 12, when the
+  // core's plate joints (joints beside crossing plates, checked slots) took the package to 4.20 MB.
+  assert.ok(packed.unpackedSize < 4.5 * 1024 * 1024, `unpacked size ${packed.unpackedSize}`);
   for (const [file, size] of Object.entries(sizes)) {
     if (!modules.includes(file)) assert.ok(size < 256 * 1024, `${file}: ${size} bytes`);
   }
