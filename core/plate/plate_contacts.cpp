@@ -62,6 +62,7 @@ std::vector<PlateContact> computePlateContacts(const std::vector<Plate>& plates,
       std::swap(contact.a, contact.b);
       contact.normal = negated(contact.normal);
       std::swap(contact.aOpens, contact.bOpens);
+      std::swap(contact.aOverhang, contact.bOverhang);
     }
   }
   // In a fixed order: by plate pair, then as found.

@@ -243,6 +243,8 @@ std::optional<PlateContact> slantedCrossing(const std::vector<Plate>& plates, in
   PlateContact crossing = crossingContact(p, q, line, point, from, to, std::max(inA.to - inA.from, inB.to - inB.from));
   crossing.aOpens = {shadowA.front().first >= from - tolerance, shadowA.back().second <= to + tolerance};
   crossing.bOpens = {shadowB.front().first >= from - tolerance, shadowB.back().second <= to + tolerance};
+  crossing.aOverhang = {std::max(0.0, from - shadowA.front().first), std::max(0.0, shadowA.back().second - to)};
+  crossing.bOverhang = {std::max(0.0, from - shadowB.front().first), std::max(0.0, shadowB.back().second - to)};
   return crossing;
 }
 
@@ -309,6 +311,8 @@ std::optional<PlateContact> plateCrossing(const std::vector<Plate>& plates, int 
   // A slot opens where the plate's material in the other's slab ends with the crossing.
   crossing.aOpens = {a0 >= from - tolerance, a1 <= to + tolerance};
   crossing.bOpens = {b0 >= from - tolerance, b1 <= to + tolerance};
+  crossing.aOverhang = {std::max(0.0, from - a0), std::max(0.0, a1 - to)};
+  crossing.bOverhang = {std::max(0.0, from - b0), std::max(0.0, b1 - to)};
   return crossing;
 }
 

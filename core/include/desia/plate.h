@@ -93,6 +93,11 @@ struct PlateContact {
   // Where a slot may open (the plate's outline ends at the crossing on that side): [0] towards
   // -edgeDirection, [1] towards +edgeDirection; for plate a and plate b.
   std::array<bool, 2> aOpens{false, false}, bOpens{false, false};
+  // How far each plate's material in the other's slab reaches past the crossing's ends (mm, 0
+  // where it ends with the crossing), [0] and [1] as for aOpens: a plate ending across the line
+  // at a slant (a rib bevelled to sit level on a chord) reaches past by a sliver that its slot,
+  // run on past the end, cuts away (halvedSlotsOpen).
+  std::array<double, 2> aOverhang{0, 0}, bOverhang{0, 0};
 };
 
 // Checks every plate (planar faces, positive thickness, parallel matching faces, loops that do not

@@ -62,8 +62,11 @@ std::vector<SlotCut> halvedSlots(const std::vector<Plate>& plates, const PlateCo
   const Vec3& line = crossing.edgeDirection;
   const double sign = dot(d, line) > 0 ? 1 : -1;
   const double middle = (crossing.crossingFrom + crossing.crossingTo) / 2;
-  // Far enough past the crossing's ends to run out of the outline there (it ends with the crossing).
-  const double out = crossing.crossingTo - crossing.crossingFrom + options.woodMargin;
+  // Far enough past the crossing's ends to run out of the outline there (it ends with the
+  // crossing, or past it by at most the slot's width: halvedSlotsOpen).
+  const double out = std::max(crossing.crossingTo - crossing.crossingFrom,
+                              std::max(slotWidthOn(plates, crossing, crossing.a), slotWidthOn(plates, crossing, crossing.b))) +
+                     options.woodMargin;
   auto slot = [&](int plate, int across, double towards) {
     const Vec3 axis = plateThicknessAxis(plates[across]);
     const double width = plateThickness(plates[across]);
@@ -85,11 +88,28 @@ std::vector<SlotCut> halvedSlots(const std::vector<Plate>& plates, const PlateCo
   return {slot(mover, other, -sign), slot(other, mover, sign)};
 }
 
-bool halvedSlotsOpen(const PlateContact& crossing, int mover, const Vec3& d) {
+double slotWidthOn(const std::vector<Plate>& plates, const PlateContact& crossing, int plate) {
+  const int other = crossing.a == plate ? crossing.b : crossing.a;
+  const Vec3 axis = plateThicknessAxis(plates[static_cast<size_t>(plate)]);
+  const Vec3 otherAxis = plateThicknessAxis(plates[static_cast<size_t>(other)]);
+  // The other's slab meets this plate's first and second faces in strips `width` wide, shifted
+  // by thickness * cosine / rise against each other (slantedSlot's geometry).
+  const double cosine = dot(axis, otherAxis);
+  const double rise = std::sqrt(std::max(0.0, 1 - cosine * cosine));
+  return (plateThickness(plates[static_cast<size_t>(other)]) +
+          plateThickness(plates[static_cast<size_t>(plate)]) * std::abs(cosine)) /
+         rise;
+}
+
+bool halvedSlotsOpen(const std::vector<Plate>& plates, const PlateContact& crossing, int mover, const Vec3& d) {
   const bool ahead = dot(d, crossing.edgeDirection) > 0;  // which end of the line d points to
-  const std::array<bool, 2>& moverOpens = crossing.a == mover ? crossing.aOpens : crossing.bOpens;
-  const std::array<bool, 2>& otherOpens = crossing.a == mover ? crossing.bOpens : crossing.aOpens;
-  return moverOpens[ahead ? 0 : 1] && otherOpens[ahead ? 1 : 0];
+  const int other = crossing.a == mover ? crossing.b : crossing.a;
+  auto opens = [&](int plate, size_t end) {
+    const bool isA = crossing.a == plate;
+    if ((isA ? crossing.aOpens : crossing.bOpens)[end]) return true;
+    return (isA ? crossing.aOverhang : crossing.bOverhang)[end] <= slotWidthOn(plates, crossing, plate);
+  };
+  return opens(mover, ahead ? 0 : 1) && opens(other, ahead ? 1 : 0);
 }
 
 bool needsSlantedNotchWalls(const std::vector<Plate>& plates, const PlateContact& crossing) {
@@ -153,7 +173,7 @@ class HalvedFamily final : public JointFamily {
     if (!parallel(contact.edgeDirection, d)) return false;
     if (!makesJoints(realization())) return true;
     if (realization() == JointRealization::Cut && needsSlantedNotchWalls(plates(), contact)) return false;
-    return halvedSlotsOpen(contact, mover, d);
+    return halvedSlotsOpen(plates(), contact, mover, d);
   }
 
   // The planned model: the plates cross, so they have no faces on one another but the slots'.

@@ -48,8 +48,15 @@ bool needsSlantedNotchWalls(const std::vector<Plate>& plates, const PlateContact
 
 // Can the slots of a halved joint on `crossing` open so that `mover` leaves the other plate along
 // d (parallel to the crossing line)? The mover's slot opens behind it, the other plate's ahead,
-// so the mover's outline must end at the crossing behind it and the other's ahead of it.
-bool halvedSlotsOpen(const PlateContact& crossing, int mover, const Vec3& d);
+// so the mover's outline must end at the crossing behind it and the other's ahead of it: with
+// the crossing, or past it by no more than the slot is wide on that plate (an outline crossing
+// the slot 45 degrees or less off square, as a rib's end bevelled to sit level does), which the
+// slot, run on past the crossing's end (halvedSlots), cuts away.
+bool halvedSlotsOpen(const std::vector<Plate>& plates, const PlateContact& crossing, int mover, const Vec3& d);
+
+// How wide the slot of `crossing` is on `plate` (square to the crossing line, in its plane): the
+// other plate's slab where it passes through this one, both faces' traces.
+double slotWidthOn(const std::vector<Plate>& plates, const PlateContact& crossing, int plate);
 
 // Why no joint of a cut design (JointRealization::Cut) joins the graph's first crossing at an
 // angle: "the crossing of plates 1 and 5 at 60.0 degrees needs slanted notch walls, ...: mill them

@@ -30,10 +30,11 @@ class ThroughSlotCut final : public JointCut {
 
 // Some crossing of `plate` along the same line direction keeps it from leaving along d with
 // halved joints.
-bool halvedHoldsAlong(const std::vector<PlateContact>& contacts, int plate, const Vec3& d) {
+bool halvedHoldsAlong(const std::vector<Plate>& plates, const std::vector<PlateContact>& contacts, int plate,
+                      const Vec3& d) {
   for (const PlateContact& other : contacts) {
     if (!other.crossing || (other.a != plate && other.b != plate) || !parallel(other.edgeDirection, d)) continue;
-    if (!halvedSlotsOpen(other, plate, d)) return true;
+    if (!halvedSlotsOpen(plates, other, plate, d)) return true;
   }
   return false;
 }
@@ -90,7 +91,7 @@ std::optional<ThroughSlotSite> throughSlotSiteOf(const std::vector<Plate>& plate
   // plates meeting edge to edge, whose slots open towards each other): elsewhere a through slot
   // frees too much (reciprocal designs, docs/plates.md).
   const Vec3& line = crossing.edgeDirection;
-  if (!halvedHoldsAlong(contacts, seated, line) || !halvedHoldsAlong(contacts, seated, negated(line)))
+  if (!halvedHoldsAlong(plates, contacts, seated, line) || !halvedHoldsAlong(plates, contacts, seated, negated(line)))
     return std::nullopt;
   if (!slotLeavesWood(plates, crossing, site, options)) return std::nullopt;
   site.out = plateThicknessAxis(plates[static_cast<size_t>(site.slotted)]);
