@@ -8,7 +8,9 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <string>
+#include <tuple>
 #include <utility>
 
 #include "analysis/vec3.h"
@@ -18,6 +20,7 @@
 #include "desia/formats.h"
 #include "desia/plate.h"
 #include "plate/joints/halved.h"
+#include "plate/joints/tenon.h"
 #include "plate/joints/plate_cuts.h"
 #include "plate/swept_collision.h"
 #include "plate_test_support.h"
@@ -483,6 +486,53 @@ TEST(PlateCrossingAtAngle, ALeaningLegWithLevelEndsIsHalvedItsSlotsRunOutPastThe
   ASSERT_GT(samples.size(), 1000u);
   EXPECT_FALSE(testing::steppedCollision(samples, notched[1], up, 2, 2 * kHeight));
   EXPECT_TRUE(testing::steppedCollision(samples, notched[1], negated(up), 2, 2 * kHeight));
+}
+
+TEST(PlateCrossingAtAngle, NoSlotRunsOutUnderATongueOnTheSameSide) {
+  // The upright leg's top side carries a dovetail's tongue (or tenons) into the top: a halved slot
+  // running out up through that side there would leave the tongue bridging it, over the leaning
+  // leg's way out. The planner took such plans and lost each on its jointed plates (the X stand:
+  // 195 nodes, every complete plan failing there); the wood under the tongue is now a footprint
+  // that a slot running out through the side runs into, and nothing else does.
+  const std::vector<Plate> plates = xStandWithLeaningLeg(3);
+  const std::vector<PlateContact> contacts = computePlateContacts(plates, {});
+  const PlateContact* crossing = nullptr;
+  const PlateContact* legUnderTop = nullptr;
+  for (const PlateContact& contact : contacts) {
+    if (contact.crossing) crossing = &contact;
+    if (!contact.crossing && contact.a == 0 && contact.b == 1) legUnderTop = &contact;
+  }
+  ASSERT_NE(crossing, nullptr);
+  ASSERT_NE(legUnderTop, nullptr);
+  const std::optional<TenonSite> site = squareEdgeSite(plates, *legUnderTop, JointCutOptions{});
+  ASSERT_TRUE(site.has_value());
+  ASSERT_EQ(site->tenonPlate, 1);
+  const Vec3& corner = plates[1].bottom[0][static_cast<size_t>(site->edge)];
+  auto woodUnder = [&](double start, double end) {
+    return woodUnderAddedPiece(1, corner, site->along, site->intoMortise, start, end);
+  };
+  const double crossingAt = dot(minus(crossing->crossingPoint, corner), site->along);
+  const Vec3 up = crossing->edgeDirection[2] > 0 ? crossing->edgeDirection : negated(crossing->edgeDirection);
+  for (const auto& [mover, way, runsOutUp] :
+       {std::tuple{2, up, true}, std::tuple{2, negated(up), false}, std::tuple{1, up, false}}) {
+    std::optional<CutFootprint> uprightSlot;
+    for (const SlotCut& slot : halvedSlots(plates, *crossing, mover, way, JointCutOptions{}))
+      if (slot.plate == 1) uprightSlot = slotFootprint(slot);
+    ASSERT_TRUE(uprightSlot.has_value());
+    EXPECT_EQ(uprightSlot->kind, FootprintKind::SlotRunningOut);
+    // Along the whole top side: the slot runs into the wood under it only where it runs out up.
+    EXPECT_EQ(footprintsOverlap(plates, woodUnder(site->from, site->to), *uprightSlot), runsOutUp) << mover;
+    EXPECT_EQ(footprintsOverlap(plates, *uprightSlot, woodUnder(site->from, site->to)), runsOutUp) << mover;
+    // A tenon 60 to 100 mm from the crossing is clear of it.
+    EXPECT_FALSE(footprintsOverlap(plates, woodUnder(crossingAt + 60, crossingAt + 100), *uprightSlot));
+    // The same region as a cut (a mortise) is no slot running out: the wood under a piece ignores it.
+    CutFootprint asMortise = *uprightSlot;
+    asMortise.kind = FootprintKind::Cut;
+    EXPECT_FALSE(footprintsOverlap(plates, woodUnder(site->from, site->to), asMortise));
+  }
+  // The stand's plans no longer end on jointed plates that fail: the search drops those steps.
+  const PlateDesignResult result = design(plates, JointRealization::Milled);
+  EXPECT_EQ(result.message.find("failed on its jointed plates"), std::string::npos) << result.message;
 }
 
 }  // namespace

@@ -299,7 +299,12 @@ class DovetailFamily final : public JointFamily {
   }
 
   void addFootprints(const PlateJoint& joint, std::vector<CutFootprint>& footprints) const override {
-    footprints.push_back(dovetailFootprint(plates(), cutOf(joint), options()));
+    const DovetailCut cut = cutOf(joint);
+    footprints.push_back(dovetailFootprint(plates(), cut, options()));
+    // The tongue runs along the contact from the stop: the wood under all of the contact.
+    const TenonSite& edge = cut.site.edge;
+    const Vec3& side = plates()[static_cast<size_t>(edge.tenonPlate)].bottom[0][static_cast<size_t>(edge.edge)];
+    footprints.push_back(woodUnderAddedPiece(edge.tenonPlate, side, edge.along, edge.intoMortise, edge.from, edge.to));
   }
 
   void addCuts(const PlateJoint& joint, double, JointCutList& cuts) const override {

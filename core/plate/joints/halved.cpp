@@ -142,7 +142,7 @@ std::string slantedCrossingsNeedMilling(const PlateGraph& graph) {
 }
 
 CutFootprint slotFootprint(const SlotCut& slot) {
-  if (slot.secondFace.empty()) return {slot.plate, 3, slot.rectangle};
+  if (slot.secondFace.empty()) return {slot.plate, 3, slot.rectangle, FootprintKind::SlotRunningOut};
   // The second face's parallelogram seen along the axis is the first's shifted across the line
   // (vertices 0-1 and 2-3 are its sides along the line, at the other plate's two faces): the
   // union spans from the lower of the two first sides to the higher of the two second sides.
@@ -153,7 +153,8 @@ CutFootprint slotFootprint(const SlotCut& slot) {
   const Vec3 shift = minus(lift, scaled(axis, dot(lift, axis)));
   const bool higher = dot(shift, across) > 0;
   const Vec3 low = higher ? Vec3{0, 0, 0} : shift, high = higher ? shift : Vec3{0, 0, 0};
-  return {slot.plate, 3, {plus(first[0], low), plus(first[1], low), plus(first[2], high), plus(first[3], high)}};
+  return {slot.plate, 3, {plus(first[0], low), plus(first[1], low), plus(first[2], high), plus(first[3], high)},
+          FootprintKind::SlotRunningOut};
 }
 
 std::shared_ptr<const JointCut> jointCut(const SlotCut& slot) { return std::make_shared<SlotJointCut>(slot); }

@@ -265,8 +265,19 @@ Plate cutPlate(const Plate& plate, size_t p, PlateCuts& cuts) {
 
 bool footprintsOverlap(const std::vector<Plate>& plates, const CutFootprint& a, const CutFootprint& b) {
   if (a.plate != b.plate || (a.faces & b.faces) == 0) return false;
+  const bool underA = a.kind == FootprintKind::UnderAddedPiece, underB = b.kind == FootprintKind::UnderAddedPiece;
+  if (underA && b.kind != FootprintKind::SlotRunningOut) return false;
+  if (underB && a.kind != FootprintKind::SlotRunningOut) return false;
   const Plate& plate = plates[a.plate];
   return cutsShareWood(plate, a.region, b.region, PlaneFrame(plate.bottom[0][0], plateThicknessAxis(plate)));
+}
+
+CutFootprint woodUnderAddedPiece(int plate, const Vec3& side, const Vec3& along, const Vec3& outward, double start,
+                                 double end) {
+  constexpr double kDepthMm = 1;
+  const Vec3 a = plus(side, scaled(along, start)), b = plus(side, scaled(along, end));
+  const Vec3 inward = scaled(outward, -kDepthMm);
+  return {plate, 3, {a, b, plus(b, inward), plus(a, inward)}, FootprintKind::UnderAddedPiece};
 }
 
 PlateCuts::PlateCuts(size_t plateCount)

@@ -21,15 +21,30 @@ namespace desia {
 // the plate (faces = 3) or into it from its first (1) or second (2) face only. Cuts of different
 // joints in one plate must not overlap where they share a face: the designer drops a step whose
 // joints would (rather than find it when the whole plan is cut).
+// A footprint is a cut (mortises, housings, notches), a slot running out of the outline that a
+// plate slides out along (a halved joint's), or the wood under a piece a joint adds to the
+// plate's side (a tenon, a dovetail's tongue): the piece would bridge such a slot where it runs
+// out through that side, over the crossing plate's way out, so that wood clashes with slots only
+// (a mortise beside the side is cut square to the sheet, out of the added piece's way).
+enum class FootprintKind { Cut, SlotRunningOut, UnderAddedPiece };
+
 struct CutFootprint {
   int plate = 0;
   int faces = 3;
   Loop region;
+  FootprintKind kind = FootprintKind::Cut;
 };
 
 // Both in one plate, sharing a face, their regions overlapping inside the plate (more than a
-// thousandth of a square millimetre).
+// thousandth of a square millimetre); the wood under an added piece only with a slot running out.
 bool footprintsOverlap(const std::vector<Plate>& plates, const CutFootprint& a, const CutFootprint& b);
+
+// The wood under a piece a joint adds to `plate`'s side from `start` to `end` along it (`side`
+// is the side's point at 0 on the plate's first face, `along` its unit direction, `outward`
+// the unit normal out of the side in the plate's plane): a strip 1 mm deep inside the side (any
+// depth finds a slot running out through the side there).
+CutFootprint woodUnderAddedPiece(int plate, const Vec3& side, const Vec3& along, const Vec3& outward, double start,
+                                 double end);
 
 // What the joints do to each plate (indexed as the plates): outlines added to its faces (tenons),
 // regions cut through it (mortises, slots, notches), housings cut into it from its first [0] or

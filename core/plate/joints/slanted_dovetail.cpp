@@ -204,7 +204,11 @@ class SlantedDovetailFamily final : public JointFamily {
   }
 
   void addFootprints(const PlateJoint& joint, std::vector<CutFootprint>& footprints) const override {
-    footprints.push_back(slantedDovetailFootprint(plates(), cutOf(joint), options()));
+    const SlantedDovetailCut cut = cutOf(joint);
+    footprints.push_back(slantedDovetailFootprint(plates(), cut, options()));
+    // The tongue runs along the side from the stop: the wood under all of the side on the face.
+    const SlantedSide& side = cut.site.side;
+    footprints.push_back(woodUnderAddedPiece(side.tenonPlate, side.origin[0], side.along, side.out, side.from, side.to));
   }
 
   void addCuts(const PlateJoint& joint, double, JointCutList& cuts) const override {

@@ -256,8 +256,11 @@ class SlantedTenonFamily final : public JointFamily {
   }
 
   void addFootprints(const PlateJoint& joint, std::vector<CutFootprint>& footprints) const override {
-    for (CutFootprint& mortise : slantedTenonFootprints(plates(), siteOf(joint)))
+    const SlantedTenonSite& site = siteOf(joint);
+    for (CutFootprint& mortise : slantedTenonFootprints(plates(), site))
       footprints.push_back(std::move(mortise));
+    for (const auto& [start, end] : site.spans)
+      footprints.push_back(woodUnderAddedPiece(site.tenonPlate, site.origin[0], site.along, site.out, start, end));
   }
 
   void addCuts(const PlateJoint& joint, double, JointCutList& cuts) const override {

@@ -234,8 +234,10 @@ std::vector<Vec3> tenonFaceNormals(const TenonSite& site) {
 std::vector<CutFootprint> tenonFootprints(const std::vector<Plate>& plates, const TenonSite& site,
                                           const JointCutOptions& options) {
   std::vector<CutFootprint> footprints;
+  const Vec3& side = plates[static_cast<size_t>(site.tenonPlate)].bottom[0][static_cast<size_t>(site.edge)];
   for (const auto& [start, end] : tenonSpans(plates, site, options)) {
     footprints.push_back({site.mortisePlate, 3, mortiseOf(plates, site, start, end, options)});
+    footprints.push_back(woodUnderAddedPiece(site.tenonPlate, side, site.along, site.intoMortise, start, end));
   }
   return footprints;
 }

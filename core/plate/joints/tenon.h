@@ -67,7 +67,8 @@ std::vector<std::pair<double, double>> tenonSpans(const std::vector<Plate>& plat
 // on the open side of an open mortise).
 std::vector<Vec3> tenonFaceNormals(const TenonSite& site);
 
-// The mortises, through the mortise plate (grown by the clearance).
+// The mortises, through the mortise plate (grown by the clearance), and the wood under the tenons
+// on the tenon plate's side (woodUnderAddedPiece).
 std::vector<CutFootprint> tenonFootprints(const std::vector<Plate>& plates, const TenonSite& site,
                                           const JointCutOptions& options);
 
