@@ -4,8 +4,10 @@
 // real: its joints cut into the plates and verified on them.
 #pragma once
 
+#include <memory>
 #include <vector>
 
+#include "desia/analysis.h"
 #include "desia/model.h"
 #include "desia/plate.h"
 #include "plate/joints/joint_families.h"
@@ -13,6 +15,12 @@
 #include "plate/plate_graph.h"
 
 namespace desia {
+
+// A node's joint model (jointModel) and its base directions, as the node test made them.
+struct JointNodeModel {
+  Assembly model;
+  std::vector<BaseDirection> bases;
+};
 
 // One planned step: plate P_i leaves along d_i; its joints with the plates of R'_i.
 struct PlanStep {
@@ -22,6 +30,9 @@ struct PlanStep {
   int emptyJoints = 0;
   bool blocked = false;  // a crossing plate cannot part along the direction, or the joints' cuts collide
   std::vector<CutFootprint> cuts;  // where the joints cut into the plates (joints made only)
+  // The model of the node this step ends in, from the node test that accepted it, until the LP
+  // test on entering the node has used it (made once, not twice: 9 % of the icosahedron's search).
+  std::shared_ptr<const JointNodeModel> nodeModel;
 };
 
 // The assembly of A_i: parts 0..i-1 are the steps' plates, part i (when any plate is left) is R_i.

@@ -60,8 +60,10 @@ class PlateJointPlanner::SearchTree : public search::ConstructionTree {
       return search::Move::Returned;
     }
     path_.push_back(std::move(*child));
-    if ((makesJoints(planner_.options_.realization) && planner_.runsIntoJointsSoFar(path_)) ||
-        !planner_.heldByInequalities(path_)) {
+    const bool held = !(makesJoints(planner_.options_.realization) && planner_.runsIntoJointsSoFar(path_)) &&
+                      planner_.heldByInequalities(path_);
+    path_.back().nodeModel.reset();  // used; a path of 400 models would hold megabytes
+    if (!held) {
       path_.pop_back();
       return search::Move::Returned;
     }

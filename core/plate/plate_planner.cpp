@@ -148,20 +148,22 @@ bool PlateJointPlanner::cutsCollide(const NodeFacts& node, const std::vector<Cut
 
 // A_1: the key is free along d_1 and along no other base direction of its joints. A_i (i >= 2):
 // interlocking with P_1 as the only movable part (the DBG test on the joint contacts; heldByInequalities adds the LP test).
-bool PlateJointPlanner::acceptable(const std::vector<PlanStep>& steps) const {
-  const Assembly model = jointModel(graph_, families_, steps);
+std::shared_ptr<const JointNodeModel> PlateJointPlanner::acceptedModel(const std::vector<PlanStep>& steps) const {
+  auto node = std::make_shared<JointNodeModel>();
+  node->model = jointModel(graph_, families_, steps);
+  node->bases = computeBaseDirections(node->model);
   if (steps.size() == 1) {
-    for (const BaseDirection& base : computeBaseDirections(model)) {
+    for (const BaseDirection& base : node->bases) {
       for (const Vec3& d : {base.vector, negated(base.vector)}) {
-        const bool free = isPartFreeAlong(model, nullptr, 0, d);
+        const bool free = isPartFreeAlong(node->model, nullptr, 0, d);
         const bool planned = parallel(d, steps[0].direction) && dot(d, steps[0].direction) > 0;
-        if (free != planned) return false;
+        if (free != planned) return nullptr;
       }
     }
-    return true;
+    return node;
   }
-  const InterlockingResult result = testInterlockingByGraphs(model, computeBaseDirections(model));
-  return result.verdict == Verdict::Interlocking && result.key == 0;
+  const InterlockingResult result = testInterlockingByGraphs(node->model, node->bases);
+  return result.verdict == Verdict::Interlocking && result.key == 0 ? std::move(node) : nullptr;
 }
 
 // The node's A_i interlocking by the LP test too, with P_1 as the only movable part. The DBG test
@@ -173,9 +175,15 @@ bool PlateJointPlanner::acceptable(const std::vector<PlanStep>& steps) const {
 // subtree below it, while designs it never prunes pay its cost at every node.
 bool PlateJointPlanner::heldByInequalities(const std::vector<PlanStep>& path) const {
   if (path.size() < 2) return true;
-  const Assembly model = jointModel(graph_, families_, path);
-  if (hasSquareNormalsOnly(model)) return true;
-  const InterlockingResult result = testInterlockingByInequalities(model, computeBaseDirections(model));
+  std::shared_ptr<const JointNodeModel> node = path.back().nodeModel;
+  if (!node) {
+    auto made = std::make_shared<JointNodeModel>();
+    made->model = jointModel(graph_, families_, path);
+    made->bases = computeBaseDirections(made->model);
+    node = std::move(made);
+  }
+  if (hasSquareNormalsOnly(node->model)) return true;
+  const InterlockingResult result = testInterlockingByInequalities(node->model, node->bases);
   return result.verdict == Verdict::Interlocking && result.key == 0;
 }
 
@@ -338,7 +346,10 @@ std::vector<PlanStep> PlateJointPlanner::childrenOf(const std::vector<PlanStep>&
   RankedCandidates candidates = rankedCandidatesOf(steps);
   std::vector<PlanStep> path = steps;
   std::vector<PlanStep> children;
-  while (std::optional<PlanStep> child = nextChild(&path, &candidates)) children.push_back(std::move(*child));
+  while (std::optional<PlanStep> child = nextChild(&path, &candidates)) {
+    child->nodeModel.reset();  // kept for the search's LP test on entering only
+    children.push_back(std::move(*child));
+  }
   return children;
 }
 
@@ -378,11 +389,12 @@ std::optional<PlanStep> PlateJointPlanner::nextChild(std::vector<PlanStep>* path
       if (candidates->window.empty()) break;
     }
     path->push_back(std::move(candidates->window[candidates->next++]));
-    const bool passes = acceptable(*path);
+    std::shared_ptr<const JointNodeModel> model = acceptedModel(*path);
     PlanStep child = std::move(path->back());
     path->pop_back();
-    if (passes) {
+    if (model) {
       ++candidates->accepted;
+      child.nodeModel = std::move(model);
       return child;
     }
   }

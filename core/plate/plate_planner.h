@@ -69,7 +69,9 @@ class PlateJointPlanner {
   void backjump(size_t prefixSize, std::vector<PlanStep>* path, std::vector<RankedCandidates>* pending) const;
 
  private:
-  bool acceptable(const std::vector<PlanStep>& steps) const;
+  bool acceptable(const std::vector<PlanStep>& steps) const { return acceptedModel(steps) != nullptr; }
+  // The node test's model of the node `steps` ends in when it passes, else null.
+  std::shared_ptr<const JointNodeModel> acceptedModel(const std::vector<PlanStep>& steps) const;
   std::vector<bool> cutPointsOfRest(const std::vector<bool>& taken) const;
   enum class NextStepStage;
   NextStepStage furthestStage(const std::vector<PlanStep>& path, int plate, const std::vector<bool>& isCutPoint,
