@@ -146,6 +146,24 @@ std::vector<std::pair<double, double>> throughStretches(const Plate& plate, cons
   return through;
 }
 
+// How far the plate's material in the other's slab (`trace`: both faces' traces) reaches past the
+// crossing's ends [from, to] (PlateContact::aOverhang): where past an end it has material across
+// the whole trace somewhere (its through stretch runs on), it does not taper there: infinite.
+std::array<double, 2> overhangsPast(const Plate& plate, const PlaneFrame& frame, const Vec3& point, const Vec3& line,
+                                    const SlabTrace& trace, double from, double to, double reach, double tolerance) {
+  const ClipperLib::Paths material = regionInStrip(plate.bottom, frame, point, line, trace.across,
+                                                   trace.from + tolerance / trace.rise, trace.to - tolerance / trace.rise, reach);
+  const std::vector<std::pair<double, double>> shadow = shadowOnLine(material, frame, point, line);
+  if (shadow.empty()) return {PlateContact::kNoTaper, PlateContact::kNoTaper};
+  std::array<double, 2> overhang{std::max(0.0, from - shadow.front().first), std::max(0.0, shadow.back().second - to)};
+  for (const auto& [start, end] : throughStretches(plate, frame, point, line, trace, reach, tolerance)) {
+    if (end < from - tolerance || start > to + tolerance) continue;  // another stretch than the crossing's
+    if (start < from - tolerance) overhang[0] = PlateContact::kNoTaper;
+    if (end > to + tolerance) overhang[1] = PlateContact::kNoTaper;
+  }
+  return overhang;
+}
+
 }  // namespace
 
 namespace geometry {
@@ -243,8 +261,8 @@ std::optional<PlateContact> slantedCrossing(const std::vector<Plate>& plates, in
   PlateContact crossing = crossingContact(p, q, line, point, from, to, std::max(inA.to - inA.from, inB.to - inB.from));
   crossing.aOpens = {shadowA.front().first >= from - tolerance, shadowA.back().second <= to + tolerance};
   crossing.bOpens = {shadowB.front().first >= from - tolerance, shadowB.back().second <= to + tolerance};
-  crossing.aOverhang = {std::max(0.0, from - shadowA.front().first), std::max(0.0, shadowA.back().second - to)};
-  crossing.bOverhang = {std::max(0.0, from - shadowB.front().first), std::max(0.0, shadowB.back().second - to)};
+  crossing.aOverhang = overhangsPast(a, frameA, point, line, inA, from, to, reach, tolerance);
+  crossing.bOverhang = overhangsPast(b, frameB, point, line, inB, from, to, reach, tolerance);
   return crossing;
 }
 
@@ -311,8 +329,8 @@ std::optional<PlateContact> plateCrossing(const std::vector<Plate>& plates, int 
   // A slot opens where the plate's material in the other's slab ends with the crossing.
   crossing.aOpens = {a0 >= from - tolerance, a1 <= to + tolerance};
   crossing.bOpens = {b0 >= from - tolerance, b1 <= to + tolerance};
-  crossing.aOverhang = {std::max(0.0, from - a0), std::max(0.0, a1 - to)};
-  crossing.bOverhang = {std::max(0.0, from - b0), std::max(0.0, b1 - to)};
+  crossing.aOverhang = overhangsPast(a, frameA, point, line, slabTrace(ta, ha, tb, hb), from, to, reach, tolerance);
+  crossing.bOverhang = overhangsPast(b, frameB, point, line, slabTrace(tb, hb, ta, ha), from, to, reach, tolerance);
   return crossing;
 }
 

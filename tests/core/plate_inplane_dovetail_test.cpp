@@ -21,6 +21,7 @@
 #include "desia/tolerances.h"
 #include "plate/joints/inplane_dovetail.h"
 #include "plate/joints/joint_families.h"
+#include "plate/joints/plate_cuts.h"
 #include "plate/plate_graph.h"
 #include "plate/swept_collision.h"
 #include "plate_test_support.h"
@@ -223,6 +224,24 @@ TEST(PlateInplaneDovetails, TheFamilyLetsEitherPlateOutOfTheSheetBothWaysOnly) {
   const std::optional<PlateJoint> across = families.jointFor(1, 0, {1, 0, 0});
   ASSERT_TRUE(across.has_value());
   EXPECT_EQ(across->type, JointType::Empty);
+  // The wood under the tab's root (a halved slot running out through that side there would
+  // leave the tab bridging it): a 1 mm strip inside the tab plate's side, as long as the root.
+  int strips = 0;
+  for (const CutFootprint& strip : families.footprints({*joint})) {
+    if (strip.kind != FootprintKind::UnderAddedPiece) continue;
+    ++strips;
+    const InplaneDovetailSite& site = pair.site;
+    EXPECT_EQ(strip.plate, site.tabPlate);
+    ASSERT_EQ(strip.region.size(), 4u);
+    const Vec3 outer = scaled(plus(strip.region[0], strip.region[1]), 0.5);
+    const Vec3 inner = scaled(plus(strip.region[2], strip.region[3]), 0.5);
+    EXPECT_NEAR(dot(minus(outer, inner), site.intoSocket), 1, 1e-9) << "1 mm in from the side";
+    EXPECT_NEAR(norm(minus(strip.region[1], strip.region[0])), site.root1 - site.root0, 1e-9);
+    const Vec3 lift{0, 0, kThickness / 2};
+    EXPECT_TRUE(testing::PlateInside(pair.plates[site.tabPlate]).contains(plus(scaled(plus(outer, inner), 0.5), lift)));
+    EXPECT_FALSE(testing::PlateInside(pair.plates[site.tabPlate]).contains(plus(plus(outer, scaled(site.intoSocket, 0.5)), lift)));
+  }
+  EXPECT_EQ(strips, 1);
 }
 
 // The TABLE (examples/plate/make_examples.py) with its left side panel in two halves, front and

@@ -6,6 +6,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -93,11 +94,14 @@ struct PlateContact {
   // Where a slot may open (the plate's outline ends at the crossing on that side): [0] towards
   // -edgeDirection, [1] towards +edgeDirection; for plate a and plate b.
   std::array<bool, 2> aOpens{false, false}, bOpens{false, false};
-  // How far each plate's material in the other's slab reaches past the crossing's ends (mm, 0
-  // where it ends with the crossing), [0] and [1] as for aOpens: a plate ending across the line
-  // at a slant (a rib bevelled to sit level on a chord) reaches past by a sliver that its slot,
-  // run on past the end, cuts away (halvedSlotsOpen).
-  std::array<double, 2> aOverhang{0, 0}, bOverhang{0, 0};
+  // How far each plate's material where the other's slab passes through it (both faces' traces)
+  // reaches past the crossing's ends where it only tapers there (mm; its outline crosses the slab
+  // at a slant, as a rib's end bevelled to sit level does: nowhere past the end has it material
+  // across the whole trace), [0] and [1] as for aOpens; infinite where it runs on across the
+  // whole trace (a square overshoot, where a slot would cut an empty notch) or is not known. A
+  // slot run on past the end cuts such a taper away (halvedSlotsOpen).
+  static constexpr double kNoTaper = std::numeric_limits<double>::infinity();
+  std::array<double, 2> aOverhang{kNoTaper, kNoTaper}, bOverhang{kNoTaper, kNoTaper};
 };
 
 // Checks every plate (planar faces, positive thickness, parallel matching faces, loops that do not

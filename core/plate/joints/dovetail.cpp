@@ -301,10 +301,12 @@ class DovetailFamily final : public JointFamily {
   void addFootprints(const PlateJoint& joint, std::vector<CutFootprint>& footprints) const override {
     const DovetailCut cut = cutOf(joint);
     footprints.push_back(dovetailFootprint(plates(), cut, options()));
-    // The tongue runs along the contact from the stop: the wood under all of the contact.
+    // The tongue runs along the contact from the stop to the open end: the wood under it.
     const TenonSite& edge = cut.site.edge;
+    const double stop = housingStop(plates(), edge, options().dovetail);
+    const double start = cut.openEnd == 1 ? edge.from + stop : edge.from, end = cut.openEnd == 1 ? edge.to : edge.to - stop;
     const Vec3& side = plates()[static_cast<size_t>(edge.tenonPlate)].bottom[0][static_cast<size_t>(edge.edge)];
-    footprints.push_back(woodUnderAddedPiece(edge.tenonPlate, side, edge.along, edge.intoMortise, edge.from, edge.to));
+    footprints.push_back(woodUnderAddedPiece(edge.tenonPlate, side, edge.along, edge.intoMortise, start, end));
   }
 
   void addCuts(const PlateJoint& joint, double, JointCutList& cuts) const override {

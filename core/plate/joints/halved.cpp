@@ -62,11 +62,11 @@ std::vector<SlotCut> halvedSlots(const std::vector<Plate>& plates, const PlateCo
   const Vec3& line = crossing.edgeDirection;
   const double sign = dot(d, line) > 0 ? 1 : -1;
   const double middle = (crossing.crossingFrom + crossing.crossingTo) / 2;
-  // Far enough past the crossing's ends to run out of the outline there (it ends with the
-  // crossing, or past it by at most the slot's width: halvedSlotsOpen).
-  const double out = std::max(crossing.crossingTo - crossing.crossingFrom,
-                              std::max(slotWidthOn(plates, crossing, crossing.a), slotWidthOn(plates, crossing, crossing.b))) +
-                     options.woodMargin;
+  // Far enough past the crossing's ends to run out of the outline there: it ends with the
+  // crossing, or tapers past it by at most the slot's width (halvedSlotsOpen), measured on the
+  // core prism of a plate with bevelled sides, whose faces may reach as far again.
+  const double widest = std::max(slotWidthOn(plates, crossing, crossing.a), slotWidthOn(plates, crossing, crossing.b));
+  const double out = std::max(crossing.crossingTo - crossing.crossingFrom, 2 * widest) + options.woodMargin;
   auto slot = [&](int plate, int across, double towards) {
     const Vec3 axis = plateThicknessAxis(plates[across]);
     const double width = plateThickness(plates[across]);

@@ -29,8 +29,8 @@ struct SlotCut {
 // line), so its slot runs from the middle of the crossing back out of its outline behind it, and
 // the other plate's from the middle out of its outline ahead; each as wide as the other plate is
 // thick plus options.clearance (at an angle: the other plate's slab, widened by half the
-// clearance on each side, where it meets this one), and run on options.woodMargin past the
-// crossing's end.
+// clearance on each side, where it meets this one), and run on past the crossing's end by the
+// crossing's length or twice the wider slot, whichever is more, and options.woodMargin.
 std::vector<SlotCut> halvedSlots(const std::vector<Plate>& plates, const PlateContact& crossing, int mover,
                                  const Vec3& d, const JointCutOptions& options);
 
@@ -49,9 +49,10 @@ bool needsSlantedNotchWalls(const std::vector<Plate>& plates, const PlateContact
 // Can the slots of a halved joint on `crossing` open so that `mover` leaves the other plate along
 // d (parallel to the crossing line)? The mover's slot opens behind it, the other plate's ahead,
 // so the mover's outline must end at the crossing behind it and the other's ahead of it: with
-// the crossing, or past it by no more than the slot is wide on that plate (an outline crossing
-// the slot 45 degrees or less off square, as a rib's end bevelled to sit level does), which the
-// slot, run on past the crossing's end (halvedSlots), cuts away.
+// the crossing, or tapering past it (PlateContact::aOverhang: crossing the slot at a slant, as a
+// rib's end bevelled to sit level does) by no more than the slot is wide on that plate, which
+// the slot, run on past the crossing's end (halvedSlots), cuts away. A plate running on past the
+// end square across the slot does not open there: a slot would cut an empty notch into it.
 bool halvedSlotsOpen(const std::vector<Plate>& plates, const PlateContact& crossing, int mover, const Vec3& d);
 
 // How wide the slot of `crossing` is on `plate` (square to the crossing line, in its plane): the

@@ -179,7 +179,10 @@ class InplaneDovetailFamily final : public JointFamily {
   }
 
   void addFootprints(const PlateJoint& joint, std::vector<CutFootprint>& footprints) const override {
-    footprints.push_back(inplaneDovetailFootprint(siteOf(joint), options()));
+    const InplaneDovetailSite& site = siteOf(joint);
+    footprints.push_back(inplaneDovetailFootprint(site, options()));
+    // The tab stands on the tab plate's side from root0 to root1: the wood under its root.
+    footprints.push_back(woodUnderAddedPiece(site.tabPlate, site.origin, site.along, site.intoSocket, site.root0, site.root1));
   }
 
   void addCuts(const PlateJoint& joint, double, JointCutList& cuts) const override {

@@ -206,9 +206,11 @@ class SlantedDovetailFamily final : public JointFamily {
   void addFootprints(const PlateJoint& joint, std::vector<CutFootprint>& footprints) const override {
     const SlantedDovetailCut cut = cutOf(joint);
     footprints.push_back(slantedDovetailFootprint(plates(), cut, options()));
-    // The tongue runs along the side from the stop: the wood under all of the side on the face.
+    // The tongue runs along the side from the stop to the open end: the wood under it.
     const SlantedSide& side = cut.site.side;
-    footprints.push_back(woodUnderAddedPiece(side.tenonPlate, side.origin[0], side.along, side.out, side.from, side.to));
+    const double start = cut.openEnd == 1 ? side.from + cut.site.stop : side.from;
+    const double end = cut.openEnd == 1 ? side.to : side.to - cut.site.stop;
+    footprints.push_back(woodUnderAddedPiece(side.tenonPlate, side.origin[0], side.along, side.out, start, end));
   }
 
   void addCuts(const PlateJoint& joint, double, JointCutList& cuts) const override {

@@ -280,8 +280,8 @@ class TenonFamily final : public JointFamily {
   }
 
   void addFootprints(const PlateJoint& joint, std::vector<CutFootprint>& footprints) const override {
-    for (CutFootprint& mortise : tenonFootprints(plates(), siteOf(joint), options()))
-      footprints.push_back(std::move(mortise));
+    for (CutFootprint& footprint : tenonFootprints(plates(), siteOf(joint), options()))
+      footprints.push_back(std::move(footprint));
   }
 
   void addCuts(const PlateJoint& joint, double, JointCutList& cuts) const override {

@@ -161,7 +161,9 @@ class ThroughSlotFamily final : public JointFamily {
 
   void addFootprints(const PlateJoint& joint, std::vector<CutFootprint>& footprints) const override {
     const ThroughSlotSite& site = siteOf(joint);
-    footprints.push_back({site.slotted, 3, throughSlotRegion(plates(), contact(joint.contact), site, options(), 0)});
+    // Open at an end, it runs out of the slotted plate's outline as a halved slot does.
+    footprints.push_back({site.slotted, 3, throughSlotRegion(plates(), contact(joint.contact), site, options(), 0),
+                          site.opens[0] || site.opens[1] ? FootprintKind::SlotRunningOut : FootprintKind::Cut});
   }
 
   void addCuts(const PlateJoint& joint, double clearance, JointCutList& cuts) const override {
