@@ -46,6 +46,7 @@ namespace {
 
 using inequality::certifiesMotion;
 using inequality::certifiesNoMotion;
+using inequality::coneNoMotionDuals;
 using inequality::DifferenceGraph;
 using inequality::differenceGraph;
 using inequality::graphCertifiesNoMotion;
@@ -89,6 +90,7 @@ struct MotionQuery {
   std::vector<bool> isWatched;
   bool exactOnly = false;  // skip the floating-point simplex (tests: the routes must agree)
   bool graphCertificates = true;  // let graph algorithms propose answers first (see below)
+  bool coneCertificates = true;   // let the cone search certify "no motion" of one part first
   // The contacts that touch a free part, in index order, when the caller knows them (round 1:
   // one part's own contacts, instead of a scan of every contact per part).
   const std::vector<int>* contacts = nullptr;
@@ -189,7 +191,7 @@ MotionSearch motionFrom(const Assembly& assembly, const MotionProgram& program, 
 }
 
 // Decides one motion program (see the file comment): graph certificates when the rows allow them,
-// then GLPK's dual simplex, then its primal simplex, each accepted only with a checked
+// a cone certificate of "no motion" when one part is free, then GLPK's dual simplex, then its primal simplex, each accepted only with a checked
 // certificate, then the exact rational simplex.
 MotionSearch decideMotionProgram(const Assembly& assembly, const MotionQuery& query, MotionProgram program,
                                  const DifferenceGraph* graph = nullptr) {
@@ -206,6 +208,11 @@ MotionSearch decideMotionProgram(const Assembly& assembly, const MotionQuery& qu
       decided.decidedByGraphs = true;
       return decided;
     }
+  }
+  if (query.coneCertificates && !query.exactOnly && coneNoMotionDuals(program.spec)) {
+    MotionSearch decided;
+    decided.decidedByCones = true;
+    return decided;
   }
   std::string failures;
   for (SimplexMethod method : {SimplexMethod::Dual, SimplexMethod::Primal}) {
@@ -240,13 +247,16 @@ MotionSearch findWatchedMotion(const Assembly& assembly, const MotionQuery& quer
   setObjective(&program, Objective::SeparatingContacts, 1.0);
   MotionSearch search = decideMotionProgram(assembly, query, program, graphOrNull);
   bool byGraphs = search.decidedByGraphs;
+  bool byCones = search.decidedByCones;
   for (double sign : {1.0, -1.0}) {
     if (search.movable) break;
     setObjective(&program, Objective::GenericFunctional, sign);
     search = decideMotionProgram(assembly, query, program, graphOrNull);
     byGraphs = byGraphs && search.decidedByGraphs;
+    byCones = byCones && search.decidedByCones;
   }
   search.decidedByGraphs = byGraphs;
+  search.decidedByCones = byCones;
   return search;
 }
 
@@ -337,7 +347,7 @@ InterlockingResult testWithCleanNormals(const Assembly& assembly, const std::vec
   const int key = movableAlone.empty() ? -1 : movableAlone[0];
   const int reference = key == 0 ? 1 : 0;
   MotionQuery query{std::vector<bool>(n, true), std::vector<bool>(n, true), options.exactOnly,
-                    options.graphCertificates};
+                    options.graphCertificates, options.coneCertificates};
   query.isFree[reference] = query.isWatched[reference] = false;
   if (key >= 0) query.isWatched[key] = false;
   const MotionSearch search = findWatchedMotion(assembly, query);
@@ -356,14 +366,14 @@ InterlockingResult testWithCleanNormals(const Assembly& assembly, const std::vec
 }  // namespace
 
 MotionSearch findFreeMotion(const Assembly& assembly, const std::vector<bool>& isFree, const InequalityOptions& options) {
-  MotionSearch search = findWatchedMotion(assembly, {isFree, isFree, options.exactOnly, options.graphCertificates});
+  MotionSearch search = findWatchedMotion(assembly, {isFree, isFree, options.exactOnly, options.graphCertificates, options.coneCertificates});
   if (search.velocities.empty()) search.velocities.assign(assembly.partCount(), Vec3{0, 0, 0});
   return search;
 }
 
 MotionSearch findMotionOfWatchedParts(const Assembly& assembly, const std::vector<bool>& isFree,
                                       const std::vector<bool>& isWatched, const InequalityOptions& options) {
-  MotionSearch search = findWatchedMotion(assembly, {isFree, isWatched, options.exactOnly, options.graphCertificates});
+  MotionSearch search = findWatchedMotion(assembly, {isFree, isWatched, options.exactOnly, options.graphCertificates, options.coneCertificates});
   if (search.velocities.empty()) search.velocities.assign(assembly.partCount(), Vec3{0, 0, 0});
   return search;
 }
@@ -378,7 +388,7 @@ PartsMovableAlone findPartsMovableAlone(const Assembly& assembly, const Inequali
   }
   PartsMovableAlone alone;
   MotionQuery query{std::vector<bool>(n, false), std::vector<bool>(n, false), options.exactOnly,
-                    options.graphCertificates};
+                    options.graphCertificates, options.coneCertificates};
   for (int i = 0; i < n && static_cast<int>(alone.parts.size()) < enough; ++i) {
     query.isFree[i] = query.isWatched[i] = true;
     query.contacts = &contactsOf[i];

@@ -2,6 +2,7 @@
 #include "analysis/motion_certificates.h"
 
 #include <algorithm>
+#include <array>
 #include <cfloat>
 #include <cmath>
 #include <cstdint>
@@ -298,6 +299,154 @@ bool graphCertifiesNoMotion(const DifferenceGraph& graph, const LinearProgramSpe
     if (up[node] != 0.0 || down[node] != 0.0) return false;  // no path to or from the ground
   }
   return dualBound(spec, y, 1.0) < kMotion;
+}
+
+}  // namespace desia::inequality
+
+// --- A certificate from cones ------------------------------------------------------------------
+
+namespace desia::inequality {
+namespace {
+
+using Row3 = std::array<double, 3>;
+
+double dot3(const Row3& a, const Row3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+Row3 cross3(const Row3& a, const Row3& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+double length3(const Row3& a) { return std::sqrt(dot3(a, a)); }
+
+// Beyond this many distinct row directions GLPK decides (the search below tries every triple).
+constexpr size_t kMaxConeDirections = 32;
+// Relative size under which a cross product or determinant counts as zero, and a multiplier that
+// rounding made slightly negative counts as zero; the certificate's check settles the rest.
+constexpr double kConeSingular = 1e-12;
+
+// The rows as dense 3-vectors, one per distinct direction (the first row of each), in row order.
+struct ConeRows {
+  std::vector<Row3> vectors;
+  std::vector<int> rows;
+};
+
+std::optional<ConeRows> distinctDirections(const LinearProgramSpec& spec) {
+  std::vector<Row3> dense(spec.rowCount(), Row3{0, 0, 0});
+  for (size_t k = 0; k < spec.entryValue.size(); ++k) dense[spec.entryRow[k]][spec.entryColumn[k]] += spec.entryValue[k];
+  ConeRows cone;
+  std::vector<Row3> units;
+  for (int r = 0; r < spec.rowCount(); ++r) {
+    const double length = length3(dense[r]);
+    if (length == 0.0) continue;
+    const Row3 unit{dense[r][0] / length, dense[r][1] / length, dense[r][2] / length};
+    bool seen = false;
+    for (const Row3& other : units) {
+      seen = seen || (std::abs(unit[0] - other[0]) < kConeSingular && std::abs(unit[1] - other[1]) < kConeSingular &&
+                      std::abs(unit[2] - other[2]) < kConeSingular);
+    }
+    if (seen) continue;
+    if (units.size() == kMaxConeDirections) return std::nullopt;
+    units.push_back(unit);
+    cone.vectors.push_back(dense[r]);
+    cone.rows.push_back(r);
+  }
+  return cone;
+}
+
+// Multipliers of one, two or three of the directions that combine them into the target, all >= 0.
+struct ConeCombination {
+  std::array<int, 3> members{-1, -1, -1};  // indices into ConeRows, -1 unused
+  std::array<double, 3> weights{0, 0, 0};
+};
+
+bool nonNegative(double weight, double scale) { return weight >= -kConeSingular * scale; }
+
+std::optional<ConeCombination> single(const ConeRows& cone, const Row3& target, int i) {
+  const Row3& a = cone.vectors[i];
+  const double along = dot3(a, target);
+  if (along <= 0 || length3(cross3(a, target)) > kConeSingular * length3(a) * length3(target)) return std::nullopt;
+  ConeCombination combination;
+  combination.members[0] = i;
+  combination.weights[0] = along / dot3(a, a);
+  return combination;
+}
+
+// target = y_i a_i + y_j a_j, solved in the plane of a_i and a_j (target must lie in it).
+std::optional<ConeCombination> pair(const ConeRows& cone, const Row3& target, int i, int j) {
+  const Row3& a = cone.vectors[i];
+  const Row3& b = cone.vectors[j];
+  const Row3 normal = cross3(a, b);
+  const double normalSquared = dot3(normal, normal);
+  const double scale = length3(a) * length3(b);
+  if (std::sqrt(normalSquared) <= kConeSingular * scale) return std::nullopt;
+  if (std::abs(dot3(target, normal)) > kConeSingular * length3(target) * std::sqrt(normalSquared)) return std::nullopt;
+  const double yi = dot3(cross3(target, b), normal) / normalSquared;
+  const double yj = dot3(cross3(a, target), normal) / normalSquared;
+  if (!nonNegative(yi, 1.0) || !nonNegative(yj, 1.0)) return std::nullopt;
+  ConeCombination combination;
+  combination.members = {i, j, -1};
+  combination.weights = {std::max(0.0, yi), std::max(0.0, yj), 0.0};
+  return combination;
+}
+
+// target = y_i a_i + y_j a_j + y_k a_k by Cramer's rule.
+std::optional<ConeCombination> triple(const ConeRows& cone, const Row3& target, int i, int j, int k) {
+  const Row3& a = cone.vectors[i];
+  const Row3& b = cone.vectors[j];
+  const Row3& c = cone.vectors[k];
+  const Row3 bc = cross3(b, c);
+  const double determinant = dot3(a, bc);
+  if (std::abs(determinant) <= kConeSingular * length3(a) * length3(b) * length3(c)) return std::nullopt;
+  const double yi = dot3(target, bc) / determinant;
+  const double yj = dot3(target, cross3(c, a)) / determinant;
+  const double yk = dot3(target, cross3(a, b)) / determinant;
+  if (!nonNegative(yi, 1.0) || !nonNegative(yj, 1.0) || !nonNegative(yk, 1.0)) return std::nullopt;
+  ConeCombination combination;
+  combination.members = {i, j, k};
+  combination.weights = {std::max(0.0, yi), std::max(0.0, yj), std::max(0.0, yk)};
+  return combination;
+}
+
+// The combination as row duals of the whole program, when they certify no motion.
+std::optional<std::vector<double>> certifiedDuals(const LinearProgramSpec& spec, const ConeRows& cone,
+                                                  const std::optional<ConeCombination>& combination) {
+  if (!combination) return std::nullopt;
+  std::vector<double> y(spec.rowCount(), 0.0);
+  for (int m = 0; m < 3; ++m) {
+    if (combination->members[m] >= 0) y[cone.rows[combination->members[m]]] = combination->weights[m];
+  }
+  if (!certifiesNoMotion(spec, y)) return std::nullopt;
+  return y;
+}
+
+}  // namespace
+
+std::optional<std::vector<double>> coneNoMotionDuals(const LinearProgramSpec& spec) {
+  if (spec.columnCount() == 0 || spec.columnCount() > 3) return std::nullopt;
+  const std::optional<ConeRows> cone = distinctDirections(spec);
+  if (!cone) return std::nullopt;
+  Row3 target{0, 0, 0};  // -c
+  for (int j = 0; j < spec.columnCount(); ++j) target[j] = -spec.objective[j];
+  if (length3(target) == 0.0) {
+    std::vector<double> zero(spec.rowCount(), 0.0);
+    if (certifiesNoMotion(spec, zero)) return zero;
+    return std::nullopt;
+  }
+  const int n = static_cast<int>(cone->vectors.size());
+  for (int i = 0; i < n; ++i) {
+    if (auto y = certifiedDuals(spec, *cone, single(*cone, target, i))) return y;
+  }
+  for (int i = 0; i < n; ++i) {
+    for (int j = i + 1; j < n; ++j) {
+      if (auto y = certifiedDuals(spec, *cone, pair(*cone, target, i, j))) return y;
+    }
+  }
+  for (int i = 0; i < n; ++i) {
+    for (int j = i + 1; j < n; ++j) {
+      for (int k = j + 1; k < n; ++k) {
+        if (auto y = certifiedDuals(spec, *cone, triple(*cone, target, i, j, k))) return y;
+      }
+    }
+  }
+  return std::nullopt;
 }
 
 }  // namespace desia::inequality

@@ -57,4 +57,13 @@ std::optional<std::vector<double>> graphMotion(const DifferenceGraph& graph, con
 // A flow certifying that the objective stays below kMotion, checked by the dual bound.
 bool graphCertifiesNoMotion(const DifferenceGraph& graph, const LinearProgramSpec& spec);
 
+// --- A certificate from cones: programs of one free part ---------------------------------------
+//
+// Row multipliers y >= 0 for a program of at most three columns (one part free, the rest fixed:
+// round 1 of the test, where every part but the key is blocked), with c + Aᵀy = 0 up to rounding,
+// or nothing. By Carathéodory's theorem -c lies in the cone of the rows exactly when it lies in the
+// cone of at most three independent ones, so the search tries the rows' distinct directions one,
+// two and three at a time. The caller checks the result with certifiesNoMotion, as GLPK's duals.
+std::optional<std::vector<double>> coneNoMotionDuals(const LinearProgramSpec& spec);
+
 }  // namespace desia::inequality

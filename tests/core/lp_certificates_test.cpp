@@ -3,7 +3,8 @@
 // programs whose rows are difference constraints (axis-aligned contacts), graph algorithms propose
 // each program's answer and the same checks as for GLPK's answers accept it. Each test runs the
 // shortcut and GLPK alone on the same input and requires the same answers, and that the shortcut
-// really decided (so that a silent fallback to GLPK cannot make these tests pass vacuously).
+// really decided (so that a silent fallback to GLPK cannot make these tests pass vacuously). The
+// cone certificates of one free part (InequalityOptions::coneCertificates) are tested at the end.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -13,6 +14,8 @@
 #include <string>
 
 #include "desia/analysis.h"
+#include "desia/plate.h"
+#include "plate_test_support.h"
 #include "test_support.h"
 
 namespace desia {
@@ -21,6 +24,7 @@ namespace {
 InequalityOptions glpkAlone() {
   InequalityOptions options;
   options.graphCertificates = false;
+  options.coneCertificates = false;
   return options;
 }
 
@@ -271,5 +275,141 @@ TEST(GraphCertificates, OtherNormalsStayWithGlpk) {
   EXPECT_EQ(std::abs(axisAligned.velocities[1][0]), 1.0);
 }
 
+
+// --- Cone certificates (InequalityOptions::coneCertificates) -----------------------------------
+//
+// One free part among fixed ones: its "no motion" found as -c in the cone of at most three contact
+// rows. Each test compares with GLPK alone and with the exact rational simplex, and counts the
+// programs the cones really decided, so that a silent fallback cannot make it pass.
+
+InequalityOptions exactAlone() {
+  InequalityOptions options;
+  options.exactOnly = true;
+  return options;
+}
+
+Vec3 turned(const std::array<Vec3, 3>& r, const Vec3& v) {
+  return {r[0][0] * v[0] + r[0][1] * v[1] + r[0][2] * v[2], r[1][0] * v[0] + r[1][1] * v[1] + r[1][2] * v[2],
+          r[2][0] * v[0] + r[2][1] * v[1] + r[2][2] * v[2]};
+}
+
+Vec3 unitVector(std::mt19937& random) {
+  std::normal_distribution<double> normal(0.0, 1.0);
+  Vec3 v{normal(random), normal(random), normal(random)};
+  const double length = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+  return {v[0] / length, v[1] / length, v[2] / length};
+}
+
+// Part 2 among contacts with the fixed part 1: random normals, some sets flat (a sliding motion
+// normal to their plane), some with opposite pairs (a slot), repeated rows, either part as `a`.
+Assembly randomlyHeldPart(std::mt19937& random, int variant) {
+  Assembly assembly;
+  assembly.parts = {{1, ""}, {2, ""}};
+  const int count = 1 + static_cast<int>(random() % 9);
+  for (int k = 0; k < count; ++k) {
+    Vec3 n = unitVector(random);
+    if (variant % 4 == 1) {  // flat: every normal in the plane z = 0
+      const double length = std::hypot(n[0], n[1]);
+      n = {n[0] / length, n[1] / length, 0.0};
+    }
+    const bool partTwoIsB = random() % 2 == 0;
+    // A contact's normal points from a into b: part 2 may not move against it as b, along it as a.
+    assembly.contacts.push_back(partTwoIsB ? Contact{0, 1, n, 1} : Contact{1, 0, {-n[0], -n[1], -n[2]}, 1});
+    if (variant % 4 == 2) assembly.contacts.push_back({0, 1, {-n[0], -n[1], -n[2]}, 1});  // its opposite too
+    if (variant % 4 == 3) assembly.contacts.push_back(assembly.contacts.back());           // the same row twice
+  }
+  return assembly;
+}
+
+TEST(ConeCertificates, OnePartAmongRandomNormalsAnswersAsGlpkAndTheExactSimplex) {
+  std::mt19937 random(2026);
+  int blocked = 0, decidedByCones = 0, movable = 0;
+  for (int variant = 0; variant < 400; ++variant) {
+    const Assembly assembly = randomlyHeldPart(random, variant);
+    const std::vector<bool> isFree{false, true};
+    const std::string what = "variant " + std::to_string(variant);
+    const MotionSearch withCones = findFreeMotion(assembly, isFree);
+    const MotionSearch byGlpk = findFreeMotion(assembly, isFree, glpkAlone());
+    const MotionSearch exact = findFreeMotion(assembly, isFree, exactAlone());
+    ASSERT_EQ(withCones.movable, byGlpk.movable) << what;
+    ASSERT_EQ(withCones.movable, exact.movable) << what;
+    EXPECT_FALSE(byGlpk.decidedByCones) << what;
+    if (withCones.movable) {
+      EXPECT_FALSE(withCones.decidedByCones) << what;  // cones only ever certify "no motion"
+      ExpectValidMotion(assembly, isFree, withCones, what);
+      ++movable;
+    } else {
+      ++blocked;
+      decidedByCones += withCones.decidedByCones ? 1 : 0;
+    }
+  }
+  // Both answers are common, and the cones settle nearly every blocked part (a cone too thin to
+  // certify within the tolerance is left to GLPK).
+  EXPECT_GE(blocked, 80);
+  EXPECT_GE(movable, 80);
+  EXPECT_GE(decidedByCones, blocked * 9 / 10);
+  std::cout << "[          ] " << blocked << " blocked (" << decidedByCones << " by cones), " << movable << " movable\n";
+}
+
+TEST(ConeCertificates, ATetrahedronsFourNormalsHoldItUnderAnyRotationAndThreeDoNot) {
+  // Four normals pointing out of a regular tetrahedron's faces span space positively: the part is
+  // held. Drop one and it can leave. Turned as a modelling tool would, both stay so.
+  const double s = 1 / std::sqrt(3.0);
+  const std::vector<Vec3> faces{{s, s, s}, {s, -s, -s}, {-s, s, -s}, {-s, -s, s}};
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> angle(-3.14159, 3.14159);
+  for (int turn = 0; turn < 50; ++turn) {
+    const std::array<Vec3, 3> r = testing::rotation(angle(random), angle(random), angle(random));
+    for (size_t kept = 3; kept <= 4; ++kept) {
+      Assembly assembly;
+      assembly.parts = {{1, ""}, {2, ""}};
+      for (size_t k = 0; k < kept; ++k) assembly.contacts.push_back({0, 1, turned(r, faces[k]), 1});
+      const MotionSearch search = findFreeMotion(assembly, {false, true});
+      const std::string what = "turn " + std::to_string(turn) + ", " + std::to_string(kept) + " faces";
+      EXPECT_EQ(search.movable, kept == 3) << what;
+      EXPECT_EQ(search.decidedByCones, kept == 4) << what;
+      EXPECT_EQ(findFreeMotion(assembly, {false, true}, glpkAlone()).movable, kept == 3) << what;
+    }
+  }
+}
+
+TEST(ConeCertificates, JointedSlantedPlatesKeepEveryRoundOneAnswerAndVerdict) {
+  // The contacts of jointed plates leaning 15 degrees and at 41.8 degrees (slanted dovetails,
+  // tenons, step tenons): every part alone with and without cones, then the whole test, as
+  // designed and turned.
+  int programs = 0, decidedByCones = 0;
+  for (const char* name : {"leaning_box.json", "slanted_box.json"}) {
+    const AssemblyDocument input = testing::loadPlateExample(name);
+    PlateDesignOptions options;
+    options.realization = JointRealization::Milled;
+    const PlateDesignResult design = designPlateJoints(input.plates, computePlateContacts(input.plates, {}), options);
+    ASSERT_EQ(design.status, DesignStatus::Success) << name << ": " << design.message;
+    Assembly turnedAssembly = design.jointAssembly;
+    const std::array<Vec3, 3> r = testing::rotation(0.3, -1.1, 2.0);
+    for (Contact& contact : turnedAssembly.contacts) contact.normal = turned(r, contact.normal);
+    for (const Assembly& assembly : {withCleanedNormals(design.jointAssembly), withCleanedNormals(turnedAssembly)}) {
+      const int n = assembly.partCount();
+      for (int i = 0; i < n; ++i) {
+        std::vector<bool> isFree(n, false);
+        isFree[i] = true;
+        const MotionSearch withCones = findFreeMotion(assembly, isFree);
+        const MotionSearch byGlpk = findFreeMotion(assembly, isFree, glpkAlone());
+        EXPECT_EQ(withCones.movable, byGlpk.movable) << name << ", part " << assembly.parts[i].id;
+        decidedByCones += withCones.decidedByCones ? 1 : 0;
+        ++programs;
+      }
+      const InterlockingResult withCones = testInterlockingByInequalities(assembly, computeBaseDirections(assembly));
+      const InterlockingResult byGlpk =
+          testInterlockingByInequalities(assembly, computeBaseDirections(assembly), glpkAlone());
+      EXPECT_EQ(verdictName(withCones.verdict), verdictName(byGlpk.verdict)) << name;
+      EXPECT_EQ(withCones.verdict, Verdict::Interlocking) << name << ": " << withCones.reason;
+      EXPECT_EQ(withCones.key, byGlpk.key) << name;
+      EXPECT_EQ(withCones.reason, byGlpk.reason) << name;
+    }
+  }
+  // Every part but the key is blocked in an interlocking assembly.
+  EXPECT_GE(decidedByCones, programs * 3 / 4);
+  std::cout << "[          ] " << programs << " one-part programs, " << decidedByCones << " decided by cones\n";
+}
 }  // namespace
 }  // namespace desia

@@ -601,7 +601,9 @@ std::map<std::string, int> checkWoodUnderPieces(const std::vector<Plate>& plates
       const Vec3 past = plus(plus(outer, scaled(normalized(outward), 0.5)), lift);
       EXPECT_TRUE(testing::PlateInside(plates[strip.plate]).contains(inside)) << type;
       EXPECT_FALSE(testing::PlateInside(plates[strip.plate]).contains(past)) << type;
-      if (square) EXPECT_TRUE(testing::PlateInside(result.jointedPlates[strip.plate]).contains(past)) << type;
+      if (square) {
+        EXPECT_TRUE(testing::PlateInside(result.jointedPlates[strip.plate]).contains(past)) << type;
+      }
       ++checked[type];
     }
   }

@@ -115,6 +115,11 @@ struct InequalityOptions {
   // motion" by the dual bound), GLPK deciding as before whenever none checks. Same verdicts, much
   // less time on large voxel assemblies; off only to compare with GLPK alone (tests).
   bool graphCertificates = true;
+  // Let a search of the contact normals' cones certify "no motion" for a program of one free part
+  // (round 1, where every part but the key is blocked): -c as a non-negative combination of at
+  // most three rows, checked by the same dual bound as GLPK's duals, GLPK deciding whenever none
+  // is found. Same verdicts; off only to compare with GLPK alone (tests).
+  bool coneCertificates = true;
 };
 InterlockingResult testInterlockingByInequalities(const Assembly& assembly);
 InterlockingResult testInterlockingByInequalities(const Assembly& assembly, const std::vector<BaseDirection>& directions,
@@ -127,6 +132,9 @@ struct MotionSearch {
   // Every program of the search was settled by a certificate built from graphs (see
   // InequalityOptions::graphCertificates), not by GLPK. For tests: it shows the shortcut applied.
   bool decidedByGraphs = false;
+  // Every program of the search was settled by a cone certificate (InequalityOptions::
+  // coneCertificates): the free part is blocked, and GLPK never ran. For tests.
+  bool decidedByCones = false;
 };
 // Is there a non-zero motion of the parts flagged free (the others fixed) that violates no contact?
 // Expects clean normals (cleanedNormal; every reader makes them so), unlike the whole test above.
