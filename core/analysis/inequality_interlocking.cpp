@@ -194,7 +194,7 @@ MotionSearch motionFrom(const Assembly& assembly, const MotionProgram& program, 
 // a cone certificate of "no motion" when one part is free, then GLPK's dual simplex, then its primal simplex, each accepted only with a checked
 // certificate, then the exact rational simplex.
 MotionSearch decideMotionProgram(const Assembly& assembly, const MotionQuery& query, MotionProgram program,
-                                 const DifferenceGraph* graph = nullptr) {
+                                 const DifferenceGraph* graph, LinearProgramBasis* basis) {
   const MotionSearch none;  // no velocities: findFreeMotion fills in the zeros
   if (program.spec.columnCount() == 0) return none;
   if (graph && !query.exactOnly) {
@@ -217,7 +217,10 @@ MotionSearch decideMotionProgram(const Assembly& assembly, const MotionQuery& qu
   std::string failures;
   for (SimplexMethod method : {SimplexMethod::Dual, SimplexMethod::Primal}) {
     if (query.exactOnly) break;
-    LinearProgramSolution solution = solveLinearProgram(program.spec, method);
+    const bool warm = method == SimplexMethod::Dual && !basis->empty();
+    LinearProgramSolution solution =
+        warm ? solveLinearProgramFrom(program.spec, method, *basis) : solveLinearProgram(program.spec, method);
+    if (method == SimplexMethod::Dual && !solution.basis.empty()) *basis = solution.basis;
     if (!solution.optimal) {
       failures += (failures.empty() ? "" : "; ") + solution.failure;
       continue;
@@ -245,13 +248,15 @@ MotionSearch findWatchedMotion(const Assembly& assembly, const MotionQuery& quer
   if (query.graphCertificates && !query.exactOnly) graph = differenceGraph(program.spec);
   const DifferenceGraph* graphOrNull = graph ? &*graph : nullptr;
   setObjective(&program, Objective::SeparatingContacts, 1.0);
-  MotionSearch search = decideMotionProgram(assembly, query, program, graphOrNull);
+  // The three programs share their rows: each GLPK solve starts from the last one's basis.
+  LinearProgramBasis basis;
+  MotionSearch search = decideMotionProgram(assembly, query, program, graphOrNull, &basis);
   bool byGraphs = search.decidedByGraphs;
   bool byCones = search.decidedByCones;
   for (double sign : {1.0, -1.0}) {
     if (search.movable) break;
     setObjective(&program, Objective::GenericFunctional, sign);
-    search = decideMotionProgram(assembly, query, program, graphOrNull);
+    search = decideMotionProgram(assembly, query, program, graphOrNull, &basis);
     byGraphs = byGraphs && search.decidedByGraphs;
     byCones = byCones && search.decidedByCones;
   }

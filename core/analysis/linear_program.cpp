@@ -26,6 +26,10 @@ struct GlpkRun {
   int nonZeros = 0;
   double* columnValues = nullptr;
   double* rowDuals = nullptr;
+  const int* startRowStatus = nullptr;     // a basis to start from, or null
+  const int* startColumnStatus = nullptr;
+  int* rowStatus = nullptr;                // the final basis (floating-point methods)
+  int* columnStatus = nullptr;
   int returnCode = 0;
   int solutionStatus = 0;
   double objectiveValue = 0;
@@ -68,6 +72,12 @@ void runGlpk(GlpkRun* run) {
 
   glp_smcp parameters;
   initParameters(&parameters, spec, run->method);
+  if (run->startRowStatus) {
+    for (int r = 0; r < rows; ++r) glp_set_row_stat(problem, r + 1, run->startRowStatus[r]);
+    for (int j = 0; j < columns; ++j) glp_set_col_stat(problem, j + 1, run->startColumnStatus[j]);
+    parameters.meth = GLP_PRIMAL;
+    parameters.presolve = GLP_OFF;
+  }
   if (run->method == SimplexMethod::ExactRational) {
     // Start the rational simplex from the floating-point one's basis: usually optimal already,
     // so the exact run only confirms it. glp_exact needs at least one row.
@@ -88,6 +98,10 @@ void runGlpk(GlpkRun* run) {
   run->objectiveValue = glp_get_obj_val(problem);
   for (int j = 0; j < columns; ++j) run->columnValues[j] = glp_get_col_prim(problem, j + 1);
   for (int r = 0; r < rows; ++r) run->rowDuals[r] = glp_get_row_dual(problem, r + 1);
+  if (run->rowStatus) {
+    for (int r = 0; r < rows; ++r) run->rowStatus[r] = glp_get_row_stat(problem, r + 1);
+    for (int j = 0; j < columns; ++j) run->columnStatus[j] = glp_get_col_stat(problem, j + 1);
+  }
   glp_delete_prob(problem);
 }
 
@@ -120,7 +134,8 @@ const char* returnCodeName(int code) {
   }
 }
 
-LinearProgramSolution solveWhole(const LinearProgramSpec& spec, SimplexMethod method) {
+LinearProgramSolution solveWhole(const LinearProgramSpec& spec, SimplexMethod method,
+                                 const LinearProgramBasis* start = nullptr) {
   LinearProgramSolution solution;
   solution.columnValues.assign(spec.columnCount(), 0.0);
   solution.rowDuals.assign(spec.rowCount(), 0.0);
@@ -145,6 +160,16 @@ LinearProgramSolution solveWhole(const LinearProgramSpec& spec, SimplexMethod me
   run.nonZeros = static_cast<int>(ar.size()) - 1;
   run.columnValues = solution.columnValues.data();
   run.rowDuals = solution.rowDuals.data();
+  if (start) {
+    run.startRowStatus = start->rowStatus.data();
+    run.startColumnStatus = start->columnStatus.data();
+  }
+  if (method != SimplexMethod::ExactRational) {
+    solution.basis.rowStatus.assign(spec.rowCount(), 0);
+    solution.basis.columnStatus.assign(spec.columnCount(), 0);
+    run.rowStatus = solution.basis.rowStatus.data();
+    run.columnStatus = solution.basis.columnStatus.data();
+  }
   if (!runGlpkGuarded(&run)) {
     solution.failure = "GLPK reported an error";
     return solution;
@@ -160,6 +185,11 @@ LinearProgramSolution solveWhole(const LinearProgramSpec& spec, SimplexMethod me
   solution.optimal = true;
   solution.objectiveValue = run.objectiveValue;
   return solution;
+}
+
+bool fitsProgram(const LinearProgramBasis& basis, const LinearProgramSpec& spec) {
+  return static_cast<int>(basis.rowStatus.size()) == spec.rowCount() &&
+         static_cast<int>(basis.columnStatus.size()) == spec.columnCount();
 }
 
 // --- Independent blocks ------------------------------------------------------------------------
@@ -277,6 +307,17 @@ LinearProgramSolution solveLinearProgram(const LinearProgramSpec& spec, SimplexM
   }
   whole.optimal = true;
   return whole;
+}
+
+LinearProgramSolution solveLinearProgramFrom(const LinearProgramSpec& spec, SimplexMethod method,
+                                             const LinearProgramBasis& start) {
+  if (method == SimplexMethod::ExactRational || !fitsProgram(start, spec) || independentBlocks(spec).size() > 1) {
+    return solveLinearProgram(spec, method);
+  }
+  LinearProgramSolution warm = solveWhole(spec, method, &start);
+  warm.fromBasis = true;
+  if (warm.optimal) return warm;
+  return solveLinearProgram(spec, method);
 }
 
 }  // namespace desia

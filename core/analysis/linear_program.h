@@ -36,17 +36,32 @@ enum class SimplexMethod {
   ExactRational  // GLPK's exact simplex in rational arithmetic (glp_exact) on the double data
 };
 
+// A simplex basis as plain data (GLPK's status of each row and column), to start another solve of
+// the same rows from it.
+struct LinearProgramBasis {
+  std::vector<int> rowStatus, columnStatus;
+  bool empty() const { return rowStatus.empty() && columnStatus.empty(); }
+};
+
 struct LinearProgramSolution {
   bool optimal = false;       // an optimum was found; otherwise `failure` says why
   std::string failure;
   double objectiveValue = 0;
   std::vector<double> columnValues;
   std::vector<double> rowDuals;  // GLPK's row duals (for a maximization, <= 0 on active lower bounds)
+  LinearProgramBasis basis;      // the final basis (programs solved whole by floating point only)
+  bool fromBasis = false;        // solved from the given basis (solveLinearProgramFrom), not from scratch
 };
 
 // Solves with a deterministic iteration limit that grows with the program's size and a wall-clock
 // backstop. GLPK's own fatal errors (it calls abort() after printing) are caught through its
 // error hook and come back as a failure; its environment is then reset.
 LinearProgramSolution solveLinearProgram(const LinearProgramSpec& spec, SimplexMethod method);
+// The same, started from `start`, the optimal basis of the same rows and bounds under another
+// objective: still primal feasible, so the primal simplex goes on from it without the presolver
+// (which would discard it). A program split into blocks, or a basis GLPK cannot factorize, is
+// solved from scratch by `method` instead.
+LinearProgramSolution solveLinearProgramFrom(const LinearProgramSpec& spec, SimplexMethod method,
+                                             const LinearProgramBasis& start);
 
 }  // namespace desia

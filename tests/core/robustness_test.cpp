@@ -455,5 +455,62 @@ TEST(LinearProgramGuard, AProgramOfIndependentBlocksIsSolvedOptimallyAsAWhole) {
   }
 }
 
+// Motion-like programs (rows of a few entries >= 0, velocities in [-1, 1]) solved for one objective,
+// then for another from the first one's basis: the same optimum as a solve from scratch. A basis
+// of the wrong size, every row and column declared basic (too many basic variables), or a status
+// GLPK does not know: solved from scratch instead, still optimal.
+TEST(LinearProgramGuard, ASolveFromAnotherObjectivesBasisReachesTheSameOptimum) {
+  std::mt19937 random(27);
+  std::uniform_real_distribution<double> weight(-1.0, 1.0);
+  int warmStarts = 0;
+  for (int trial = 0; trial < 60; ++trial) {
+    LinearProgramSpec spec;
+    const int columns = 6 + trial % 30, rows = 3 * columns;
+    for (int j = 0; j < columns; ++j) spec.addColumn(-1, 1, weight(random));
+    for (int r = 0; r < rows; ++r) {
+      spec.rowLower.push_back(0.0);
+      for (int k = 0; k < 3; ++k) spec.addEntry(r, (r + 7 * k * (trial + 1)) % columns + 0 * k, k == 0 ? weight(random) : 0.0);
+      spec.addEntry(r, (r * 5 + 1) % columns, weight(random));
+    }
+    // Remove duplicate (row, column) entries, which GLPK refuses.
+    std::set<std::pair<int, int>> seen;
+    LinearProgramSpec clean;
+    clean.columnLower = spec.columnLower, clean.columnUpper = spec.columnUpper, clean.objective = spec.objective;
+    clean.rowLower = spec.rowLower;
+    for (size_t k = 0; k < spec.entryValue.size(); ++k) {
+      if (seen.insert({spec.entryRow[k], spec.entryColumn[k]}).second)
+        clean.addEntry(spec.entryRow[k], spec.entryColumn[k], spec.entryValue[k]);
+    }
+    const LinearProgramSolution first = solveLinearProgram(clean, SimplexMethod::Dual);
+    ASSERT_TRUE(first.optimal) << first.failure;
+    ASSERT_EQ(first.basis.rowStatus.size(), static_cast<size_t>(clean.rowCount()));
+    for (double& c : clean.objective) c = weight(random);
+    const LinearProgramSolution cold = solveLinearProgram(clean, SimplexMethod::Dual);
+    ASSERT_TRUE(cold.optimal) << cold.failure;
+    LinearProgramBasis wrongSize = first.basis;
+    wrongSize.rowStatus.pop_back();
+    LinearProgramBasis allBasic = first.basis;
+    std::fill(allBasic.rowStatus.begin(), allBasic.rowStatus.end(), 1);  // GLP_BS
+    std::fill(allBasic.columnStatus.begin(), allBasic.columnStatus.end(), 1);
+    LinearProgramBasis unknown = first.basis;
+    unknown.columnStatus[0] = 99;
+    for (const LinearProgramBasis* start : std::array<const LinearProgramBasis*, 4>{&first.basis, &wrongSize, &allBasic, &unknown}) {
+      const LinearProgramSolution warm = solveLinearProgramFrom(clean, SimplexMethod::Dual, *start);
+      ASSERT_TRUE(warm.optimal) << "trial " << trial << ": " << warm.failure;
+      if (start == &first.basis) {
+        warmStarts += warm.fromBasis ? 1 : 0;
+      } else if (start != &unknown) {  // an unknown status may be corrected by GLPK
+        EXPECT_FALSE(warm.fromBasis) << "trial " << trial;
+      }
+      EXPECT_NEAR(warm.objectiveValue, cold.objectiveValue, 1e-9) << "trial " << trial;
+      std::vector<double> rowValue(clean.rowCount(), 0.0);
+      for (size_t k = 0; k < clean.entryValue.size(); ++k)
+        rowValue[clean.entryRow[k]] += clean.entryValue[k] * warm.columnValues[clean.entryColumn[k]];
+      for (int r = 0; r < clean.rowCount(); ++r) ASSERT_GE(rowValue[r], -1e-9) << "trial " << trial << ", row " << r;
+    }
+  }
+  EXPECT_EQ(warmStarts, 60);
+}
+
 }  // namespace
 }  // namespace desia
