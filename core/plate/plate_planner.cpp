@@ -148,10 +148,15 @@ bool PlateJointPlanner::cutsCollide(const NodeFacts& node, const std::vector<Cut
 
 // A_1: the key is free along d_1 and along no other base direction of its joints. A_i (i >= 2):
 // interlocking with P_1 as the only movable part (the DBG test on the joint contacts; heldByInequalities adds the LP test).
-std::shared_ptr<const JointNodeModel> PlateJointPlanner::acceptedModel(const std::vector<PlanStep>& steps) const {
+std::shared_ptr<JointNodeModel> PlateJointPlanner::nodeModelOf(const std::vector<PlanStep>& steps) const {
   auto node = std::make_shared<JointNodeModel>();
   node->model = jointModel(graph_, families_, steps);
   node->bases = computeBaseDirections(node->model);
+  return node;
+}
+
+std::shared_ptr<const JointNodeModel> PlateJointPlanner::acceptedModel(const std::vector<PlanStep>& steps) const {
+  std::shared_ptr<JointNodeModel> node = nodeModelOf(steps);
   if (steps.size() == 1) {
     for (const BaseDirection& base : node->bases) {
       for (const Vec3& d : {base.vector, negated(base.vector)}) {
@@ -176,12 +181,7 @@ std::shared_ptr<const JointNodeModel> PlateJointPlanner::acceptedModel(const std
 bool PlateJointPlanner::heldByInequalities(const std::vector<PlanStep>& path) const {
   if (path.size() < 2) return true;
   std::shared_ptr<const JointNodeModel> node = path.back().nodeModel;
-  if (!node) {
-    auto made = std::make_shared<JointNodeModel>();
-    made->model = jointModel(graph_, families_, path);
-    made->bases = computeBaseDirections(made->model);
-    node = std::move(made);
-  }
+  if (!node) node = nodeModelOf(path);
   if (hasSquareNormalsOnly(node->model)) return true;
   const InterlockingResult result = testInterlockingByInequalities(node->model, node->bases);
   return result.verdict == Verdict::Interlocking && result.key == 0;

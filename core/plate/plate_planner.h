@@ -70,6 +70,8 @@ class PlateJointPlanner {
 
  private:
   bool acceptable(const std::vector<PlanStep>& steps) const { return acceptedModel(steps) != nullptr; }
+  // The joint model of the node `steps` ends in (its contacts and base directions).
+  std::shared_ptr<JointNodeModel> nodeModelOf(const std::vector<PlanStep>& steps) const;
   // The node test's model of the node `steps` ends in when it passes, else null.
   std::shared_ptr<const JointNodeModel> acceptedModel(const std::vector<PlanStep>& steps) const;
   std::vector<bool> cutPointsOfRest(const std::vector<bool>& taken) const;

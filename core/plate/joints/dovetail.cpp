@@ -303,8 +303,7 @@ class DovetailFamily final : public JointFamily {
     footprints.push_back(dovetailFootprint(plates(), cut, options()));
     // The tongue runs along the contact from the stop to the open end: the wood under it.
     const TenonSite& edge = cut.site.edge;
-    const double stop = housingStop(plates(), edge, options().dovetail);
-    const double start = cut.openEnd == 1 ? edge.from + stop : edge.from, end = cut.openEnd == 1 ? edge.to : edge.to - stop;
+    const auto [start, end] = housingRun(edge.from, edge.to, housingStop(plates(), edge, options().dovetail), {0, 0}, cut.openEnd);
     const Vec3& side = plates()[static_cast<size_t>(edge.tenonPlate)].bottom[0][static_cast<size_t>(edge.edge)];
     footprints.push_back(woodUnderAddedPiece(edge.tenonPlate, side, edge.along, edge.intoMortise, start, end));
   }

@@ -208,8 +208,7 @@ class SlantedDovetailFamily final : public JointFamily {
     footprints.push_back(slantedDovetailFootprint(plates(), cut, options()));
     // The tongue runs along the side from the stop to the open end: the wood under it.
     const SlantedSide& side = cut.site.side;
-    const double start = cut.openEnd == 1 ? side.from + cut.site.stop : side.from;
-    const double end = cut.openEnd == 1 ? side.to : side.to - cut.site.stop;
+    const auto [start, end] = housingRun(side.from, side.to, cut.site.stop, {0, 0}, cut.openEnd);
     footprints.push_back(woodUnderAddedPiece(side.tenonPlate, side.origin[0], side.along, side.out, start, end));
   }
 
