@@ -587,6 +587,8 @@ std::map<std::string, int> checkWoodUnderPieces(const std::vector<Plate>& plates
   for (const PlateJoint& joint : result.joints) {
     const std::string type = jointTypeName(joint.type);
     const bool square = joint.type != JointType::SlantedTenon && joint.type != JointType::SlantedDovetail;
+    // A piece on a mitre stands on the mitre face, whose strip is given at mid-thickness already.
+    const bool onMitre = joint.type == JointType::MitreTenon || joint.type == JointType::MitreSlide;
     for (const CutFootprint& strip : families.footprints({joint})) {
       if (strip.kind != FootprintKind::UnderAddedPiece) continue;
       EXPECT_EQ(strip.region.size(), 4u) << type;
@@ -596,7 +598,8 @@ std::map<std::string, int> checkWoodUnderPieces(const std::vector<Plate>& plates
       const Vec3 outward = minus(outer, inner);
       EXPECT_NEAR(norm(outward), 1, 1e-9) << type;
       const double thickness = plateThickness(plates[strip.plate]);
-      const Vec3 lift = scaled(plateThicknessAxis(plates[strip.plate]), square ? thickness / 2 : thickness / 100);
+      const double liftBy = onMitre ? 0 : square ? thickness / 2 : thickness / 100;
+      const Vec3 lift = scaled(plateThicknessAxis(plates[strip.plate]), liftBy);
       const Vec3 inside = plus(scaled(plus(outer, inner), 0.5), lift);
       const Vec3 past = plus(plus(outer, scaled(normalized(outward), 0.5)), lift);
       EXPECT_TRUE(testing::PlateInside(plates[strip.plate]).contains(inside)) << type;
@@ -625,6 +628,21 @@ TEST(PlateCrossingAtAngle, TheWoodUnderEachAddedPieceLiesUnderIt) {
   }
   for (const char* type : {"mortise-tenon", "slanted-dovetail", "slanted-tenon", "dovetail"})
     EXPECT_GT(checked[type], 0) << type;
+}
+
+TEST(PlateCrossingAtAngle, TheWoodUnderEachPieceOnAMitreLiesUnderIt) {
+  // The slanted box (plates meeting edge to edge at 110 to 120 degrees): mitre tenons and a mitre
+  // slide's tongue, each on its mitre face; the strip lies inside the plate as given, and the
+  // piece fills the wood just past the mitre on the jointed plate.
+  const AssemblyDocument box = loadExample("slanted_box.json");
+  PlateDesignOptions options;
+  options.realization = JointRealization::Milled;
+  const PlateDesignResult result = designPlateJoints(box.plates, computePlateContacts(box.plates, {}), options);
+  ASSERT_EQ(result.status, DesignStatus::Success) << result.message;
+  const std::map<std::string, int> checked = checkWoodUnderPieces(box.plates, result, options.joints);
+  for (const char* type : {"mitre-tenon", "mitre-slide"}) {
+    EXPECT_GT(checked.count(type) ? checked.at(type) : 0, 0) << type;
+  }
 }
 
 }  // namespace

@@ -353,7 +353,11 @@ class MitreTenonFamily final : public JointFamily {
   }
 
   void addFootprints(const PlateJoint& joint, std::vector<CutFootprint>& footprints) const override {
-    footprints.push_back(mitreTenonFootprint(plates(), tenonOf(joint)));
+    const MitreTenon tenon = tenonOf(joint);
+    footprints.push_back(mitreTenonFootprint(plates(), tenon));
+    // The tenon stands on the mitre, along the edge: the wood under it.
+    footprints.push_back(woodUnderPieceOnMitre(plates(), tenon.tenonPlate, tenon.middle, tenon.line,
+                                               mitreFrame(tenon).normal, -tenon.halfWidth, tenon.halfWidth));
   }
 
   void addCuts(const PlateJoint& joint, double, JointCutList& cuts) const override {

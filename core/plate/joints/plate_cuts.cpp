@@ -280,6 +280,17 @@ CutFootprint woodUnderAddedPiece(int plate, const Vec3& side, const Vec3& along,
   return {plate, 3, {a, b, plus(b, inward), plus(a, inward)}, FootprintKind::UnderAddedPiece};
 }
 
+CutFootprint woodUnderPieceOnMitre(const std::vector<Plate>& plates, int plate, const Vec3& root, const Vec3& along,
+                                   const Vec3& outward, double start, double end) {
+  const Vec3 axis = plateThicknessAxis(plates[static_cast<size_t>(plate)]);
+  Vec3 inPlane = minus(outward, scaled(axis, dot(outward, axis)));
+  if (norm(inPlane) < tolerance::kDirection) {  // not a mitre of an edge-to-edge joint: square to the edge
+    inPlane = cross(axis, along);
+    if (dot(inPlane, outward) < 0) inPlane = negated(inPlane);
+  }
+  return woodUnderAddedPiece(plate, root, along, normalized(inPlane), start, end);
+}
+
 PlateCuts::PlateCuts(size_t plateCount)
     : added(plateCount), removed(plateCount), slanted(plateCount), housings(plateCount), housingDepth(plateCount, {0.0, 0.0}),
       attached(plateCount) {}
