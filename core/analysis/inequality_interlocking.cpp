@@ -215,12 +215,21 @@ MotionSearch decideMotionProgram(const Assembly& assembly, const MotionQuery& qu
     return decided;
   }
   std::string failures;
-  for (SimplexMethod method : {SimplexMethod::Dual, SimplexMethod::Primal}) {
+  // From the last objective's basis first when there is one; then, as for the first objective,
+  // GLPK's dual simplex with its presolver and its primal simplex, each a differently-pivoting opinion.
+  struct Attempt {
+    SimplexMethod method;
+    bool fromBasis;
+  };
+  std::vector<Attempt> attempts;
+  if (!basis->empty()) attempts.push_back({SimplexMethod::Dual, true});
+  attempts.push_back({SimplexMethod::Dual, false});
+  attempts.push_back({SimplexMethod::Primal, false});
+  for (const Attempt& attempt : attempts) {
     if (query.exactOnly) break;
-    const bool warm = method == SimplexMethod::Dual && !basis->empty();
-    LinearProgramSolution solution =
-        warm ? solveLinearProgramFrom(program.spec, method, *basis) : solveLinearProgram(program.spec, method);
-    if (method == SimplexMethod::Dual && !solution.basis.empty()) *basis = solution.basis;
+    LinearProgramSolution solution = attempt.fromBasis ? solveLinearProgramFrom(program.spec, attempt.method, *basis)
+                                                       : solveLinearProgram(program.spec, attempt.method);
+    if (solution.optimal && !solution.basis.empty()) *basis = solution.basis;
     if (!solution.optimal) {
       failures += (failures.empty() ? "" : "; ") + solution.failure;
       continue;

@@ -187,9 +187,15 @@ LinearProgramSolution solveWhole(const LinearProgramSpec& spec, SimplexMethod me
   return solution;
 }
 
+// The basis has a status per row and column, each one GLPK knows (GLP_BS .. GLP_NS); anything else
+// would make GLPK raise an error (and free its whole environment) rather than start from it.
 bool fitsProgram(const LinearProgramBasis& basis, const LinearProgramSpec& spec) {
-  return static_cast<int>(basis.rowStatus.size()) == spec.rowCount() &&
-         static_cast<int>(basis.columnStatus.size()) == spec.columnCount();
+  if (static_cast<int>(basis.rowStatus.size()) != spec.rowCount() ||
+      static_cast<int>(basis.columnStatus.size()) != spec.columnCount())
+    return false;
+  auto known = [](int status) { return status >= GLP_BS && status <= GLP_NS; };
+  return std::all_of(basis.rowStatus.begin(), basis.rowStatus.end(), known) &&
+         std::all_of(basis.columnStatus.begin(), basis.columnStatus.end(), known);
 }
 
 // --- Independent blocks ------------------------------------------------------------------------
@@ -317,7 +323,7 @@ LinearProgramSolution solveLinearProgramFrom(const LinearProgramSpec& spec, Simp
   LinearProgramSolution warm = solveWhole(spec, method, &start);
   warm.fromBasis = true;
   if (warm.optimal) return warm;
-  return solveLinearProgram(spec, method);
+  return solveWhole(spec, method);  // a single block, as checked above
 }
 
 }  // namespace desia

@@ -301,8 +301,8 @@ class MitreSlideFamily final : public JointFamily {
     const MitreSlide slide = slideOf(joint);
     footprints.push_back(mitreSlideFootprint(plates(), slide));
     // The tongue stands on the mitre, along the edge: the wood under it.
-    footprints.push_back(woodUnderPieceOnMitre(plates(), slide.tonguePlate, slide.middle, slide.line, slide.mitreNormal,
-                                               slide.tongueFrom, slide.tongueTo));
+    footprints.push_back(woodUnderPieceOnMitre(plates(), slide.tonguePlate, slide.middle, slide.across, slide.line,
+                                               slide.mitreNormal, slide.tongueFrom, slide.tongueTo));
   }
 
   void addCuts(const PlateJoint& joint, double, JointCutList& cuts) const override {

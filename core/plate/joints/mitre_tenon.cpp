@@ -356,7 +356,7 @@ class MitreTenonFamily final : public JointFamily {
     const MitreTenon tenon = tenonOf(joint);
     footprints.push_back(mitreTenonFootprint(plates(), tenon));
     // The tenon stands on the mitre, along the edge: the wood under it.
-    footprints.push_back(woodUnderPieceOnMitre(plates(), tenon.tenonPlate, tenon.middle, tenon.line,
+    footprints.push_back(woodUnderPieceOnMitre(plates(), tenon.tenonPlate, tenon.middle, tenon.across, tenon.line,
                                                mitreFrame(tenon).normal, -tenon.halfWidth, tenon.halfWidth));
   }
 

@@ -280,15 +280,19 @@ CutFootprint woodUnderAddedPiece(int plate, const Vec3& side, const Vec3& along,
   return {plate, 3, {a, b, plus(b, inward), plus(a, inward)}, FootprintKind::UnderAddedPiece};
 }
 
-CutFootprint woodUnderPieceOnMitre(const std::vector<Plate>& plates, int plate, const Vec3& root, const Vec3& along,
-                                   const Vec3& outward, double start, double end) {
-  const Vec3 axis = plateThicknessAxis(plates[static_cast<size_t>(plate)]);
+CutFootprint woodUnderPieceOnMitre(const std::vector<Plate>& plates, int plate, const Vec3& root, const Vec3& across,
+                                   const Vec3& along, const Vec3& outward, double start, double end) {
+  const Plate& onPlate = plates[static_cast<size_t>(plate)];
+  const Vec3 axis = plateThicknessAxis(onPlate);
+  // Down the mitre face to the first face: where the mitre's edge bounds the first face's outline.
+  const double height = dot(minus(root, onPlate.bottom[0][0]), axis), climb = dot(across, axis);
+  const Vec3 onFirstFace = std::abs(climb) > tolerance::kDirection ? minus(root, scaled(across, height / climb)) : root;
   Vec3 inPlane = minus(outward, scaled(axis, dot(outward, axis)));
   if (norm(inPlane) < tolerance::kDirection) {  // not a mitre of an edge-to-edge joint: square to the edge
     inPlane = cross(axis, along);
     if (dot(inPlane, outward) < 0) inPlane = negated(inPlane);
   }
-  return woodUnderAddedPiece(plate, root, along, normalized(inPlane), start, end);
+  return woodUnderAddedPiece(plate, onFirstFace, along, normalized(inPlane), start, end);
 }
 
 PlateCuts::PlateCuts(size_t plateCount)

@@ -46,10 +46,12 @@ bool footprintsOverlap(const std::vector<Plate>& plates, const CutFootprint& a, 
 CutFootprint woodUnderAddedPiece(int plate, const Vec3& side, const Vec3& along, const Vec3& outward, double start,
                                  double end);
 // The same under a piece standing on a mitre (a mitre tenon, a mitre slide's tongue): `root` on the
-// mitre face, `outward` the mitre face's normal out of the plate (it leaves the plate's plane); the strip
-// lies inside the mitre's edge in the plane.
-CutFootprint woodUnderPieceOnMitre(const std::vector<Plate>& plates, int plate, const Vec3& root, const Vec3& along,
-                                   const Vec3& outward, double start, double end);
+// mitre face, `across` the mitre face's direction square to the edge, `outward` its normal out of
+// the plate (it leaves the plate's plane). The strip lies inside the mitre's edge on the plate's
+// first face, as the other strips (footprints are compared within the first face's outline, which
+// a mitre's mid-thickness overhangs or falls short of by half the thickness times its bevel).
+CutFootprint woodUnderPieceOnMitre(const std::vector<Plate>& plates, int plate, const Vec3& root, const Vec3& across,
+                                   const Vec3& along, const Vec3& outward, double start, double end);
 
 // What the joints do to each plate (indexed as the plates): outlines added to its faces (tenons),
 // regions cut through it (mortises, slots, notches), housings cut into it from its first [0] or
