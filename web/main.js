@@ -49,6 +49,7 @@ const EXAMPLES = [
   { file: 'dog_origin.puz', label: 'Dog', shape: true },
   { file: 'table.json', label: 'Table, 6 plates', plate: true },
   { file: 'table_divider.json', label: 'Table with a divider, 7 plates (halved joint)', plate: true },
+  { file: 'table_split_side.json', label: 'Table with a side in two halves, 7 plates (in-plane dovetail)', plate: true },
   { file: 'bench_2_bays.json', label: 'Table of 2 bays, 10 plates', plate: true },
   { file: 'long_table_102.json', label: 'Long table, 102 plates', plate: true },
   { file: 'chair_cut_point.json', label: 'Chair with a cut point, 8 plates', plate: true },

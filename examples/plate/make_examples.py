@@ -56,6 +56,18 @@ def table_with_divider():
     return doc
 
 
+def table_with_split_side():
+    # The TABLE with its left side panel in two halves, front and back, meeting edge to edge at
+    # z = 300 in the plane x = 0..18 (as IBOIS's VDA corner's hexagons meet): an in-plane dovetail
+    # joins the halves beside the mortise-and-tenon joints.
+    doc = table()
+    t = 18
+    doc["plates"][1] = box(2, "left side, front half", [0, 0, 0], [t, 700, 300])
+    doc["plates"].append(box(7, "left side, back half", [0, 0, 300], [t, 700, 600]))
+    doc["name"] = "TABLE with its left side in two halves meeting edge to edge (7 plates): an in-plane dovetail and mortise-and-tenon joints"
+    return doc
+
+
 def long_table(bays, bay=600.0, t=18.0, depth=600.0, height=700.0):
     """A long table of `bays` bays, 4 bays + 2 plates: a top over a row of side panels, a front and
     a back apron and a shelf in each bay. The middle panels carry aprons and shelves from both
@@ -181,6 +193,7 @@ def main():
         "bookcase_123.json": shelf(10, 12, "BOOKCASE of 10 x 12 cells: two sides, 11 shelves and 110 uprights (123 plates)"),
         "table.json": table(),
         "table_divider.json": table_with_divider(),
+        "table_split_side.json": table_with_split_side(),
         "bench_2_bays.json": long_table(2),
         "long_table_102.json": long_table(25),
         "chair_cut_point.json": chair(False),

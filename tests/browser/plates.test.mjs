@@ -101,7 +101,7 @@ describe('plate structures in the playground (headless Chromium)', { timeout: 12
     })));
     const plates = groups.find((group) => group.label === 'Plate structures');
     assert.ok(plates, `no "Plate structures" group: ${JSON.stringify(groups.map((group) => group.label))}`);
-    assert.deepEqual(plates.files, [TABLE, 'table_divider.json', 'bench_2_bays.json', 'long_table_102.json', CHAIR, 'chair_repaired.json', 'cabinet.json',
+    assert.deepEqual(plates.files, [TABLE, 'table_divider.json', 'table_split_side.json', 'bench_2_bays.json', 'long_table_102.json', CHAIR, 'chair_repaired.json', 'cabinet.json',
       'table_slanted_crossing.json', 'mitred_box.json', 'dodecahedron.json', 'icosahedron.json', 'slanted_box.json', 'lizard.json', 'bookshelf.json', BOOKCASE]);
 
     await page.selectOption('#example-select', TABLE);
