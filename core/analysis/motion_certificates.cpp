@@ -318,9 +318,7 @@ double length3(const Row3& a) { return std::sqrt(dot3(a, a)); }
 
 // Beyond this many distinct row directions GLPK decides (the search below tries every triple).
 constexpr size_t kMaxConeDirections = 32;
-// Relative size under which a cross product or determinant counts as zero, and a multiplier that
-// rounding made slightly negative counts as zero; the certificate's check settles the rest.
-constexpr double kConeSingular = 1e-12;
+using tolerance::kConeSingular;
 
 // The rows as dense 3-vectors, one per distinct direction (the first row of each), in row order.
 struct ConeRows {

@@ -157,6 +157,10 @@ constexpr double kVelocityNoise = 1e-9;
 constexpr double kMovingSpeedFraction = 1e-3;
 // Moving parts whose unit velocities differ by less than this move along one direction.
 constexpr double kSameVelocityDirection = 1e-6;
+// Relative size under which the cone search of a one-part program (motion_certificates.cpp) takes
+// a cross product or determinant as zero, two unit rows as one direction, and a multiplier that
+// rounding made slightly negative as zero; the dual bound checks whatever it proposes.
+constexpr double kConeSingular = 1e-12;
 
 // --- Voxels and frames ----------------------------------------------------------------------------
 
